@@ -1,0 +1,76 @@
+/* cfpo.c - layer 5, library side: the functions of the public header. */
+#define _DEFAULT_SOURCE
+#include "cfpo.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <unistd.h>
+
+#include "engine.h"
+#include "grid.h"
+
+void cfpo_options_init(cfpo_options *o)
+{
+    o->seed = 1;
+    o->variant = CFPO_VARIANT_FULL;
+    o->threads = 0;
+    o->max_iter = CFPO_DEFAULT_MAX_ITER;
+    o->tol = CFPO_DEFAULT_TOL;
+    o->skip = 1;
+    o->progress = NULL;
+    o->user = NULL;
+}
+
+static double physical_memory(void)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+    return (pages > 0 && size > 0) ? (double)pages * (double)size : INFINITY;
+}
+
+int cfpo_validate(int64_t n, const cfpo_options *o, char *err, size_t errlen)
+{
+    if (o->variant != CFPO_VARIANT_FULL && o->variant != CFPO_VARIANT_SIMPLIFIED) {
+        snprintf(err, errlen, "unknown variant %d", o->variant);
+        return -1;
+    }
+    if (!(o->tol >= 0 && o->tol < 0.5)) {
+        snprintf(err, errlen, "tolerance %g is out of range [0, 0.5)", o->tol);
+        return -1;
+    }
+    if (o->threads < 0 || o->threads > 4096) {
+        snprintf(err, errlen, "thread count %d is out of range 0..4096", o->threads);
+        return -1;
+    }
+    if (o->max_iter < 0) {
+        snprintf(err, errlen, "max_iter %d is negative", o->max_iter);
+        return -1;
+    }
+    cfpo_grid G;
+    if (cfpo_grid_init(&G, n, o->variant, o->seed, err, errlen) != 0) return -1;
+    /* Bucket offsets are 32-bit: one process holds fewer than 2^32 points. */
+    if (n >= (int64_t)UINT32_MAX) {
+        snprintf(err, errlen, "n = %lld is too large for one process (at most %lld; use MPI ranks)",
+                 (long long)n, (long long)UINT32_MAX - 1);
+        return -1;
+    }
+    double need = (double)cfpo_engine_bytes(n, o->variant, o->threads), have = physical_memory();
+    if (need > 0.9 * have) {
+        snprintf(err, errlen, "n = %lld is too large for memory: needs %.1f GB, this machine has "
+                 "%.1f GB", (long long)n, need / 1e9, have / 1e9);
+        return -1;
+    }
+    return 0;
+}
+
+int cfpo_sample(int64_t n, const cfpo_options *o, double *xy, cfpo_result *res, char *err,
+                size_t errlen)
+{
+    cfpo_engine *E = cfpo_engine_create(n, o, err, errlen);
+    if (!E) return -1;
+    cfpo_result r;
+    cfpo_engine_run(E, &r);
+    cfpo_engine_points(E, xy);
+    cfpo_engine_free(E);
+    if (res) *res = r;
+    return 0;
+}

@@ -1,0 +1,87 @@
+/* cfpo.h - the public interface of the CFPO sampler.
+ *
+ * Embed the sampler in a program (a renderer, another sampler) without
+ * going through files:
+ *
+ *     cfpo_options o;
+ *     cfpo_options_init(&o);
+ *     o.seed = 7;
+ *     double *xy = malloc(2 * n * sizeof *xy);
+ *     char err[256];
+ *     cfpo_result r;
+ *     if (cfpo_sample(n, &o, xy, &r, err, sizeof err) != 0) fprintf(stderr, "%s\n", err);
+ *
+ * xy receives n points (x0 y0 x1 y1 ...) on the unit torus [0,1)^2 in id
+ * order. The result is a pure function of (n, seed, variant, tol,
+ * max_iter): the number of threads and the skipping of unchanged
+ * neighbourhoods never change a bit of it. Link with -lcfpo -lm and OpenMP. */
+#ifndef CFPO_H
+#define CFPO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define CFPO_VERSION "0.1.0"
+
+enum { CFPO_VARIANT_FULL = 0, CFPO_VARIANT_SIMPLIFIED = 1 };
+
+/* Default move/convergence tolerance, relative to the cell side. */
+#define CFPO_DEFAULT_TOL 1e-4
+#define CFPO_DEFAULT_MAX_ITER 10000
+
+typedef struct {
+    int iteration;     /* 1-based; 0 is the initial set */
+    double delta_min;  /* min nearest-neighbour distance / Delta(n) */
+    double delta_avg;  /* mean nearest-neighbour distance / Delta(n) */
+    int64_t moved;     /* moves made in this iteration */
+    int64_t solved;    /* local problems solved (the rest were skipped) */
+    double max_disp;   /* largest net displacement over the iteration / cell side */
+    double seconds;    /* wall time of this iteration, statistics included */
+    int converged;     /* max_disp < tol */
+} cfpo_iter_stats;
+
+/* Called after every iteration (and once with iteration 0); returning
+ * nonzero stops the run early (the result then says converged = 0). */
+typedef int (*cfpo_progress_fn)(const cfpo_iter_stats *s, void *user);
+
+typedef struct {
+    uint64_t seed;
+    int variant;       /* CFPO_VARIANT_FULL or CFPO_VARIANT_SIMPLIFIED */
+    int threads;       /* OpenMP threads; 0 = all cores */
+    int max_iter;      /* cap on iterations */
+    double tol;        /* relative to the cell side: a move must gain more
+                          than tol * L in distance to Y(x); converged when no
+                          point's net move over an iteration reaches tol * L */
+    int skip;          /* 1: do not re-solve points whose neighbourhood did
+                          not change (same output, less work) */
+    cfpo_progress_fn progress;
+    void *user;
+} cfpo_options;
+
+typedef struct {
+    int iterations;
+    int converged;
+    double seconds;
+    double delta_min, delta_avg;
+    int64_t cells_per_side;
+} cfpo_result;
+
+void cfpo_options_init(cfpo_options *o);
+
+/* Checks n and the options without allocating anything: 0, or -1 with a
+ * one-line message (n too small or too large, bad tolerance, ...). */
+int cfpo_validate(int64_t n, const cfpo_options *o, char *err, size_t errlen);
+
+/* Runs the sampler; writes 2n doubles to xy. 0 on success, -1 with a
+ * message in err. */
+int cfpo_sample(int64_t n, const cfpo_options *o, double *xy, cfpo_result *res, char *err,
+                size_t errlen);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,64 @@
+/* grid.h - layer 2: the cell grid, colours and the stratified start.
+ *
+ * Owns: choosing g (cells per side) from n, the constraint square of a
+ * point's cell, cell coordinates of a position, the colour classes, and the
+ * initial point set (one point per cell, the rest in distinct random cells,
+ * every coordinate from the counter-based generator keyed by the global
+ * cell, so any process can make any cell's points). Point ids are global:
+ * cells in row-major order, points of a cell consecutive.
+ * Does not own: storage of points (the engine's buckets). */
+#ifndef CFPO_GRID_H
+#define CFPO_GRID_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cfpo.h"
+#include "geom.h"
+
+typedef struct {
+    int64_t n;
+    int64_t g;      /* cells per side */
+    double L;       /* cell side, 1/g */
+    double delta;   /* Delta(n) */
+    int variant;    /* CFPO_VARIANT_* */
+    int period;     /* 3 (CFPO) or 2 (simplified): colours are period^2 */
+    double margin;  /* how far S reaches past the cell: L - Delta(n), or 0 */
+    uint64_t seed;
+    uint64_t extra; /* n - g^2: cells with a second point */
+} cfpo_grid;
+
+/* Chooses g: a multiple of the period with g^2 close to 0.8 n and
+ * L = 1/g > Delta(n) strictly (full variant; the simplified variant needs
+ * L >= Delta(n) only for its own cell but uses the same rule), and
+ * g^2 <= n. Returns 0, or -1 with a message when n is too small. */
+int cfpo_grid_init(cfpo_grid *G, int64_t n, int variant, uint64_t seed, char *err, size_t errlen);
+
+/* Smallest n the variant accepts. */
+int64_t cfpo_grid_min_n(int variant);
+
+static inline int64_t cfpo_grid_coord(const cfpo_grid *G, double v)
+{
+    int64_t c = (int64_t)(v * (double)G->g);
+    return c >= G->g ? G->g - 1 : (c < 0 ? 0 : c);
+}
+
+static inline int cfpo_grid_colour(const cfpo_grid *G, int64_t cx, int64_t cy)
+{
+    return (int)((cy % G->period) * G->period + (cx % G->period));
+}
+
+/* S for a point of a cell, in the cell's local frame (cell = [0,L]^2). */
+static inline cfpo_square cfpo_grid_square(const cfpo_grid *G)
+{
+    cfpo_square S = {-G->margin, -G->margin, G->L + G->margin, G->L + G->margin};
+    return S;
+}
+
+/* Number of initial points in cell c (row-major index). */
+uint64_t cfpo_grid_cell_count(const cfpo_grid *G, uint64_t c);
+/* The k-th initial point of cell (cx, cy), inside that cell. */
+void cfpo_grid_cell_point(const cfpo_grid *G, int64_t cx, int64_t cy, uint64_t k, double *x,
+                          double *y);
+
+#endif

@@ -1,0 +1,503 @@
+/* pointfile.c - see pointfile.h. Text numbers are written with 17
+ * significant digits, so every format round-trips doubles exactly. */
+#define _POSIX_C_SOURCE 200809L
+#include "pointfile.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static void set_err(char *err, size_t errlen, const char *fmt, ...)
+{
+    if (!err || errlen == 0) return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+static const char *ext_of(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = strrchr(base, '.');
+    return (dot && dot != base) ? dot : "";
+}
+
+pf_format pf_format_of(const char *path)
+{
+    const char *e = ext_of(path);
+    static const char *text[] = {".txt", ".dat", ".pts", ".xy"};
+    static const char *raw[] = {".bin", ".raw", ".f64"};
+    for (size_t i = 0; i < sizeof text / sizeof *text; i++)
+        if (strcasecmp(e, text[i]) == 0) return PF_TEXT;
+    for (size_t i = 0; i < sizeof raw / sizeof *raw; i++)
+        if (strcasecmp(e, raw[i]) == 0) return PF_RAW;
+    if (strcasecmp(e, ".npy") == 0) return PF_NPY;
+    return PF_UNKNOWN;
+}
+
+const char *pf_format_name(pf_format f)
+{
+    switch (f) {
+    case PF_TEXT: return "text";
+    case PF_NPY: return "npy";
+    case PF_RAW: return "raw";
+    default: return "unknown";
+    }
+}
+
+static int host_is_little_endian(void)
+{
+    const uint16_t one = 1;
+    unsigned char b;
+    memcpy(&b, &one, 1);
+    return b == 1;
+}
+
+static double swap_double(double v)
+{
+    uint64_t u;
+    memcpy(&u, &v, 8);
+    u = __builtin_bswap64(u);
+    memcpy(&v, &u, 8);
+    return v;
+}
+
+/* ------------------------------------------------------------------ writer */
+
+struct pf_writer {
+    FILE *f;
+    char *path;
+    char *tmp;
+    pf_format fmt;
+    size_t n, written;
+};
+
+const char *pf_writer_tmpname(const pf_writer *w) { return w ? w->tmp : NULL; }
+
+static int write_npy_header(FILE *f, size_t n)
+{
+    char dict[128];
+    int len = snprintf(dict, sizeof dict,
+                       "{'descr': '<f8', 'fortran_order': False, 'shape': (%zu, 2), }", n);
+    /* magic(6) + version(2) + header length(2) + dict + padding + '\n' is a
+     * multiple of 64. */
+    size_t total = 10 + (size_t)len + 1;
+    size_t pad = (64 - total % 64) % 64;
+    size_t hlen = (size_t)len + pad + 1;
+    unsigned char pre[10] = {0x93, 'N', 'U', 'M', 'P', 'Y', 1, 0,
+                             (unsigned char)(hlen & 0xff), (unsigned char)(hlen >> 8)};
+    if (fwrite(pre, 1, 10, f) != 10) return -1;
+    if (fwrite(dict, 1, (size_t)len, f) != (size_t)len) return -1;
+    for (size_t i = 0; i < pad; i++)
+        if (fputc(' ', f) == EOF) return -1;
+    return fputc('\n', f) == EOF ? -1 : 0;
+}
+
+pf_writer *pf_writer_open(const char *path, size_t n, char *err, size_t errlen)
+{
+    pf_format fmt = pf_format_of(path);
+    if (fmt == PF_UNKNOWN) {
+        set_err(err, errlen, "%s: unknown output format (use " PF_EXTENSIONS ")", path);
+        return NULL;
+    }
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+        set_err(err, errlen, "%s: is a directory", path);
+        return NULL;
+    }
+    pf_writer *w = calloc(1, sizeof *w);
+    if (!w) { set_err(err, errlen, "%s: out of memory", path); return NULL; }
+    size_t len = strlen(path);
+    w->path = malloc(len + 1);
+    w->tmp = malloc(len + 16);
+    if (!w->path || !w->tmp) {
+        set_err(err, errlen, "%s: out of memory", path);
+        free(w->path); free(w->tmp); free(w);
+        return NULL;
+    }
+    memcpy(w->path, path, len + 1);
+    snprintf(w->tmp, len + 16, "%s.tmp.XXXXXX", path);
+    int fd = mkstemp(w->tmp);
+    if (fd < 0) {
+        set_err(err, errlen, "%s: cannot create output file: %s", path, strerror(errno));
+        free(w->path); free(w->tmp); free(w);
+        return NULL;
+    }
+    fchmod(fd, 0644);
+    w->f = fdopen(fd, "wb");
+    if (!w->f) {
+        set_err(err, errlen, "%s: cannot open output file: %s", path, strerror(errno));
+        close(fd);
+        unlink(w->tmp);
+        free(w->path); free(w->tmp); free(w);
+        return NULL;
+    }
+    w->fmt = fmt;
+    w->n = n;
+    if (fmt == PF_NPY && write_npy_header(w->f, n) != 0) {
+        set_err(err, errlen, "%s: write failed: %s", path, strerror(errno));
+        pf_writer_abort(w);
+        return NULL;
+    }
+    return w;
+}
+
+int pf_writer_put(pf_writer *w, const double *xy, size_t count, char *err, size_t errlen)
+{
+    if (w->written + count > w->n) {
+        set_err(err, errlen, "%s: more points written than announced (%zu)", w->path, w->n);
+        return -1;
+    }
+    int ok = 1;
+    if (w->fmt == PF_TEXT) {
+        for (size_t i = 0; i < count && ok; i++)
+            ok = fprintf(w->f, "%.17g %.17g\n", xy[2 * i], xy[2 * i + 1]) > 0;
+    } else if (host_is_little_endian()) {
+        ok = fwrite(xy, sizeof(double), 2 * count, w->f) == 2 * count;
+    } else {
+        for (size_t i = 0; i < 2 * count && ok; i++) {
+            double v = swap_double(xy[i]);
+            ok = fwrite(&v, sizeof v, 1, w->f) == 1;
+        }
+    }
+    if (!ok) {
+        set_err(err, errlen, "%s: write failed: %s", w->path, strerror(errno));
+        return -1;
+    }
+    w->written += count;
+    return 0;
+}
+
+int pf_writer_commit(pf_writer *w, char *err, size_t errlen)
+{
+    if (w->written != w->n) {
+        set_err(err, errlen, "%s: %zu points written, %zu announced", w->path, w->written, w->n);
+        pf_writer_abort(w);
+        return -1;
+    }
+    FILE *f = w->f;
+    w->f = NULL;
+    if (fflush(f) != 0 || ferror(f)) {
+        set_err(err, errlen, "%s: write failed: %s", w->path, strerror(errno));
+        fclose(f);
+        pf_writer_abort(w);
+        return -1;
+    }
+    if (fclose(f) != 0) {
+        set_err(err, errlen, "%s: write failed: %s", w->path, strerror(errno));
+        pf_writer_abort(w);
+        return -1;
+    }
+    if (rename(w->tmp, w->path) != 0) {
+        set_err(err, errlen, "%s: cannot rename output into place: %s", w->path, strerror(errno));
+        pf_writer_abort(w);
+        return -1;
+    }
+    free(w->path); free(w->tmp); free(w);
+    return 0;
+}
+
+void pf_writer_abort(pf_writer *w)
+{
+    if (!w) return;
+    if (w->f) fclose(w->f);
+    unlink(w->tmp);
+    free(w->path); free(w->tmp); free(w);
+}
+
+int pf_write(const char *path, const double *xy, size_t n, char *err, size_t errlen)
+{
+    pf_writer *w = pf_writer_open(path, n, err, errlen);
+    if (!w) return -1;
+    if (pf_writer_put(w, xy, n, err, errlen) != 0) { pf_writer_abort(w); return -1; }
+    return pf_writer_commit(w, err, errlen);
+}
+
+/* ------------------------------------------------------------------ reader */
+
+static int check_point(const char *path, const char *where, size_t idx, double x, double y,
+                       char *err, size_t errlen)
+{
+    if (!isfinite(x) || !isfinite(y)) {
+        set_err(err, errlen, "%s: %s: point %zu is not finite (%g, %g)", path, where, idx, x, y);
+        return -1;
+    }
+    if (!(x >= 0.0 && x < 1.0 && y >= 0.0 && y < 1.0)) {
+        set_err(err, errlen, "%s: %s: point %zu (%.17g, %.17g) is outside [0,1)^2", path, where,
+                idx, x, y);
+        return -1;
+    }
+    return 0;
+}
+
+static int read_all(const char *path, unsigned char **buf, size_t *len, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        return -1;
+    }
+    struct stat st;
+    if (fstat(fileno(f), &st) != 0 || S_ISDIR(st.st_mode)) {
+        set_err(err, errlen, "%s: not a regular file", path);
+        fclose(f);
+        return -1;
+    }
+    size_t cap = st.st_size > 0 ? (size_t)st.st_size + 1 : 4096, n = 0;
+    unsigned char *b = malloc(cap);
+    if (!b) { set_err(err, errlen, "%s: out of memory", path); fclose(f); return -1; }
+    for (;;) {
+        size_t got = fread(b + n, 1, cap - n, f);
+        n += got;
+        if (got == 0) break;
+        if (n + 1 >= cap) {
+            unsigned char *nb = realloc(b, cap * 2);
+            if (!nb) { set_err(err, errlen, "%s: out of memory", path); free(b); fclose(f); return -1; }
+            b = nb;
+            cap *= 2;
+        }
+    }
+    if (ferror(f)) {
+        set_err(err, errlen, "%s: read error: %s", path, strerror(errno));
+        free(b);
+        fclose(f);
+        return -1;
+    }
+    fclose(f);
+    *buf = b;
+    *len = n;
+    return 0;
+}
+
+static int parse_text(const char *path, unsigned char *buf, size_t len, double **out, size_t *nout,
+                      char *err, size_t errlen)
+{
+    size_t cap = 1024, n = 0, line = 0;
+    double *xy = malloc(cap * 2 * sizeof *xy);
+    if (!xy) { set_err(err, errlen, "%s: out of memory", path); return -1; }
+    size_t pos = 0;
+    while (pos < len) {
+        size_t end = pos;
+        while (end < len && buf[end] != '\n') end++;
+        line++;
+        /* A NUL inside a text file is corruption, not a line end. */
+        if (memchr(buf + pos, '\0', end - pos)) {
+            set_err(err, errlen, "%s: line %zu: binary data in a text file", path, line);
+            free(xy);
+            return -1;
+        }
+        buf[end] = '\0'; /* read_all leaves a spare byte after the data */
+        char *p = (char *)buf + pos;
+        while (*p == ' ' || *p == '\t' || *p == '\r') p++;
+        if (*p != '\0' && *p != '#') {
+            char *e1, *e2 = NULL;
+            double x = strtod(p, &e1);
+            double y = e1 != p ? strtod(e1, &e2) : 0.0;
+            char *q = e2 ? e2 : p;
+            while (*q == ' ' || *q == '\t' || *q == '\r') q++;
+            if (e1 == p || e2 == e1 || (*q != '\0' && *q != '#')) {
+                set_err(err, errlen, "%s: line %zu: expected two numbers \"x y\"", path, line);
+                free(xy);
+                return -1;
+            }
+            char where[32];
+            snprintf(where, sizeof where, "line %zu", line);
+            if (check_point(path, where, n, x, y, err, errlen) != 0) { free(xy); return -1; }
+            if (n == cap) {
+                double *nx = realloc(xy, cap * 4 * sizeof *xy);
+                if (!nx) { set_err(err, errlen, "%s: out of memory", path); free(xy); return -1; }
+                xy = nx;
+                cap *= 2;
+            }
+            xy[2 * n] = x;
+            xy[2 * n + 1] = y;
+            n++;
+        }
+        pos = end + 1;
+    }
+    if (n == 0) {
+        set_err(err, errlen, "%s: contains no points", path);
+        free(xy);
+        return -1;
+    }
+    *out = xy;
+    *nout = n;
+    return 0;
+}
+
+static int decode_pairs(const char *path, const unsigned char *data, size_t n, int fortran,
+                        size_t offset, double **out, char *err, size_t errlen)
+{
+    double *xy = malloc(n * 2 * sizeof *xy);
+    if (!xy) { set_err(err, errlen, "%s: out of memory", path); return -1; }
+    int le = host_is_little_endian();
+    for (size_t i = 0; i < n; i++) {
+        double v[2];
+        for (int k = 0; k < 2; k++) {
+            size_t idx = fortran ? (size_t)k * n + i : 2 * i + (size_t)k;
+            memcpy(&v[k], data + idx * 8, 8);
+            if (!le) v[k] = swap_double(v[k]);
+        }
+        char where[48];
+        snprintf(where, sizeof where, "offset %zu", offset + (fortran ? i : 2 * i) * 8);
+        if (check_point(path, where, i, v[0], v[1], err, errlen) != 0) {
+            free(xy);
+            return -1;
+        }
+        xy[2 * i] = v[0];
+        xy[2 * i + 1] = v[1];
+    }
+    *out = xy;
+    return 0;
+}
+
+static int parse_raw(const char *path, const unsigned char *buf, size_t len, double **out,
+                     size_t *nout, char *err, size_t errlen)
+{
+    if (len == 0) {
+        set_err(err, errlen, "%s: contains no points", path);
+        return -1;
+    }
+    if (len % 16 != 0) {
+        set_err(err, errlen, "%s: size %zu bytes is not a whole number of (x, y) float64 pairs "
+                "(truncated at offset %zu?)", path, len, len - len % 16);
+        return -1;
+    }
+    *nout = len / 16;
+    return decode_pairs(path, buf, len / 16, 0, 0, out, err, errlen);
+}
+
+/* Finds `'key':` in the header dict and returns a pointer just past it. */
+static const char *dict_value(const char *dict, const char *key)
+{
+    char pat[32];
+    snprintf(pat, sizeof pat, "'%s'", key);
+    const char *p = strstr(dict, pat);
+    if (!p) return NULL;
+    p += strlen(pat);
+    while (*p == ' ') p++;
+    if (*p != ':') return NULL;
+    p++;
+    while (*p == ' ') p++;
+    return p;
+}
+
+static int parse_npy(const char *path, const unsigned char *buf, size_t len, double **out,
+                     size_t *nout, char *err, size_t errlen)
+{
+    static const unsigned char magic[6] = {0x93, 'N', 'U', 'M', 'P', 'Y'};
+    if (len < 10 || memcmp(buf, magic, 6) != 0) {
+        set_err(err, errlen, "%s: not a NumPy .npy file (bad magic)", path);
+        return -1;
+    }
+    unsigned major = buf[6];
+    size_t hlen, hstart;
+    if (major == 1) {
+        hlen = (size_t)buf[8] | (size_t)buf[9] << 8;
+        hstart = 10;
+    } else if (major == 2 || major == 3) {
+        if (len < 12) { set_err(err, errlen, "%s: truncated .npy header", path); return -1; }
+        hlen = (size_t)buf[8] | (size_t)buf[9] << 8 | (size_t)buf[10] << 16 | (size_t)buf[11] << 24;
+        hstart = 12;
+    } else {
+        set_err(err, errlen, "%s: unsupported .npy version %u", path, major);
+        return -1;
+    }
+    if (hstart + hlen > len) {
+        set_err(err, errlen, "%s: truncated .npy header (%zu bytes announced, file has %zu)", path,
+                hlen, len);
+        return -1;
+    }
+    char *dict = malloc(hlen + 1);
+    if (!dict) { set_err(err, errlen, "%s: out of memory", path); return -1; }
+    memcpy(dict, buf + hstart, hlen);
+    dict[hlen] = '\0';
+    int rc = -1;
+    const char *d = dict_value(dict, "descr");
+    const char *fo = dict_value(dict, "fortran_order");
+    const char *sh = dict_value(dict, "shape");
+    if (!d || !fo || !sh) {
+        set_err(err, errlen, "%s: bad .npy header (needs descr, fortran_order, shape)", path);
+        goto done;
+    }
+    if (strncmp(d, "'<f8'", 5) != 0 && strncmp(d, "'f8'", 4) != 0) {
+        set_err(err, errlen, "%s: .npy dtype must be little-endian float64 '<f8'", path);
+        goto done;
+    }
+    int fortran;
+    if (strncmp(fo, "False", 5) == 0) fortran = 0;
+    else if (strncmp(fo, "True", 4) == 0) fortran = 1;
+    else { set_err(err, errlen, "%s: bad .npy header (fortran_order)", path); goto done; }
+    if (*sh != '(') { set_err(err, errlen, "%s: bad .npy header (shape)", path); goto done; }
+    /* Parse the shape tuple: exactly two dimensions, the second equal to 2. */
+    size_t dims[4];
+    int nd = 0;
+    const char *p = sh + 1;
+    for (;;) {
+        while (*p == ' ') p++;
+        if (*p == ')') break;
+        char *e;
+        errno = 0;
+        unsigned long long v = strtoull(p, &e, 10);
+        if (e == p || errno || nd == 4) {
+            set_err(err, errlen, "%s: bad .npy header (shape)", path);
+            goto done;
+        }
+        dims[nd++] = (size_t)v;
+        p = e;
+        while (*p == ' ') p++;
+        if (*p == ',') p++;
+    }
+    if (nd != 2 || dims[1] != 2) {
+        char shape[64] = "";
+        for (int i = 0; i < nd; i++) {
+            size_t l = strlen(shape);
+            snprintf(shape + l, sizeof shape - l, i ? ", %zu" : "%zu", dims[i]);
+        }
+        set_err(err, errlen, "%s: .npy shape (%s) is not (n, 2)", path, shape);
+        goto done;
+    }
+    size_t n = dims[0];
+    if (n == 0) { set_err(err, errlen, "%s: contains no points", path); goto done; }
+    size_t data = hstart + hlen;
+    if (n > (len - data) / 16 || len - data != n * 16) {
+        if (len - data < n * 16 || n > (len - data) / 16)
+            set_err(err, errlen, "%s: truncated: shape (%zu, 2) needs %zu data bytes, file has %zu "
+                    "after the header", path, n, n * 16, len - data);
+        else
+            set_err(err, errlen, "%s: %zu bytes of trailing garbage after the data", path,
+                    len - data - n * 16);
+        goto done;
+    }
+    rc = decode_pairs(path, buf + data, n, fortran, data, out, err, errlen);
+    if (rc == 0) *nout = n;
+done:
+    free(dict);
+    return rc;
+}
+
+int pf_read(const char *path, double **xy, size_t *n, char *err, size_t errlen)
+{
+    pf_format fmt = pf_format_of(path);
+    if (fmt == PF_UNKNOWN) {
+        set_err(err, errlen, "%s: unknown point file format (use " PF_EXTENSIONS ")", path);
+        return -1;
+    }
+    unsigned char *buf;
+    size_t len;
+    if (read_all(path, &buf, &len, err, errlen) != 0) return -1;
+    int rc;
+    if (fmt == PF_TEXT) rc = parse_text(path, buf, len, xy, n, err, errlen);
+    else if (fmt == PF_RAW) rc = parse_raw(path, buf, len, xy, n, err, errlen);
+    else rc = parse_npy(path, buf, len, xy, n, err, errlen);
+    free(buf);
+    return rc;
+}

@@ -1,0 +1,50 @@
+/* pointfile.h - the one module that reads and writes point files.
+ *
+ * Owns: the three formats (text "x y" lines with '#' comments, NumPy .npy
+ * n x 2 float64, raw little-endian float64 pairs), the choice of format by
+ * file extension, atomic writing (temporary file in the same folder, renamed
+ * on success, removed on failure) and strict validation on reading.
+ * Does not own: what the points mean, or how tools report errors (every
+ * function returns -1 and fills a one-line message naming the file). */
+#ifndef CFPO_POINTFILE_H
+#define CFPO_POINTFILE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+typedef enum { PF_UNKNOWN = 0, PF_TEXT, PF_NPY, PF_RAW } pf_format;
+
+/* Format from the file name: .txt .dat .pts .xy -> text, .npy -> NumPy,
+ * .bin .raw .f64 -> raw float64. PF_UNKNOWN otherwise. */
+pf_format pf_format_of(const char *path);
+const char *pf_format_name(pf_format f);
+/* The accepted extensions, for messages and --help. */
+#define PF_EXTENSIONS ".txt/.dat/.pts/.xy (text), .npy (NumPy), .bin/.raw/.f64 (raw float64)"
+
+/* Streaming writer: points are appended in order; nothing appears under the
+ * final name until pf_writer_commit succeeds. */
+typedef struct pf_writer pf_writer;
+
+/* Opens a temporary file beside `path` (so an unwritable folder fails at
+ * once, before any long computation). n is the number of points that will
+ * be written. Returns NULL with a message in err. */
+pf_writer *pf_writer_open(const char *path, size_t n, char *err, size_t errlen);
+/* Appends `count` points (xy interleaved: x0 y0 x1 y1 ...). */
+int pf_writer_put(pf_writer *w, const double *xy, size_t count, char *err, size_t errlen);
+/* Flushes, checks that exactly n points were written, renames into place,
+ * frees w. On failure the temporary file is removed. */
+int pf_writer_commit(pf_writer *w, char *err, size_t errlen);
+/* Removes the temporary file and frees w. Safe on NULL. */
+void pf_writer_abort(pf_writer *w);
+/* The temporary file's name (for a signal handler that must unlink it). */
+const char *pf_writer_tmpname(const pf_writer *w);
+
+/* Whole-array helpers. */
+int pf_write(const char *path, const double *xy, size_t n, char *err, size_t errlen);
+/* Reads a whole file; *xy is malloc'ed (2n doubles) and owned by the caller.
+ * Rejects: missing/unreadable files, unknown extensions, empty sets,
+ * truncated or corrupt data, bad .npy headers, wrong shapes, NaN/inf and
+ * coordinates outside [0,1). */
+int pf_read(const char *path, double **xy, size_t *n, char *err, size_t errlen);
+
+#endif

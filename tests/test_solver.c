@@ -1,0 +1,238 @@
+/* test_solver.c - LocalCFPO against brute force.
+ *
+ * For each configuration: the solver's point must lie in S, its returned
+ * value must equal the objective recomputed at that point, and no point of
+ * S found by brute force (a dense grid, then hill climbing with shrinking
+ * steps from the best grid points) may beat it. 10,000+ configurations,
+ * degenerate ones included. Also checks the pruned mode (floor2) against
+ * the plain mode. */
+#include "geom.h"
+#include "testutil.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+static uint64_t rs = 0x1234567ULL;
+static double urand(void)
+{
+    rs ^= rs << 13; rs ^= rs >> 7; rs ^= rs << 17;
+    return (double)(rs >> 11) * 0x1.0p-53;
+}
+
+static double f2(double x, double y, const double *yx, const double *yy, int m)
+{
+    return cfpo_min_dist2(x, y, yx, yy, m, -1);
+}
+
+static double brute(const double *yx, const double *yy, int m, cfpo_square S, double *bxo, double *byo)
+{
+    enum { G = 48, TOP = 6 };
+    double tv[TOP], tx[TOP], ty[TOP];
+    for (int t = 0; t < TOP; t++) tv[t] = -1;
+    for (int a = 0; a <= G; a++)
+        for (int b = 0; b <= G; b++) {
+            double x = S.x0 + (S.x1 - S.x0) * a / G, y = S.y0 + (S.y1 - S.y0) * b / G;
+            double v = f2(x, y, yx, yy, m);
+            int t = TOP - 1;
+            if (v <= tv[t]) continue;
+            while (t > 0 && tv[t - 1] < v) { tv[t] = tv[t - 1]; tx[t] = tx[t - 1]; ty[t] = ty[t - 1]; t--; }
+            tv[t] = v; tx[t] = x; ty[t] = y;
+        }
+    double best = -1, bx = 0, by = 0;
+    for (int t = 0; t < TOP; t++) {
+        if (tv[t] < 0) continue;
+        double x = tx[t], y = ty[t], v = tv[t];
+        double h = (S.x1 - S.x0) / G;
+        while (h > 1e-13) {
+            int improved = 0;
+            for (int d = 0; d < 8; d++) {
+                static const int D[8][2] = {{1,0},{-1,0},{0,1},{0,-1},{1,1},{1,-1},{-1,1},{-1,-1}};
+                double nx = x + h * D[d][0], ny = y + h * D[d][1];
+                if (nx < S.x0) nx = S.x0;
+                if (nx > S.x1) nx = S.x1;
+                if (ny < S.y0) ny = S.y0;
+                if (ny > S.y1) ny = S.y1;
+                double nv = f2(nx, ny, yx, yy, m);
+                if (nv > v) { v = nv; x = nx; y = ny; improved = 1; }
+            }
+            if (!improved) h *= 0.5;
+        }
+        if (v > best) { best = v; bx = x; by = y; }
+    }
+    *bxo = bx; *byo = by;
+    return best;
+}
+
+enum { MAXM = 40 };
+
+static int check(const double *yx, const double *yy, int m, cfpo_square S, double hx, double hy,
+                 const char *kind, double *worst_gap)
+{
+    double scratch[8 * (MAXM + 8)];
+    double cx, cy;
+    double v = cfpo_local_solve(yx, yy, m, -1, S, hx, hy, -1.0, &cx, &cy, scratch);
+    double bx, by;
+    double vb = brute(yx, yy, m, S, &bx, &by);
+    double scale = (S.x1 - S.x0) * (S.x1 - S.x0);
+    int bad = 0;
+    if (!(cx >= S.x0 && cx <= S.x1 && cy >= S.y0 && cy <= S.y1)) {
+        fprintf(stderr, "%s: solver point (%.17g, %.17g) outside S\n", kind, cx, cy);
+        bad = 1;
+    }
+    if (v != f2(cx, cy, yx, yy, m)) {
+        fprintf(stderr, "%s: returned value %.17g != objective %.17g\n", kind, v, f2(cx, cy, yx, yy, m));
+        bad = 1;
+    }
+    if (vb > v + 1e-12 * scale) {
+        fprintf(stderr, "%s: brute force beats solver: %.17g > %.17g at (%.17g, %.17g), m=%d\n", kind,
+                vb, v, bx, by, m);
+        bad = 1;
+    }
+    double gap = (v - vb) / scale;
+    if (gap > *worst_gap) *worst_gap = gap;
+    /* Pruned mode: with a floor below the optimum it must find the same
+     * value; with a floor at or above it, it must report nothing better. */
+    double c2x, c2y;
+    double vp = cfpo_local_solve(yx, yy, m, -1, S, hx, hy, 0.5 * v, &c2x, &c2y, scratch);
+    if (vp != v) {
+        fprintf(stderr, "%s: pruned solve found %.17g, plain %.17g\n", kind, vp, v);
+        bad = 1;
+    }
+    double vq = cfpo_local_solve(yx, yy, m, -1, S, hx, hy, v * (1 + 1e-9), &c2x, &c2y, scratch);
+    if (vq > v * (1 + 1e-9)) {
+        fprintf(stderr, "%s: pruned solve above an unbeatable floor: %.17g\n", kind, vq);
+        bad = 1;
+    }
+    return bad;
+}
+
+int main(void)
+{
+    double yx[MAXM], yy[MAXM];
+    int failures = 0, total = 0;
+    double worst_gap = 0;
+    const double L = 1.0;
+    for (int it = 0; it < 12000; it++) {
+        int kind = it % 8;
+        double margin = (it % 3 == 0) ? 0.04 : (it % 3 == 1 ? 0.0 : 0.3 * urand());
+        cfpo_square S = {-margin * L, -margin * L, L + margin * L, L + margin * L};
+        int m = 1 + (int)(urand() * 20);
+        const char *name = "random";
+        switch (kind) {
+        case 0: /* uniform in the 3x3 block */
+            for (int j = 0; j < m; j++) { yx[j] = -L + 3 * L * urand(); yy[j] = -L + 3 * L * urand(); }
+            break;
+        case 1: { /* jittered lattice, the usual CFPO neighbourhood */
+            name = "lattice";
+            m = 0;
+            for (int a = -1; a <= 1; a++)
+                for (int b = -1; b <= 1; b++) {
+                    int c = 1 + (urand() < 0.25);
+                    for (int t = 0; t < c && m < MAXM; t++) {
+                        yx[m] = (a + urand()) * L;
+                        yy[m] = (b + urand()) * L;
+                        m++;
+                    }
+                }
+            break;
+        }
+        case 2: { /* collinear */
+            name = "collinear";
+            double ox = L * urand(), oy = L * urand(), ang = 6.283185307179586 * urand();
+            if (it % 16 == 2) ang = 0; /* axis-parallel line */
+            for (int j = 0; j < m; j++) {
+                double t = -1.5 + 3 * urand();
+                yx[j] = ox + t * cos(ang);
+                yy[j] = oy + t * sin(ang);
+            }
+            break;
+        }
+        case 3: { /* cocircular, centred in or near S */
+            name = "cocircular";
+            double ox = L * (0.5 + 0.2 * (urand() - 0.5)), oy = L * (0.5 + 0.2 * (urand() - 0.5));
+            double r = 0.3 + urand();
+            int regular = it % 16 == 3;
+            for (int j = 0; j < m; j++) {
+                double a = regular ? 6.283185307179586 * j / m : 6.283185307179586 * urand();
+                yx[j] = ox + r * cos(a);
+                yy[j] = oy + r * sin(a);
+            }
+            break;
+        }
+        case 4: /* on the boundary of S */
+            name = "on-boundary";
+            for (int j = 0; j < m; j++) {
+                double t = S.x0 + (S.x1 - S.x0) * urand();
+                switch ((int)(urand() * 4)) {
+                case 0: yx[j] = S.x0; yy[j] = t; break;
+                case 1: yx[j] = S.x1; yy[j] = t; break;
+                case 2: yx[j] = t; yy[j] = S.y0; break;
+                default: yx[j] = t; yy[j] = S.y1; break;
+                }
+            }
+            break;
+        case 5: /* very few neighbours */
+            name = "few";
+            m = 1 + it % 3;
+            for (int j = 0; j < m; j++) { yx[j] = -L + 3 * L * urand(); yy[j] = -L + 3 * L * urand(); }
+            break;
+        case 6: /* duplicates and exact lattice (ties everywhere) */
+            name = "degenerate";
+            m = 0;
+            for (int a = -1; a <= 1; a++)
+                for (int b = -1; b <= 1; b++) {
+                    yx[m] = (a + 0.5) * L;
+                    yy[m] = (b + 0.5) * L;
+                    m++;
+                }
+            if (it % 16 == 6) { yx[m] = yx[0]; yy[m] = yy[0]; m++; } /* a duplicate */
+            if (it % 32 == 14) m = 8; /* hole at a lattice site */
+            break;
+        default: /* neighbourhood of a point near the torus seam, unwrapped */
+            name = "seam";
+            for (int j = 0; j < m; j++) {
+                double gx = 1.0 - 1e-9 * urand() + (urand() - 0.5) * 2.5 * L / 64;
+                double gy = 1e-9 * urand() + (urand() - 0.5) * 2.5 * L / 64;
+                yx[j] = cfpo_torus_diff(gx, 1.0 - L / 64 / 2) * 64; /* local frame of the seam cell */
+                yy[j] = cfpo_torus_diff(gy, 0.0) * 64;
+            }
+            break;
+        }
+        double hx = S.x0 + (S.x1 - S.x0) * urand(), hy = S.y0 + (S.y1 - S.y0) * urand();
+        total++;
+        if (check(yx, yy, m, S, hx, hy, name, &worst_gap)) failures++;
+    }
+    /* Empty Y: no point to be far from. */
+    {
+        double scratch[8 * 8], cx, cy;
+        cfpo_square S = {0, 0, 1, 1};
+        double v = cfpo_local_solve(yx, yy, 0, -1, S, 0.5, 0.5, -1, &cx, &cy, scratch);
+        total++;
+        if (!isinf(v)) { fprintf(stderr, "empty Y: expected +inf, got %g\n", v); failures++; }
+        /* skip index removes the only point */
+        yx[0] = 0.3; yy[0] = 0.3;
+        v = cfpo_local_solve(yx, yy, 1, 0, S, 0.5, 0.5, -1, &cx, &cy, scratch);
+        total++;
+        if (!isinf(v)) { fprintf(stderr, "skip: expected +inf, got %g\n", v); failures++; }
+    }
+    /* Known answers: one point at a corner of the unit square -> opposite
+     * corner; four points at the corners -> the centre. */
+    {
+        double scratch[8 * 16], cx, cy;
+        cfpo_square S = {0, 0, 1, 1};
+        double ax[4] = {0, 1, 1, 0}, ay[4] = {0, 0, 1, 1};
+        double v = cfpo_local_solve(ax, ay, 1, -1, S, 0.5, 0.5, -1, &cx, &cy, scratch);
+        total++;
+        if (v != 2.0 || cx != 1.0 || cy != 1.0) { fprintf(stderr, "one point: got %g at (%g,%g)\n", v, cx, cy); failures++; }
+        v = cfpo_local_solve(ax, ay, 4, -1, S, 0.1, 0.2, -1, &cx, &cy, scratch);
+        total++;
+        if (fabs(v - 0.5) > 1e-15 || fabs(cx - 0.5) > 1e-15 || fabs(cy - 0.5) > 1e-15) {
+            fprintf(stderr, "four corners: got %g at (%g,%g)\n", v, cx, cy);
+            failures++;
+        }
+    }
+    printf("solver vs brute force: %d configurations, worst solver-minus-brute gap %.3g (relative to |S|^2)\n",
+           total, worst_gap);
+    return test_report(total - failures, failures);
+}
