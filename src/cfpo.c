@@ -57,7 +57,7 @@ int cfpo_validate(int64_t n, const cfpo_options *o, char *err, size_t errlen)
     if (need > 0.9 * have) {
         snprintf(err, errlen, "n = %lld is too large for memory: needs %.1f GB, this machine has "
                  "%.1f GB", (long long)n, need / 1e9, have / 1e9);
-        return -1;
+        return -2;
     }
     return 0;
 }

@@ -72,8 +72,9 @@ typedef struct {
 
 void cfpo_options_init(cfpo_options *o);
 
-/* Checks n and the options without allocating anything: 0, or -1 with a
- * one-line message (n too small or too large, bad tolerance, ...). */
+/* Checks n and the options without allocating anything: 0; -1 with a
+ * one-line message for an invalid request (n too small, bad tolerance,
+ * ...); -2 when the request is valid but exceeds this machine (memory). */
 int cfpo_validate(int64_t n, const cfpo_options *o, char *err, size_t errlen);
 
 /* Runs the sampler; writes 2n doubles to xy. 0 on success, -1 with a

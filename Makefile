@@ -1,0 +1,48 @@
+# Thin front end over CMake + CTest. `make help` lists the targets.
+BUILD     ?= build
+TYPE      ?= Release
+NATIVE    ?= ON
+JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
+PROFILE   ?= default
+CMAKE_ARGS = -DCMAKE_BUILD_TYPE=$(TYPE) -DCFPO_NATIVE=$(NATIVE)
+
+.PHONY: all build test test-sanitize bench help clean deps
+
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) $(CMAKE_ARGS) >/dev/null
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Unit tests under AddressSanitizer + UndefinedBehaviorSanitizer.
+test-sanitize: deps
+	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCFPO_SANITIZE=ON >/dev/null
+	cmake --build build-asan -j $(JOBS)
+	cd build-asan && ctest --output-on-failure -j $(JOBS) -L unit
+
+bench: build
+	scripts/bench.sh $(BUILD) $(PROFILE)
+
+help:
+	@echo "Targets:"
+	@echo "  make               optimised build into $(BUILD)/ (installs missing Debian packages first)"
+	@echo "  make test          build, then run every CTest test"
+	@echo "  make test-sanitize unit tests in an ASan+UBSan build (build-asan/)"
+	@echo "  make bench         benchmarks (PROFILE=$(PROFILE)); results under results/"
+	@echo "  make clean         remove build folders"
+	@echo "Build settings:"
+	@echo "  build type   $(TYPE)   (TYPE=Debug|Release|RelWithDebInfo)"
+	@echo "  C flags      -O3 -DNDEBUG -Wall -Wextra -Werror -ffp-contract=off -fopenmp"
+	@echo "  -march       $(if $(filter ON,$(NATIVE)),native (NATIVE=OFF for portable x86-64),generic (NATIVE=ON for -march=native))"
+	@echo "  compiler     $$(cc --version 2>/dev/null | head -n 1)"
+
+clean:
+	rm -rf $(BUILD) build-asan

@@ -1,0 +1,83 @@
+/* cli.h - conventions shared by every command of the suite (cfpo, the
+ * baselines, the analysis tools).
+ *
+ * Owns: strict number parsing, the one-line error messages and exit codes
+ * (0 success, 1 runtime failure, 2 usage error), the progress line on a
+ * terminal, the machine-readable summary line, peak memory, atomic text
+ * files (for traces) and removal of temporary files on SIGINT/SIGTERM.
+ * Does not own: any method's options beyond these helpers. */
+#ifndef CFPO_CLI_H
+#define CFPO_CLI_H
+
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+
+enum { CLI_OK = 0, CLI_FAIL = 1, CLI_USAGE = 2 };
+
+/* Strict parsers: the whole string must be a number within [lo, hi].
+ * 0 on success, -1 otherwise (nothing printed). Integers accept a plain
+ * decimal or a power form like 2^20 or 1e6 when exact. */
+int cli_parse_i64(const char *s, int64_t lo, int64_t hi, int64_t *out);
+int cli_parse_u64(const char *s, uint64_t *out);
+int cli_parse_double(const char *s, double lo, double hi, double *out);
+
+/* "prog: message" on stderr, then exit 2 (with a hint to --help) or 1.
+ * Temporary files registered with cli_guard_tmp are removed first. */
+void cli_usage_error(const char *prog, const char *fmt, ...)
+    __attribute__((noreturn, format(printf, 2, 3)));
+void cli_fail(const char *prog, const char *fmt, ...)
+    __attribute__((noreturn, format(printf, 2, 3)));
+
+/* Registers (or with NULL, clears) a temporary file to unlink when the
+ * process is interrupted or fails; installs SIGINT/SIGTERM handlers. At most
+ * 4 at once. */
+void cli_guard_tmp(const char *path);
+void cli_unguard_tmp(const char *path);
+
+/* Peak resident memory of this process in bytes (0 if unknown). */
+uint64_t cli_peak_rss(void);
+
+/* Wall clock in seconds. */
+double cli_now(void);
+
+/* Progress on stderr, only when stderr is a terminal and not quiet: one
+ * line rewritten in place, ended by cli_progress_end. */
+typedef struct {
+    int enabled;
+    int shown;
+    double last;
+} cli_progress;
+void cli_progress_init(cli_progress *p, int quiet);
+void cli_progress_line(cli_progress *p, int force, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+void cli_progress_end(cli_progress *p);
+
+/* The summary line every method prints on stdout at the end:
+ *   SUMMARY method=cfpo variant=cfpo n=4096 seed=1 threads=2 ranks=1
+ *   iterations=424 seconds=1.58 delta_min=0.9242 delta_avg=0.9304
+ *   converged=yes peak_bytes=... bytes_per_point=...
+ * Fields that do not apply to a method are given as '-'. */
+typedef struct {
+    const char *method, *variant;
+    int64_t n;
+    uint64_t seed;
+    int threads, ranks;
+    int64_t iterations;   /* -1: not iterative */
+    double seconds;
+    double delta_min, delta_avg;
+    int converged;        /* 1 yes, 0 no, -1 not applicable */
+    uint64_t peak_bytes;
+} cli_summary;
+void cli_print_summary(FILE *f, const cli_summary *s);
+
+/* Text file written under a temporary name and renamed on commit. */
+typedef struct {
+    FILE *f;
+    char *path, *tmp;
+} cli_atomic;
+int cli_atomic_open(cli_atomic *a, const char *path, char *err, size_t errlen);
+int cli_atomic_commit(cli_atomic *a, char *err, size_t errlen);
+void cli_atomic_abort(cli_atomic *a);
+
+#endif
