@@ -85,9 +85,11 @@ double cfpo_local_solve(const double *yx, const double *yy, int m, int skip, cfp
             poly[2 * c + 1] = corner[c][1];
         }
         int alive = 1;
+        double far2 = ub;
         for (int j = 0; j < k && alive; j++) {
             if (j == i) continue;
             const double nx = px[j] - ax, ny = py[j] - ay;
+            if (nx * nx + ny * ny >= 4 * far2) continue;
             const double mx = 0.5 * (px[j] + ax), my = 0.5 * (py[j] + ay);
             /* Signed side of each vertex: <= 0 keeps it (closer to y_i). */
             double smax = -INFINITY, smin = INFINITY;
@@ -100,7 +102,7 @@ double cfpo_local_solve(const double *yx, const double *yy, int m, int skip, cfp
             if (smax <= 0) continue;      /* bisector misses the polygon */
             if (smin > 0) { alive = 0; break; } /* polygon entirely closer to y_j */
             int nn = 0;
-            double far2 = 0;
+            far2 = 0;
             for (int v = 0; v < nv; v++) {
                 int w = (v + 1 == nv) ? 0 : v + 1;
                 double s0 = sd[v], s1 = sd[w];

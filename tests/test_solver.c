@@ -69,7 +69,7 @@ enum { MAXM = 40 };
 static int check(const double *yx, const double *yy, int m, cfpo_square S, double hx, double hy,
                  const char *kind, double *worst_gap)
 {
-    double scratch[8 * (MAXM + 8)];
+    double scratch[10 * (MAXM + 8)];
     double cx, cy;
     double v = cfpo_local_solve(yx, yy, m, -1, S, hx, hy, -1.0, &cx, &cy, scratch);
     double bx, by;
@@ -205,7 +205,7 @@ int main(void)
     }
     /* Empty Y: no point to be far from. */
     {
-        double scratch[8 * 8], cx, cy;
+        double scratch[10 * 8], cx, cy;
         cfpo_square S = {0, 0, 1, 1};
         double v = cfpo_local_solve(yx, yy, 0, -1, S, 0.5, 0.5, -1, &cx, &cy, scratch);
         total++;
@@ -219,7 +219,7 @@ int main(void)
     /* Known answers: one point at a corner of the unit square -> opposite
      * corner; four points at the corners -> the centre. */
     {
-        double scratch[8 * 16], cx, cy;
+        double scratch[10 * 16], cx, cy;
         cfpo_square S = {0, 0, 1, 1};
         double ax[4] = {0, 1, 1, 0}, ay[4] = {0, 0, 1, 1};
         double v = cfpo_local_solve(ax, ay, 1, -1, S, 0.5, 0.5, -1, &cx, &cy, scratch);
