@@ -1,0 +1,278 @@
+/* test_engine.c - the grid, the stratified start and the engine.
+ *
+ * Properties: g obeys DESIGN.md's constraints for every n; the start puts
+ * 1 or 2 points in every cell with unique ids; the Feistel permutation is
+ * a bijection; delta(X) never decreases after any phase; outputs are
+ * byte-identical for 1, 2, 3 and 4 threads and with skipping on or off;
+ * different seeds differ; the engine's statistics equal brute force;
+ * cfpo_sample equals the engine; small n work or are refused cleanly. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cfpo.h"
+#include "engine.h"
+#include "grid.h"
+#include "rng.h"
+#include "stats.h"
+#include "testutil.h"
+
+static int passed_, failed_;
+
+static void brute_deltas(const double *xy, int64_t n, double *dmin, double *davg)
+{
+    double mn = INFINITY, sum = 0;
+    for (int64_t i = 0; i < n; i++) {
+        double best = INFINITY;
+        for (int64_t j = 0; j < n; j++)
+            if (j != i) best = fmin(best, cfpo_torus_dist2(xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1]));
+        best = sqrt(best);
+        mn = fmin(mn, best);
+        sum += best;
+    }
+    double D = cfpo_delta_bound((double)n);
+    *dmin = mn / D;
+    *davg = sum / (double)n / D;
+}
+
+static void test_grid_choice(void)
+{
+    int bad = 0;
+    for (int variant = 0; variant < 2; variant++)
+        for (int64_t n = 1; n < 200000; n += (n < 2000 ? 1 : n / 97)) {
+            cfpo_grid G;
+            char err[256];
+            int rc = cfpo_grid_init(&G, n, variant, 1, err, sizeof err);
+            if (n < cfpo_grid_min_n(variant)) {
+                if (rc == 0 || strstr(err, "too small") == NULL) bad++;
+                continue;
+            }
+            if (rc != 0) { bad++; continue; }
+            if (G.g % G.period != 0 || !(G.L > G.delta) || G.g * G.g > n) bad++;
+            if (variant == CFPO_VARIANT_SIMPLIFIED && G.g < 4) bad++;
+            /* g^2 within one multiple-of-period step of 0.8 n */
+            double ideal = sqrt(0.8 * (double)n);
+            if (n > 1000 && fabs((double)G.g - ideal) > G.period + 0.5) bad++;
+        }
+    CHECK(bad == 0, "grid choice violated a constraint %d times", bad);
+}
+
+static void test_permutation(void)
+{
+    uint64_t Ns[] = {1, 2, 3, 9, 10, 81, 1000, 4096, 12345};
+    for (size_t t = 0; t < sizeof Ns / sizeof *Ns; t++) {
+        uint64_t N = Ns[t];
+        unsigned char *seen = calloc(N, 1);
+        int ok = 1;
+        for (uint64_t v = 0; v < N; v++) {
+            uint64_t p = cfpo_permute(v, N, 42 + t);
+            if (p >= N || seen[p]) ok = 0;
+            else seen[p] = 1;
+        }
+        free(seen);
+        CHECK(ok, "cfpo_permute is not a bijection of [0, %llu)", (unsigned long long)N);
+    }
+}
+
+static void test_start(void)
+{
+    int64_t ns[] = {11, 100, 1000, 4096, 65536 + 7};
+    for (size_t t = 0; t < sizeof ns / sizeof *ns; t++) {
+        int64_t n = ns[t];
+        cfpo_grid G;
+        char err[256];
+        cfpo_grid_init(&G, n, CFPO_VARIANT_FULL, 9, err, sizeof err);
+        int64_t total = 0, twos = 0, bad = 0;
+        for (int64_t c = 0; c < G.g * G.g; c++) {
+            uint64_t cnt = cfpo_grid_cell_count(&G, (uint64_t)c);
+            if (cnt < 1 || cnt > 2) bad++;
+            twos += cnt == 2;
+            total += (int64_t)cnt;
+            for (uint64_t k = 0; k < cnt; k++) {
+                double x, y;
+                cfpo_grid_cell_point(&G, c % G.g, c / G.g, k, &x, &y);
+                if (cfpo_grid_coord(&G, x) != c % G.g || cfpo_grid_coord(&G, y) != c / G.g) bad++;
+            }
+        }
+        CHECK(total == n && bad == 0 && twos == n - G.g * G.g,
+              "start for n=%lld: %lld points, %lld bad cells/points", (long long)n,
+              (long long)total, (long long)bad);
+    }
+}
+
+static double *run_points(int64_t n, uint64_t seed, int threads, int skip, int variant,
+                          int max_iter, cfpo_result *res)
+{
+    cfpo_options o;
+    cfpo_options_init(&o);
+    o.seed = seed;
+    o.threads = threads;
+    o.skip = skip;
+    o.variant = variant;
+    o.max_iter = max_iter;
+    double *xy = malloc(2 * (size_t)n * sizeof *xy);
+    char err[256];
+    cfpo_result r;
+    if (cfpo_sample(n, &o, xy, &r, err, sizeof err) != 0) {
+        fprintf(stderr, "cfpo_sample: %s\n", err);
+        exit(1);
+    }
+    if (res) *res = r;
+    return xy;
+}
+
+static void test_monotone(int variant)
+{
+    const int64_t n = 4096;
+    cfpo_options o;
+    cfpo_options_init(&o);
+    o.seed = 5;
+    o.variant = variant;
+    o.threads = 2;
+    char err[256];
+    cfpo_engine *E = cfpo_engine_create(n, &o, err, sizeof err);
+    double prev, avg;
+    cfpo_engine_deltas(E, &prev, &avg);
+    int decreases = 0, phases = 0;
+    const int ncol = cfpo_engine_grid(E)->period * cfpo_engine_grid(E)->period;
+    double first = prev;
+    for (int it = 0; it < 40; it++)
+        for (int c = 0; c < ncol; c++) {
+            int64_t solved;
+            cfpo_engine_phase(E, c, &solved);
+            double dmin;
+            cfpo_engine_deltas(E, &dmin, &avg);
+            if (dmin < prev) {
+                decreases++;
+                fprintf(stderr, "delta_min fell from %.17g to %.17g (iteration %d, phase %d)\n", prev, dmin, it, c);
+            }
+            prev = dmin;
+            phases++;
+        }
+    CHECK(decreases == 0, "%s: delta_min decreased in %d of %d phases",
+          variant ? "simplified" : "cfpo", decreases, phases);
+    CHECK(prev > first + 0.3, "%s: delta_min did not grow (%.4f -> %.4f)",
+          variant ? "simplified" : "cfpo", first, prev);
+    /* Statistics from the engine's buckets equal brute force. */
+    double *xy = malloc(2 * n * sizeof *xy);
+    cfpo_engine_points(E, xy);
+    double bmin, bavg, emin, eavg, smin, savg;
+    brute_deltas(xy, n, &bmin, &bavg);
+    cfpo_engine_deltas(E, &emin, &eavg);
+    cfpo_nn_stats(xy, (size_t)n, NULL, &smin, &savg);
+    CHECK(emin == bmin && fabs(eavg - bavg) < 1e-12, "engine deltas %.17g %.17g, brute %.17g %.17g",
+          emin, eavg, bmin, bavg);
+    CHECK(smin == bmin && fabs(savg - bavg) < 1e-12, "cfpo_nn_stats %.17g %.17g, brute %.17g %.17g",
+          smin, savg, bmin, bavg);
+    free(xy);
+    cfpo_engine_free(E);
+}
+
+static void test_determinism(void)
+{
+    const int64_t n = 4096;
+    cfpo_result r1;
+    double *ref = run_points(n, 3, 1, 1, CFPO_VARIANT_FULL, 10000, &r1);
+    CHECK(r1.converged, "reference run did not converge in %d iterations", r1.iterations);
+    for (int t = 2; t <= 4; t++) {
+        cfpo_result r;
+        double *xy = run_points(n, 3, t, 1, CFPO_VARIANT_FULL, 10000, &r);
+        CHECK(memcmp(xy, ref, 2 * n * sizeof *xy) == 0 && r.iterations == r1.iterations,
+              "%d threads differ from 1 thread", t);
+        free(xy);
+    }
+    cfpo_result rn;
+    double *noskip = run_points(n, 3, 2, 0, CFPO_VARIANT_FULL, 10000, &rn);
+    CHECK(memcmp(noskip, ref, 2 * n * sizeof *noskip) == 0 && rn.iterations == r1.iterations,
+          "skipping off differs from skipping on");
+    free(noskip);
+    double *other = run_points(n, 4, 2, 1, CFPO_VARIANT_FULL, 10000, NULL);
+    size_t same = 0;
+    for (int64_t i = 0; i < 2 * n; i++) same += other[i] == ref[i];
+    CHECK(same < 10, "seeds 3 and 4 share %zu coordinates", same);
+    free(other);
+    /* Simplified variant: deterministic too. */
+    double *s1 = run_points(n, 3, 1, 1, CFPO_VARIANT_SIMPLIFIED, 200, NULL);
+    double *s2 = run_points(n, 3, 3, 0, CFPO_VARIANT_SIMPLIFIED, 200, NULL);
+    CHECK(memcmp(s1, s2, 2 * n * sizeof *s1) == 0, "simplified: 1 vs 3 threads / skip differ");
+    free(s1);
+    free(s2);
+    /* Every coordinate on the torus. */
+    int outside = 0;
+    for (int64_t i = 0; i < 2 * n; i++) outside += !(ref[i] >= 0 && ref[i] < 1);
+    CHECK(outside == 0, "%d coordinates outside [0,1)", outside);
+    free(ref);
+}
+
+static void test_small_n(void)
+{
+    int64_t ns[] = {1, 2, 10, 11, 12, 19, 20, 100, 101, 997, 1009};
+    for (size_t t = 0; t < sizeof ns / sizeof *ns; t++)
+        for (int variant = 0; variant < 2; variant++) {
+            int64_t n = ns[t];
+            cfpo_options o;
+            cfpo_options_init(&o);
+            o.variant = variant;
+            o.threads = 2;
+            char err[256] = "";
+            int v = cfpo_validate(n, &o, err, sizeof err);
+            if (n < cfpo_grid_min_n(variant)) {
+                CHECK(v == -1 && strstr(err, "too small"), "n=%lld variant %d: not refused (%s)",
+                      (long long)n, variant, err);
+                continue;
+            }
+            CHECK(v == 0, "n=%lld variant %d refused: %s", (long long)n, variant, err);
+            double *xy = malloc(2 * (size_t)n * sizeof *xy);
+            cfpo_result r;
+            int rc = cfpo_sample(n, &o, xy, &r, err, sizeof err);
+            int ok = rc == 0 && r.converged && r.delta_min > 0.5;
+            for (int64_t i = 0; i < 2 * n; i++) ok &= xy[i] >= 0 && xy[i] < 1;
+            CHECK(ok, "n=%lld variant %d: rc %d converged %d delta_min %.3f", (long long)n,
+                  variant, rc, r.converged, r.delta_min);
+            free(xy);
+        }
+}
+
+static void test_api_matches_engine(void)
+{
+    const int64_t n = 2000;
+    cfpo_options o;
+    cfpo_options_init(&o);
+    o.seed = 11;
+    o.threads = 2;
+    char err[256];
+    cfpo_engine *E = cfpo_engine_create(n, &o, err, sizeof err);
+    cfpo_result r;
+    cfpo_engine_run(E, &r);
+    double *a = malloc(2 * n * sizeof *a);
+    cfpo_engine_points(E, a);
+    cfpo_engine_free(E);
+    double *b = run_points(n, 11, 2, 1, CFPO_VARIANT_FULL, o.max_iter, NULL);
+    CHECK(memcmp(a, b, 2 * n * sizeof *a) == 0, "cfpo_sample differs from the engine");
+    free(a);
+    free(b);
+    /* Validation errors. */
+    cfpo_options bad = o;
+    bad.tol = -1;
+    CHECK(cfpo_validate(1000, &bad, err, sizeof err) == -1 && strstr(err, "tolerance"), "tol -1 accepted");
+    bad = o;
+    bad.variant = 7;
+    CHECK(cfpo_validate(1000, &bad, err, sizeof err) == -1 && strstr(err, "variant"), "variant 7 accepted");
+    CHECK(cfpo_validate((int64_t)1 << 40, &o, err, sizeof err) != 0 && strstr(err, "too large"),
+          "n = 2^40 accepted on one process");
+}
+
+int main(void)
+{
+    test_grid_choice();
+    test_permutation();
+    test_start();
+    test_monotone(CFPO_VARIANT_FULL);
+    test_monotone(CFPO_VARIANT_SIMPLIFIED);
+    test_determinism();
+    test_small_n();
+    test_api_matches_engine();
+    return test_report(passed_, failed_);
+}
