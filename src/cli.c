@@ -134,11 +134,13 @@ static void vreport(const char *prog, const char *fmt, va_list ap)
 void cli_usage_error(const char *prog, const char *fmt, ...)
 {
     remove_guarded();
+    fflush(stdout);
+    fprintf(stderr, "%s: ", prog);
     va_list ap;
     va_start(ap, fmt);
-    vreport(prog, fmt, ap);
+    vfprintf(stderr, fmt, ap);
     va_end(ap);
-    fprintf(stderr, "Try '%s --help' for more information.\n", prog);
+    fprintf(stderr, " (see %s --help)\n", prog);
     exit(CLI_USAGE);
 }
 

@@ -22,7 +22,8 @@ int cli_parse_i64(const char *s, int64_t lo, int64_t hi, int64_t *out);
 int cli_parse_u64(const char *s, uint64_t *out);
 int cli_parse_double(const char *s, double lo, double hi, double *out);
 
-/* "prog: message" on stderr, then exit 2 (with a hint to --help) or 1.
+/* One line "prog: message" on stderr, then exit 2 (the line ends with a
+ * pointer to --help) or 1.
  * Temporary files registered with cli_guard_tmp are removed first. */
 void cli_usage_error(const char *prog, const char *fmt, ...)
     __attribute__((noreturn, format(printf, 2, 3)));

@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# test_cli.sh BUILD_DIR - the cfpo command as a user meets it: exit codes,
+# one-line messages, no file left behind on any failure, formats that carry
+# the same points, byte-identical output for any thread count, the trace,
+# the summary line, progress only on a terminal, clean interruption.
+set -u
+B=$(cd "$1" && pwd)
+CFPO="$B/cfpo"
+T=$(mktemp -d /tmp/cfpo-cli-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 1
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
+
+# expect CODE PATTERN ARGS...: exit code, one stderr line matching PATTERN,
+# nothing on stdout, and no file created in the folder.
+expect() {
+  local code=$1 pat=$2; shift 2
+  local before after
+  before=$(ls -A | sort)
+  "$CFPO" "$@" >out.log 2>err.log
+  local rc=$?
+  after=$(ls -A | grep -v -e '^out.log$' -e '^err.log$' | sort)
+  local lines; lines=$(wc -l <err.log)
+  if [ "$rc" -ne "$code" ]; then bad "cfpo $*: exit $rc, expected $code ($(cat err.log))"; return; fi
+  if [ "$lines" -ne 1 ]; then bad "cfpo $*: $lines lines on stderr: $(cat err.log)"; return; fi
+  if ! grep -q -- "$pat" err.log; then bad "cfpo $*: message '$(cat err.log)' lacks '$pat'"; return; fi
+  if [ -s out.log ]; then bad "cfpo $*: printed on stdout: $(cat out.log)"; return; fi
+  if [ "$after" != "$(echo "$before" | grep -v -e '^out.log$' -e '^err.log$')" ]; then bad "cfpo $*: left files: $after"; return; fi
+  ok
+}
+
+# --- usage errors: exit 2
+expect 2 "required" -o x.npy
+expect 2 "'abc' is not a positive whole number" -n abc -o x.npy
+expect 2 "'12abc'" -n 12abc -o x.npy
+expect 2 "'-5'" -n -5 -o x.npy
+expect 2 "'0'" -n 0
+expect 2 "too small" -n 10 -o x.npy
+expect 2 "too small" -n 1 -o x.npy
+expect 2 "too small" -n 2
+expect 2 "too small" -n 18 --variant simplified
+expect 2 "'1e6.5'" -n 1e6.5
+expect 2 "--threads" -n 100 --threads 0
+expect 2 "--threads" -n 100 --threads two
+expect 2 "--tol" -n 100 --tol -1
+expect 2 "--tol" -n 100 --tol nan
+expect 2 "--tol" -n 100 --tol 0.6
+expect 2 "--seed" -n 100 --seed -1
+expect 2 "--seed" -n 100 --seed 1x
+expect 2 "--max-iter" -n 100 --max-iter -3
+expect 2 "--variant" -n 100 --variant fast
+expect 2 "unknown option '--bogus'" -n 100 --bogus
+expect 2 "unknown option '-z'" -n 100 -z
+expect 2 "needs a value" -n 100 -o
+expect 2 "unknown output format" -n 100 -o points.png
+expect 2 "unknown output format" -n 100 -o points
+expect 2 "unexpected argument" -n 100 extra
+expect 2 "too large for one process" -n 2^33
+# --- runtime failures: exit 1
+expect 1 "No such file or directory" -n 100 -o nodir/x.npy
+mkdir adir.npy
+expect 1 "is a directory" -n 100 -o adir.npy
+expect 1 "is a directory" -n 100 --trace adir.npy
+rmdir adir.npy
+expect 1 "too large for memory" -n 2^31
+
+# --- help and version
+"$CFPO" --help >h.txt 2>&1 && grep -q "^Usage: cfpo" h.txt && grep -q -- "--trace" h.txt && ok || bad "--help"
+"$CFPO" --version | grep -q "^cfpo [0-9]" && ok || bad "--version"
+
+# --- success: formats, summary, trace
+"$CFPO" -n 1000 --seed 7 -o p.bin --trace t.tsv >s.txt 2>e.txt && ok || bad "plain run failed: $(cat e.txt)"
+[ ! -s e.txt ] && ok || bad "stderr not empty when not a terminal: $(cat e.txt)"
+[ "$(wc -l <s.txt)" -eq 1 ] && grep -Eq '^SUMMARY method=cfpo variant=cfpo n=1000 seed=7 threads=[0-9]+ ranks=1 iterations=[0-9]+ seconds=[0-9.]+ delta_min=0\.9[0-9]+ delta_avg=0\.9[0-9]+ converged=yes peak_bytes=[0-9]+ bytes_per_point=[0-9.]+$' s.txt && ok || bad "summary line: $(cat s.txt)"
+[ "$(stat -c %s p.bin)" -eq 16000 ] && ok || bad "p.bin has $(stat -c %s p.bin) bytes"
+iters=$(sed -n 's/.* iterations=\([0-9]*\).*/\1/p' s.txt)
+[ "$(head -1 t.tsv)" = "$(printf 'iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed')" ] && ok || bad "trace header: $(head -1 t.tsv)"
+[ "$(($(wc -l <t.tsv) - 2))" -eq "$iters" ] && ok || bad "trace has $(wc -l <t.tsv) lines for $iters iterations"
+"$CFPO" -n 1000 --seed 7 -o p.npy -q >/dev/null && ok || bad "npy run"
+cmp -s <(tail -c 16000 p.npy) p.bin && [ "$(stat -c %s p.npy)" -eq 16128 ] && ok || bad ".npy data differs from .bin"
+"$CFPO" -n 1000 --seed 7 -o p.txt -q >/dev/null && ok || bad "txt run"
+python3 - p.txt p.bin <<'PY' && ok || bad ".txt values differ from .bin"
+import struct, sys
+txt = [float(v) for line in open(sys.argv[1]) for v in line.split()]
+raw = open(sys.argv[2], 'rb').read()
+binv = list(struct.unpack('<%dd' % (len(raw) // 8), raw))
+sys.exit(0 if txt == binv else 1)
+PY
+ls -A | grep -q 'tmp\.' && bad "temporary files left: $(ls -A)" || ok
+
+# --- determinism across thread counts and skipping, seeds differ
+for t in 1 2 3 4; do "$CFPO" -n 3000 --seed 9 -t $t -q -o d$t.bin >/dev/null || bad "-t $t failed"; done
+"$CFPO" -n 3000 --seed 9 -t 2 --no-skip -q -o dn.bin >/dev/null
+cmp -s d1.bin d2.bin && cmp -s d1.bin d3.bin && cmp -s d1.bin d4.bin && ok || bad "thread counts give different bytes"
+cmp -s d1.bin dn.bin && ok || bad "--no-skip gives different bytes"
+"$CFPO" -n 3000 --seed 10 -q -o e.bin >/dev/null
+cmp -s d1.bin e.bin && bad "seeds 9 and 10 give the same bytes" || ok
+"$CFPO" -n 3000 --seed 9 --variant simplified -q -o sv.bin >/dev/null && ! cmp -s d1.bin sv.bin && ok || bad "simplified variant"
+
+# --- --max-iter caps the run and says converged=no
+"$CFPO" -n 3000 --max-iter 3 -q >m.txt && grep -q "iterations=3 .*converged=no" m.txt && ok || bad "--max-iter 3: $(cat m.txt)"
+
+# --- progress on a terminal
+if command -v script >/dev/null 2>&1; then
+  script -qec "$CFPO -n 3000 -o tty.bin" /dev/null >tty.log 2>&1
+  grep -q "iter [0-9]* *delta_min" tty.log && grep -q "ETA" tty.log && ok || bad "no progress line on a terminal"
+  script -qec "$CFPO -n 3000 -q" /dev/null >ttyq.log 2>&1
+  grep -q "delta_min 0" ttyq.log && bad "--quiet still shows progress" || ok
+fi
+
+# --- interruption leaves the old file intact and no temporary file
+printf 'keep' >big.npy
+"$CFPO" -n 3000000 -t 2 -q -o big.npy >/dev/null 2>&1 &
+pid=$!
+sleep 1.5
+kill -INT $pid
+wait $pid
+rc=$?
+[ $rc -ne 0 ] && [ "$(cat big.npy)" = keep ] && ok || bad "interrupt: rc $rc, big.npy now $(stat -c %s big.npy) bytes"
+ls -A | grep -q 'tmp\.' && bad "interrupt left temporary files: $(ls -A | grep tmp)" || ok
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]
