@@ -1,0 +1,160 @@
+/* bench_main.c - `cfpo-bench`: the core benchmark (never a test).
+ *
+ *   cfpo-bench sweep    -n N -t T [-k K]  full sweeps (every point solved):
+ *                                         seconds per sweep; us per point and per
+ *                                         point-update (one local solve) per core
+ *   cfpo-bench converge -n N -t T         iterations and seconds until
+ *                                         delta_avg >= 0.929, delta_min >= 0.92
+ *                                         and convergence; bytes per point
+ *
+ * Protocol (after the Parallel Research Kernels): one untimed warm-up sweep,
+ * then K timed sweeps; the median is reported. Sweep timings exclude the
+ * per-iteration statistics, which are timed separately. Each mode ends with
+ * one greppable line starting with "RESULT". */
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cfpo.h"
+#include "cli.h"
+#include "engine.h"
+#include "omp_compat.h"
+
+static const char *prog = "cfpo-bench";
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int k)
+{
+    qsort(v, (size_t)k, sizeof *v, cmp_double);
+    return k % 2 ? v[k / 2] : 0.5 * (v[k / 2 - 1] + v[k / 2]);
+}
+
+static int sweep(int64_t n, int threads, int k, uint64_t seed)
+{
+    cfpo_options o;
+    cfpo_options_init(&o);
+    o.threads = threads;
+    o.skip = 0;
+    o.seed = seed;
+    char err[256];
+    cfpo_engine *E = cfpo_engine_create(n, &o, err, sizeof err);
+    if (!E) cli_fail(prog, "%s", err);
+    const int ncol = cfpo_engine_grid(E)->period * cfpo_engine_grid(E)->period;
+    double *ts = malloc((size_t)k * sizeof *ts), *ss = malloc((size_t)k * sizeof *ss);
+    double *solves = malloc((size_t)k * sizeof *solves);
+    for (int it = -1; it < k; it++) {
+        double t0 = cli_now();
+        int64_t solved = 0;
+        for (int c = 0; c < ncol; c++) {
+            int64_t s;
+            cfpo_engine_phase(E, c, &s);
+            solved += s;
+        }
+        double t1 = cli_now();
+        double dmin, davg;
+        cfpo_engine_deltas(E, &dmin, &davg);
+        double t2 = cli_now();
+        if (it >= 0) {
+            ts[it] = t1 - t0;
+            ss[it] = t2 - t1;
+        }
+        /* A point that crosses into a cell of a later colour is solved
+         * again in the same sweep, so a sweep solves at least n. */
+        if (solved < n) cli_fail(prog, "a full sweep solved %lld of %lld points", (long long)solved, (long long)n);
+        if (it >= 0) solves[it] = (double)solved;
+    }
+    double sw = median(ts, k), st = median(ss, k), sv = median(solves, k);
+    printf("RESULT sweep n=%lld threads=%d sweeps=%d seconds_per_sweep=%.4f us_per_point=%.3f "
+           "us_per_update=%.3f solves_per_sweep=%.0f stats_seconds=%.4f\n",
+           (long long)n, threads, k, sw, sw / (double)n * 1e6, sw * threads / sv * 1e6, sv, st);
+    free(solves);
+    free(ts);
+    free(ss);
+    cfpo_engine_free(E);
+    return 0;
+}
+
+typedef struct {
+    int avg_it, min_it;
+    double avg_s, min_s, t0;
+} conv_ctx;
+
+static int on_iter(const cfpo_iter_stats *s, void *user)
+{
+    conv_ctx *c = user;
+    double el = cli_now() - c->t0;
+    if (c->avg_it < 0 && s->delta_avg >= 0.929) { c->avg_it = s->iteration; c->avg_s = el; }
+    if (c->min_it < 0 && s->delta_min >= 0.92) { c->min_it = s->iteration; c->min_s = el; }
+    return 0;
+}
+
+static int converge(int64_t n, int threads, uint64_t seed)
+{
+    cfpo_options o;
+    cfpo_options_init(&o);
+    o.threads = threads;
+    o.seed = seed;
+    conv_ctx c = {-1, -1, 0, 0, 0};
+    o.progress = on_iter;
+    o.user = &c;
+    char err[256];
+    c.t0 = cli_now();
+    cfpo_engine *E = cfpo_engine_create(n, &o, err, sizeof err);
+    if (!E) cli_fail(prog, "%s", err);
+    cfpo_result r;
+    cfpo_engine_run(E, &r);
+    double total = cli_now() - c.t0;
+    uint64_t peak = cli_peak_rss();
+    printf("RESULT converge n=%lld threads=%d avg0929_iter=%d avg0929_seconds=%.2f min092_iter=%d "
+           "min092_seconds=%.2f converged=%s iterations=%d seconds=%.2f delta_min=%.4f "
+           "delta_avg=%.4f peak_bytes=%llu bytes_per_point=%.1f\n",
+           (long long)n, threads, c.avg_it, c.avg_s, c.min_it, c.min_s, r.converged ? "yes" : "no",
+           r.iterations, total, r.delta_min, r.delta_avg, (unsigned long long)peak,
+           (double)peak / (double)n);
+    cfpo_engine_free(E);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || (strcmp(argv[1], "sweep") != 0 && strcmp(argv[1], "converge") != 0)) {
+        if (argc >= 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
+            printf("Usage: cfpo-bench sweep|converge -n N [-t THREADS] [-k SWEEPS] [-s SEED]\n");
+            return 0;
+        }
+        cli_usage_error(prog, "first argument must be 'sweep' or 'converge'");
+    }
+    int64_t n = 65536, v;
+    int threads = omp_get_num_procs(), k = 5;
+    uint64_t seed = 1;
+    int ch;
+    optind = 2;
+    opterr = 0;
+    while ((ch = getopt(argc, argv, ":n:t:k:s:")) != -1) {
+        switch (ch) {
+        case 'n':
+            if (cli_parse_i64(optarg, 11, INT64_MAX, &v) != 0) cli_usage_error(prog, "-n: bad value '%s'", optarg);
+            n = v;
+            break;
+        case 't':
+            if (cli_parse_i64(optarg, 1, 4096, &v) != 0) cli_usage_error(prog, "-t: bad value '%s'", optarg);
+            threads = (int)v;
+            break;
+        case 'k':
+            if (cli_parse_i64(optarg, 1, 10000, &v) != 0) cli_usage_error(prog, "-k: bad value '%s'", optarg);
+            k = (int)v;
+            break;
+        case 's':
+            if (cli_parse_u64(optarg, &seed) != 0) cli_usage_error(prog, "-s: bad value '%s'", optarg);
+            break;
+        default: cli_usage_error(prog, "unknown or incomplete option '%s'", argv[optind - 1]);
+        }
+    }
+    return strcmp(argv[1], "sweep") == 0 ? sweep(n, threads, k, seed) : converge(n, threads, seed);
+}
