@@ -32,10 +32,11 @@ struct cfpo_engine {
     cfpo_options o;
     int64_t n, cells;
     double *px, *py;  /* positions, cell by cell */
-    int64_t *pid;     /* global ids, ascending inside a cell */
+    uint32_t *pid;    /* ids, ascending inside a cell (n < 2^32 per process) */
     double *tx, *ty;  /* spare buffers for rebuilding and output */
-    int64_t *tid;
+    uint32_t *tid;
     uint32_t *start;  /* CSR: cell c holds [start[c], start[c+1]) */
+    uint32_t *start2; /* the next CSR offsets, while relocating */
     uint8_t *need;    /* cell must be solved (its block changed) */
     uint16_t *mask;   /* this phase: bit (dy+1)*3+(dx+1) set if a point of
                          the cell moved into the cell at offset (dx,dy) */
@@ -59,7 +60,7 @@ uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads)
     char err[8];
     if (cfpo_grid_init(&G, n, variant, 0, err, sizeof err) != 0) return 0;
     uint64_t cells = (uint64_t)(G.g * G.g);
-    return (uint64_t)n * (2 * (16 + 8) + 8) + cells * (4 + 1 + 2) + 4 + (uint64_t)G.g * 16 +
+    return (uint64_t)n * (2 * (16 + 4) + 8) + cells * (4 + 4 + 1 + 2) + 8 + (uint64_t)G.g * 16 +
            (uint64_t)(threads > 0 ? threads : 1) * thread_scratch_doubles(64) * 8;
 }
 
@@ -68,7 +69,7 @@ void cfpo_engine_free(cfpo_engine *E)
     if (!E) return;
     free(E->px); free(E->py); free(E->pid);
     free(E->tx); free(E->ty); free(E->tid);
-    free(E->start); free(E->need); free(E->mask); free(E->disp);
+    free(E->start); free(E->start2); free(E->need); free(E->mask); free(E->disp);
     free(E->rowsum); free(E->rowmin);
     if (E->scratch)
         for (int t = 0; t < E->nthreads; t++) free(E->scratch[t]);
@@ -95,45 +96,84 @@ static inline int64_t cell_of(const cfpo_engine *E, double x, double y)
     return cfpo_grid_coord(&E->G, y) * E->G.g + cfpo_grid_coord(&E->G, x);
 }
 
-/* Counting sort of all points into cells, then id order inside each cell. */
-static int rebuild(cfpo_engine *E)
+/* Is cell e's mask bit for the neighbour at offset (dx, dy) set? */
+static inline int sends_to(unsigned mk, int dx, int dy) { return mk >> ((dy + 1) * 3 + (dx + 1)) & 1u; }
+#define CENTRE_BIT (1u << 4)
+
+/* Moves points that changed cell in the last phase into their new cells.
+ * Only the cells of that phase's colour can have sent points (their masks
+ * say where to), so each cell gathers its own new content: the points of
+ * its old slice that stayed, then arrivals from the neighbours whose mask
+ * points at it, then id order. Parallel over cells, deterministic, O(n)
+ * copying and O(points of sending cells) cell computations. */
+static int relocate(cfpo_engine *E)
 {
-    const int64_t n = E->n, cells = E->cells;
-    uint32_t *st = E->start;
-    memset(st, 0, (size_t)(cells + 1) * sizeof *st);
-    for (int64_t i = 0; i < n; i++) st[cell_of(E, E->px[i], E->py[i]) + 1]++;
-    for (int64_t c = 0; c < cells; c++) st[c + 1] += st[c];
-    for (int64_t i = 0; i < n; i++) {
-        uint32_t k = st[cell_of(E, E->px[i], E->py[i])]++;
-        E->tx[k] = E->px[i];
-        E->ty[k] = E->py[i];
-        E->tid[k] = E->pid[i];
+    const int64_t g = E->G.g, cells = E->cells;
+    const uint32_t *st = E->start;
+    uint32_t *ns = E->start2;
+    const uint16_t *mask = E->mask;
+#pragma omp parallel for schedule(static) num_threads(E->nthreads)
+    for (int64_t c = 0; c < cells; c++) {
+        const int64_t cx = c % g, cy = c / g;
+        uint32_t cnt = 0;
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dx = -1; dx <= 1; dx++) {
+                const int64_t e = ((cy + dy + g) % g) * g + (cx + dx + g) % g;
+                const unsigned mk = mask[e];
+                if (dx == 0 && dy == 0) {
+                    if (!(mk & ~CENTRE_BIT)) { cnt += st[c + 1] - st[c]; continue; }
+                } else if (!sends_to(mk, -dx, -dy)) continue;
+                for (uint32_t k = st[e]; k < st[e + 1]; k++) cnt += cell_of(E, E->px[k], E->py[k]) == c;
+            }
+        ns[c + 1] = cnt;
     }
-    for (int64_t c = cells; c > 0; c--) st[c] = st[c - 1];
-    st[0] = 0;
+    ns[0] = 0;
+    for (int64_t c = 0; c < cells; c++) ns[c + 1] += ns[c];
+    int maxcell = 0;
+#pragma omp parallel for schedule(static) reduction(max : maxcell) num_threads(E->nthreads)
+    for (int64_t c = 0; c < cells; c++) {
+        const int64_t cx = c % g, cy = c / g;
+        uint32_t w = ns[c];
+        int arrivals = 0;
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dx = -1; dx <= 1; dx++) {
+                const int64_t e = ((cy + dy + g) % g) * g + (cx + dx + g) % g;
+                const unsigned mk = mask[e];
+                int check;
+                if (dx == 0 && dy == 0) check = (mk & ~CENTRE_BIT) != 0;
+                else if (sends_to(mk, -dx, -dy)) check = 1, arrivals = 1;
+                else continue;
+                for (uint32_t k = st[e]; k < st[e + 1]; k++) {
+                    if (check && cell_of(E, E->px[k], E->py[k]) != c) continue;
+                    E->tx[w] = E->px[k];
+                    E->ty[w] = E->py[k];
+                    E->tid[w] = E->pid[k];
+                    w++;
+                }
+            }
+        if (arrivals) /* insertion sort by id; cells hold a handful of points */
+            for (uint32_t k = ns[c] + 1; k < w; k++) {
+                const uint32_t id = E->tid[k];
+                const double x = E->tx[k], y = E->ty[k];
+                uint32_t j = k;
+                while (j > ns[c] && E->tid[j - 1] > id) {
+                    E->tid[j] = E->tid[j - 1];
+                    E->tx[j] = E->tx[j - 1];
+                    E->ty[j] = E->ty[j - 1];
+                    j--;
+                }
+                E->tid[j] = id;
+                E->tx[j] = x;
+                E->ty[j] = y;
+            }
+        if ((int)(w - ns[c]) > maxcell) maxcell = (int)(w - ns[c]);
+    }
     double *t;
     t = E->px; E->px = E->tx; E->tx = t;
     t = E->py; E->py = E->ty; E->ty = t;
-    int64_t *ti = E->pid; E->pid = E->tid; E->tid = ti;
-    int maxcell = 0;
-    for (int64_t c = 0; c < cells; c++) {
-        uint32_t s = st[c], e = st[c + 1];
-        if ((int)(e - s) > maxcell) maxcell = (int)(e - s);
-        for (uint32_t k = s + 1; k < e; k++) { /* insertion sort by id */
-            int64_t id = E->pid[k];
-            double x = E->px[k], y = E->py[k];
-            uint32_t j = k;
-            while (j > s && E->pid[j - 1] > id) {
-                E->pid[j] = E->pid[j - 1];
-                E->px[j] = E->px[j - 1];
-                E->py[j] = E->py[j - 1];
-                j--;
-            }
-            E->pid[j] = id;
-            E->px[j] = x;
-            E->py[j] = y;
-        }
-    }
+    uint32_t *u;
+    u = E->pid; E->pid = E->tid; E->tid = u;
+    u = E->start; E->start = E->start2; E->start2 = u;
     E->maxcell = maxcell;
     return ensure_scratch(E);
 }
@@ -151,18 +191,19 @@ cfpo_engine *cfpo_engine_create(int64_t n, const cfpo_options *o, char *err, siz
     size_t nn = (size_t)n, nc = (size_t)E->cells;
     E->px = malloc(nn * sizeof(double));
     E->py = malloc(nn * sizeof(double));
-    E->pid = malloc(nn * sizeof(int64_t));
+    E->pid = malloc(nn * sizeof(uint32_t));
     E->tx = malloc(nn * sizeof(double));
     E->ty = malloc(nn * sizeof(double));
-    E->tid = malloc(nn * sizeof(int64_t));
+    E->tid = malloc(nn * sizeof(uint32_t));
     E->disp = calloc(2 * nn, sizeof(float));
     E->start = malloc((nc + 1) * sizeof(uint32_t));
+    E->start2 = malloc((nc + 1) * sizeof(uint32_t));
     E->need = malloc(nc);
     E->mask = calloc(nc, sizeof(uint16_t));
     E->rowsum = malloc((size_t)E->G.g * sizeof(double));
     E->rowmin = malloc((size_t)E->G.g * sizeof(double));
     E->scratch = calloc((size_t)E->nthreads, sizeof(double *));
-    if (!E->px || !E->py || !E->pid || !E->tx || !E->ty || !E->tid || !E->disp || !E->start ||
+    if (!E->px || !E->py || !E->pid || !E->tx || !E->ty || !E->tid || !E->disp || !E->start || !E->start2 ||
         !E->need || !E->mask || !E->rowsum || !E->rowmin || !E->scratch) {
         snprintf(err, errlen, "out of memory for n = %lld (%.1f GB needed)", (long long)n,
                  (double)cfpo_engine_bytes(n, o->variant, E->nthreads) / 1e9);
@@ -170,19 +211,23 @@ cfpo_engine *cfpo_engine_create(int64_t n, const cfpo_options *o, char *err, siz
         return NULL;
     }
     memset(E->need, 1, nc);
-    /* Initial set, straight into the buckets: cell by cell, ids in order. */
+    /* Initial set, straight into the buckets: cell by cell, ids in order,
+     * every point inside its cell (grid.c guarantees it). */
     int64_t k = 0;
     const int64_t g = E->G.g;
+    int maxcell = 0;
     for (int64_t c = 0; c < E->cells; c++) {
         E->start[c] = (uint32_t)k;
         uint64_t cnt = cfpo_grid_cell_count(&E->G, (uint64_t)c);
+        if ((int)cnt > maxcell) maxcell = (int)cnt;
         for (uint64_t j = 0; j < cnt; j++, k++) {
             cfpo_grid_cell_point(&E->G, c % g, c / g, j, &E->px[k], &E->py[k]);
-            E->pid[k] = k;
+            E->pid[k] = (uint32_t)k;
         }
     }
     E->start[E->cells] = (uint32_t)k;
-    if (rebuild(E) != 0) { /* also checks that every point is in its cell */
+    E->maxcell = maxcell;
+    if (ensure_scratch(E) != 0) {
         snprintf(err, errlen, "out of memory");
         cfpo_engine_free(E);
         return NULL;
@@ -258,7 +303,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t cx, int64_t cy, double *buf, i
         const double gx = cfpo_wrap01(nx + ox), gy = cfpo_wrap01(ny + oy);
         E->px[s + k] = gx;
         E->py[s + k] = gy;
-        const int64_t id = E->pid[s + k];
+        const uint32_t id = E->pid[s + k];
         E->disp[2 * id] += (float)(nx - x);
         E->disp[2 * id + 1] += (float)(ny - y);
         int ddx = wrap_offset(cfpo_grid_coord(&E->G, gx) - cx, g);
@@ -291,13 +336,13 @@ int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
     }
     *solved = solv;
     if (moves == 0) return 0;
-    /* Mark the blocks that changed; rebuild if a point changed cell. */
+    /* Mark the blocks that changed; move points that changed cell; then
+     * clear the masks. */
     int crossed = 0;
     for (int64_t t = 0; t < T; t++) {
         const int64_t cy = a + p * (t / per), cx = b + p * (t % per), c = cy * g + cx;
-        unsigned mk = E->mask[c];
+        const unsigned mk = E->mask[c];
         if (!mk) continue;
-        E->mask[c] = 0;
         mark_block(E, cx, cy);
         for (int bit = 0; bit < 9; bit++)
             if (bit != 4 && (mk >> bit & 1u)) {
@@ -305,10 +350,12 @@ int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
                 mark_block(E, cx + bit % 3 - 1, cy + bit / 3 - 1);
             }
     }
-    if (crossed && rebuild(E) != 0) {
-        fprintf(stderr, "cfpo: out of memory while rebuilding buckets\n");
+    if (crossed && relocate(E) != 0) {
+        fprintf(stderr, "cfpo: out of memory while moving points between cells\n");
         exit(1);
     }
+    for (int64_t t = 0; t < T; t++)
+        E->mask[(a + p * (t / per)) * g + b + p * (t % per)] = 0;
     return moves;
 }
 
