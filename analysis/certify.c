@@ -1,0 +1,376 @@
+/* certify.c - see certify.h.
+ *
+ * Why the neighbourhoods are large enough (rho = largest empty circle of X,
+ * d(x) = d(x, X \ {x}); every set below is taken with all periodic images,
+ * so small n needs no special case):
+ *
+ * Farthest point test. Let S_x be the square of half-side s = rho (a hair
+ * more) around x, or the whole torus when s reaches 1/2. The Voronoi cell
+ * of x lies in the disk of radius rho, so inside S_x. Outside S_x the
+ * nearest point of X is not x, hence d(p, X\{x}) = d(p, X) there. So
+ *   max_p d(p, X\{x}) = max(T1, T2),
+ *   T1 = max over S_x of d(p, X\{x}): LocalCFPO on S_x; the nearest point
+ *        of X\{x} to any p in S_x is within rho + d(x) of p (through x's
+ *        nearest neighbour when p is in x's cell, within rho otherwise),
+ *        so the points within (Chebyshev) s + rho + d(x) of x suffice;
+ *   T2 = max over the grid cells not inside S_x of the cell's own
+ *        largest empty circle radius (max over the cell of d(p, X)). Those
+ *        cells cover the outside of S_x, and the parts of them inside S_x
+ *        add nothing above T1 since d(p, X) <= d(p, X\{x}).
+ * A cell's radius is LocalCFPO on the cell with the points of a square
+ * around it, grown until the answer is no larger than the margin between
+ * the cell and the square's edge (no point outside can then be nearer).
+ *
+ * Local Characterization Theorem. D(x), S(x) as in certify.h; both
+ * properties are one LocalCFPO each on S(x): with all points of D(x)
+ * (property 1) and without x (property 2). */
+#include "certify.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom.h"
+#include "stats.h"
+
+typedef struct {
+    size_t g;
+    double L;
+    size_t *start, *idx;
+} grid;
+
+typedef struct {
+    const double *xy;
+    size_t n;
+    grid G;
+    const double *nn;
+    double delta, rho, Dn;
+    const double *rho_cell;
+    double *arg_cell;       /* 2 per cell: where the cell's radius is reached */
+    const size_t *by_rho;   /* cells by decreasing radius */
+} ctx;
+
+/* Per-thread buffers: collected images (position, id), a subset, scratch. */
+typedef struct {
+    double *x, *y, *sx, *sy, *scratch;
+    size_t *id;
+    size_t m, cap;
+} work;
+
+static size_t coord(double v, size_t g)
+{
+    size_t c = (size_t)(v * (double)g);
+    return c >= g ? g - 1 : c;
+}
+
+static int grid_build(const double *xy, size_t n, grid *G)
+{
+    size_t g = (size_t)floor(sqrt((double)n / 2.0));
+    G->g = g = g < 1 ? 1 : g;
+    G->L = 1.0 / (double)g;
+    G->start = calloc(g * g + 1, sizeof *G->start);
+    G->idx = malloc(n * sizeof *G->idx);
+    if (!G->start || !G->idx) return -1;
+    for (size_t i = 0; i < n; i++) G->start[coord(xy[2 * i + 1], g) * g + coord(xy[2 * i], g) + 1]++;
+    for (size_t c = 0; c < g * g; c++) G->start[c + 1] += G->start[c];
+    for (size_t i = 0; i < n; i++) G->idx[G->start[coord(xy[2 * i + 1], g) * g + coord(xy[2 * i], g)]++] = i;
+    for (size_t c = g * g; c > 0; c--) G->start[c] = G->start[c - 1];
+    G->start[0] = 0;
+    return 0;
+}
+
+static int work_reserve(work *w, size_t m)
+{
+    if (m <= w->cap) return 0;
+    size_t cap = w->cap ? w->cap : 64;
+    while (cap < m) cap *= 2;
+    double *x = realloc(w->x, cap * sizeof *x);
+    if (x) w->x = x;
+    double *y = realloc(w->y, cap * sizeof *y);
+    if (y) w->y = y;
+    double *sx = realloc(w->sx, cap * sizeof *sx);
+    if (sx) w->sx = sx;
+    double *sy = realloc(w->sy, cap * sizeof *sy);
+    if (sy) w->sy = sy;
+    size_t *id = realloc(w->id, cap * sizeof *id);
+    if (id) w->id = id;
+    double *sc = realloc(w->scratch, cfpo_solver_scratch(cap) * sizeof *sc);
+    if (sc) w->scratch = sc;
+    if (!x || !y || !sx || !sy || !id || !sc) return -1;
+    w->cap = cap;
+    return 0;
+}
+
+static void work_free(work *w)
+{
+    free(w->x); free(w->y); free(w->sx); free(w->sy); free(w->id); free(w->scratch);
+}
+
+static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+/* All images of points within Chebyshev distance H of (cx, cy), in a fixed
+ * order (cells by rows, points by index inside a cell). */
+static int collect(const ctx *C, double cx, double cy, double H, work *w)
+{
+    const long g = (long)C->G.g;
+    const long ix0 = (long)floor((cx - H) * g), ix1 = (long)floor((cx + H) * g);
+    const long iy0 = (long)floor((cy - H) * g), iy1 = (long)floor((cy + H) * g);
+    w->m = 0;
+    for (long iy = iy0; iy <= iy1; iy++) {
+        const long oy = floordiv(iy, g), wy = iy - oy * g;
+        for (long ix = ix0; ix <= ix1; ix++) {
+            const long ox = floordiv(ix, g), wx = ix - ox * g;
+            const size_t cell = (size_t)(wy * g + wx);
+            for (size_t q = C->G.start[cell]; q < C->G.start[cell + 1]; q++) {
+                const size_t j = C->G.idx[q];
+                const double X = C->xy[2 * j] + (double)ox, Y = C->xy[2 * j + 1] + (double)oy;
+                if (fabs(X - cx) > H || fabs(Y - cy) > H) continue;
+                if (work_reserve(w, w->m + 1) != 0) return -1;
+                w->x[w->m] = X;
+                w->y[w->m] = Y;
+                w->id[w->m] = j;
+                w->m++;
+            }
+        }
+    }
+    return 0;
+}
+
+/* Copies into sx/sy the collected images within Chebyshev H of (cx, cy),
+ * leaving out the images of point `skip` (pass n to keep all). */
+static int subset(const work *w, double cx, double cy, double H, size_t skip, double *sx, double *sy)
+{
+    int m = 0;
+    for (size_t t = 0; t < w->m; t++) {
+        if (w->id[t] == skip || fabs(w->x[t] - cx) > H || fabs(w->y[t] - cy) > H) continue;
+        sx[m] = w->x[t];
+        sy[m] = w->y[t];
+        m++;
+    }
+    return m;
+}
+
+/* Largest empty circle radius of X restricted to centres in cell c. */
+static int cell_radius(const ctx *C, size_t c, work *w, double *out, double *arg)
+{
+    const size_t g = C->G.g;
+    const double L = C->G.L, x0 = (double)(c % g) * L, y0 = (double)(c / g) * L;
+    const cfpo_square S = {x0, y0, x0 + L, y0 + L};
+    const double cx = x0 + 0.5 * L, cy = y0 + 0.5 * L;
+    for (double H = 1.5 * L;; H *= 2) {
+        if (collect(C, cx, cy, H, w) != 0) return -1;
+        if (w->m == 0) continue;
+        double px, py;
+        double r2 = cfpo_local_solve(w->x, w->y, (int)w->m, -1, S, cx, cy, -1, &px, &py, w->scratch);
+        if (r2 < 0) return -2;
+        if (sqrt(r2) <= H - 0.5 * L) {
+            *out = sqrt(r2);
+            arg[0] = cfpo_wrap01(px);
+            arg[1] = cfpo_wrap01(py);
+            return 0;
+        }
+    }
+}
+
+/* T2: the largest cell radius among cells not inside [x-s, x+s]^2; *cell
+ * receives that cell. */
+static double outside_radius(const ctx *C, double x, double y, double s, size_t *cell)
+{
+    const size_t g = C->G.g, cells = g * g;
+    const double L = C->G.L;
+    for (size_t t = 0; t < cells; t++) {
+        const size_t c = C->by_rho[t];
+        const double cx = ((double)(c % g) + 0.5) * L, cy = ((double)(c / g) + 0.5) * L;
+        int inside = fabs(cfpo_torus_diff(cx, x)) + 0.5 * L <= s && fabs(cfpo_torus_diff(cy, y)) + 0.5 * L <= s;
+        if (!inside) {
+            *cell = c;
+            return C->rho_cell[c];
+        }
+    }
+    return 0;
+}
+
+typedef struct {
+    double fp, p1, p2; /* violations, absolute */
+    double tx, ty;     /* a farthest point of X \ {x} on the torus */
+} point_result;
+
+static int check_point(const ctx *C, size_t i, work *w, point_result *res)
+{
+    const double x = C->xy[2 * i], y = C->xy[2 * i + 1], di = C->nn[i];
+    double s = C->rho * (1 + 1e-9) + 1e-12;
+    const int whole = s >= 0.5;
+    if (whole) s = 0.5;
+    const double H1 = (s + C->rho + di) * (1 + 1e-9) + 1e-12;
+    const double h = fmax(fmax(3 * C->delta, C->delta + di), C->Dn) * (1 + 1e-9);
+    if (collect(C, x, y, fmax(H1, h), w) != 0) return -1;
+    double px, py;
+
+    /* Farthest point test. */
+    int m = subset(w, x, y, H1, i, w->sx, w->sy);
+    const cfpo_square Sx = {x - s, y - s, x + s, y + s};
+    double r2 = cfpo_local_solve(w->sx, w->sy, m, -1, Sx, x, y, -1, &px, &py, w->scratch);
+    if (r2 < 0) return -2;
+    size_t cell = 0;
+    double T2 = whole ? 0 : outside_radius(C, x, y, s, &cell);
+    res->fp = fmax(sqrt(r2), T2) - di;
+    res->tx = T2 > sqrt(r2) ? C->arg_cell[2 * cell] : cfpo_wrap01(px);
+    res->ty = T2 > sqrt(r2) ? C->arg_cell[2 * cell + 1] : cfpo_wrap01(py);
+
+    /* Local Characterization Theorem on D = [x-h, x+h]^2, S = D eroded. */
+    const double e = h - C->delta;
+    const cfpo_square S = {x - e, y - e, x + e, y + e};
+    m = subset(w, x, y, h, C->n, w->sx, w->sy);
+    r2 = cfpo_local_solve(w->sx, w->sy, m, -1, S, x, y, -1, &px, &py, w->scratch);
+    if (r2 < 0) return -2;
+    res->p1 = sqrt(r2) - C->delta;
+    m = subset(w, x, y, h, i, w->sx, w->sy);
+    double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
+    r2 = cfpo_local_solve(w->sx, w->sy, m, -1, S, x, y, -1, &px, &py, w->scratch);
+    if (r2 < 0) return -2;
+    res->p2 = sqrt(r2) - sqrt(dY2);
+    return 0;
+}
+
+typedef struct {
+    double r;
+    size_t c;
+} cell_key;
+
+static int by_radius_desc(const void *a, const void *b)
+{
+    const cell_key *p = a, *q = b;
+    if (p->r != q->r) return p->r > q->r ? -1 : 1;
+    return p->c < q->c ? -1 : (p->c > q->c);
+}
+
+typedef int (*item_fn)(const ctx *C, size_t t, work *w, void *out);
+
+static int cell_item(const ctx *C, size_t t, work *w, void *out)
+{
+    return cell_radius(C, t, w, (double *)out + t, C->arg_cell + 2 * t);
+}
+
+static int point_item(const ctx *C, size_t t, work *w, void *out)
+{
+    return check_point(C, t, w, (point_result *)out + t);
+}
+
+/* fn over 0..count-1 in parallel, each thread with its own buffers.
+ * 0, or the first failure seen (-1 memory, -2 solver). */
+static int parallel_over(const ctx *C, size_t count, item_fn fn, void *out)
+{
+    int status = 0;
+#pragma omp parallel
+    {
+        work w = {0};
+        int mine = 0;
+#pragma omp for schedule(dynamic, 64)
+        for (size_t t = 0; t < count; t++)
+            if (mine == 0) mine = fn(C, t, &w, out);
+#pragma omp critical(an_certify_status)
+        if (mine < 0 && status == 0) status = mine;
+        work_free(&w);
+    }
+    return status;
+}
+
+static void summarise(const point_result *pr, size_t n, double tol, double Dn, an_certificate *c,
+                      double *viol, double *target)
+{
+    for (size_t i = 0; i < n && viol; i++) viol[i] = pr[i].fp / Dn;
+    for (size_t i = 0; i < n && target; i++) {
+        target[2 * i] = pr[i].tx;
+        target[2 * i + 1] = pr[i].ty;
+    }
+    c->fp_max_violation = c->p1_max_violation = c->p2_max_violation = -INFINITY;
+    for (size_t i = 0; i < n; i++) {
+        c->fp_pass += pr[i].fp <= tol;
+        c->p1_pass += pr[i].p1 <= tol;
+        c->p2_pass += pr[i].p2 <= tol;
+        c->lct_pass += pr[i].p1 <= tol && pr[i].p2 <= tol;
+        if (pr[i].fp / Dn > c->fp_max_violation) {
+            c->fp_max_violation = pr[i].fp / Dn;
+            c->fp_worst = i;
+        }
+        c->p1_max_violation = fmax(c->p1_max_violation, pr[i].p1 / Dn);
+        c->p2_max_violation = fmax(c->p2_max_violation, pr[i].p2 / Dn);
+    }
+    c->fpd = c->fp_pass == n && c->lct_pass == n;
+}
+
+int an_certify(const double *xy, size_t n, double tol_rel, an_certificate *c, double *viol,
+               double *target, char *err, size_t errlen)
+{
+    memset(c, 0, sizeof *c);
+    c->n = n;
+    c->tol_rel = tol_rel;
+    if (n < 2) {
+        snprintf(err, errlen, "the certificate needs at least 2 points");
+        return -1;
+    }
+    ctx C = {.xy = xy, .n = n, .Dn = cfpo_delta_bound((double)n)};
+    double *nn = malloc(n * sizeof *nn);
+    point_result *pr = malloc(n * sizeof *pr);
+    double *rho_cell = NULL, *arg_cell = NULL;
+    size_t *by_rho = NULL;
+    cell_key *keys = NULL;
+    int status = 0;
+    double dmin, davg;
+    if (!nn || !pr || grid_build(xy, n, &C.G) != 0 || cfpo_nn_stats(xy, n, nn, &dmin, &davg) != 0) {
+        status = -1;
+        goto done;
+    }
+    const size_t cells = C.G.g * C.G.g;
+    rho_cell = malloc(cells * sizeof *rho_cell);
+    arg_cell = malloc(2 * cells * sizeof *arg_cell);
+    by_rho = malloc(cells * sizeof *by_rho);
+    if (!rho_cell || !arg_cell || !by_rho) { status = -1; goto done; }
+    C.arg_cell = arg_cell;
+    C.nn = nn;
+    C.delta = dmin * C.Dn;
+    status = parallel_over(&C, cells, cell_item, rho_cell);
+    if (status < 0) goto done;
+    keys = malloc(cells * sizeof *keys);
+    if (!keys) { status = -1; goto done; }
+    C.rho = 0;
+    for (size_t t = 0; t < cells; t++) {
+        keys[t] = (cell_key){rho_cell[t], t};
+        C.rho = fmax(C.rho, rho_cell[t]);
+    }
+    qsort(keys, cells, sizeof *keys, by_radius_desc);
+    for (size_t t = 0; t < cells; t++) by_rho[t] = keys[t].c;
+    C.rho_cell = rho_cell;
+    C.by_rho = by_rho;
+    status = parallel_over(&C, n, point_item, pr);
+    if (status < 0) goto done;
+    c->delta = dmin;
+    c->covering = C.rho / C.Dn;
+    summarise(pr, n, tol_rel * C.Dn, C.Dn, c, viol, target);
+done:
+    if (status == -1) snprintf(err, errlen, "certificate: out of memory");
+    if (status == -2) snprintf(err, errlen, "certificate: the local solver found no candidate");
+    free(nn); free(pr); free(rho_cell); free(arg_cell); free(by_rho); free(keys);
+    free(C.G.start); free(C.G.idx);
+    return status < 0 ? -1 : 0;
+}
+
+void an_certificate_merge(an_certificate *a, const an_certificate *b)
+{
+    if (a->n == 0) { *a = *b; return; }
+    if (b->fp_max_violation > a->fp_max_violation) {
+        a->fp_max_violation = b->fp_max_violation;
+        a->fp_worst = b->fp_worst;
+    }
+    a->n += b->n;
+    a->delta = fmin(a->delta, b->delta);
+    a->covering = fmax(a->covering, b->covering);
+    a->fp_pass += b->fp_pass;
+    a->p1_pass += b->p1_pass;
+    a->p2_pass += b->p2_pass;
+    a->lct_pass += b->lct_pass;
+    a->p1_max_violation = fmax(a->p1_max_violation, b->p1_max_violation);
+    a->p2_max_violation = fmax(a->p2_max_violation, b->p2_max_violation);
+    a->fpd = a->fpd && b->fpd;
+}

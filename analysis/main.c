@@ -1,0 +1,319 @@
+/* main.c - the `cfpo-analyze` command: options, the loop over the input
+ * sets, averaging, the output folder and the summary line. Every number
+ * comes from the modules beside it; this file only talks to the user. */
+#include <getopt.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "certify.h"
+#include "cfpo.h"
+#include "cli.h"
+#include "hsd.h"
+#include "nnhist.h"
+#include "omp_compat.h"
+#include "outdir.h"
+#include "pointfile.h"
+#include "power.h"
+#include "report.h"
+#include "rings.h"
+
+static const char *prog = "cfpo-analyze";
+
+typedef struct {
+    const char *out;
+    int K, width, exact, check, certify, quiet, threads;
+    double cert_tol;
+    char **files;
+    int nfiles;
+} options;
+
+static void usage(void)
+{
+    printf("Usage: cfpo-analyze [options] FILE...\n"
+           "Power spectrum, radially averaged power spectrum (RAPS), anisotropy, distance\n"
+           "statistics and an optional FPD certificate of point sets on the unit torus.\n"
+           "Several files (all with the same n) are averaged, as the paper averages 10 sets.\n"
+           "Writes an output folder and prints one SUMMARY line on stdout.\n\n"
+           "  -o, --output DIR     output folder (default: NAME.analysis for one file\n"
+           "                       NAME.EXT, avg.analysis for several); an earlier output\n"
+           "                       folder of this tool is replaced, nothing else is\n"
+           "  -K, --kmax K         frequencies k in [-K, K]^2 (default: ceil(6 sqrt(n)),\n"
+           "                       between 8 and 2048; at most %d)\n"
+           "      --exact          direct summation instead of the NUFFT (O(n K^2))\n"
+           "      --check          compute both and report the largest difference\n"
+           "                       |P - P_exact| / max(P_exact, 1) as check_maxdiff\n"
+           "      --width W        NUFFT kernel width, 4..16 (default %d)\n"
+           "      --certify        FPD certificate: can any single point be moved to\n"
+           "                       increase its distance to the rest? (exact)\n"
+           "      --cert-tol T     certificate tolerance relative to Delta(n) (default %g)\n"
+           "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
+           "  -q, --quiet          no progress line\n"
+           "  -h, --help           this help\n"
+           "  -V, --version        version\n\n"
+           "Input formats: %s\n"
+           "Output folder: spectrum.txt (gnuplot nonuniform matrix), raps.txt, nn_hist.txt,\n"
+           "stats.json, plot.gp (gnuplot plot.gp draws them). See analysis/README.md.\n"
+           "Exit status: 0 success, 1 runtime failure, 2 usage error.\n",
+           AN_KMAX, AN_NUFFT_WIDTH, AN_CERT_TOL, omp_get_num_procs(), PF_EXTENSIONS);
+}
+
+static void parse(int argc, char **argv, options *o)
+{
+    enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL };
+    static const struct option longs[] = {
+        {"output", required_argument, 0, 'o'},  {"kmax", required_argument, 0, 'K'},
+        {"exact", no_argument, 0, OPT_EXACT},   {"check", no_argument, 0, OPT_CHECK},
+        {"width", required_argument, 0, OPT_WIDTH}, {"certify", no_argument, 0, OPT_CERTIFY},
+        {"cert-tol", required_argument, 0, OPT_CERT_TOL}, {"threads", required_argument, 0, 't'},
+        {"quiet", no_argument, 0, 'q'},         {"help", no_argument, 0, 'h'},
+        {"version", no_argument, 0, 'V'},       {0, 0, 0, 0}};
+    memset(o, 0, sizeof *o);
+    o->cert_tol = AN_CERT_TOL;
+    int c;
+    int64_t v;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, ":o:K:t:qhV", longs, NULL)) != -1) {
+        switch (c) {
+        case 'o': o->out = optarg; break;
+        case 'K':
+            if (cli_parse_i64(optarg, 1, AN_KMAX, &v) != 0)
+                cli_usage_error(prog, "bad -K '%s' (an integer in [1, %d])", optarg, AN_KMAX);
+            o->K = (int)v;
+            break;
+        case OPT_EXACT: o->exact = 1; break;
+        case OPT_CHECK: o->check = 1; break;
+        case OPT_WIDTH:
+            if (cli_parse_i64(optarg, 4, 16, &v) != 0)
+                cli_usage_error(prog, "bad --width '%s' (an integer in [4, 16])", optarg);
+            o->width = (int)v;
+            break;
+        case OPT_CERTIFY: o->certify = 1; break;
+        case OPT_CERT_TOL:
+            if (cli_parse_double(optarg, 0, 1, &o->cert_tol) != 0)
+                cli_usage_error(prog, "bad --cert-tol '%s' (a number in [0, 1])", optarg);
+            break;
+        case 't':
+            if (cli_parse_i64(optarg, 1, 4096, &v) != 0)
+                cli_usage_error(prog, "bad --threads '%s' (an integer in [1, 4096])", optarg);
+            o->threads = (int)v;
+            break;
+        case 'q': o->quiet = 1; break;
+        case 'h': usage(); exit(0);
+        case 'V': printf("cfpo-analyze %s\n", CFPO_VERSION); exit(0);
+        case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
+        default: cli_usage_error(prog, "unknown option '%s'", argv[optind - 1]);
+        }
+    }
+    o->files = argv + optind;
+    o->nfiles = argc - optind;
+    if (o->nfiles < 1) cli_usage_error(prog, "no input file");
+}
+
+static int default_K(size_t n)
+{
+    double K = ceil(6 * sqrt((double)n));
+    return K < 8 ? 8 : (K > 2048 ? 2048 : (int)K);
+}
+
+/* NAME.analysis in the current folder for one file NAME.EXT. */
+static char *default_out(const options *o)
+{
+    if (o->nfiles > 1) return strdup("avg.analysis");
+    const char *slash = strrchr(o->files[0], '/');
+    const char *base = slash ? slash + 1 : o->files[0];
+    const char *dot = strrchr(base, '.');
+    size_t len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+    char *s = malloc(len + 16);
+    if (s) snprintf(s, len + 16, "%.*s.analysis", (int)len, base);
+    return s;
+}
+
+/* ------------------------------------------------------------ the run */
+
+typedef struct {
+    options opt;
+    an_outdir out;
+    int out_begun;
+    cli_progress progress;
+    size_t n;
+    int K, set;
+    double *P, *Psum, *Pref;
+    double *dmin, *davg;
+    uint64_t hist[AN_NN_BINS];
+    an_certificate cert;
+    an_nufft_info nufft;
+    double check_maxdiff, spectrum_seconds;
+} run;
+
+static run R;
+
+static void fail(const char *fmt, ...) __attribute__((noreturn, format(printf, 1, 2)));
+static void fail(const char *fmt, ...)
+{
+    char msg[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    cli_progress_end(&R.progress);
+    if (R.out_begun) an_outdir_abort(&R.out);
+    cli_fail(prog, "%s", msg);
+}
+
+static void on_exact_progress(double frac, void *user)
+{
+    (void)user;
+    cli_progress_line(&R.progress, 0, "set %d/%d: exact spectrum %.0f%%", R.set + 1,
+                      R.opt.nfiles, 100 * frac);
+}
+
+/* First set: fixes n and K, allocates, opens the output folder. */
+static void start(const char *file, size_t n)
+{
+    char err[1024];
+    R.n = n;
+    R.K = R.opt.K ? R.opt.K : default_K(n);
+    const size_t N = an_side(R.K) * an_side(R.K);
+    R.P = malloc(N * sizeof *R.P);
+    R.Psum = calloc(N, sizeof *R.Psum);
+    R.Pref = R.opt.check ? malloc(N * sizeof *R.Pref) : NULL;
+    R.dmin = malloc((size_t)R.opt.nfiles * sizeof *R.dmin);
+    R.davg = malloc((size_t)R.opt.nfiles * sizeof *R.davg);
+    if (!R.P || !R.Psum || (R.opt.check && !R.Pref) || !R.dmin || !R.davg)
+        fail("%s: out of memory for K = %d", file, R.K);
+    char *out = R.opt.out ? strdup(R.opt.out) : default_out(&R.opt);
+    if (!out) fail("out of memory");
+    if (an_outdir_begin(&R.out, out, err, sizeof err) != 0) fail("%s", err);
+    free(out);
+    R.out_begun = 1;
+}
+
+static void spectrum(const char *file, const double *xy, size_t n)
+{
+    char err[1024];
+    double t0 = cli_now();
+    int bad = R.opt.exact ? an_power_exact(xy, n, R.K, R.P, on_exact_progress, NULL, err, sizeof err)
+                          : an_power_nufft(xy, n, R.K, R.opt.width, R.P, &R.nufft, err, sizeof err);
+    if (bad) fail("%s: %s", file, err);
+    R.spectrum_seconds += cli_now() - t0;
+    if (R.opt.check) {
+        bad = R.opt.exact ? an_power_nufft(xy, n, R.K, R.opt.width, R.Pref, &R.nufft, err, sizeof err)
+                          : an_power_exact(xy, n, R.K, R.Pref, on_exact_progress, NULL, err, sizeof err);
+        if (bad) fail("%s: %s", file, err);
+        double d = R.opt.exact ? an_power_maxdiff(R.Pref, R.P, R.K) : an_power_maxdiff(R.P, R.Pref, R.K);
+        if (!(d <= R.check_maxdiff)) R.check_maxdiff = d;
+    }
+    const size_t N = an_side(R.K) * an_side(R.K);
+    for (size_t t = 0; t < N; t++) R.Psum[t] += R.P[t];
+}
+
+static void distances(const char *file, const double *xy, size_t n)
+{
+    if (n < 2) return;
+    an_nn nn;
+    if (an_nn_compute(xy, n, &nn, R.hist) != 0) fail("%s: out of memory", file);
+    R.dmin[R.set] = nn.delta_min;
+    R.davg[R.set] = nn.delta_avg;
+    free(nn.nn);
+}
+
+static void certificate(const char *file, const double *xy, size_t n)
+{
+    char err[1024];
+    an_certificate c;
+    cli_progress_line(&R.progress, 1, "set %d/%d: certificate", R.set + 1, R.opt.nfiles);
+    if (an_certify(xy, n, R.opt.cert_tol, &c, NULL, NULL, err, sizeof err) != 0)
+        fail("%s: %s", file, err);
+    an_certificate_merge(&R.cert, &c);
+}
+
+static void analyze_set(const char *file)
+{
+    char err[1024];
+    double *xy;
+    size_t n;
+    if (pf_read(file, &xy, &n, err, sizeof err) != 0) fail("%s", err);
+    if (R.set == 0) start(file, n);
+    else if (n != R.n)
+        fail("%s: has %zu points, but %s has %zu; averaged sets must have the same n", file, n,
+             R.opt.files[0], R.n);
+    if (R.opt.certify && n < 2) fail("%s: the certificate needs at least 2 points", file);
+    cli_progress_line(&R.progress, 1, "set %d/%d: spectrum", R.set + 1, R.opt.nfiles);
+    spectrum(file, xy, n);
+    distances(file, xy, n);
+    if (R.opt.certify) certificate(file, xy, n);
+    free(xy);
+}
+
+static void write_outputs(const an_report *rep)
+{
+    char err[1024];
+    char *p;
+#define WRITE(name, call)                                        \
+    do {                                                         \
+        if (!(p = an_outdir_file(&R.out, name))) fail("out of memory"); \
+        if ((call) != 0) { free(p); fail("%s", err); }           \
+        free(p);                                                 \
+    } while (0)
+    WRITE("spectrum.txt", an_write_spectrum(p, R.Psum, R.K, err, sizeof err));
+    WRITE("raps.txt", an_write_raps(p, rep, err, sizeof err));
+    WRITE("nn_hist.txt", an_write_nnhist(p, rep, err, sizeof err));
+    WRITE("plot.gp", an_write_plot(p, rep, err, sizeof err));
+    WRITE("stats.json", an_write_json(p, rep, err, sizeof err));
+#undef WRITE
+}
+
+static double mean_of(const double *v, int m)
+{
+    double s = 0;
+    for (int i = 0; i < m; i++) s += v[i];
+    return s / m;
+}
+
+int main(int argc, char **argv)
+{
+    parse(argc, argv, &R.opt);
+    if (R.opt.threads) omp_set_num_threads(R.opt.threads);
+    cli_progress_init(&R.progress, R.opt.quiet);
+    R.check_maxdiff = NAN;
+    const double t0 = cli_now();
+    for (R.set = 0; R.set < R.opt.nfiles; R.set++) analyze_set(R.opt.files[R.set]);
+    cli_progress_end(&R.progress);
+
+    const int sets = R.opt.nfiles;
+    const size_t N = an_side(R.K) * an_side(R.K);
+    for (size_t t = 0; t < N; t++) R.Psum[t] /= sets;
+    an_rings rings;
+    an_hsd hsd;
+    if (an_rings_compute(R.Psum, R.K, &rings) != 0 || an_hsd_compute(R.Psum, R.K, R.n, &rings, &hsd) != 0)
+        fail("out of memory");
+    char *outname = strdup(R.out.final);
+    if (!outname) fail("out of memory");
+    an_report rep = {
+        .files = (const char *const *)R.opt.files, .sets = sets, .n = R.n, .K = R.K,
+        .exact = R.opt.exact, .nufft = R.nufft, .check_maxdiff = R.check_maxdiff,
+        .delta_min = R.n >= 2 ? R.dmin : NULL, .delta_avg = R.n >= 2 ? R.davg : NULL,
+        .delta_min_mean = R.n >= 2 ? mean_of(R.dmin, sets) : NAN,
+        .delta_avg_mean = R.n >= 2 ? mean_of(R.davg, sets) : NAN,
+        .nn_hist = R.n >= 2 ? R.hist : NULL, .rings = &rings, .hsd = &hsd,
+        .cert = R.opt.certify ? &R.cert : NULL, .threads = omp_get_max_threads(),
+        .spectrum_seconds = R.spectrum_seconds, .out = outname};
+    rep.seconds = cli_now() - t0;
+    write_outputs(&rep);
+    char err[1024];
+    if (an_outdir_commit(&R.out, err, sizeof err) != 0) {
+        R.out_begun = 0;
+        fail("%s", err);
+    }
+    R.out_begun = 0;
+    rep.seconds = cli_now() - t0;
+    rep.peak_bytes = cli_peak_rss();
+    an_print_summary(stdout, &rep);
+    an_rings_free(&rings);
+    free(outname);
+    free(R.P); free(R.Psum); free(R.Pref); free(R.dmin); free(R.davg);
+    return 0;
+}

@@ -1,0 +1,109 @@
+/* rings.c - see rings.h. Two passes over the half plane: sums and counts,
+ * then squared deviations from the ring means (numerically stable), then
+ * the spike. P(-k) = P(k), so the half plane ky > 0 or (ky = 0, kx > 0)
+ * counted twice is the whole ring; the variance is the same either way
+ * but psa's unbiased (count - 1) uses the full ring count, as here. */
+#include "rings.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "power.h"
+
+int an_ring_of(int64_t r2)
+{
+    int64_t i = (int64_t)floor(sqrt((double)r2) + 0.5);
+    while (i * (i + 1) < r2) i++;
+    while (i > 0 && i * (i - 1) >= r2) i--;
+    return (int)i;
+}
+
+static int in_half(int kx, int ky) { return ky > 0 || (ky == 0 && kx > 0); }
+
+void an_rings_free(an_rings *r)
+{
+    free(r->count);
+    free(r->sum);
+    free(r->mean);
+    free(r->aniso_db);
+    memset(r, 0, sizeof *r);
+}
+
+static void sums(const double *P, int K, an_rings *r)
+{
+    for (int ky = 0; ky <= K; ky++)
+        for (int kx = -K; kx <= K; kx++) {
+            if (!in_half(kx, ky)) continue;
+            int i = an_ring_of((int64_t)kx * kx + (int64_t)ky * ky);
+            if (i > K) continue;
+            r->count[i] += 2;
+            r->sum[i] += 2 * P[an_pidx(K, kx, ky)];
+        }
+    for (int i = 1; i <= K; i++) r->mean[i] = r->count[i] ? r->sum[i] / (double)r->count[i] : 0;
+}
+
+static void anisotropy(const double *P, int K, an_rings *r, double *dev)
+{
+    for (int ky = 0; ky <= K; ky++)
+        for (int kx = -K; kx <= K; kx++) {
+            if (!in_half(kx, ky)) continue;
+            int i = an_ring_of((int64_t)kx * kx + (int64_t)ky * ky);
+            if (i > K) continue;
+            double d = P[an_pidx(K, kx, ky)] - r->mean[i];
+            dev[i] += 2 * d * d;
+        }
+    for (int i = 1; i <= K; i++) {
+        double m = r->mean[i];
+        if (r->count[i] < 2 || !(m > 0)) { r->aniso_db[i] = NAN; continue; }
+        double var = dev[i] / (double)(r->count[i] - 1);
+        r->aniso_db[i] = 10 * log10(var / (m * m));
+    }
+}
+
+static void spike(const double *P, int K, an_rings *r)
+{
+    r->spike_ratio = 0;
+    for (int ky = 0; ky <= K; ky++)
+        for (int kx = -K; kx <= K; kx++) {
+            if (!in_half(kx, ky)) continue;
+            int i = an_ring_of((int64_t)kx * kx + (int64_t)ky * ky);
+            if (i > K || !(r->mean[i] > 0)) continue;
+            double q = P[an_pidx(K, kx, ky)] / r->mean[i];
+            if (q > r->spike_ratio) {
+                r->spike_ratio = q;
+                r->spike_P = P[an_pidx(K, kx, ky)];
+                r->spike_mean = r->mean[i];
+                r->spike_kx = kx;
+                r->spike_ky = ky;
+                r->spike_ring = i;
+            }
+        }
+}
+
+int an_rings_compute(const double *P, int K, an_rings *r)
+{
+    memset(r, 0, sizeof *r);
+    r->K = K;
+    const size_t m = (size_t)K + 1;
+    r->count = calloc(m, sizeof *r->count);
+    r->sum = calloc(m, sizeof *r->sum);
+    r->mean = calloc(m, sizeof *r->mean);
+    r->aniso_db = calloc(m, sizeof *r->aniso_db);
+    double *dev = calloc(m, sizeof *dev);
+    if (!r->count || !r->sum || !r->mean || !r->aniso_db || !dev) {
+        free(dev);
+        an_rings_free(r);
+        return -1;
+    }
+    sums(P, K, r);
+    anisotropy(P, K, r, dev);
+    free(dev);
+    spike(P, K, r);
+    r->aniso_db[0] = NAN;
+    r->peak_ring = 1;
+    for (int i = 1; i <= K; i++)
+        if (r->mean[i] > r->mean[r->peak_ring]) r->peak_ring = i;
+    r->peak_mean = r->mean[r->peak_ring];
+    return 0;
+}

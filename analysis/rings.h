@@ -1,0 +1,38 @@
+/* rings.h - statistics of a periodogram over rings of frequencies.
+ *
+ * Owns: the ring of a frequency (ring i holds the integer k with
+ * i - 1/2 <= |k| < i + 1/2, i.e. i(i-1) < |k|^2 <= i(i+1)), the radially
+ * averaged power spectrum (RAPS, the mean of P on each ring), the
+ * anisotropy (10 log10 of the unbiased variance of P on the ring over the
+ * squared mean, in dB, as psa computes it) and the largest single spike
+ * P(k) / (its ring's mean). Rings 1..K are complete inside [-K, K]^2; k = 0
+ * (ring 0) and the corners beyond ring K are left out. */
+#ifndef AN_RINGS_H
+#define AN_RINGS_H
+
+#include <stdint.h>
+
+typedef struct {
+    int K;
+    int64_t *count;    /* [K+1] frequencies on ring i */
+    double *sum;       /* [K+1] sum of P on ring i */
+    double *mean;      /* [K+1] RAPS; mean[0] unused (0) */
+    double *aniso_db;  /* [K+1] anisotropy in dB; NAN where undefined
+                          (fewer than 2 values, or a zero mean) */
+    /* The largest P(k) / mean of its ring, k taken in the half plane
+     * ky > 0 or (ky = 0, kx > 0); ties go to the first in (ky, kx) order. */
+    double spike_ratio, spike_P, spike_mean;
+    int spike_kx, spike_ky, spike_ring;
+    /* The highest ring mean. */
+    double peak_mean;
+    int peak_ring;
+} an_rings;
+
+/* Ring index of a frequency with |k|^2 = r2. */
+int an_ring_of(int64_t r2);
+
+/* 0, or -1 when out of memory. Free with an_rings_free. */
+int an_rings_compute(const double *P, int K, an_rings *r);
+void an_rings_free(an_rings *r);
+
+#endif

@@ -1,0 +1,144 @@
+/* test_certify.c - the FPD certificate.
+ *
+ * Must pass: square lattices (x removed leaves a hole of radius exactly
+ * d(x), every other hole is smaller), two antipodal points, and a set
+ * polished by global FPO moves (each failing point moved to the farthest
+ * point of the others, the certificate's own `target`) until converged.
+ * Must fail: a lattice with one point moved (that point, by about the move),
+ * a lattice with two neighbours removed (every point, through the far hole),
+ * a jittered lattice, uniform random points, a dart-throwing set, two close
+ * points. Exactness against brute force: no sampled point of the torus is
+ * farther from X \ {x} than the certificate's radius, and its target point
+ * reaches that radius. The two tests (farthest point, Local Characterization
+ * Theorem) must reach the same verdict. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "certify.h"
+#include "cfpo.h"
+#include "testsets.h"
+#include "testutil.h"
+
+static int passed_, failed_;
+
+static int cert(const double *xy, size_t n, an_certificate *c, double *viol, double *target)
+{
+    char err[256];
+    int r = an_certify(xy, n, AN_CERT_TOL, c, viol, target, err, sizeof err);
+    if (r) fprintf(stderr, "%s\n", err);
+    return r;
+}
+
+static double dist_rest(const double *xy, size_t n, size_t i, double px, double py)
+{
+    double m = INFINITY;
+    for (size_t j = 0; j < n; j++)
+        if (j != i) m = fmin(m, cfpo_torus_dist2(px, py, xy[2 * j], xy[2 * j + 1]));
+    return sqrt(m);
+}
+
+/* Brute force for point i: a G x G grid over the torus must not beat the
+ * certificate's radius d(x) + viol, and the target must reach it. */
+static void brute(const char *what, const double *xy, size_t n, size_t i, double viol, const double *target)
+{
+    const double D = cfpo_delta_bound((double)n), di = dist_rest(xy, n, i, xy[2 * i], xy[2 * i + 1]);
+    const double radius = di + viol * D;
+    const int G = 96;
+    double best = 0;
+    for (int a = 0; a < G; a++)
+        for (int b = 0; b < G; b++) best = fmax(best, dist_rest(xy, n, i, (a + 0.5) / G, (b + 0.5) / G));
+    double at = dist_rest(xy, n, i, target[2 * i], target[2 * i + 1]);
+    CHECK(best <= radius + 1e-12, "%s point %zu: sampled %g beats the certificate's %g", what, i, best, radius);
+    CHECK(fabs(at - radius) <= 1e-9 * D, "%s point %zu: target reaches %g, radius %g", what, i, at, radius);
+}
+
+static void expect(const char *what, const double *xy, size_t n, int fpd, double max_pass)
+{
+    an_certificate c;
+    double *viol = malloc(n * sizeof *viol), *target = malloc(2 * n * sizeof *target);
+    CHECK(cert(xy, n, &c, viol, target) == 0, "%s: certify failed", what);
+    double frac = (double)c.fp_pass / n;
+    printf("%-18s n=%-5zu fpd=%d pass %.4f lct %.4f max violation %.4g (P1 %.3g, P2 %.3g)\n", what, n,
+           c.fpd, frac, (double)c.lct_pass / n, c.fp_max_violation, c.p1_max_violation, c.p2_max_violation);
+    CHECK(c.fpd == fpd, "%s: fpd = %d", what, c.fpd);
+    CHECK(frac <= max_pass, "%s: pass fraction %g above %g", what, frac, max_pass);
+    CHECK((c.fp_pass == n) == (c.lct_pass == n), "%s: the two tests disagree (%zu vs %zu)", what, c.fp_pass, c.lct_pass);
+    brute(what, xy, n, c.fp_worst, viol[c.fp_worst], target);
+    brute(what, xy, n, 0, viol[0], target);
+    free(viol);
+    free(target);
+}
+
+static void lattices(void)
+{
+    double *xy = ts_lattice(12, 0.3, 0.6);
+    expect("lattice", xy, 144, 1, 1.0);
+    xy[2 * 50] = cfpo_wrap01(xy[2 * 50] + 0.2 / 12);
+    an_certificate c;
+    double viol[144], target[288];
+    cert(xy, 144, &c, viol, target);
+    CHECK(!c.fpd && viol[50] > 0.1 && c.fp_worst == 50, "moved point: fpd %d, violation %g, worst %zu", c.fpd, viol[50], c.fp_worst);
+    brute("moved point", xy, 144, 50, viol[50], target);
+    free(xy);
+    /* Two neighbours removed: a hole of radius 1.118 spacing far from most
+     * points, which every point could move into (T2, the far field). */
+    xy = ts_lattice(12, 0.3, 0.6);
+    memmove(xy + 2 * 70, xy + 2 * 72, 2 * (144 - 72) * sizeof *xy);
+    expect("lattice with a gap", xy, 142, 0, 0.0);
+    free(xy);
+    xy = ts_lattice(20, 0.5, 0.5);
+    ts_jitter(xy, 400, 0.1 / 20, 3);
+    expect("jittered lattice", xy, 400, 0, 0.5);
+    free(xy);
+}
+
+static void random_sets(void)
+{
+    double *xy = ts_uniform(500, 8);
+    expect("uniform", xy, 500, 0, 0.05);
+    free(xy);
+    size_t n;
+    xy = ts_dart(0.75 * cfpo_delta_bound(600), 20000, 4, &n);
+    expect("dart throwing", xy, n, 0, 0.9);
+    free(xy);
+    double two[4] = {0.1, 0.2, 0.6, 0.7};
+    expect("antipodal pair", two, 2, 1, 1.0);
+    double close[4] = {0.1, 0.2, 0.15, 0.2};
+    expect("close pair", close, 2, 0, 0.0);
+}
+
+/* CFPO, then global FPO moves on the failing points until none is left. */
+static void polished(void)
+{
+    const size_t n = 300;
+    cfpo_options o;
+    cfpo_options_init(&o);
+    o.seed = 5;
+    o.threads = 1; /* tiny phases: spinning OpenMP barriers only cost time */
+    char err[256];
+    cfpo_result res;
+    double *xy = malloc(2 * n * sizeof *xy), *viol = malloc(n * sizeof *viol), *target = malloc(2 * n * sizeof *target);
+    CHECK(cfpo_sample((int64_t)n, &o, xy, &res, err, sizeof err) == 0, "cfpo: %s", err);
+    an_certificate c;
+    int rounds = 0;
+    for (; rounds < 300; rounds++) {
+        cert(xy, n, &c, viol, target);
+        if (c.fpd) break;
+        size_t w = c.fp_worst; /* one move at a time: sequential FPO */
+        xy[2 * w] = target[2 * w];
+        xy[2 * w + 1] = target[2 * w + 1];
+    }
+    printf("FPO polish: %d moves\n", rounds);
+    expect("FPO-polished", xy, n, 1, 1.0);
+    free(xy); free(viol); free(target);
+}
+
+int main(void)
+{
+    lattices();
+    random_sets();
+    polished();
+    return test_report(passed_, failed_);
+}

@@ -1,0 +1,68 @@
+/* fpo.h - Farthest Point Optimization (Schloemer, Heck, Deussen 2011) on
+ * CGAL's periodic Delaunay triangulation, global (FPO) and local (LFPO).
+ *
+ * Owns: the dynamic triangulation of the n points, the priority queue of
+ * faces by circumradius (lazy invalidation), one iteration (every point in
+ * id order is removed, the largest empty circle of the rest is found, the
+ * point is inserted at its centre if that gains more than tol * L, else
+ * back where it was), the net displacements and the iteration statistics.
+ * Does not own: the stopping loop, files or the command line (main_fpo.c).
+ *
+ * The scale L is cfpo's cell side for this n (cfpo_grid_init), so tol means
+ * exactly what it means for `cfpo --tol`, and iteration counts compare.
+ * A C interface over a C++ implementation: this is the only file of the
+ * suite that sees CGAL besides coverage.cpp. */
+#ifndef CFPO_BASELINES_FPO_H
+#define CFPO_BASELINES_FPO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cfpo.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum { FPO_START_RANDOM = 0, FPO_START_GRID = 1 };
+
+typedef struct {
+    uint64_t seed;
+    int local;    /* 0: global FPO, 1: LFPO (search the 2-ring only) */
+    int start;    /* FPO_START_RANDOM (uniform, the default) or FPO_START_GRID
+                     (cfpo's stratified start, the same points as `cfpo`) */
+    double tol;   /* relative to L, as cfpo's tol */
+} fpo_options;
+
+void fpo_options_init(fpo_options *o);
+
+typedef struct fpo_engine fpo_engine;
+
+/* Makes the start and its triangulation. NULL with a message for n too
+ * small (the same minimum as cfpo) or out of memory. */
+fpo_engine *fpo_create(int64_t n, const fpo_options *o, char *err, size_t errlen);
+void fpo_free(fpo_engine *E);
+
+/* One iteration over all points; fills everything but s->iteration.
+ * s->solved is the number of largest-empty-circle queries (n). */
+void fpo_iterate(fpo_engine *E, cfpo_iter_stats *s);
+
+/* delta_min, delta_avg of the current set, normalised by Delta(n). */
+void fpo_deltas(fpo_engine *E, double *dmin, double *davg);
+
+/* The points in id order (x0 y0 x1 y1 ...), 2n doubles owned by E. */
+const double *fpo_points(const fpo_engine *E);
+
+/* The scale L = 1/g (cfpo's cell side) used for the tolerance. */
+double fpo_scale(const fpo_engine *E);
+
+/* Checks: CGAL's is_valid() of the triangulation, vertex count == n, every
+ * vertex's stored point equal to the point array, every face registered
+ * once with its own circumcircle cached, and (global FPO) the best live
+ * heap entry equal to the largest circumcircle. 1 when all hold. O(n log n). */
+int fpo_check(const fpo_engine *E);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,4 @@
+/* main_bs.c - the `cfpo-bs` command; see pd_main.c. */
+#include "pd_main.h"
+
+int main(int argc, char **argv) { return pd_main(argc, argv, PD_BS); }

@@ -1,0 +1,4 @@
+/* main_dart.c - the `cfpo-dart` command; see pd_main.c. */
+#include "pd_main.h"
+
+int main(int argc, char **argv) { return pd_main(argc, argv, PD_DART); }

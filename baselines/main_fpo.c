@@ -1,0 +1,162 @@
+/* main_fpo.c - the `cfpo-fpo` and `cfpo-lfpo` commands: global and local
+ * Farthest Point Optimization with cfpo's options, stopping rule, trace,
+ * progress and summary. Everything computed comes from fpo.h; this file
+ * only talks to the user. Built twice: FPO_PROG names the command and
+ * FPO_LOCAL_DEFAULT picks the method when --local/--global is not given. */
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bl_run.h"
+#include "cfpo.h"
+#include "cli.h"
+#include "fpo.h"
+#include "pointfile.h"
+
+#ifndef FPO_PROG
+#define FPO_PROG "cfpo-fpo"
+#endif
+#ifndef FPO_LOCAL_DEFAULT
+#define FPO_LOCAL_DEFAULT 0
+#endif
+
+static const char *prog = FPO_PROG;
+
+static void usage(void)
+{
+    printf("Usage: %s -n N [options]\n"
+           "Farthest Point Optimization (Schloemer, Heck, Deussen 2011) on the unit torus,\n"
+           "on CGAL's periodic Delaunay triangulation. Prints one SUMMARY line on stdout.\n\n"
+           "  -n, --points N       number of points (required; e.g. 4096, 2^16, 1e5)\n"
+           "  -s, --seed S         random seed (default 1)\n"
+           "      --global         global FPO: the largest empty circle of the whole set%s\n"
+           "      --local          LFPO: the largest empty circle in the removed point's\n"
+           "                       2-ring only%s\n"
+           "      --start S        random (default: uniform points) or grid (cfpo's\n"
+           "                       stratified start, the same points as `cfpo -s S`)\n"
+           "      --max-iter K     stop after K iterations (default %d)\n"
+           "      --tol T          a move must gain more than T * L, L = cfpo's cell side;\n"
+           "                       converged when no point's net move over an iteration\n"
+           "                       reaches it (default %g; 0 = any strict gain)\n"
+           "  -o, --output FILE    write the points; format from the extension:\n"
+           "                       %s\n"
+           "      --trace FILE     one TSV row per iteration (the columns of cfpo's trace)\n"
+           "  -q, --quiet          no progress line\n"
+           "  -h, --help           this help\n"
+           "  -V, --version        version\n\n"
+           "Exit status: 0 success, 1 runtime failure, 2 usage error.\n",
+           prog, FPO_LOCAL_DEFAULT ? "" : " (default)", FPO_LOCAL_DEFAULT ? " (default)" : "",
+           CFPO_DEFAULT_MAX_ITER, CFPO_DEFAULT_TOL, PF_EXTENSIONS);
+}
+
+static void trace_row(bl_run *r, const cfpo_iter_stats *s)
+{
+    double el = cli_now() - r->t0;
+    if (r->tf)
+        fprintf(r->tf, "%d\t%.9f\t%.9f\t%lld\t%lld\t%.6g\t%.6f\t%.6f\n", s->iteration,
+                s->delta_min, s->delta_avg, (long long)s->moved, (long long)s->solved,
+                s->max_disp, s->seconds, el);
+    cli_progress_line(&r->pg, 0,
+                      "iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  max_disp %.3g  "
+                      "%.1fs/iter  elapsed %.1fs",
+                      s->iteration, s->delta_min, s->delta_avg, (long long)s->moved,
+                      s->max_disp, s->seconds, el);
+}
+
+int main(int argc, char **argv)
+{
+    static const struct option longopts[] = {
+        {"points", required_argument, 0, 'n'}, {"seed", required_argument, 0, 's'},
+        {"global", no_argument, 0, 'G'}, {"local", no_argument, 0, 'L'},
+        {"start", required_argument, 0, 'S'}, {"max-iter", required_argument, 0, 'm'},
+        {"tol", required_argument, 0, 'T'}, {"output", required_argument, 0, 'o'},
+        {"trace", required_argument, 0, 'r'}, {"quiet", no_argument, 0, 'q'},
+        {"help", no_argument, 0, 'h'}, {"version", no_argument, 0, 'V'}, {0, 0, 0, 0}};
+    fpo_options o;
+    fpo_options_init(&o);
+    o.local = FPO_LOCAL_DEFAULT;
+    int64_t n = -1, max_iter = CFPO_DEFAULT_MAX_ITER;
+    const char *out = NULL, *trace = NULL;
+    int quiet = 0, ch;
+    opterr = 0;
+    while ((ch = getopt_long(argc, argv, ":n:s:o:qhV", longopts, NULL)) != -1) {
+        int64_t v;
+        switch (ch) {
+        case 'n':
+            if (cli_parse_i64(optarg, 1, INT64_MAX, &v) != 0)
+                cli_usage_error(prog, "-n: '%s' is not a positive whole number", optarg);
+            n = v;
+            break;
+        case 's':
+            if (cli_parse_u64(optarg, &o.seed) != 0)
+                cli_usage_error(prog, "--seed: '%s' is not a non-negative 64-bit integer", optarg);
+            break;
+        case 'G': o.local = 0; break;
+        case 'L': o.local = 1; break;
+        case 'S':
+            if (strcmp(optarg, "random") == 0) o.start = FPO_START_RANDOM;
+            else if (strcmp(optarg, "grid") == 0) o.start = FPO_START_GRID;
+            else cli_usage_error(prog, "--start: '%s' is not one of random, grid", optarg);
+            break;
+        case 'm':
+            if (cli_parse_i64(optarg, 0, 1000000000, &v) != 0)
+                cli_usage_error(prog, "--max-iter: '%s' is not a whole number in 0..1e9", optarg);
+            max_iter = v;
+            break;
+        case 'T':
+            if (cli_parse_double(optarg, 0, 0.49, &o.tol) != 0)
+                cli_usage_error(prog, "--tol: '%s' is not a number in [0, 0.49]", optarg);
+            break;
+        case 'o': out = optarg; break;
+        case 'r': trace = optarg; break;
+        case 'q': quiet = 1; break;
+        case 'h': usage(); return 0;
+        case 'V': printf("%s %s\n", prog, CFPO_VERSION); return 0;
+        case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
+        default:
+            if (optopt) cli_usage_error(prog, "unknown option '-%c'", optopt);
+            cli_usage_error(prog, "unknown option '%s'", argv[optind - 1]);
+        }
+    }
+    if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
+    if (n < 0) cli_usage_error(prog, "the number of points is required: -n N");
+    bl_check_output_name(prog, out);
+    char err[512];
+    { /* n too small or too large: the same check and message as cfpo. */
+        cfpo_options co;
+        cfpo_options_init(&co);
+        co.tol = o.tol;
+        int vr = cfpo_validate(n, &co, err, sizeof err);
+        if (vr == -1) cli_usage_error(prog, "%s", err);
+        if (vr != 0) cli_fail(prog, "%s", err);
+    }
+
+    bl_run run;
+    bl_run_open(&run, prog, out, trace, (size_t)n,
+                "iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed", quiet);
+    fpo_engine *E = fpo_create(n, &o, err, sizeof err);
+    if (!E) cli_fail(prog, "%s", err);
+    cfpo_iter_stats s;
+    memset(&s, 0, sizeof s);
+    double t = cli_now();
+    fpo_deltas(E, &s.delta_min, &s.delta_avg);
+    s.seconds = cli_now() - t;
+    trace_row(&run, &s);
+    int it = 0;
+    while (!s.converged && it < max_iter) {
+        fpo_iterate(E, &s);
+        s.iteration = ++it;
+        trace_row(&run, &s);
+    }
+    double seconds = cli_now() - run.t0;
+    bl_run_finish(&run, fpo_points(E), (size_t)n);
+
+    cli_summary sm = {.method = o.local ? "lfpo" : "fpo", .variant = "-", .n = n,
+                      .seed = o.seed, .threads = 1, .ranks = 1, .iterations = it,
+                      .seconds = seconds, .delta_min = s.delta_min, .delta_avg = s.delta_avg,
+                      .converged = s.converged, .peak_bytes = cli_peak_rss()};
+    cli_print_summary(stdout, &sm);
+    fpo_free(E);
+    return 0;
+}

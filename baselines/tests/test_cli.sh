@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# test_cli.sh BUILD_DIR - the baseline commands keep cfpo's conventions:
+# exit codes (0 ok, 1 runtime failure, 2 usage error) and "prog: message"
+# errors; -o in every point format, atomic (no file after a failure);
+# --trace; one SUMMARY line; the same seed gives the same bytes; dart
+# throwing's saturation message. Ends with "N passed, N failed".
+set -u
+B=${1:?usage: test_cli.sh BUILD_DIR}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
+
+# expect CODE PATTERN CMD...: exit status CODE and stderr matching PATTERN.
+expect() {
+  local code=$1 pat=$2; shift 2
+  "$@" >"$T/out" 2>"$T/err"
+  local rc=$?
+  if [ $rc -ne "$code" ]; then bad "$* -> exit $rc, want $code ($(head -c 300 "$T/err"))"; return; fi
+  if [ -n "$pat" ] && ! grep -qE -- "$pat" "$T/err"; then
+    bad "$* -> stderr '$(head -c 300 "$T/err")' lacks /$pat/"; return
+  fi
+  ok
+}
+
+for c in cfpo-dart cfpo-bs cfpo-bridson cfpo-fpo cfpo-lfpo; do
+  X="$B/$c"
+  [ -x "$X" ] || { bad "$X missing"; continue; }
+  expect 0 "" "$X" --help
+  grep -q "^Usage: $c" "$T/out" && ok || bad "$c --help: no usage line"
+  expect 0 "" "$X" -V
+  grep -q "^$c " "$T/out" && ok || bad "$c -V: $(cat "$T/out")"
+  expect 2 "^$c: the number of points is required|^$c: -n N or --radius R is required" "$X"
+  expect 2 "^$c: -n: 'abc' is not a positive whole number" "$X" -n abc
+  expect 2 "^$c: -n: '0' is not" "$X" -n 0
+  expect 2 "^$c: -n: '-5' is not" "$X" -n -5
+  expect 2 "^$c: --seed: 'x1' is not" "$X" -n 100 --seed x1
+  expect 2 "^$c: unknown option '--bogus'" "$X" -n 100 --bogus
+  expect 2 "^$c: unknown option '-Z'" "$X" -n 100 -Z
+  expect 2 "^$c: option '-n' needs a value" "$X" -n
+  expect 2 "^$c: unexpected argument 'extra'" "$X" -n 100 extra
+  expect 2 "^$c: $T/p.xyz: unknown output format" "$X" -n 100 -o "$T/p.xyz"
+  grep -q "$c --help" "$T/err" && ok || bad "$c: no --help hint"
+  expect 1 "^$c: .*cannot create" "$X" -n 200 -q -o "$T/no/such/dir/p.txt"
+  expect 1 "^$c: .*" "$X" -n 200 -q --trace "$T/no/such/dir/t.tsv"
+  # Every format, the same bytes for the same seed, a SUMMARY line.
+  for ext in txt npy bin; do
+    expect 0 "" "$X" -n 300 -q -s 7 -o "$T/a.$ext" --trace "$T/a.tsv"
+    grep -q "^SUMMARY method=" "$T/out" && ok || bad "$c: no SUMMARY line"
+    [ "$(grep -c . "$T/out")" = 1 ] && ok || bad "$c: stdout has more than the SUMMARY line"
+    [ -s "$T/a.$ext" ] && ok || bad "$c: no $ext output"
+    expect 0 "" "$X" -n 300 -q -s 7 -o "$T/b.$ext"
+    cmp -s "$T/a.$ext" "$T/b.$ext" && ok || bad "$c: seed 7 twice gives different .$ext bytes"
+  done
+  expect 0 "" "$X" -n 300 -q -s 7 -o "$T/a.txt"
+  n=$(grep -vc '^#' "$T/a.txt")
+  npts=$(sed -n 's/.* n=\([0-9]*\) .*/\1/p' "$T/out")
+  [ "$n" = "$npts" ] && ok || bad "$c: text file has $n points, SUMMARY says $npts"
+  [ "$(stat -c %s "$T/a.bin")" = $((16 * n)) ] && ok || bad "$c: .bin is not 16 n bytes"
+  expect 0 "" "$X" -n 300 -q -s 8 -o "$T/c.txt"
+  cmp -s "$T/a.txt" "$T/c.txt" && bad "$c: seeds 7 and 8 give the same points" || ok
+  head -c 6 "$T/a.npy" | grep -q NUMPY && ok || bad "$c: .npy header"
+  [ "$(head -n 1 "$T/a.tsv" | cut -f1)" != "" ] && [ "$(wc -l <"$T/a.tsv")" -ge 2 ] && ok \
+    || bad "$c: trace has no rows"
+  ls "$T" | grep -q '\.tmp\.' && bad "$c: temporary file left behind" || ok
+done
+
+# Iterative methods: cfpo's trace columns, one row per iteration plus row 0.
+for c in cfpo-fpo cfpo-lfpo; do
+  X="$B/$c"
+  expect 0 "" "$X" -n 300 -q --max-iter 4 --trace "$T/f.tsv"
+  [ "$(head -n 1 "$T/f.tsv")" = "$(printf 'iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed')" ] \
+    && ok || bad "$c: trace header $(head -n 1 "$T/f.tsv")"
+  [ "$(wc -l <"$T/f.tsv")" = 6 ] && ok || bad "$c: trace has $(wc -l <"$T/f.tsv") lines, want 6"
+  grep -q "iterations=4 .*converged=no" "$T/out" && ok || bad "$c: summary $(cat "$T/out")"
+  expect 2 "^$c: --tol: '0.7' is not a number in \[0, 0.49\]" "$X" -n 300 --tol 0.7
+  expect 2 "^$c: --max-iter: 'x' is not" "$X" -n 300 --max-iter x
+  expect 2 "^$c: --start: 'foo' is not one of random, grid" "$X" -n 300 --start foo
+  expect 2 "^$c: n = 5 is too small" "$X" -n 5
+  expect 0 "" "$X" -n 300 -q --max-iter 0
+  grep -q "iterations=0 " "$T/out" && ok || bad "$c: --max-iter 0"
+done
+grep -q "method=lfpo" "$T/out" && ok || bad "cfpo-lfpo does not report method=lfpo"
+expect 0 "" "$B/cfpo-fpo" -n 300 -q --local --max-iter 1
+grep -q "method=lfpo" "$T/out" && ok || bad "cfpo-fpo --local is not LFPO"
+
+# Poisson-disk options.
+expect 2 "^cfpo-bs: --max-fails applies to cfpo-dart only" "$B/cfpo-bs" -n 100 --max-fails 5
+expect 2 "^cfpo-dart: -k applies to cfpo-bridson only" "$B/cfpo-dart" -n 100 -k 5
+expect 2 "^cfpo-dart: give --radius or --rel-radius, not both" "$B/cfpo-dart" -n 100 -r 0.01 --rel-radius 0.7
+expect 2 "^cfpo-dart: --rel-radius: '-1' is not" "$B/cfpo-dart" -n 100 --rel-radius -1
+expect 2 "^cfpo-dart: --radius: '0' is not" "$B/cfpo-dart" -n 100 -r 0
+expect 2 "^cfpo-bs: radius 0.3 is too large" "$B/cfpo-bs" -r 0.3
+expect 2 "^cfpo-dart: radius 1e-06 is too small" "$B/cfpo-dart" -n 100 -r 1e-6
+expect 0 "" "$B/cfpo-bs" -r 0.02 -q
+grep -q "method=bs" "$T/out" && ok || bad "cfpo-bs -r without -n"
+expect 0 "" "$B/cfpo-bridson" -n 500 -q --plain -k 5
+# Saturation: past the jamming limit; clear message, exit 1, no output file.
+expect 1 "^cfpo-dart: saturated: placed [0-9]+ of 2000 points at radius r = [0-9.e-]+ \(0\.9000 Delta\(n\)\); 100000 consecutive darts were rejected" \
+  "$B/cfpo-dart" -n 2000 --rel-radius 0.9 --max-fails 100000 -q -o "$T/sat.txt"
+[ -e "$T/sat.txt" ] && bad "saturated run left an output file" || ok
+# DT places exactly n points.
+expect 0 "" "$B/cfpo-dart" -n 1234 -q -o "$T/d.txt"
+[ "$(grep -vc '^#' "$T/d.txt")" = 1234 ] && ok || bad "cfpo-dart -n 1234 wrote $(grep -vc '^#' "$T/d.txt") points"
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]
