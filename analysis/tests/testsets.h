@@ -9,14 +9,10 @@
 #include <stdlib.h>
 
 #include "geom.h"
+#include "rng.h"
 
-static inline uint64_t ts_mix(uint64_t z)
-{
-    z += 0x9E3779B97F4A7C15ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-}
+/* The project's SplitMix64 finaliser. */
+#define ts_mix cfpo_mix64
 
 /* Uniform in [0, 1). */
 static inline double ts_u(uint64_t *state) { return (double)(ts_mix((*state)++) >> 11) * 0x1.0p-53; }
