@@ -23,16 +23,17 @@ bench_threads_list() {
 }
 
 bench_profile() {
+  # OpenMP threads sleep at barriers instead of spinning (unless the caller
+  # set OMP_WAIT_POLICY): with spinning, any other busy process on a 2-core
+  # machine makes a 2-thread CFPO run 10-100x slower (9 barriers per
+  # iteration, each waiting for a descheduled thread); see README.md
+  export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
   COMP_THREADS=1
   EVO_ITERS="0 1 2 5 10"
   RT_THREADS=$(bench_threads_list)
   case "$1" in
     smoke)
       SETS=2; COMP_N=1024; RT_REPS=1
-      # smoke checks the pipeline, not timings: with threads that sleep at
-      # barriers instead of spinning, a 2-thread run on a loaded 2-core
-      # machine (ctest -j 2) takes 0.06 s instead of several seconds
-      export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
       RT_SIZES_cfpo="256 512"; RT_SIZES_simplified="256"
       RT_SIZES_fpo="256"; RT_SIZES_lfpo="256"
       RT_SIZES_dart="4096"; RT_SIZES_bs="4096"; RT_SIZES_bridson="4096"
@@ -46,10 +47,10 @@ bench_profile() {
       RT_SIZES_bridson="1024 4096 16384 65536 262144"
       ;;
     paper)
-      SETS=10; COMP_N=4096; RT_REPS=3
+      SETS=10; COMP_N=4096; RT_REPS=1
       RT_SIZES_cfpo="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_simplified="1024 4096 16384 65536 262144"
-      RT_SIZES_fpo="1024 4096 16384 65536"; RT_SIZES_lfpo="1024 4096 16384 65536"
+      RT_SIZES_fpo="1024 4096 16384 65536 262144"; RT_SIZES_lfpo="1024 4096 16384 65536"
       RT_SIZES_dart="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_bs="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_bridson="1024 4096 16384 65536 262144 1048576"

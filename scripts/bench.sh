@@ -17,6 +17,7 @@
 # under a temporary name and renamed when complete: a failure or Ctrl-C leaves
 # nothing (CFPO_BENCH_KEEP=1 keeps the temporary folder, for debugging). Progress on stderr: the run, k of N, elapsed, estimated time left.
 set -euo pipefail
+{ # the whole script is read before it runs: editing it during a run is safe
 here=$(cd "$(dirname "$0")" && pwd)
 # shellcheck source=bench-profiles.sh
 . "$here/bench-profiles.sh"
@@ -117,13 +118,14 @@ progress() { # k label est_done actual_done est_left
 # ---- machine and build: the header of runs.csv ------------------------------
 pkgver() { dpkg-query -W -f '${Version}' "$1" 2>/dev/null || echo unknown; }
 flags=$(sed -n 's/^C_FLAGS = //p' "$B/CMakeFiles/cfpo_core.dir/flags.make" 2>/dev/null | head -n 1)
+cxxflags=$(sed -n 's/^CXX_FLAGS = //p' "$B/baselines/CMakeFiles/cfpo_cgal.dir/flags.make" 2>/dev/null | head -n 1)
 commit=$(git -C "$here/.." rev-parse --short HEAD 2>/dev/null || echo none)
 git -C "$here/.." diff --quiet HEAD 2>/dev/null || commit="$commit (uncommitted changes)"
 csv="$work/runs.csv"
 {
   echo "# cfpo method comparison (scripts/bench.sh), profile $PROFILE, started $(date -u +%FT%TZ)"
   echo "# host: $(hostname -s); cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'); cores: $cores; memory: $(free -g | awk '/Mem:/ { print $2 }') GiB"
-  echo "# compiler: $(cc --version | head -n 1); C flags: ${flags:-unknown}; build type: $(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$B/CMakeCache.txt")"
+  echo "# compiler: $(cc --version | head -n 1); C flags: ${flags:-unknown}; C++ flags (FPO, LFPO): ${cxxflags:-unknown}; build type: $(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$B/CMakeCache.txt")"
   echo "# git commit: $commit"
   echo "# libraries: FFTW $(pkgver libfftw3-dev); CGAL $(pkgver libcgal-dev); OpenMPI $(pkgver libopenmpi-dev); GMP $(pkgver libgmp-dev); gnuplot $(gnuplot --version | cut -d' ' -f2-)"
   echo "# environment: $( (env | grep -E '^(OMP|GOMP)_' || echo 'no OMP_ or GOMP_ variables') | sort | tr '\n' ' ' | sed 's/ $//')"
@@ -134,6 +136,11 @@ csv="$work/runs.csv"
 } >"$csv"
 
 field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$2"; }
+
+load1=$(cut -d' ' -f1 /proc/loadavg)
+if awk -v l="$load1" 'BEGIN { exit !(l > 0.5) }'; then
+  echo "bench: note: load average $load1 before the start; other work on this machine disturbs the timings" >&2
+fi
 
 # ---- the runs ----------------------------------------------------------------
 k=0
@@ -271,3 +278,5 @@ echo "bench: $NJOBS runs done in $(hms "$(awk -v a="$T1" -v b="$T0" 'BEGIN { pri
 rm -rf "$work/tmp"
 mv "$work" "$final" || die "cannot rename $work to $final"
 echo "bench: results in $final (summary.md, runs.csv, fig-*.png); took $(hms "$(awk -v a="$(now)" -v b="$T0" 'BEGIN { print a - b }')")" >&2
+exit 0
+}

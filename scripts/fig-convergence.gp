@@ -16,12 +16,12 @@ set key bottom right font ",12"
 set style fill transparent solid 0.18 noborder
 set title "minimum distance"
 set ylabel "δ_{min} / Δ(n)"
-set yrange [0.3:0.95]
+set yrange [0.45:0.95]
 plot for [i = 1:NM] DIR."/plotdata/convergence-".KEY[i].".dat" using 1:3:4 with filledcurves lc rgb COL[i] notitle, \
      for [i = 1:NM] DIR."/plotdata/convergence-".KEY[i].".dat" using 1:2 with lines lw 2 lc rgb COL[i] title LBL[i]
 set title "average nearest-neighbour distance"
 set ylabel "δ_{avg} / Δ(n)"
-set yrange [0.75:0.95]
+set yrange [0.8:0.95]
 plot for [i = 1:NM] DIR."/plotdata/convergence-".KEY[i].".dat" using 1:6:7 with filledcurves lc rgb COL[i] notitle, \
      for [i = 1:NM] DIR."/plotdata/convergence-".KEY[i].".dat" using 1:5 with lines lw 2 lc rgb COL[i] title LBL[i]
 unset multiplot
