@@ -13,7 +13,7 @@ set logscale xy
 set format x "10^{%L}"; set format y "10^{%L}"
 set xlabel "points n"
 set grid lc rgb "#dddddd"
-set key outside bottom center maxrows 4 font ",11" width -2
+set key outside bottom center maxrows 4 font ",11" width -2 height 1.5
 set title "time to the result (iterative methods: until converged)"
 set ylabel "seconds"
 plot for [i = 1:NB] DIR."/plotdata/runtime.dat" index (i - 1) using 1:2 with linespoints lw 2 pt PT[i] ps 1.1 dt DT[i] lc rgb COL[i] title LBL[i]

@@ -10,7 +10,7 @@ set terminal pngcairo size 1500, 760 font "DejaVu Sans,13" enhanced
 set output OUT
 set multiplot layout 1, 2 title "Speedup of CFPO over one thread (time until converged; ".HOST.")" font ",16"
 set grid lc rgb "#dddddd"
-set key outside bottom center maxrows 4 font ",11" width -2
+set key outside bottom center maxrows 4 font ",11" width -2 height 1.5
 set title "against cores used"
 set xlabel "cores used (threads × ranks)"
 set ylabel "speedup"
