@@ -198,6 +198,7 @@ for key in $COMP_KEYS; do printf 'comparison-%s\tcomparison\t%s\t-\n' "$key" "$k
 crop=$(awk -v n="$COMP_N" 'BEGIN { printf "%d", 3 * sqrt(n) + 0.999 }')
 K=$(awk -v n="$COMP_N" 'BEGIN { k = 6 * sqrt(n); printf "%d", (k == int(k)) ? k : int(k) + 1 }')
 AVG="$here/bench-average.awk"
+AWK=$(command -v mawk || command -v awk)  # mawk: Debian's default awk, the fastest here
 scsv="$work/spectra.csv"
 echo "group,experiment,method,variant,n,iteration,sets,runs,K,delta_min,delta_avg,raps_peak,raps_peak_r,eff_nyquist,oscillation,averaged_by" >"$scsv"
 # ranges 3 4 5 9 -> 3-5;9
@@ -225,11 +226,11 @@ while IFS=$'\t' read -r grp exp key it; do
     a="$work/tmp/an-$grp"
     sum=$("$B/cfpo-analyze" -q -K "$K" -o "$a" "${files[@]}") || die "cfpo-analyze failed on $grp"
     cp "$a/raps.txt" "$a/stats.json" "$dst/"
-    mawk -v out="$dst" -v n="$(field n "$sum")" -v crop="$crop" -v croponly=1 -f "$AVG" "$a/spectrum.txt" \
+    "$AWK" -v out="$dst" -v n="$(field n "$sum")" -v crop="$crop" -v croponly=1 -f "$AVG" "$a/spectrum.txt" \
       || die "cropping the spectrum of $grp failed"
     if [ "$checked" -eq 0 ] && [ "$exp" = comparison ]; then
       # check bench-average.awk against cfpo-analyze on this group
-      chk=$(mawk -v out="$work/tmp" -v n="$(field n "$sum")" -v crop=1 -f "$AVG" "$a/spectrum.txt")
+      chk=$("$AWK" -v out="$work/tmp" -v n="$(field n "$sum")" -v crop=1 -f "$AVG" "$a/spectrum.txt")
       for m in eff_nyquist oscillation raps_peak; do
         awk -v a="$(field "$m" " $sum")" -v b="$(field "$m" " $chk")" 'BEGIN { d = a - b; exit !(d < 1e-5 && d > -1e-5) }' \
           || die "bench-average.awk disagrees with cfpo-analyze on $grp: $m $(field "$m" " $sum") vs $(field "$m" " $chk")"
@@ -253,7 +254,7 @@ while IFS=$'\t' read -r grp exp key it; do
     nmean=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* n=\([0-9]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.1f", s / k }')
     dmin=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* delta_min=\([^ ]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.6f", s / k }')
     davg=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* delta_avg=\([^ ]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.6f", s / k }')
-    sum=$(mawk -v out="$dst" -v n="$nmean" -v crop="$crop" -f "$AVG" "${specs[@]}") || die "averaging the spectra of $grp failed"
+    sum=$("$AWK" -v out="$dst" -v n="$nmean" -v crop="$crop" -f "$AVG" "${specs[@]}") || die "averaging the spectra of $grp failed"
     rm -rf "$work"/tmp/an-"$grp"-*
     printf '%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,bench-average.awk\n' "$grp" "$exp" "$mname" "$variant" \
       "$nmean" "$it" "$(field sets " $sum")" "$ids" "$(field K " $sum")" "$dmin" "$davg" "$(field raps_peak " $sum")" \

@@ -64,7 +64,8 @@ keys=$(grep -v '^#' "$csv" | awk -F, '$2 == "comparison" { print ($3 == "cfpo" ?
 check "comparison has all 7 methods (found: $keys)" [ "$keys" = "bridson bs cfpo dart fpo lfpo simplified " ]
 for e in evolution comparison runtime; do check "experiment $e present" grep -q "^[0-9]*,$e," "$csv"; done
 threads=$(grep -v '^#' "$csv" | awk -F, '$2 == "runtime" && $3 == "cfpo" { print $8 }' | sort -un | tr '\n' ' ')
-check "runtime has CFPO on 1 and $(nproc) threads (found: $threads)" grep -qw 1 <<<"$threads"
+want=$(. scripts/bench-profiles.sh && bench_threads_list | tr ' ' '\n' | sort -un | tr '\n' ' ')
+check "runtime has CFPO on $want threads (found: $threads)" [ "$threads" = "$want" ]
 for f in $(grep -v '^#' "$csv" | tail -n +2 | cut -d, -f19 | grep -v '^-$'); do
   [ -s "$R/$f" ] || { bad "trace $f missing"; break; }
 done
