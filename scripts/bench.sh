@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bench.sh BUILD_DIR [PROFILE] - `make bench`: CFPO against its baselines,
+# bench.sh BUILD_DIR [PROFILE] [--plan] - `make bench`: CFPO against its baselines,
 # with the paper's figures (Chen & Gotsman, figures 5-8).
 #
 # Runs every method of the suite (DT, BS, Bridson, FPO, LFPO, CFPO,
@@ -15,7 +15,8 @@
 # averaged spectrum, naming its runs), data/ (traces, seed-1 point sets,
 # averaged spectra), plotdata/, fig-*.png and summary.md. The folder is built
 # under a temporary name and renamed when complete: a failure or Ctrl-C leaves
-# nothing (CFPO_BENCH_KEEP=1 keeps the temporary folder, for debugging). Progress on stderr: the run, k of N, elapsed, estimated time left.
+# nothing (--plan: print the runs and the estimated time, run nothing;
+# CFPO_BENCH_KEEP=1 keeps the temporary folder, for debugging). Progress on stderr: the run, k of N, elapsed, estimated time left.
 set -euo pipefail
 { # the whole script is read before it runs: editing it during a run is safe
 here=$(cd "$(dirname "$0")" && pwd)
@@ -25,6 +26,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 die() { echo "bench: $*" >&2; exit 1; }
 B=${1:-build}
 PROFILE=${2:-default}
+PLAN_ONLY=0
+[ "${3:-}" = --plan ] && PLAN_ONLY=1
 ROOT=${CFPO_RESULTS:-results}
 bench_profile "$PROFILE" || { echo "bench: unknown PROFILE '$PROFILE' (smoke, default, paper)" >&2; exit 2; }
 for c in cfpo cfpo-analyze cfpo-fpo cfpo-lfpo cfpo-dart cfpo-bs cfpo-bridson; do
@@ -79,6 +82,11 @@ for k in cfpo simplified fpo lfpo dart bs bridson; do
 done
 NJOBS=$(wc -l <"$plan")
 EST_TOTAL=$(awk -F'\t' '{ s += $7 } END { printf "%.3f", s }' "$plan")
+if [ "$PLAN_ONLY" = 1 ]; then
+  awk -F'\t' '{ printf "%-10s %-10s n=%-8s seed=%-3s threads=%s max_iter=%s estimate=%ss\n", $1, $2, $3, $4, $5, $6, $7 }' "$plan"
+  echo "bench: profile $PROFILE: $NJOBS runs, about $(awk -v s="$EST_TOTAL" 'BEGIN { printf "%d", s / 60 + 0.5 }') min of runs by the rough cost model (analyses and figures not included)"
+  exit 0
+fi
 
 # ---- progress display ------------------------------------------------------
 # state: k N label start-of-run elapsed-at-start left-estimate-at-start
