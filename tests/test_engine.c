@@ -245,7 +245,7 @@ static void test_api_matches_engine(void)
     char err[256];
     cfpo_engine *E = cfpo_engine_create(n, &o, err, sizeof err);
     cfpo_result r;
-    cfpo_engine_run(E, &r);
+    cfpo_engine_run(E, &r, err, sizeof err);
     double *a = malloc(2 * n * sizeof *a);
     cfpo_engine_points(E, a);
     cfpo_engine_free(E);
