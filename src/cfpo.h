@@ -39,8 +39,7 @@ typedef struct {
     double delta_avg;  /* mean nearest-neighbour distance / Delta(n) */
     int64_t moved;     /* moves made in this iteration */
     int64_t solved;    /* local problems solved (the rest were skipped) */
-    double max_disp;   /* largest net displacement over the iteration / cell
-                          side (counted up to about 8 tol) */
+    double max_disp;   /* largest net displacement over the iteration / cell side */
     double seconds;    /* wall time of this iteration, statistics included */
     int converged;     /* max_disp < tol */
     double max_move;   /* largest single move in the iteration / cell side */

@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -323,12 +324,19 @@ comm_file *comm_file_create(const char *path, char *err, size_t errlen)
     }
     f->tmp = tmp;
     f->fd = -1;
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+        snprintf(err, errlen, "%s: is a directory", path);
+        free_file(f);
+        return NULL;
+    }
     /* Rank 0 makes the temporary file (a unique name in the same folder),
      * every rank then opens it. */
     int e = 0;
     if (rank == 0) {
         snprintf(tmp, len + 16, "%s.tmp.XXXXXX", path);
         int fd = mkstemp(tmp);
+        if (fd >= 0) fchmod(fd, 0644); /* mkstemp makes 0600; a result is for sharing */
         if (fd < 0) e = errno;
         else if (size > 1 && active) close(fd);
         else f->fd = fd;

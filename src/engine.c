@@ -24,10 +24,9 @@
  * answer, which last time was "do not move", so the output is
  * byte-identical to recomputing everything.
  *
- * Net displacement over an iteration is kept per point in units of
- * tol * L / 16, saturating at +-127 (2 bytes a point; it travels with the
- * point): the iteration converged when every point's net move is below
- * 16 units, i.e. below tol * L up to 1/32 of tol per move. */
+ * Net displacement over an iteration is kept per point (two floats that
+ * travel with the point); a move there and back cancels exactly, so a
+ * point cycling between cells does not keep the run from converging. */
 #include "engine.h"
 
 #include <float.h>
@@ -40,8 +39,9 @@
 #include "rng.h"
 
 #define ARRIVE_BIT (1u << 9) /* mask: the cell receives points from other ranks */
+#define NEED_BIT (1u << 15)  /* mask: the cell must be solved (its block changed) */
+#define ARRIVAL_CODE (1ull << 63)
 #define CENTRE_BIT (1u << 4)
-#define DQ_PER_TOL 16        /* displacement units per tol * L */
 #define SUM_SCALE 16777216.0 /* nearest-neighbour distances summed in units of Delta / 2^24 */
 #define CKPT_MAGIC "CFPOCKP1"
 #define CKPT_HEADER 64
@@ -49,8 +49,7 @@
 typedef struct { /* a point on the move between ranks */
     double x, y;
     uint64_t id;
-    int8_t dq[2];
-    uint8_t pad[6];
+    float dq[2];
 } mig_rec;
 
 typedef struct { /* arrival, sorted into its cell */
@@ -83,16 +82,15 @@ struct cfpo_engine {
     size_t cap;       /* capacity of the point arrays */
     double *px, *py;  /* positions, cell by cell */
     uint64_t *pid;    /* global ids, ascending inside a cell */
-    int8_t *dq;       /* 2 per slot: net displacement this iteration */
+    float *dq;        /* 2 per slot: net displacement this iteration */
     double *tx, *ty;  /* spare buffers for rebuilding and output */
-    uint64_t *tid;
-    int8_t *tdq;
+    uint64_t *tid;    /* while relocating: where each new slot comes from */
     uint32_t *start;  /* CSR: own cell c holds [start[c], start[c+1]) */
     uint32_t *start2; /* the next CSR offsets, while relocating */
-    uint8_t *need;    /* cell must be solved (its block changed) */
     uint16_t *mask;   /* this phase: bit (dy+1)*3+(dx+1) set if a point of
                          the cell moved into the cell at offset (dx,dy);
-                         ARRIVE_BIT if points arrive from another rank */
+                         ARRIVE_BIT if points arrive from another rank;
+                         NEED_BIT if the cell must be solved again */
     /* halo ring: bottom row, top row, left column, right column */
     int64_t nring;
     uint32_t *hstart, *hstart2;
@@ -108,7 +106,6 @@ struct cfpo_engine {
     int maxcell;
     double **scratch; /* per thread */
     size_t scratch_m; /* points the scratch is sized for */
-    double unit;      /* one displacement unit (tol * L / 16) */
     int iter0;        /* iteration the engine stands at */
     int resumed_converged;
     double max_move;  /* largest single move this iteration */
@@ -126,12 +123,13 @@ int cfpo_engine_iteration(const cfpo_engine *E) { return E->iter0; }
 
 static size_t thread_scratch_doubles(size_t m) { return 2 * m + cfpo_solver_scratch(m); }
 
-/* Per point: positions 16 + spare 16, ids 8 + spare 8, displacement 2 +
- * spare 2. Per cell: two offsets, need, mask. Per halo cell: two offsets
- * and two copies of about 1.25 points. */
+/* Per point: positions 16 + spare 16, ids 8 + spare 8, displacement 8
+ * (relocation rotates five 8-byte buffers, so it needs no spare). Per
+ * cell: two offsets and the mask. Per halo cell: two offsets and two
+ * copies of about 1.25 points. */
 uint64_t cfpo_engine_bytes_local(int64_t nlocal, int64_t cells, int64_t ring, int threads)
 {
-    return (uint64_t)nlocal * (2 * (16 + 8 + 2)) + (uint64_t)cells * (4 + 4 + 1 + 2) +
+    return (uint64_t)nlocal * (16 + 16 + 8 + 8 + 8) + (uint64_t)cells * (4 + 4 + 2) +
            (uint64_t)ring * (2 * 4 + 4 + 2 * 2 * 16 * 5 / 4) +
            (uint64_t)(threads > 0 ? threads : 1) * thread_scratch_doubles(64) * 8;
 }
@@ -148,8 +146,8 @@ void cfpo_engine_free(cfpo_engine *E)
 {
     if (!E) return;
     free(E->px); free(E->py); free(E->pid); free(E->dq);
-    free(E->tx); free(E->ty); free(E->tid); free(E->tdq);
-    free(E->start); free(E->start2); free(E->need); free(E->mask);
+    free(E->tx); free(E->ty); free(E->tid);
+    free(E->start); free(E->start2); free(E->mask);
     free(E->hstart); free(E->hstart2); free(E->hx); free(E->hy); free(E->hx2); free(E->hy2);
     free(E->hcnt);
     for (int i = 0; i < E->nnb; i++) {
@@ -187,14 +185,16 @@ static int ensure_cap(cfpo_engine *E, size_t need)
 {
     if (need <= E->cap) return 0;
     size_t cap = need + need / 16 + 1024;
-#define GROW(p, T)                                          \
-    do {                                                    \
-        T *q_ = realloc(E->p, cap * sizeof(T) * ((sizeof(T) == 1) ? 2 : 1)); \
-        if (!q_) return -1;                                 \
-        E->p = q_;                                          \
+    /* Five buffers of 8 bytes a slot swap roles in relocate(), so they
+     * all have the same capacity. */
+#define GROW(p, T, per)                                       \
+    do {                                                      \
+        T *q_ = realloc(E->p, cap * (per) * sizeof(T));       \
+        if (!q_) return -1;                                   \
+        E->p = q_;                                            \
     } while (0)
-    GROW(px, double); GROW(py, double); GROW(tx, double); GROW(ty, double);
-    GROW(pid, uint64_t); GROW(tid, uint64_t); GROW(dq, int8_t); GROW(tdq, int8_t);
+    GROW(px, double, 1); GROW(py, double, 1); GROW(tx, double, 1); GROW(ty, double, 1);
+    GROW(pid, uint64_t, 1); GROW(tid, uint64_t, 1); GROW(dq, float, 2);
 #undef GROW
     E->cap = cap;
     return 0;
@@ -287,6 +287,11 @@ static inline int in_cell(const cfpo_engine *E, double x, double y, int64_t lx, 
  * its own new content: the points of its old slice that stayed, then
  * arrivals from the neighbours whose mask points at it, then those from
  * other ranks, then id order. Parallel over cells, deterministic. */
+static inline uint64_t id_of(const cfpo_engine *E, uint64_t code)
+{
+    return (code & ARRIVAL_CODE) ? E->arr[code & ~ARRIVAL_CODE].r.id : E->pid[code];
+}
+
 static int relocate(cfpo_engine *E)
 {
     const int64_t w = E->w, cells = E->cells;
@@ -333,9 +338,7 @@ static int relocate(cfpo_engine *E)
                     if (check && !in_cell(E, E->px[k], E->py[k], lx, ly)) continue;
                     E->tx[wpos] = E->px[k];
                     E->ty[wpos] = E->py[k];
-                    E->tid[wpos] = E->pid[k];
-                    E->tdq[2 * wpos] = E->dq[2 * k];
-                    E->tdq[2 * wpos + 1] = E->dq[2 * k + 1];
+                    E->tid[wpos] = k;
                     wpos++;
                 }
             }
@@ -345,39 +348,53 @@ static int relocate(cfpo_engine *E)
                 const mig_rec *r = &E->arr[a].r;
                 E->tx[wpos] = r->x;
                 E->ty[wpos] = r->y;
-                E->tid[wpos] = r->id;
-                E->tdq[2 * wpos] = r->dq[0];
-                E->tdq[2 * wpos + 1] = r->dq[1];
+                E->tid[wpos] = ARRIVAL_CODE | a;
                 wpos++;
             }
         }
         if (arrivals) /* insertion sort by id; cells hold a handful of points */
             for (uint32_t k = ns[c] + 1; k < wpos; k++) {
-                const uint64_t id = E->tid[k];
+                const uint64_t code = E->tid[k], id = id_of(E, code);
                 const double x = E->tx[k], y = E->ty[k];
-                const int8_t d0 = E->tdq[2 * k], d1 = E->tdq[2 * k + 1];
                 uint32_t j = k;
-                while (j > ns[c] && E->tid[j - 1] > id) {
+                while (j > ns[c] && id_of(E, E->tid[j - 1]) > id) {
                     E->tid[j] = E->tid[j - 1];
                     E->tx[j] = E->tx[j - 1];
                     E->ty[j] = E->ty[j - 1];
-                    E->tdq[2 * j] = E->tdq[2 * j - 2];
-                    E->tdq[2 * j + 1] = E->tdq[2 * j - 1];
                     j--;
                 }
-                E->tid[j] = id;
+                E->tid[j] = code;
                 E->tx[j] = x;
                 E->ty[j] = y;
-                E->tdq[2 * j] = d0;
-                E->tdq[2 * j + 1] = d1;
             }
         if ((int)(wpos - ns[c]) > maxcell) maxcell = (int)(wpos - ns[c]);
     }
-    double *t;
-    t = E->px; E->px = E->tx; E->tx = t;
-    t = E->py; E->py = E->ty; E->ty = t;
+    /* Ids and displacements follow the sources recorded in tid; the new
+     * displacements go into the old positions' buffer, free by now. */
+    const uint32_t total = ns[cells];
+    float *ndq = (float *)E->px;
+#pragma omp parallel for schedule(static) num_threads(E->nthreads)
+    for (uint32_t j = 0; j < total; j++) {
+        const uint64_t code = E->tid[j];
+        if (code & ARRIVAL_CODE) {
+            const mig_rec *r = &E->arr[code & ~ARRIVAL_CODE].r;
+            ndq[2 * j] = r->dq[0];
+            ndq[2 * j + 1] = r->dq[1];
+            E->tid[j] = r->id;
+        } else {
+            ndq[2 * j] = E->dq[2 * code];
+            ndq[2 * j + 1] = E->dq[2 * code + 1];
+            E->tid[j] = E->pid[code];
+        }
+    }
+    double *oldx = E->px, *oldy = E->py;
+    float *olddq = E->dq;
+    E->px = E->tx;
+    E->py = E->ty;
+    E->dq = (float *)oldx;
+    E->tx = (double *)olddq;
+    E->ty = oldy;
     uint64_t *u = E->pid; E->pid = E->tid; E->tid = u;
-    int8_t *d = E->dq; E->dq = E->tdq; E->tdq = d;
     uint32_t *s = E->start; E->start = E->start2; E->start2 = s;
     E->nloc = E->start[cells];
     E->maxcell = maxcell;
@@ -394,7 +411,7 @@ static void mark_block(cfpo_engine *E, int64_t lx, int64_t ly)
             if (E->wrapy) y = (y % E->h + E->h) % E->h;
             else if (y < -1 || y > E->h) continue;
             int64_t e = locate(E, x, y);
-            if (e >= 0) E->need[e] = 1;
+            if (e >= 0) E->mask[e] |= NEED_BIT;
         }
 }
 
@@ -904,21 +921,19 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
     E->wrapy = T.py == 1;
     E->cells = E->w * E->h;
     E->nthreads = o->threads > 0 ? o->threads : omp_get_num_procs();
-    E->unit = o->tol * G.L / DQ_PER_TOL;
     size_t nc = (size_t)E->cells;
     E->start = malloc((nc + 1) * sizeof(uint32_t));
     E->start2 = malloc((nc + 1) * sizeof(uint32_t));
-    E->need = malloc(nc);
     E->mask = calloc(nc, sizeof(uint16_t));
     E->scratch = calloc((size_t)E->nthreads, sizeof(double *));
-    ok = E->start && E->start2 && E->need && E->mask && E->scratch && build_neighbours(E) == 0;
+    ok = E->start && E->start2 && E->mask && E->scratch && build_neighbours(E) == 0;
     if (!comm_all(ok)) {
         snprintf(err, errlen, "out of memory for n = %lld (%.1f GB per rank needed)", (long long)n,
                  (double)cfpo_engine_bytes_local(n / E->nranks, G.g * G.g / E->nranks, 0, E->nthreads) / 1e9);
         cfpo_engine_free(E);
         return NULL;
     }
-    memset(E->need, 1, nc);
+    for (size_t c = 0; c < nc; c++) E->mask[c] = NEED_BIT;
     int rc = 0;
     if (cfg->resume) {
         cfpo_checkpoint_info info;
@@ -993,11 +1008,6 @@ static int gather(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, dou
     return m;
 }
 
-static inline int8_t sat_add(int8_t a, double d)
-{
-    double v = (double)a + nearbyint(d);
-    return (int8_t)(v > 127 ? 127 : (v < -127 ? -127 : v));
-}
 
 /* Solves every point of own cell (lx, ly) in id order. Returns moves. */
 static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, int64_t *solved, double *maxmove)
@@ -1005,8 +1015,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     const int64_t g = E->G.g, c = ly * E->w + lx, cx = E->x0 + lx, cy = E->y0 + ly;
     const uint32_t s = E->start[c], e = E->start[c + 1];
     if (s == e) return 0;
-    if (E->o.skip && !E->need[c]) return 0;
-    E->need[c] = 0;
+    if (E->o.skip && !(E->mask[c] & NEED_BIT)) return 0;
     const size_t mcap = E->scratch_m;
     double *lxs = buf, *lys = buf + mcap, *sol = buf + 2 * mcap;
     int off = 0;
@@ -1034,16 +1043,14 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
         const double ddx_ = nx - x, ddy_ = ny - y;
         const double mv = ddx_ * ddx_ + ddy_ * ddy_;
         if (mv > *maxmove) *maxmove = mv;
-        if (E->unit > 0) {
-            E->dq[2 * (s + k)] = sat_add(E->dq[2 * (s + k)], ddx_ / E->unit);
-            E->dq[2 * (s + k) + 1] = sat_add(E->dq[2 * (s + k) + 1], ddy_ / E->unit);
-        }
+        E->dq[2 * (s + k)] += (float)ddx_;
+        E->dq[2 * (s + k) + 1] += (float)ddy_;
         int ddx = wrap_offset(cfpo_grid_coord(&E->G, gx) - cx, g);
         int ddy = wrap_offset(cfpo_grid_coord(&E->G, gy) - cy, g);
         mask |= 1u << ((ddy + 1) * 3 + (ddx + 1));
         moves++;
     }
-    E->mask[c] = (uint16_t)mask;
+    E->mask[c] = (uint16_t)mask; /* and no longer NEED_BIT */
     return moves;
 }
 
@@ -1159,7 +1166,7 @@ int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
     if (moves)
         for (int64_t t = 0; t < T; t++) {
             const int64_t ly = by + p * (t / nxc), lx = bx + p * (t % nxc), c = ly * E->w + lx;
-            const unsigned mk = E->mask[c];
+            const unsigned mk = E->mask[c] & 0x1ffu;
             if (!mk) continue;
             mark_block(E, lx, ly);
             for (int bit = 0; bit < 9; bit++)
@@ -1179,8 +1186,8 @@ int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
         comm_abort(1);
     }
     if (moves)
-        for (int64_t t = 0; t < T; t++) E->mask[(by + p * (t / nxc)) * E->w + bx + p * (t % nxc)] = 0;
-    for (size_t i = 0; i < E->narr; i++) E->mask[E->arr[i].cell] = 0;
+        for (int64_t t = 0; t < T; t++) E->mask[(by + p * (t / nxc)) * E->w + bx + p * (t % nxc)] &= NEED_BIT;
+    for (size_t i = 0; i < E->narr; i++) E->mask[E->arr[i].cell] &= (uint16_t)~ARRIVE_BIT;
     E->narr = 0;
     double t2 = now();
     E->t_migrate += t2 - t1;
@@ -1369,7 +1376,7 @@ void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg)
 void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
 {
     double t0 = now();
-    if (E->unit > 0) memset(E->dq, 0, 2 * (size_t)E->nloc);
+    memset(E->dq, 0, 2 * (size_t)E->nloc * sizeof(float));
     E->max_move = 0;
     int64_t moved = 0, solved = 0;
     const int ncol = E->G.period * E->G.period;
@@ -1378,24 +1385,24 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
         moved += cfpo_engine_phase(E, colour, &sv);
         solved += sv;
     }
-    int64_t maxq2 = 0;
-    if (moved && E->unit > 0) {
-#pragma omp parallel for schedule(static) reduction(max : maxq2) num_threads(E->nthreads)
+    double maxd2 = 0;
+    if (moved) {
+#pragma omp parallel for schedule(static) reduction(max : maxd2) num_threads(E->nthreads)
         for (int64_t i = 0; i < E->nloc; i++) {
-            int64_t a = E->dq[2 * i], b = E->dq[2 * i + 1];
-            if (a * a + b * b > maxq2) maxq2 = a * a + b * b;
+            double dx = E->dq[2 * i], dy = E->dq[2 * i + 1];
+            double d2 = dx * dx + dy * dy;
+            if (d2 > maxd2) maxd2 = d2;
         }
     }
-    int64_t v[2] = {moved, solved}, mx = maxq2;
+    int64_t v[2] = {moved, solved};
     comm_sum_i64(v, 2);
-    comm_max_i64(&mx, 1);
-    double mm = E->max_move;
-    comm_max_d(&mm, 1);
+    double mx[2] = {maxd2, E->max_move};
+    comm_max_d(mx, 2);
     s->moved = v[0];
     s->solved = v[1];
-    s->max_disp = E->unit > 0 ? sqrt((double)mx) * E->unit / E->G.L : 0;
-    s->max_move = sqrt(mm) / E->G.L;
-    s->converged = v[0] == 0 || (E->unit > 0 && mx < (int64_t)DQ_PER_TOL * DQ_PER_TOL);
+    s->max_disp = sqrt(mx[0]) / E->G.L;
+    s->max_move = sqrt(mx[1]) / E->G.L;
+    s->converged = v[0] == 0 || s->max_disp < E->o.tol;
     cfpo_engine_deltas(E, &s->delta_min, &s->delta_avg);
     double el = now() - t0;
     comm_max_d(&el, 1);
