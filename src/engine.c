@@ -43,6 +43,7 @@
 #define ARRIVAL_CODE (1ull << 63)
 #define CENTRE_BIT (1u << 4)
 #define SUM_SCALE 16777216.0 /* nearest-neighbour distances summed in units of Delta / 2^24 */
+#define SB 8 /* statistics blocks: SB x SB cells */
 #define CKPT_MAGIC "CFPOCKP1"
 #define CKPT_HEADER 64
 
@@ -102,6 +103,12 @@ struct cfpo_engine {
     comm_msg *msg;
     arrival *arr;
     size_t narr, arrcap;
+    /* statistics cached per block of SB x SB cells, recomputed only when a
+     * cell of the block was marked (its 3x3 neighbourhood changed) */
+    int64_t nbx, nby;
+    uint64_t *bsum;
+    double *bmin;
+    uint8_t *bdirty;
     int nthreads;
     int maxcell;
     double **scratch; /* per thread */
@@ -148,6 +155,7 @@ void cfpo_engine_free(cfpo_engine *E)
     free(E->px); free(E->py); free(E->pid); free(E->dq);
     free(E->tx); free(E->ty); free(E->tid);
     free(E->start); free(E->start2); free(E->mask);
+    free(E->bsum); free(E->bmin); free(E->bdirty);
     free(E->hstart); free(E->hstart2); free(E->hx); free(E->hy); free(E->hx2); free(E->hy2);
     free(E->hcnt);
     for (int i = 0; i < E->nnb; i++) {
@@ -411,7 +419,10 @@ static void mark_block(cfpo_engine *E, int64_t lx, int64_t ly)
             if (E->wrapy) y = (y % E->h + E->h) % E->h;
             else if (y < -1 || y > E->h) continue;
             int64_t e = locate(E, x, y);
-            if (e >= 0) E->mask[e] |= NEED_BIT;
+            if (e >= 0) {
+                E->mask[e] |= NEED_BIT;
+                E->bdirty[(e / E->w / SB) * E->nbx + (e % E->w) / SB] = 1;
+            }
         }
 }
 
@@ -926,7 +937,13 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
     E->start2 = malloc((nc + 1) * sizeof(uint32_t));
     E->mask = calloc(nc, sizeof(uint16_t));
     E->scratch = calloc((size_t)E->nthreads, sizeof(double *));
-    ok = E->start && E->start2 && E->mask && E->scratch && build_neighbours(E) == 0;
+    E->nbx = (E->w + SB - 1) / SB;
+    E->nby = (E->h + SB - 1) / SB;
+    E->bsum = calloc((size_t)(E->nbx * E->nby), sizeof(uint64_t));
+    E->bmin = calloc((size_t)(E->nbx * E->nby), sizeof(double));
+    E->bdirty = malloc((size_t)(E->nbx * E->nby));
+    if (E->bdirty) memset(E->bdirty, 1, (size_t)(E->nbx * E->nby));
+    ok = E->bsum && E->bmin && E->bdirty && E->start && E->start2 && E->mask && E->scratch && build_neighbours(E) == 0;
     if (!comm_all(ok)) {
         snprintf(err, errlen, "out of memory for n = %lld (%.1f GB per rank needed)", (long long)n,
                  (double)cfpo_engine_bytes_local(n / E->nranks, G.g * G.g / E->nranks, 0, E->nthreads) / 1e9);
@@ -1279,18 +1296,28 @@ void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg)
     nn_query *un = NULL;
     size_t nun = 0, uncap = 0;
     int oom = 0;
-#pragma omp parallel for schedule(static) reduction(+ : sum) reduction(min : mn) num_threads(E->nthreads)
-    for (int64_t ly = 0; ly < E->h; ly++)
-        for (int64_t lx = 0; lx < E->w; lx++) {
+    /* Blocks whose cells' neighbourhoods did not change keep their sums. */
+    const int64_t nb = E->nbx * E->nby;
+#pragma omp parallel for schedule(dynamic, 4) num_threads(E->nthreads)
+    for (int64_t bi = 0; bi < nb; bi++) {
+        if (!E->bdirty[bi]) continue;
+        const int64_t bx0 = (bi % E->nbx) * SB, by0 = (bi / E->nbx) * SB;
+        const int64_t bx1 = bx0 + SB < E->w ? bx0 + SB : E->w, by1 = by0 + SB < E->h ? by0 + SB : E->h;
+        uint64_t bs = 0;
+        double bm = INFINITY;
+        int unsure = 0;
+        for (int64_t ly = by0; ly < by1; ly++)
+            for (int64_t lx = bx0; lx < bx1; lx++) {
             const int64_t c = ly * E->w + lx;
             for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
                 int sure;
                 double d2 = nn2_block(E, lx, ly, k, &sure);
                 if (sure) {
                     double d = sqrt(d2) * inv;
-                    sum += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
-                    if (d < mn) mn = d;
+                    bs += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
+                    if (d < bm) bm = d;
                 } else {
+                    unsure = 1;
 #pragma omp critical(cfpo_unresolved)
                     {
                         if (nun == uncap) {
@@ -1304,6 +1331,14 @@ void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg)
                 }
             }
         }
+        E->bsum[bi] = bs;
+        E->bmin[bi] = bm;
+        E->bdirty[bi] = (uint8_t)unsure; /* blocks with unresolved points: every time */
+    }
+    for (int64_t bi = 0; bi < nb; bi++) {
+        sum += E->bsum[bi];
+        if (E->bmin[bi] < mn) mn = E->bmin[bi];
+    }
     if (!comm_all(!oom)) {
         fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
         comm_abort(1);
