@@ -4,9 +4,10 @@ TYPE      ?= Release
 NATIVE    ?= ON
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 PROFILE   ?= default
+RESULTS   ?=
 CMAKE_ARGS = -DCMAKE_BUILD_TYPE=$(TYPE) -DCFPO_NATIVE=$(NATIVE)
 
-.PHONY: all build test test-sanitize bench help clean deps
+.PHONY: all build test test-sanitize bench bench-core replot help clean deps
 
 all: build
 
@@ -28,15 +29,26 @@ test-sanitize: deps
 	cmake --build build-asan -j $(JOBS)
 	cd build-asan && ctest --output-on-failure -j $(JOBS) -L unit
 
+# The method comparison and the paper's figures (scripts/bench.sh).
 bench: build
 	scripts/bench.sh $(BUILD) $(PROFILE)
+
+# Redraw figures and summary.md of a results folder (default: the newest).
+replot: deps
+	scripts/replot.sh $(RESULTS)
+
+# The core CFPO benchmark: sweep and convergence figures (core.txt).
+bench-core: build
+	scripts/bench-core.sh $(BUILD) $(PROFILE)
 
 help:
 	@echo "Targets:"
 	@echo "  make               optimised build into $(BUILD)/ (installs missing Debian packages first)"
 	@echo "  make test          build, then run every CTest test"
 	@echo "  make test-sanitize unit tests in an ASan+UBSan build (build-asan/)"
-	@echo "  make bench         benchmarks (PROFILE=$(PROFILE)); results under results/"
+	@echo "  make bench         method comparison and figures (PROFILE=smoke|default|paper); results/<date>-<host>/"
+	@echo "  make replot        redraw figures and summary.md of RESULTS=results/... (default: newest)"
+	@echo "  make bench-core    core CFPO benchmark, sweeps and convergence (PROFILE=smoke|default)"
 	@echo "  make clean         remove build folders"
 	@echo "Build settings:"
 	@echo "  build type   $(TYPE)   (TYPE=Debug|Release|RelWithDebInfo)"

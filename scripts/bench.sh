@@ -1,56 +1,282 @@
 #!/usr/bin/env bash
-# bench.sh BUILD_DIR [PROFILE] - the core CFPO benchmark (`make bench`).
-# Prints the figures the core issue asks for, each measured by
-# build/cfpo-bench, and writes them to results/<date>-<host>/core.txt.
-# PROFILE: default (65,536 and 1,048,576 points) or smoke (small, seconds).
+# bench.sh BUILD_DIR [PROFILE] - `make bench`: CFPO against its baselines,
+# with the paper's figures (Chen & Gotsman, figures 5-8).
+#
+# Runs every method of the suite (DT, BS, Bridson, FPO, LFPO, CFPO,
+# simplified CFPO) as the plan of PROFILE (scripts/bench-profiles.sh: smoke,
+# default, paper) says, then analyses the point sets with cfpo-analyze and
+# draws the figures with scripts/replot.sh. Three experiments:
+#   evolution   CFPO stopped after EVO_ITERS iterations, SETS seeds
+#   comparison  every method, SETS seeds of COMP_N points (traces kept: they
+#               are the convergence figure)
+#   runtime     every method over n (and CFPO over thread counts)
+# Output: $CFPO_RESULTS (default results/)/<date>-<time>-<host>/ with runs.csv
+# (one row per run, machine and build in # lines), spectra.csv (one row per
+# averaged spectrum, naming its runs), data/ (traces, seed-1 point sets,
+# averaged spectra), plotdata/, fig-*.png and summary.md. The folder is built
+# under a temporary name and renamed when complete: a failure or Ctrl-C leaves
+# nothing (CFPO_BENCH_KEEP=1 keeps the temporary folder, for debugging). Progress on stderr: the run, k of N, elapsed, estimated time left.
 set -euo pipefail
+{ # the whole script is read before it runs: editing it during a run is safe
+here=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=bench-profiles.sh
+. "$here/bench-profiles.sh"
+
+die() { echo "bench: $*" >&2; exit 1; }
 B=${1:-build}
 PROFILE=${2:-default}
-BENCH="$B/cfpo-bench"
-[ -x "$BENCH" ] || { echo "bench.sh: $BENCH not built (run make)" >&2; exit 1; }
-out="results/$(date +%Y%m%d-%H%M%S)-$(hostname -s)"
-mkdir -p "$out"
-log="$out/core.txt"
-cores=$(nproc)
-case "$PROFILE" in
-  smoke) sizes="4096 16384"; k=3 ;;
-  default|paper) sizes="65536 1048576"; k=5 ;;
-  *) echo "bench.sh: unknown PROFILE '$PROFILE' (default, smoke, paper)" >&2; exit 2 ;;
-esac
-steps=$(( $(echo $sizes | wc -w) * 3 ))
-step=0
-t_start=$(date +%s)
-run() {
-  step=$((step + 1))
-  local el=$(( $(date +%s) - t_start ))
-  printf '[%d/%d, %ds] cfpo-bench %s\n' "$step" "$steps" "$el" "$*" >&2
-  "$BENCH" "$@" | tee -a "$log"
-}
-{
-  echo "# CFPO core benchmark, profile $PROFILE"
-  echo "# machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $cores cores, $(free -g | awk '/Mem:/{print $2}') GiB"
-  echo "# compiler: $(cc --version | head -n 1); commit $(git rev-parse --short HEAD 2>/dev/null || echo none)"
-  echo "# load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-} | tee "$log"
-for n in $sizes; do
-  run sweep -n "$n" -t 1 -k "$k"
-  [ "$cores" -ge 2 ] && run sweep -n "$n" -t 2 -k "$k"
-  run converge -n "$n" -t "$cores"
+ROOT=${CFPO_RESULTS:-results}
+bench_profile "$PROFILE" || { echo "bench: unknown PROFILE '$PROFILE' (smoke, default, paper)" >&2; exit 2; }
+for c in cfpo cfpo-analyze cfpo-fpo cfpo-lfpo cfpo-dart cfpo-bs cfpo-bridson; do
+  [ -x "$B/$c" ] || die "$B/$c not built (run make)"
 done
-echo "# load after: $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$log"
-# The comparison against the targets of the core issue, from the lines above.
-awk '
-  /^RESULT sweep/ { for (i = 3; i <= NF; i++) { split($i, kv, "="); f[kv[1]] = kv[2] }
-    key = f["n"] "/" f["threads"]; sweep[key] = f["seconds_per_sweep"]; upd[key] = f["us_per_update"] }
-  /^RESULT converge/ { for (i = 3; i <= NF; i++) { split($i, kv, "="); g[kv[1]] = kv[2] }
-    conv[g["n"]] = g["seconds"]; bpp[g["n"]] = g["bytes_per_point"] }
-  END {
-    print "# versus the targets"
-    for (k in upd) if (k ~ /\/1$/) { split(k, a, "/"); printf "us per point-update (one local solve), 1 thread, n=%s: %.3f (target <= 0.8)\n", a[1], upd[k] }
-    for (k in sweep) if (k ~ /\/2$/) { split(k, a, "/"); one = sweep[a[1] "/1"];
-      printf "speedup 2 threads vs 1, n=%s: %.2fx (target >= 1.9)\n", a[1], one / sweep[k];
-      if (a[1] == 1048576) printf "full sweep of 1M points on 2 threads: %.3f s (target <= 0.42)\n", sweep[k] }
-    for (n in conv) { printf "seconds to converge, n=%s: %s%s\n", n, conv[n], n == 1048576 ? " (target <= 60)" : "";
-      printf "peak bytes per point, n=%s: %s (target <= 64)\n", n, bpp[n] }
-  }' "$log" | tee -a "$log"
-echo "bench.sh: results in $log" >&2
+command -v gnuplot >/dev/null 2>&1 || die "gnuplot not found (run scripts/install-deps.sh)"
+B=$(cd "$B" && pwd)
+mkdir -p "$ROOT" || die "cannot create $ROOT"
+name="$(date +%Y%m%d-%H%M%S)-$(hostname -s)"
+final="$ROOT/$name"
+[ -e "$final" ] && die "$final already exists"
+work="$ROOT/.$name.tmp.$$"
+ticker=""
+child=""
+cleanup() {
+  [ -n "$ticker" ] && kill "$ticker" 2>/dev/null
+  [ -n "$child" ] && kill "$child" 2>/dev/null
+  if [ "${CFPO_BENCH_KEEP:-0}" = 1 ] && [ -d "$work" ]; then echo "bench: kept $work (CFPO_BENCH_KEEP=1)" >&2; else rm -rf "$work"; fi
+}
+trap cleanup EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM HUP
+mkdir -p "$work/data/traces" "$work/data/points" "$work/data/analysis" "$work/sets" "$work/tmp"
+T0=$(date +%s.%N)
+
+# ---- the plan: one line per run -------------------------------------------
+# experiment key n seed threads max_iter estimate output
+plan="$work/tmp/plan.tsv"
+: >"$plan"
+cores=$(nproc)
+add() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$(bench_estimate "$2" "$3" "$5" "$6")" "$7" >>"$plan"; }
+for it in $EVO_ITERS; do
+  for s in $(seq 1 "$SETS"); do add evolution cfpo "$COMP_N" "$s" "$cores" "$it" "sets/evolution-it$it-s$s.txt"; done
+done
+COMP_KEYS="dart bs bridson fpo lfpo cfpo simplified"
+is_cfpo() { [ "$1" = cfpo ] || [ "$1" = simplified ]; }
+for k in $COMP_KEYS; do
+  t=1; is_cfpo "$k" && t=$COMP_THREADS
+  for s in $(seq 1 "$SETS"); do add comparison "$k" "$COMP_N" "$s" "$t" - "sets/comparison-$k-s$s.txt"; done
+done
+for k in cfpo simplified fpo lfpo dart bs bridson; do
+  var="RT_SIZES_$k"
+  for n in ${!var}; do
+    threads=1; is_cfpo "$k" && threads=$RT_THREADS
+    for t in $threads; do
+      # covered by the comparison's runs (same n, threads, seeds)
+      ct=1; is_cfpo "$k" && ct=$COMP_THREADS
+      [ "$n" = "$COMP_N" ] && [ "$t" = "$ct" ] && [ "$RT_REPS" -le "$SETS" ] && continue
+      for s in $(seq 1 "$RT_REPS"); do add runtime "$k" "$n" "$s" "$t" - -; done
+    done
+  done
+done
+NJOBS=$(wc -l <"$plan")
+EST_TOTAL=$(awk -F'\t' '{ s += $7 } END { printf "%.3f", s }' "$plan")
+
+# ---- progress display ------------------------------------------------------
+# state: k N label start-of-run elapsed-at-start left-estimate-at-start
+hms() { awk -v s="$1" 'BEGIN { s = int(s + 0.5); if (s >= 3600) printf "%dh%02dm%02ds", s / 3600, (s % 3600) / 60, s % 60; else if (s >= 60) printf "%dm%02ds", s / 60, s % 60; else printf "%ds", s }'; }
+now() { date +%s.%N; }
+status_line() { # k N label elapsed left
+  printf '[%d/%d] %s elapsed, about %s left: %s' "$1" "$2" "$(hms "$4")" "$(hms "$5")" "$3"
+}
+if [ -t 2 ]; then
+  (
+    while :; do
+      if [ -f "$work/tmp/state" ]; then
+        IFS=$'\t' read -r k nj label t0 left <"$work/tmp/state" || true
+        if [ -n "${t0:-}" ]; then
+          el=$(awk -v a="$(now)" -v b="$T0" 'BEGIN { print a - b }')
+          lf=$(awk -v l="$left" -v a="$(now)" -v b="$t0" 'BEGIN { x = l - (a - b); print (x < 0 ? 0 : x) }')
+          printf '\r\033[K%s' "$(status_line "$k" "$nj" "$label" "$el" "$lf")" >&2
+        fi
+      fi
+      sleep 1
+    done
+  ) &
+  ticker=$!
+fi
+progress() { # k label est_done actual_done est_left
+  local el left
+  el=$(awk -v a="$(now)" -v b="$T0" 'BEGIN { print a - b }')
+  left=$(awk -v ed="$3" -v ad="$4" -v el="$5" 'BEGIN { r = (ed > 0.5 && ad > 0) ? ad / ed : 1; printf "%.1f", r * el }')
+  if [ -n "$ticker" ]; then
+    printf '%s\t%s\t%s\t%s\t%s\n' "$1" "$NJOBS" "$2" "$(now)" "$left" >"$work/tmp/state.new"
+    mv "$work/tmp/state.new" "$work/tmp/state"
+  else
+    echo "bench: $(status_line "$1" "$NJOBS" "$2" "$el" "$left")" >&2
+  fi
+}
+
+# ---- machine and build: the header of runs.csv ------------------------------
+pkgver() { dpkg-query -W -f '${Version}' "$1" 2>/dev/null || echo unknown; }
+flags=$(sed -n 's/^C_FLAGS = //p' "$B/CMakeFiles/cfpo_core.dir/flags.make" 2>/dev/null | head -n 1)
+cxxflags=$(sed -n 's/^CXX_FLAGS = //p' "$B/baselines/CMakeFiles/cfpo_cgal.dir/flags.make" 2>/dev/null | head -n 1)
+commit=$(git -C "$here/.." rev-parse --short HEAD 2>/dev/null || echo none)
+git -C "$here/.." diff --quiet HEAD 2>/dev/null || commit="$commit (uncommitted changes)"
+csv="$work/runs.csv"
+{
+  echo "# cfpo method comparison (scripts/bench.sh), profile $PROFILE, started $(date -u +%FT%TZ)"
+  echo "# host: $(hostname -s); cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'); cores: $cores; memory: $(free -g | awk '/Mem:/ { print $2 }') GiB"
+  echo "# compiler: $(cc --version | head -n 1); C flags: ${flags:-unknown}; C++ flags (FPO, LFPO): ${cxxflags:-unknown}; build type: $(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$B/CMakeCache.txt")"
+  echo "# git commit: $commit"
+  echo "# libraries: FFTW $(pkgver libfftw3-dev); CGAL $(pkgver libcgal-dev); OpenMPI $(pkgver libopenmpi-dev); GMP $(pkgver libgmp-dev); gnuplot $(gnuplot --version | cut -d' ' -f2-)"
+  echo "# environment: $( (env | grep -E '^(OMP|GOMP)_' || echo 'no OMP_ or GOMP_ variables') | sort | tr '\n' ' ' | sed 's/ $//')"
+  echo "# plan: SETS=$SETS COMP_N=$COMP_N COMP_THREADS=$COMP_THREADS EVO_ITERS=$EVO_ITERS RT_REPS=$RT_REPS RT_THREADS=$RT_THREADS; $NJOBS runs"
+  echo "# load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "# columns: seconds = the tool's own sampling time (start included, writing excluded); seconds_per_iteration = seconds / iterations; peak_bytes = peak resident memory of the process; n = points produced, n_target = points asked for; max_iter = iteration cap (- none); wall_seconds = the whole process as timed by this script"
+  echo "run,experiment,method,variant,n,n_target,seed,threads,ranks,max_iter,iterations,seconds,seconds_per_iteration,delta_min,delta_avg,peak_bytes,converged,wall_seconds,trace"
+} >"$csv"
+
+field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$2"; }
+
+load1=$(cut -d' ' -f1 /proc/loadavg)
+if awk -v l="$load1" 'BEGIN { exit !(l > 0.5) }'; then
+  echo "bench: note: load average $load1 before the start; other work on this machine disturbs the timings" >&2
+fi
+
+# ---- the runs ----------------------------------------------------------------
+k=0
+est_done=0
+act_done=0
+while IFS=$'\t' read -r exp key n seed t maxit est out; do
+  k=$((k + 1))
+  id=$(printf '%04d' "$k")
+  label="$exp $key n=$n seed=$seed threads=$t"
+  [ "$maxit" != - ] && label="$label max-iter=$maxit"
+  progress "$k" "$label" "$est_done" "$act_done" \
+    "$(awk -v tot="$EST_TOTAL" -v d="$est_done" 'BEGIN { print tot - d }')"
+  trace=-
+  case $key in
+    cfpo|simplified) cmd=("$B/cfpo" --variant "$([ "$key" = cfpo ] && echo cfpo || echo simplified)" -t "$t") ;;
+    fpo) cmd=("$B/cfpo-fpo") ;;
+    lfpo) cmd=("$B/cfpo-lfpo") ;;
+    dart) cmd=("$B/cfpo-dart") ;;
+    bs) cmd=("$B/cfpo-bs") ;;
+    bridson) cmd=("$B/cfpo-bridson") ;;
+  esac
+  cmd+=(-n "$n" -s "$seed" -q)
+  [ "$maxit" != - ] && cmd+=(--max-iter "$maxit")
+  case $key in dart|bs|bridson) ;; *) trace="data/traces/run-$id.tsv"; cmd+=(--trace "$work/$trace") ;; esac
+  [ "$out" != - ] && cmd+=(-o "$work/$out")
+  t1=$(now)
+  "${cmd[@]}" >"$work/tmp/run.out" 2>"$work/tmp/run.err" &
+  child=$!
+  rc=0
+  wait "$child" || rc=$?
+  child=""
+  t2=$(now)
+  line=$(grep '^SUMMARY' "$work/tmp/run.out" || true)
+  if [ "$rc" -ne 0 ] || [ -z "$line" ]; then
+    [ -n "$ticker" ] && printf '\n' >&2
+    die "run $k ($label) failed (exit $rc): $(tail -n 1 "$work/tmp/run.err")"
+  fi
+  it=$(field iterations "$line"); secs=$(field seconds "$line")
+  spi=$(awk -v s="$secs" -v i="$it" 'BEGIN { if (i == "-" || i + 0 == 0) print "-"; else printf "%.6g", s / i }')
+  wall=$(awk -v a="$t2" -v b="$t1" 'BEGIN { printf "%.3f", a - b }')
+  printf '%d,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n' "$k" "$exp" "$(field method "$line")" \
+    "$(field variant "$line")" "$(field n "$line")" "$n" "$seed" "$(field threads "$line")" "$(field ranks "$line")" \
+    "$maxit" "$it" "$secs" "$spi" "$(field delta_min "$line")" "$(field delta_avg "$line")" \
+    "$(field peak_bytes "$line")" "$(field converged "$line")" "$wall" "$trace" >>"$csv"
+  est_done=$(awk -v a="$est_done" -v b="$est" 'BEGIN { print a + b }')
+  act_done=$(awk -v a="$act_done" -v b="$wall" 'BEGIN { print a + b }')
+done <"$plan"
+
+# ---- spectra: one averaged analysis per group of sets ------------------------
+# group experiment key iteration: the runs whose output is sets/<group>-s*.txt
+groups="$work/tmp/groups.tsv"
+: >"$groups"
+for it in $EVO_ITERS; do printf 'evolution-it%s\tevolution\tcfpo\t%s\n' "$it" "$it" >>"$groups"; done
+for key in $COMP_KEYS; do printf 'comparison-%s\tcomparison\t%s\t-\n' "$key" "$key" >>"$groups"; done
+crop=$(awk -v n="$COMP_N" 'BEGIN { printf "%d", 3 * sqrt(n) + 0.999 }')
+K=$(awk -v n="$COMP_N" 'BEGIN { k = 6 * sqrt(n); printf "%d", (k == int(k)) ? k : int(k) + 1 }')
+AVG="$here/bench-average.awk"
+scsv="$work/spectra.csv"
+echo "group,experiment,method,variant,n,iteration,sets,runs,K,delta_min,delta_avg,raps_peak,raps_peak_r,eff_nyquist,oscillation,averaged_by" >"$scsv"
+# ranges 3 4 5 9 -> 3-5;9
+ranges() { tr ' ' '\n' | sort -n | awk 'NF { if (p != "" && $1 == p + 1) { p = $1; next } if (s != "") printf "%s%s;", s, (p != s ? "-" p : ""); s = $1; p = $1 } END { if (s != "") printf "%s%s", s, (p != s ? "-" p : "") }'; }
+checked=0
+ng=$(wc -l <"$groups")
+g=0
+while IFS=$'\t' read -r grp exp key it; do
+  g=$((g + 1))
+  progress "$NJOBS" "analysis $g of $ng: $grp" 1 1 0
+  files=("$work"/sets/"$grp"-s*.txt)
+  [ -f "${files[0]}" ] || die "no point sets for $grp"
+  # the runs of this group, from runs.csv: experiment, key and cap
+  ids=$(awk -F, -v e="$exp" -v k="$key" -v m="$( [ "$it" = - ] && echo - || echo "$it")" '
+    /^#/ || $1 == "run" { next }
+    { kk = ($3 == "cfpo") ? $4 : $3 }
+    $2 == e && kk == k && $10 == m { printf "%s ", $1 }' "$csv" | ranges)
+  dst="$work/data/analysis/$grp"
+  mkdir -p "$dst"
+  nvals=$(for f in "${files[@]}"; do grep -vc '^#' "$f"; done | sort -u | wc -l)
+  variant=-; mname=$key
+  [ "$key" = cfpo ] && variant=cfpo
+  [ "$key" = simplified ] && { variant=simplified; mname=cfpo; }
+  if [ "$nvals" -eq 1 ]; then
+    a="$work/tmp/an-$grp"
+    sum=$("$B/cfpo-analyze" -q -K "$K" -o "$a" "${files[@]}") || die "cfpo-analyze failed on $grp"
+    cp "$a/raps.txt" "$a/stats.json" "$dst/"
+    mawk -v out="$dst" -v n="$(field n "$sum")" -v crop="$crop" -v croponly=1 -f "$AVG" "$a/spectrum.txt" \
+      || die "cropping the spectrum of $grp failed"
+    if [ "$checked" -eq 0 ] && [ "$exp" = comparison ]; then
+      # check bench-average.awk against cfpo-analyze on this group
+      chk=$(mawk -v out="$work/tmp" -v n="$(field n "$sum")" -v crop=1 -f "$AVG" "$a/spectrum.txt")
+      for m in eff_nyquist oscillation raps_peak; do
+        awk -v a="$(field "$m" " $sum")" -v b="$(field "$m" " $chk")" 'BEGIN { d = a - b; exit !(d < 1e-5 && d > -1e-5) }' \
+          || die "bench-average.awk disagrees with cfpo-analyze on $grp: $m $(field "$m" " $sum") vs $(field "$m" " $chk")"
+      done
+      checked=1
+    fi
+    rm -rf "$a"
+    printf '%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,cfpo-analyze\n' "$grp" "$exp" "$mname" "$variant" \
+      "$(field n "$sum")" "$it" "$(field sets "$sum")" "$ids" "$(field K "$sum")" "$(field delta_min "$sum")" \
+      "$(field delta_avg "$sum")" "$(field raps_peak "$sum")" "$(field raps_peak_r "$sum")" \
+      "$(field eff_nyquist "$sum")" "$(field oscillation "$sum")" >>"$scsv"
+  else
+    # sets of different n (maximal Poisson-disk sets): one analysis per set at
+    # a common K, averaged by bench-average.awk
+    specs=()
+    for f in "${files[@]}"; do
+      a="$work/tmp/an-$grp-$(basename "$f" .txt)"
+      "$B/cfpo-analyze" -q -K "$K" -o "$a" "$f" >"$a.sum" || die "cfpo-analyze failed on $f"
+      specs+=("$a/spectrum.txt")
+    done
+    nmean=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* n=\([0-9]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.1f", s / k }')
+    dmin=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* delta_min=\([^ ]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.6f", s / k }')
+    davg=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* delta_avg=\([^ ]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.6f", s / k }')
+    sum=$(mawk -v out="$dst" -v n="$nmean" -v crop="$crop" -f "$AVG" "${specs[@]}") || die "averaging the spectra of $grp failed"
+    rm -rf "$work"/tmp/an-"$grp"-*
+    printf '%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,bench-average.awk\n' "$grp" "$exp" "$mname" "$variant" \
+      "$nmean" "$it" "$(field sets " $sum")" "$ids" "$(field K " $sum")" "$dmin" "$davg" "$(field raps_peak " $sum")" \
+      "$(field raps_peak_r " $sum")" "$(field eff_nyquist " $sum")" "$(field oscillation " $sum")" >>"$scsv"
+  fi
+  mv "$work/sets/$grp-s1.txt" "$work/data/points/$grp.txt"
+done <"$groups"
+rm -rf "$work/sets"
+
+T1=$(now)
+{
+  echo "# load average after: $(cut -d' ' -f1-3 /proc/loadavg); runs and analyses took $(hms "$(awk -v a="$T1" -v b="$T0" 'BEGIN { print a - b }')")"
+} >>"$work/runs.csv.tail"
+# the header gets the duration: insert before the column line
+awk -v tail="$(cat "$work/runs.csv.tail")" '/^run,/ && !done { print tail; done = 1 } { print }' "$csv" >"$csv.new"
+mv "$csv.new" "$csv"
+rm -f "$work/runs.csv.tail"
+
+[ -n "$ticker" ] && { kill "$ticker" 2>/dev/null; ticker=""; printf '\r\033[K' >&2; }
+echo "bench: $NJOBS runs done in $(hms "$(awk -v a="$T1" -v b="$T0" 'BEGIN { print a - b }')"); drawing the figures" >&2
+"$here/replot.sh" "$work" || die "drawing the figures failed"
+rm -rf "$work/tmp"
+mv "$work" "$final" || die "cannot rename $work to $final"
+echo "bench: results in $final (summary.md, runs.csv, fig-*.png); took $(hms "$(awk -v a="$(now)" -v b="$T0" 'BEGIN { print a - b }')")" >&2
+exit 0
+}

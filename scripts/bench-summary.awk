@@ -1,0 +1,168 @@
+# bench-summary.awk - summary.md of a results folder (run by replot.sh):
+#   awk -F, -v convkeys="fpo lfpo ..." -f bench-summary.awk runs.csv spectra.csv \
+#       plotdata/runtime.tsv plotdata/speedup.tsv
+# Every number is computed here from those files, and every table names the
+# rows of runs.csv (column `run`) and spectra.csv (column `group`) it comes
+# from; runtime.tsv and speedup.tsv are themselves medians of runs.csv rows
+# (replot.sh), listed in the tables.
+function key(m, v) { return (m == "cfpo") ? v : m }
+function label(k) {
+  return k == "dart" ? "DT" : k == "bs" ? "BS" : k == "bridson" ? "Bridson" : k == "fpo" ? "FPO" : \
+    k == "lfpo" ? "LFPO" : k == "cfpo" ? "CFPO" : k == "simplified" ? "simplified CFPO" : k
+}
+# "3 4 5 9" -> "3-5, 9"
+function ranges(s,   a, k, i, j, t, out, st, pv) {
+  k = split(s, a, " ")
+  for (i = 2; i <= k; i++) { t = a[i] + 0; for (j = i - 1; j >= 1 && a[j] + 0 > t; j--) a[j + 1] = a[j]; a[j + 1] = t }
+  out = ""; st = ""
+  for (i = 1; i <= k; i++) {
+    if (st != "" && a[i] == pv + 1) { pv = a[i]; continue }
+    if (st != "") out = out (out == "" ? "" : ", ") st (pv != st ? "-" pv : "")
+    st = a[i]; pv = a[i]
+  }
+  if (st != "") out = out (out == "" ? "" : ", ") st (pv != st ? "-" pv : "")
+  return out
+}
+function mean(s,   a, k, i, t) { k = split(s, a, " "); t = 0; for (i = 1; i <= k; i++) t += a[i]; return k ? t / k : 0 }
+function sd(s,   a, k, i, m, t) {
+  k = split(s, a, " "); if (k < 2) return 0
+  m = mean(s); t = 0; for (i = 1; i <= k; i++) t += (a[i] - m) ^ 2
+  return sqrt(t / (k - 1))
+}
+function secs(x) { return x >= 100 ? sprintf("%.0f", x) : x >= 10 ? sprintf("%.1f", x) : x >= 1 ? sprintf("%.2f", x) : sprintf("%.3g", x) }
+function pm(s, d) { return sprintf("%." d "f ± %." d "f", mean(s), sd(s)) }
+# mean ± sd with three significant digits of the mean
+function pmsig(s,   m, d) { m = mean(s); d = (m > 0) ? 2 - int(log(m) / log(10) + (m < 1 ? -0.999999 : 0)) : 3; if (d < 0) d = 0; return sprintf("%." d "f ± %." d "f", m, sd(s)) }
+function f3(x) { return (x == "-" || x == "") ? "-" : sprintf("%.3f", x) }
+function f2(x) { return (x == "-" || x == "") ? "-" : sprintf("%.2f", x) }
+function nice_n(n) { return n >= 1048576 && n % 1048576 == 0 ? n / 1048576 "M" : n >= 1024 && n % 1024 == 0 ? n / 1024 "k" : n }
+
+FILENAME ~ /runs\.csv$/ {
+  if ($0 ~ /^# /) { hdr[++nh] = substr($0, 3); if ($0 ~ /^# host: /) { host = $0; sub(/^# host: /, "", host); sub(/;.*/, "", host) }
+    if ($0 ~ /profile /) { prof = $0; sub(/.*profile /, "", prof); sub(/,.*/, "", prof) }
+    if ($0 ~ /^# plan: /) { plan = $0 } ; next }
+  if ($1 == "run") next
+  k = key($3, $4)
+  if ($2 == "comparison") {
+    if (!(k in cn)) order[++no] = k
+    cn[k]++; cid[k] = cid[k] " " $1; cdmin[k] = cdmin[k] " " $14; cdavg[k] = cdavg[k] " " $15
+    csec[k] = csec[k] " " $12; cthr[k] = $8; cN[k] = cN[k] " " $5; cmem[k] = cmem[k] " " $16
+    if ($11 != "-") cit[k] = cit[k] " " $11
+    if ($17 == "yes") cconv[k]++
+  }
+  if ($2 == "evolution") { ev = $10; if (!(ev in en)) eorder[++neo] = ev; en[ev]++; eid[ev] = eid[ev] " " $1; edmin[ev] = edmin[ev] " " $14; edavg[ev] = edavg[ev] " " $15 }
+  nrows++
+  next
+}
+FILENAME ~ /spectra\.csv$/ {
+  if ($1 == "group") next
+  sg[$1] = 1; seff[$1] = $14; sosc[$1] = $15; speak[$1] = $12; sruns[$1] = $8; sby[$1] = $16; ssets[$1] = $7
+  next
+}
+FILENAME ~ /runtime\.tsv$/ {
+  split($0, a, "\t")
+  nrt++; rt[nrt] = $0
+  next
+}
+FILENAME ~ /speedup\.tsv$/ {
+  split($0, a, "\t")
+  nsp++; sp[nsp] = $0
+  next
+}
+END {
+  N = 0; split(cN["cfpo"], tmp, " "); N = tmp[1]
+  printf "# Method comparison on %s (profile %s)\n\n", host, prof
+  print "Written by `scripts/bench.sh` (`make bench`), redrawn by `scripts/replot.sh` (`make replot`)."
+  print "Every number below is computed from `runs.csv` (one row per run; \"rows\" name its `run` column)"
+  print "and `spectra.csv` (one row per averaged spectrum, named by its `group` column, which lists the"
+  print "runs whose point sets it averages). Machine and build (the header of `runs.csv`):"
+  print ""
+  print "```"
+  for (i = 1; i <= nh; i++) if (hdr[i] !~ /^columns:/) print hdr[i]
+  print "```"
+  print ""
+  # ---- comparison
+  fpo = ("fpo" in cn) ? mean(csec["fpo"]) : 0
+  printf "## Quality and cost at n = %s, %d sets per method\n\n", N, cn["cfpo"]
+  print "| method | runs.csv rows | δ_min / Δ(n) | δ_avg / Δ(n) | eff. Nyquist | oscillation | iterations | converged | seconds | time / FPO's | threads | peak MB | spectra.csv group |"
+  print "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+  for (i = 1; i <= no; i++) {
+    k = order[i]; g = "comparison-" k
+    it = (k in cit) ? sprintf("%.0f ± %.0f", mean(cit[k]), sd(cit[k])) : "-"
+    cv = (k in cit) ? sprintf("%d of %d", cconv[k], cn[k]) : "-"
+    ratio = fpo > 0 ? sprintf("%.3f", mean(csec[k]) / fpo) : "-"
+    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f | `%s` |\n", label(k), ranges(cid[k]), pm(cdmin[k], 4), pm(cdavg[k], 4),
+      (g in sg) ? f3(seff[g]) : "-", (g in sg) ? f2(sosc[g]) : "-", it, cv, pmsig(csec[k]), ratio, cthr[k], mean(cmem[k]) / 1048576, g
+  }
+  print ""
+  print "δ_min / Δ(n), δ_avg / Δ(n): the smallest and the mean nearest-neighbour distance over the"
+  print "hexagonal bound Δ(n) = sqrt(2 / (√3 n)), as each run reported them; mean ± sample standard"
+  print "deviation over the sets (columns `delta_min`, `delta_avg` of the rows). Effective Nyquist"
+  print "(r_01 / √n, higher: less aliasing) and oscillation (10 × RMS deviation of the RAPS from 1 beyond"
+  print "its first crossing of 0.98; lower: flatter) are those of the power spectrum averaged over the"
+  print "sets (spectra.csv, analysis/README.md for the definitions). Iterations and seconds: mean ±"
+  print "standard deviation; seconds is the tool's sampling time (until converged for the iterative"
+  print "methods); time / FPO's = mean seconds over FPO's mean seconds, same n and one thread each"
+  print "(column `threads`). BS and Bridson produce maximal sets whose size varies a little with the seed"
+  print "(column `n`); their spectra are averaged by `scripts/bench-average.awk` (spectra.csv column"
+  print "`averaged_by`), the others by `cfpo-analyze` itself."
+  print ""
+  print "![comparison](fig-comparison.png)"
+  print ""
+  print "![convergence](fig-convergence.png)"
+  print ""
+  nk = split(convkeys, ck, " ")
+  if (nk) {
+    printf "Convergence: the traces of rows"
+    for (i = 1; i <= nk; i++) printf "%s %s (%s)", (i > 1 ? ";" : ""), ranges(cid[ck[i]]), label(ck[i])
+    print "; plotted as `plotdata/convergence-*.dat`."
+    print ""
+  }
+  # ---- evolution
+  if (neo) {
+    print "## Evolution of CFPO"
+    print ""
+    print "| iteration | runs.csv rows | δ_min / Δ(n) | δ_avg / Δ(n) | eff. Nyquist | oscillation | spectra.csv group |"
+    print "| --- | --- | --- | --- | --- | --- | --- |"
+    for (i = 1; i <= neo; i++) {
+      ev = eorder[i]; g = "evolution-it" ev
+      printf "| %s | %s | %s | %s | %s | %s | `%s` |\n", ev, ranges(eid[ev]), pm(edmin[ev], 4), pm(edavg[ev], 4), (g in sg) ? f3(seff[g]) : "-", (g in sg) ? f2(sosc[g]) : "-", g
+    }
+    if ("cfpo" in cn) printf "| converged | %s | %s | %s | %s | %s | `comparison-cfpo` |\n", ranges(cid["cfpo"]), pm(cdmin["cfpo"], 4), pm(cdavg["cfpo"], 4), f3(seff["comparison-cfpo"]), f2(sosc["comparison-cfpo"])
+    print ""
+    print "![evolution](fig-evolution.png)"
+    print ""
+  }
+  # ---- runtime
+  print "## Runtime"
+  print ""
+  print "Median over seeds of every uncapped run (experiments `comparison` and `runtime`), per method,"
+  print "threads, ranks and n (`plotdata/runtime.tsv`)."
+  print ""
+  print "| method | threads | ranks | n | runs | seconds (median) | seconds per iteration | iterations | runs.csv rows |"
+  print "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+  nkeys = split("dart bs bridson fpo lfpo cfpo simplified", korder, " ")
+  for (j = 1; j <= nkeys; j++) for (i = 1; i <= nrt; i++) {
+    split(rt[i], a, "\t")
+    if (a[1] != korder[j]) continue
+    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", label(a[1]), a[2], a[3], a[4], a[7], secs(a[5]), (a[6] == "-" ? "-" : sprintf("%.3g", a[6])), a[8], ranges(a[9])
+  }
+  print ""
+  print "![runtime](fig-runtime.png)"
+  print ""
+  print "## Speedup"
+  print ""
+  print "Median time on 1 thread and 1 rank over the median time of the configuration, same method, n"
+  print "and seeds (`plotdata/speedup.tsv`; on 2 cores this is 1 against 2 threads)."
+  print ""
+  print "| method | n | threads | ranks | speedup | runs.csv rows (1 thread \\| this configuration) |"
+  print "| --- | --- | --- | --- | --- | --- |"
+  for (i = 1; i <= nsp; i++) {
+    split(sp[i], a, "\t")
+    if (a[5] == 1) continue
+    split(a[7], b, "|")
+    printf "| %s | %s | %s | %s | %.2f | %s \\| %s |\n", label(a[1]), a[2], a[3], a[4], a[6], ranges(b[1]), ranges(b[2])
+  }
+  print ""
+  print "![speedup](fig-speedup.png)"
+}

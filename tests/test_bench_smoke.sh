@@ -1,0 +1,163 @@
+#!/usr/bin/env bash
+# test_bench_smoke.sh BUILD_DIR - `make bench PROFILE=smoke` end to end
+# (scripts/bench.sh, scripts/replot.sh) into a temporary results root:
+# the folder and nothing else appears; runs.csv has the documented header and
+# columns, one well-formed row per planned run, every method and experiment;
+# the evolution snapshots are the states their traces say; every figure is a
+# PNG (signature and header checked); summary.md shows every figure and
+# numbers that recompute from runs.csv; replot redraws everything from the
+# folder alone; errors give one line, a non-zero exit and leave nothing.
+set -uo pipefail
+B=$(cd "${1:-build}" && pwd)
+SRC=$(cd "$(dirname "$0")/.." && pwd)
+T=$(mktemp -d "${TMPDIR:-/tmp}/cfpo-bench-test.XXXXXX")
+trap 'rm -rf "$T"' EXIT
+pass=0; fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+check() { local what=$1; shift; if "$@"; then ok; else bad "$what"; fi; }
+cd "$SRC" || exit 1
+
+# ---- the smoke run ----------------------------------------------------------
+export CFPO_RESULTS="$T/res"
+if ! scripts/bench.sh "$B" smoke >"$T/out" 2>"$T/err"; then
+  echo "FAIL: bench.sh smoke exited non-zero:"; tail -n 5 "$T/err"; echo "0 passed, 1 failed"; exit 1
+fi
+ok
+n_dirs=$(find "$T/res" -mindepth 1 -maxdepth 1 | wc -l)
+check "exactly one folder under the results root (found $n_dirs)" [ "$n_dirs" -eq 1 ]
+R=$(find "$T/res" -mindepth 1 -maxdepth 1 -type d | head -n 1)
+check "folder named <date>-<time>-<host>" grep -Eq '/[0-9]{8}-[0-9]{6}-[^/]+$' <<<"$R"
+check "progress lines on stderr ([k/N] ... elapsed ... left)" grep -Eq '^bench: \[[0-9]+/[0-9]+\] .* elapsed, about .* left: ' "$T/err"
+
+# ---- runs.csv -------------------------------------------------------------------
+csv="$R/runs.csv"
+cols="run,experiment,method,variant,n,n_target,seed,threads,ranks,max_iter,iterations,seconds,seconds_per_iteration,delta_min,delta_avg,peak_bytes,converged,wall_seconds,trace"
+check "runs.csv column line" [ "$(grep -v '^#' "$csv" | head -n 1)" = "$cols" ]
+for h in 'cpu: ' 'cores: ' 'compiler: ' 'C flags: ' 'git commit: ' 'FFTW ' 'CGAL ' 'OpenMPI ' 'gnuplot ' 'load average before' 'load average after'; do
+  check "runs.csv header names '$h'" grep -q "^# .*$h" "$csv"
+done
+planned=$(sed -n 's/^# plan: .*; \([0-9]*\) runs$/\1/p' "$csv")
+rows=$(grep -v '^#' "$csv" | tail -n +2 | wc -l)
+check "one row per planned run ($rows rows, $planned planned)" [ -n "$planned" ] && [ "$rows" -eq "$planned" ] && [ "$rows" -gt 0 ]
+bad_rows=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, '
+  function num(x) { return x ~ /^[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?$/ }
+  function int_(x) { return x ~ /^[0-9]+$/ }
+  { e = "" }
+  NF != 19 { e = e " fields=" NF }
+  $1 != NR { e = e " run" }
+  $2 !~ /^(evolution|comparison|runtime)$/ { e = e " experiment" }
+  $3 !~ /^(cfpo|fpo|lfpo|dart|bs|bridson)$/ { e = e " method" }
+  ($3 == "cfpo") != ($4 == "cfpo" || $4 == "simplified") || ($3 != "cfpo" && $4 != "-") { e = e " variant" }
+  !int_($5) || !int_($6) || !int_($7) || !int_($8) || $9 != 1 { e = e " n/seed/threads/ranks" }
+  $10 != "-" && !int_($10) { e = e " max_iter" }
+  !num($12) || !num($16) || $16 == 0 || !num($18) { e = e " seconds/peak/wall" }
+  !num($14) || !num($15) || $14 > 1.2 || $15 > 1.2 || $14 > $15 + 1e-9 { e = e " delta" }
+  $3 ~ /^(dart|bs|bridson)$/ && ($11 != "-" || $13 != "-" || $17 != "-" || $19 != "-") { e = e " non-iterative" }
+  $3 ~ /^(cfpo|fpo|lfpo)$/ && (!int_($11) || $17 !~ /^(yes|no)$/ || $19 == "-") { e = e " iterative" }
+  $3 ~ /^(cfpo|fpo|lfpo)$/ && $11 > 0 && ($13 - $12 / $11 > 1e-5 * $13 + 1e-9 || $12 / $11 - $13 > 1e-5 * $13 + 1e-9) { e = e " s/iter" }
+  $10 != "-" && ($11 != $10 || $17 != "no") { e = e " capped" }
+  $2 == "comparison" && $3 ~ /^(cfpo|fpo|lfpo)$/ && $17 != "yes" { e = e " not converged" }
+  e != "" { print $1 ":" e }')
+check "every row well formed${bad_rows:+ (bad: $bad_rows)}" [ -z "$bad_rows" ]
+keys=$(grep -v '^#' "$csv" | awk -F, '$2 == "comparison" { print ($3 == "cfpo" ? $4 : $3) }' | sort -u | tr '\n' ' ')
+check "comparison has all 7 methods (found: $keys)" [ "$keys" = "bridson bs cfpo dart fpo lfpo simplified " ]
+for e in evolution comparison runtime; do check "experiment $e present" grep -q "^[0-9]*,$e," "$csv"; done
+threads=$(grep -v '^#' "$csv" | awk -F, '$2 == "runtime" && $3 == "cfpo" { print $8 }' | sort -un | tr '\n' ' ')
+check "runtime has CFPO on 1 and $(nproc) threads (found: $threads)" grep -qw 1 <<<"$threads"
+for f in $(grep -v '^#' "$csv" | tail -n +2 | cut -d, -f19 | grep -v '^-$'); do
+  [ -s "$R/$f" ] || { bad "trace $f missing"; break; }
+done
+ok
+
+# the evolution snapshot after K iterations is the state of row K of the
+# comparison run's trace (same seed; the output is thread-independent)
+mism=$(grep -v '^#' "$csv" | awk -F, -v R="$R" '
+  $2 == "comparison" && $3 == "cfpo" && $4 == "cfpo" { tr[$7] = $19 }
+  $2 == "evolution" { ev[NR] = $0 }
+  END { for (i in ev) { split(ev[i], a, ","); f = R "/" tr[a[7]]; d = ""
+    while ((getline line < f) > 0) { split(line, b, "\t"); if (b[1] == a[10]) d = b[2] }
+    close(f)
+    if (d == "" && a[10] == 0) continue
+    if (d == "" || d - a[14] > 1e-6 || a[14] - d > 1e-6) print a[1] } }')
+check "evolution rows match the comparison traces${mism:+ (rows: $mism)}" [ -z "$mism" ]
+
+# ---- spectra.csv ------------------------------------------------------------------
+groups=$(tail -n +2 "$R/spectra.csv" | cut -d, -f1 | tr '\n' ' ')
+ng=$(tail -n +2 "$R/spectra.csv" | wc -l)
+check "spectra.csv: 5 evolution + 7 comparison groups (found $ng: $groups)" [ "$ng" -eq 12 ]
+for g in $groups; do
+  check "analysis of $g (spectrum, raps)" [ -s "$R/data/analysis/$g/spectrum.txt" ] && [ -s "$R/data/analysis/$g/raps.txt" ]
+  check "seed-1 point set of $g" [ -s "$R/data/points/$g.txt" ]
+done
+check "BS and Bridson averaged by bench-average.awk, same-n groups by cfpo-analyze" \
+  awk -F, 'NR > 1 && (($3 == "bs" || $3 == "bridson") != ($16 == "bench-average.awk")) { exit 1 }' "$R/spectra.csv"
+
+# ---- figures ----------------------------------------------------------------------
+png_ok() { # PNG signature, then an IHDR chunk with a non-zero width and height
+  [ -s "$1" ] || return 1
+  [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] || return 1
+  [ "$(head -c 16 "$1" | tail -c 4)" = IHDR ] || return 1
+  local w h
+  w=$(head -c 20 "$1" | tail -c 4 | od -An -tu1 | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }')
+  h=$(head -c 24 "$1" | tail -c 4 | od -An -tu1 | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }')
+  [ "$w" -ge 400 ] && [ "$h" -ge 300 ] && [ "$(stat -c %s "$1")" -gt 10000 ]
+}
+FIGS="evolution comparison convergence runtime speedup"
+for f in $FIGS; do
+  check "fig-$f.png is a PNG image" png_ok "$R/fig-$f.png"
+  check "summary.md shows fig-$f.png" grep -q "](fig-$f.png)" "$R/summary.md"
+  check "scripts/fig-$f.gp exists" [ -f scripts/fig-$f.gp ]
+done
+check "no other PNG than the figures" [ "$(find "$R" -name '*.png' | wc -l)" -eq 5 ]
+
+# ---- summary.md: numbers recompute from runs.csv ------------------------------------
+for k in cfpo fpo; do
+  row=$(grep -v '^#' "$csv" | awk -F, -v k="$k" '$2 == "comparison" && $3 == k && ($4 == "cfpo" || $4 == "-") { s += $14; c++; id = id (id == "" ? "" : " ") $1 }
+    END { printf "%.4f|%s", s / c, id }')
+  mean=${row%%|*}
+  ids=${row#*|}
+  first=${ids%% *}; last=${ids##* }
+  lbl=$([ "$k" = cfpo ] && echo CFPO || echo FPO)
+  check "summary.md: $lbl row cites runs $first-$last and delta_min mean $mean" \
+    grep -q "^| $lbl | $first-$last | $mean ± " "$R/summary.md"
+done
+
+# ---- replot: from the folder alone ----------------------------------------------------
+sum_before=$(md5sum "$csv" "$R/spectra.csv")
+cp "$R/summary.md" "$T/summary.before"
+rm -f "$R"/fig-*.png "$R/summary.md"
+rm -rf "$R/plotdata"
+if scripts/replot.sh "$R" >"$T/rout" 2>"$T/rerr"; then ok; else bad "replot.sh failed: $(tail -n 1 "$T/rerr")"; fi
+for f in $FIGS; do check "replot redrew fig-$f.png" png_ok "$R/fig-$f.png"; done
+check "replot rewrote the same summary.md" cmp -s "$R/summary.md" "$T/summary.before"
+check "replot left runs.csv and spectra.csv alone" [ "$(md5sum "$csv" "$R/spectra.csv")" = "$sum_before" ]
+(cd "$T/res/.." && mkdir -p results && cp -r "$R" results/ && "$SRC/scripts/replot.sh" >/dev/null 2>&1)
+check "replot without an argument takes the newest folder under results/" [ -s "$T/results/$(basename "$R")/fig-speedup.png" ]
+
+# ---- errors: one line, non-zero, nothing left --------------------------------------------
+one_line_err() { # expected-rc cmd...: exit status and one "prog: ..." line
+  local want=$1; shift
+  "$@" >"$T/e.out" 2>"$T/e.err"; local rc=$?
+  [ "$rc" -eq "$want" ] && [ "$(wc -l <"$T/e.err")" -eq 1 ] && grep -Eq '^(bench|replot): ' "$T/e.err"
+}
+export CFPO_RESULTS="$T/res2"
+check "unknown profile: exit 2, one line" one_line_err 2 scripts/bench.sh "$B" huge
+check "missing build: exit 1, one line" one_line_err 1 scripts/bench.sh "$T/nobuild" smoke
+check "failed runs leave no folder" [ ! -e "$T/res2" ] || [ -z "$(ls -A "$T/res2")" ]
+mkdir -p "$T/notres"
+check "replot of a folder without runs.csv: exit 1, one line" one_line_err 1 scripts/replot.sh "$T/notres"
+# SIGTERM in the middle of the runs: neither the folder nor its temporary
+scripts/bench.sh "$B" smoke >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1 50); do [ -n "$(ls -A "$T/res2" 2>/dev/null)" ] && break; sleep 0.1; done
+sleep 1
+kill -TERM "$pid" 2>/dev/null
+wait "$pid"; rc=$?
+check "SIGTERM: non-zero exit (got $rc)" [ "$rc" -ne 0 ]
+check "SIGTERM: nothing left under the results root" [ -z "$(ls -A "$T/res2" 2>/dev/null)" ]
+sleep 0.3
+check "SIGTERM: no run left behind" [ -z "$(pgrep -f "$T/res2" || true)" ]
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
