@@ -403,6 +403,33 @@ int comm_file_write_at(comm_file *f, uint64_t offset, const void *buf, size_t by
     return 0;
 }
 
+#ifdef CFPO_HAVE_MPI
+/* The next piece of a run list for one collective write: at most maxruns
+ * runs and PIECE bytes, starting at element *done of run *k. Fills the
+ * block lengths and displacements (when bl is not NULL); returns the count. */
+static int next_piece(const uint64_t *first, const uint64_t *len, int64_t nruns, size_t elem,
+                      int64_t maxruns, int64_t *k, uint64_t *done, int *bl, MPI_Aint *dp, size_t *bytes_out)
+{
+    size_t bytes = 0;
+    int cnt = 0;
+    while (*k < nruns && cnt < maxruns && bytes < PIECE) {
+        uint64_t take = len[*k] - *done;
+        if (bytes + take * elem > PIECE) take = (PIECE - bytes) / elem;
+        if (take == 0) break;
+        if (bl) {
+            bl[cnt] = (int)(take * elem);
+            dp[cnt] = (MPI_Aint)((first[*k] + *done) * elem);
+        }
+        cnt++;
+        bytes += take * elem;
+        *done += take;
+        if (*done == len[*k]) { (*k)++; *done = 0; }
+    }
+    if (bytes_out) *bytes_out = bytes;
+    return cnt;
+}
+#endif
+
 int comm_file_write_runs(comm_file *f, uint64_t base, size_t elem, const void *buf, int64_t nruns,
                          const uint64_t *first, const uint64_t *len)
 {
@@ -412,26 +439,14 @@ int comm_file_write_runs(comm_file *f, uint64_t base, size_t elem, const void *b
          * write through an hindexed file view; every rank takes part in the
          * same number of them. */
         const int64_t maxruns = (int64_t)1 << 26;
-        int64_t k = 0;
+        int64_t k = 0, rounds = 0;
         uint64_t done = 0; /* elements of run k already written */
         const char *p = buf;
-        int64_t rounds = 0;
         {
-            /* count this rank's rounds */
             int64_t kk = 0;
             uint64_t dd = 0;
             while (kk < nruns) {
-                size_t bytes = 0;
-                int64_t cnt = 0;
-                while (kk < nruns && cnt < maxruns && bytes < PIECE) {
-                    uint64_t take = len[kk] - dd;
-                    if (bytes + take * elem > PIECE) take = (PIECE - bytes) / elem;
-                    if (take == 0) break;
-                    bytes += take * elem;
-                    cnt++;
-                    dd += take;
-                    if (dd == len[kk]) { kk++; dd = 0; }
-                }
+                next_piece(first, len, nruns, elem, maxruns, &kk, &dd, NULL, NULL, NULL);
                 rounds++;
             }
         }
@@ -442,19 +457,8 @@ int comm_file_write_runs(comm_file *f, uint64_t base, size_t elem, const void *b
         if (!bl || !dp) comm_abort(1);
         int ok = 1;
         for (int64_t r = 0; r < all_rounds; r++) {
-            size_t bytes = 0;
-            int cnt = 0;
-            while (k < nruns && cnt < maxruns && bytes < PIECE) {
-                uint64_t take = len[k] - done;
-                if (bytes + take * elem > PIECE) take = (PIECE - bytes) / elem;
-                if (take == 0) break;
-                bl[cnt] = (int)(take * elem);
-                dp[cnt] = (MPI_Aint)((first[k] + done) * elem);
-                cnt++;
-                bytes += take * elem;
-                done += take;
-                if (done == len[k]) { k++; done = 0; }
-            }
+            size_t bytes;
+            int cnt = next_piece(first, len, nruns, elem, maxruns, &k, &done, bl, dp, &bytes);
             MPI_Datatype t;
             MPI_Type_create_hindexed(cnt, bl, dp, MPI_BYTE, &t);
             MPI_Type_commit(&t);
