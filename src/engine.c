@@ -300,8 +300,30 @@ static inline uint64_t id_of(const cfpo_engine *E, uint64_t code)
     return (code & ARRIVAL_CODE) ? E->arr[code & ~ARRIVAL_CODE].r.id : E->pid[code];
 }
 
-static int relocate(cfpo_engine *E)
+/* The cells that can have sent points into own cell (lx, ly) in the phase
+ * of colour (a, b): the cell itself and, with period 3, the one cell of
+ * that colour in its 3x3 block (every 3x3 block holds one cell of each
+ * colour); with another period, all nine. Returns the count. */
+static int senders(const cfpo_engine *E, int64_t lx, int64_t ly, int a, int b, int off[9][2])
 {
+    if (E->G.period != 3) {
+        int m = 0;
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dx = -1; dx <= 1; dx++) off[m][0] = dx, off[m][1] = dy, m++;
+        return m;
+    }
+    int sx = (int)(((b - (E->x0 + lx)) % 3 + 3) % 3), sy = (int)(((a - (E->y0 + ly)) % 3 + 3) % 3);
+    if (sx == 2) sx = -1;
+    if (sy == 2) sy = -1;
+    off[0][0] = 0, off[0][1] = 0;
+    if (sx == 0 && sy == 0) return 1;
+    off[1][0] = sx, off[1][1] = sy;
+    return 2;
+}
+
+static int relocate(cfpo_engine *E, int colour)
+{
+    const int a_ = colour / E->G.period, b_ = colour % E->G.period;
     const int64_t w = E->w, cells = E->cells;
     const uint32_t *st = E->start;
     uint32_t *ns = E->start2;
@@ -311,8 +333,10 @@ static int relocate(cfpo_engine *E)
     for (int64_t c = 0; c < cells; c++) {
         const int64_t lx = c % w, ly = c / w;
         uint32_t cnt = 0;
-        for (int dy = -1; dy <= 1; dy++)
-            for (int dx = -1; dx <= 1; dx++) {
+        int off[9][2];
+        const int no = senders(E, lx, ly, a_, b_, off);
+        for (int o = 0; o < no; o++) {
+                const int dx = off[o][0], dy = off[o][1];
                 const int64_t e = locate(E, lx + dx, ly + dy);
                 if (e < 0) continue;
                 const unsigned mk = mask[e] & 0x1ffu;
@@ -333,8 +357,10 @@ static int relocate(cfpo_engine *E)
         const int64_t lx = c % w, ly = c / w;
         uint32_t wpos = ns[c];
         int arrivals = 0;
-        for (int dy = -1; dy <= 1; dy++)
-            for (int dx = -1; dx <= 1; dx++) {
+        int off[9][2];
+        const int no = senders(E, lx, ly, a_, b_, off);
+        for (int o = 0; o < no; o++) {
+                const int dx = off[o][0], dy = off[o][1];
                 const int64_t e = locate(E, lx + dx, ly + dy);
                 if (e < 0) continue;
                 const unsigned mk = mask[e] & 0x1ffu;
@@ -409,20 +435,29 @@ static int relocate(cfpo_engine *E)
     return ensure_scratch(E);
 }
 
+static inline void mark_cell(cfpo_engine *E, int64_t x, int64_t y)
+{
+    E->mask[y * E->w + x] |= NEED_BIT;
+    E->bdirty[(y / SB) * E->nbx + x / SB] = 1;
+}
+
+/* Marks the own cells of the 3x3 block around (lx, ly) (an own cell or a
+ * halo cell) to be solved again, and their statistics blocks stale. */
 static void mark_block(cfpo_engine *E, int64_t lx, int64_t ly)
 {
+    if (lx >= 1 && lx < E->w - 1 && ly >= 1 && ly < E->h - 1) { /* inside: no wrap, no halo */
+        for (int64_t y = ly - 1; y <= ly + 1; y++)
+            for (int64_t x = lx - 1; x <= lx + 1; x++) mark_cell(E, x, y);
+        return;
+    }
     for (int dy = -1; dy <= 1; dy++)
         for (int dx = -1; dx <= 1; dx++) {
             int64_t x = lx + dx, y = ly + dy;
             if (E->wrapx) x = (x % E->w + E->w) % E->w;
-            else if (x < -1 || x > E->w) continue;
+            else if (x < 0 || x >= E->w) continue;
             if (E->wrapy) y = (y % E->h + E->h) % E->h;
-            else if (y < -1 || y > E->h) continue;
-            int64_t e = locate(E, x, y);
-            if (e >= 0) {
-                E->mask[e] |= NEED_BIT;
-                E->bdirty[(e / E->w / SB) * E->nbx + (e % E->w) / SB] = 1;
-            }
+            else if (y < 0 || y >= E->h) continue;
+            mark_cell(E, x, y);
         }
 }
 
@@ -1197,7 +1232,7 @@ int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
     if (!crossed)
         for (int k = 0; k < E->nnb; k++) E->nb[k].nout = 0;
     if (rc == 0 && exchange_migrants(E) != 0) rc = -1;
-    if (rc == 0 && (crossed || E->narr) && relocate(E) != 0) rc = -1;
+    if (rc == 0 && (crossed || E->narr) && relocate(E, colour) != 0) rc = -1;
     if (rc != 0) {
         fprintf(stderr, "cfpo: rank %d: out of memory while moving points between cells\n", E->rank);
         comm_abort(1);
