@@ -108,7 +108,7 @@ static int converge(int64_t n, int threads, uint64_t seed)
     cfpo_engine *E = cfpo_engine_create(n, &o, err, sizeof err);
     if (!E) cli_fail(prog, "%s", err);
     cfpo_result r;
-    cfpo_engine_run(E, &r);
+    cfpo_engine_run(E, &r, err, sizeof err);
     double total = cli_now() - c.t0;
     uint64_t peak = cli_peak_rss();
     printf("RESULT converge n=%lld threads=%d avg0929_iter=%d avg0929_seconds=%.2f min092_iter=%d "

@@ -27,7 +27,7 @@ static double physical_memory(void)
     return (pages > 0 && size > 0) ? (double)pages * (double)size : INFINITY;
 }
 
-int cfpo_validate(int64_t n, const cfpo_options *o, char *err, size_t errlen)
+static int validate_options(const cfpo_options *o, char *err, size_t errlen)
 {
     if (o->variant != CFPO_VARIANT_FULL && o->variant != CFPO_VARIANT_SIMPLIFIED) {
         snprintf(err, errlen, "unknown variant %d", o->variant);
@@ -45,6 +45,34 @@ int cfpo_validate(int64_t n, const cfpo_options *o, char *err, size_t errlen)
         snprintf(err, errlen, "max_iter %d is negative", o->max_iter);
         return -1;
     }
+    return 0;
+}
+
+int cfpo_validate_ranks(int64_t n, const cfpo_options *o, int64_t rank_points, int64_t rank_cells,
+                        int64_t rank_ring, int ranks_here, char *err, size_t errlen)
+{
+    if (validate_options(o, err, errlen) != 0) return -1;
+    cfpo_grid G;
+    if (cfpo_grid_init(&G, n, o->variant, o->seed, err, errlen) != 0) return -1;
+    if (rank_points >= (int64_t)UINT32_MAX) {
+        snprintf(err, errlen, "n = %lld puts about %lld points on one rank (at most %lld); use more ranks",
+                 (long long)n, (long long)rank_points, (long long)UINT32_MAX - 1);
+        return -1;
+    }
+    double need = (double)cfpo_engine_bytes_local(rank_points, rank_cells, rank_ring, o->threads) *
+                  (ranks_here > 0 ? ranks_here : 1);
+    double have = physical_memory();
+    if (need > 0.9 * have) {
+        snprintf(err, errlen, "n = %lld is too large for memory: the ranks on this machine need %.1f GB, "
+                 "it has %.1f GB", (long long)n, need / 1e9, have / 1e9);
+        return -2;
+    }
+    return 0;
+}
+
+int cfpo_validate(int64_t n, const cfpo_options *o, char *err, size_t errlen)
+{
+    if (validate_options(o, err, errlen) != 0) return -1;
     cfpo_grid G;
     if (cfpo_grid_init(&G, n, o->variant, o->seed, err, errlen) != 0) return -1;
     /* Bucket offsets are 32-bit: one process holds fewer than 2^32 points. */
@@ -68,7 +96,10 @@ int cfpo_sample(int64_t n, const cfpo_options *o, double *xy, cfpo_result *res, 
     cfpo_engine *E = cfpo_engine_create(n, o, err, errlen);
     if (!E) return -1;
     cfpo_result r;
-    cfpo_engine_run(E, &r);
+    if (cfpo_engine_run(E, &r, err, errlen) != 0) {
+        cfpo_engine_free(E);
+        return -1;
+    }
     cfpo_engine_points(E, xy);
     cfpo_engine_free(E);
     if (res) *res = r;

@@ -42,6 +42,7 @@ typedef struct {
     double max_disp;   /* largest net displacement over the iteration / cell side */
     double seconds;    /* wall time of this iteration, statistics included */
     int converged;     /* max_disp < tol */
+    double max_move;   /* largest single move in the iteration / cell side */
 } cfpo_iter_stats;
 
 /* Called after every iteration (and once with iteration 0); returning

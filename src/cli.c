@@ -123,9 +123,26 @@ void cli_unguard_tmp(const char *path)
         if (guarded_used[i] && strcmp(guarded[i], path) == 0) guarded_used[i] = 0;
 }
 
+static int errors_quiet;
+static void (*exit_hook)(void);
+
+void cli_set_exit(int quiet, void (*hook)(void))
+{
+    errors_quiet = quiet;
+    exit_hook = hook;
+}
+
+static void leave(int code) __attribute__((noreturn));
+static void leave(int code)
+{
+    if (exit_hook) exit_hook();
+    exit(code);
+}
+
 static void vreport(const char *prog, const char *fmt, va_list ap)
 {
     fflush(stdout);
+    if (errors_quiet) return;
     fprintf(stderr, "%s: ", prog);
     vfprintf(stderr, fmt, ap);
     fputc('\n', stderr);
@@ -135,13 +152,15 @@ void cli_usage_error(const char *prog, const char *fmt, ...)
 {
     remove_guarded();
     fflush(stdout);
-    fprintf(stderr, "%s: ", prog);
-    va_list ap;
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fprintf(stderr, " (see %s --help)\n", prog);
-    exit(CLI_USAGE);
+    if (!errors_quiet) {
+        fprintf(stderr, "%s: ", prog);
+        va_list ap;
+        va_start(ap, fmt);
+        vfprintf(stderr, fmt, ap);
+        va_end(ap);
+        fprintf(stderr, " (see %s --help)\n", prog);
+    }
+    leave(CLI_USAGE);
 }
 
 void cli_fail(const char *prog, const char *fmt, ...)
@@ -151,7 +170,7 @@ void cli_fail(const char *prog, const char *fmt, ...)
     va_start(ap, fmt);
     vreport(prog, fmt, ap);
     va_end(ap);
-    exit(CLI_FAIL);
+    leave(CLI_FAIL);
 }
 
 /* ------------------------------------------------------ time, memory */

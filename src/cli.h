@@ -30,6 +30,11 @@ void cli_usage_error(const char *prog, const char *fmt, ...)
 void cli_fail(const char *prog, const char *fmt, ...)
     __attribute__((noreturn, format(printf, 2, 3)));
 
+/* For programs run on several ranks that all reach the same error: quiet
+ * = 1 on all but one rank keeps the message to one line; hook (may be
+ * NULL) runs before exit, e.g. to end MPI cleanly. */
+void cli_set_exit(int quiet, void (*hook)(void));
+
 /* Registers (or with NULL, clears) a temporary file to unlink when the
  * process is interrupted or fails; installs SIGINT/SIGTERM handlers. At most
  * 4 at once. */

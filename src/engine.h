@@ -1,53 +1,112 @@
-/* engine.h - layer 3: the CFPO iteration over the whole torus with OpenMP.
+/* engine.h - layer 3: the CFPO iteration over one tile of cells with
+ * OpenMP, plus the layer-4 duties that need the tile's insides (packing
+ * halo cells and migrating points; the messages go through comm).
  *
  * Owns: the buckets (points stored cell by cell, CSR offsets, id order
- * inside a cell), the colour schedule (9 phases, or 4 for the simplified
+ * inside a cell), the halo ring (copies of the neighbouring ranks' cells
+ * next to the tile), the colour schedule (9 phases, or 4 for the simplified
  * variant), the per-phase solve of every cell of one colour in parallel, the
- * skip flags, net displacements and the per-iteration statistics.
- * Does not own: choosing g or making the start (grid), the local solver
- * (geom), files or the command line.
+ * skip flags, net displacements, the per-iteration statistics (reduced over
+ * ranks), output in id order and checkpoints.
+ * Does not own: choosing g or the initial points (grid), the cut into tiles
+ * (tiles), the local solver (geom), MPI itself (comm), the command line.
  *
- * With one process the tile is the whole torus and a cell's halo is its own
- * wrap: neighbour (cx+1) of the last column is column 0, shifted by +1. */
+ * With one rank the tile is the whole torus and a cell's neighbours across
+ * the seam are its own cells (column -1 is column g - 1, shifted by -1):
+ * there is no halo and no message. */
 #ifndef CFPO_ENGINE_H
 #define CFPO_ENGINE_H
 
 #include <stdint.h>
 
 #include "cfpo.h"
+#include "comm.h"
 #include "grid.h"
 #include "pointfile.h"
+#include "tiles.h"
 
 typedef struct cfpo_engine cfpo_engine;
 
-/* Allocates and makes the initial set. NULL with a message on failure. */
+/* How a run is spread over ranks and what it keeps. Zero means default. */
+typedef struct {
+    int px, py;              /* a forced cut into px x py tiles, or 0 */
+    int check;               /* verify invariants after every migration and
+                                halo refresh (tests; slow) */
+    const char *resume;      /* start from this checkpoint instead of anew */
+    const char *checkpoint;  /* write a checkpoint here ... */
+    int checkpoint_every;    /* ... every this many iterations */
+} cfpo_engine_config;
+
+/* Allocates and makes the initial set (collective over all ranks). NULL
+ * with a message on failure, on every rank. */
 cfpo_engine *cfpo_engine_create(int64_t n, const cfpo_options *o, char *err, size_t errlen);
+cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_engine_config *cfg,
+                                   char *err, size_t errlen);
 void cfpo_engine_free(cfpo_engine *E);
 
 const cfpo_grid *cfpo_engine_grid(const cfpo_engine *E);
+const cfpo_tiling *cfpo_engine_tiling(const cfpo_engine *E);
+/* The iteration the engine stands at (nonzero after a resume). */
+int cfpo_engine_iteration(const cfpo_engine *E);
 
-/* Bytes the engine would allocate for n points (for refusing runs that
- * cannot fit before allocating anything). */
+/* Bytes one rank allocates for nlocal points in a tile of `cells` cells
+ * (plus its ring of `ring` halo cells), with `threads` threads. */
+uint64_t cfpo_engine_bytes_local(int64_t nlocal, int64_t cells, int64_t ring, int threads);
+/* The same for the whole torus on one rank. */
 uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads);
 
-/* One phase: every cell of colour `colour` in parallel. Returns the number
- * of moves; *solved gets the number of local problems solved. */
+/* cfpo_validate for one rank of several: options, n, and whether the
+ * largest tile (rank_points points in rank_cells cells plus rank_ring halo
+ * cells) fits, times the ranks sharing this machine. 0, -1 (invalid) or
+ * -2 (memory). */
+int cfpo_validate_ranks(int64_t n, const cfpo_options *o, int64_t rank_points, int64_t rank_cells,
+                        int64_t rank_ring, int ranks_here, char *err, size_t errlen);
+
+/* One phase: every cell of colour `colour` in parallel, then migration and
+ * halo refresh. Returns the number of moves on this rank; *solved gets the
+ * number of local problems solved. */
 int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved);
 
-/* One whole iteration (all colours in order), with its statistics. */
+/* One whole iteration (all colours in order), with its statistics reduced
+ * over all ranks. */
 void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s);
 
-/* delta_min and delta_avg of the current set, normalised by Delta(n). */
+/* delta_min and delta_avg of the current set over all ranks, normalised by
+ * Delta(n); the same bits for any number of ranks and threads. */
 void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg);
 
-/* Copies the points into xy (2n doubles) in id order. */
+/* One rank only: copies the points into xy (2n doubles) in id order. */
 void cfpo_engine_points(const cfpo_engine *E, double *xy);
 
-/* Streams the points in id order into an open writer (no 16n copy: uses
- * the engine's spare buffers). */
+/* Collective: writes every rank's points into f, point of id k at byte
+ * base + 16 k (x then y, little-endian float64). */
+int cfpo_engine_write_points(cfpo_engine *E, comm_file *f, uint64_t base, char *err, size_t errlen);
+/* One rank only: streams the points in id order into a text/npy/raw
+ * writer. */
 int cfpo_engine_write(cfpo_engine *E, pf_writer *w, char *err, size_t errlen);
 
-/* Runs to convergence or max_iter, calling o->progress; fills res. */
-void cfpo_engine_run(cfpo_engine *E, cfpo_result *res);
+/* Runs to convergence or max_iter (writing checkpoints when configured),
+ * calling o->progress on every rank; fills res. 0, or -1 with a message
+ * when a checkpoint could not be written (on every rank). */
+int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen);
+
+/* Per-rank totals over the run, as min, mean and max over ranks
+ * (collective). Bytes are those this rank sent. */
+typedef struct {
+    double compute[3], migrate[3], halo[3];
+    double halo_bytes[3], migrate_bytes[3];
+    int64_t phases;
+    int64_t checked_migrations, checked_halos; /* with config.check */
+} cfpo_engine_timing;
+void cfpo_engine_timing_get(cfpo_engine *E, cfpo_engine_timing *t);
+
+/* Reads a checkpoint's header (every rank reads it). */
+typedef struct {
+    int64_t n, iteration;
+    uint64_t seed;
+    int variant, converged;
+    double tol;
+} cfpo_checkpoint_info;
+int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err, size_t errlen);
 
 #endif

@@ -82,8 +82,9 @@ struct pf_writer {
 
 const char *pf_writer_tmpname(const pf_writer *w) { return w ? w->tmp : NULL; }
 
-static int write_npy_header(FILE *f, size_t n)
+size_t pf_header(pf_format fmt, size_t n, unsigned char *buf, size_t cap)
 {
+    if (fmt != PF_NPY) return 0;
     char dict[128];
     int len = snprintf(dict, sizeof dict,
                        "{'descr': '<f8', 'fortran_order': False, 'shape': (%zu, 2), }", n);
@@ -92,13 +93,21 @@ static int write_npy_header(FILE *f, size_t n)
     size_t total = 10 + (size_t)len + 1;
     size_t pad = (64 - total % 64) % 64;
     size_t hlen = (size_t)len + pad + 1;
+    if (10 + hlen > cap) return 0;
     unsigned char pre[10] = {0x93, 'N', 'U', 'M', 'P', 'Y', 1, 0,
                              (unsigned char)(hlen & 0xff), (unsigned char)(hlen >> 8)};
-    if (fwrite(pre, 1, 10, f) != 10) return -1;
-    if (fwrite(dict, 1, (size_t)len, f) != (size_t)len) return -1;
-    for (size_t i = 0; i < pad; i++)
-        if (fputc(' ', f) == EOF) return -1;
-    return fputc('\n', f) == EOF ? -1 : 0;
+    memcpy(buf, pre, 10);
+    memcpy(buf + 10, dict, (size_t)len);
+    memset(buf + 10 + len, ' ', pad);
+    buf[10 + hlen - 1] = '\n';
+    return 10 + hlen;
+}
+
+static int write_npy_header(FILE *f, size_t n)
+{
+    unsigned char h[PF_HEADER_MAX];
+    size_t len = pf_header(PF_NPY, n, h, sizeof h);
+    return len && fwrite(h, 1, len, f) == len ? 0 : -1;
 }
 
 pf_writer *pf_writer_open(const char *path, size_t n, char *err, size_t errlen)

@@ -39,6 +39,13 @@ void pf_writer_abort(pf_writer *w);
 /* The temporary file's name (for a signal handler that must unlink it). */
 const char *pf_writer_tmpname(const pf_writer *w);
 
+/* The bytes before the first point: the .npy header (a multiple of 64
+ * bytes), or nothing for raw files. Returns its length (0 for raw or text,
+ * or when cap is too small). For writers that place points themselves
+ * (MPI-IO): point k then lies at offset len + 16 k. */
+#define PF_HEADER_MAX 256
+size_t pf_header(pf_format fmt, size_t n, unsigned char *buf, size_t cap);
+
 /* Whole-array helpers. */
 int pf_write(const char *path, const double *xy, size_t n, char *err, size_t errlen);
 /* Reads a whole file; *xy is malloc'ed (2n doubles) and owned by the caller.

@@ -162,7 +162,9 @@ static void test_monotone(int variant)
     brute_deltas(xy, n, &bmin, &bavg);
     cfpo_engine_deltas(E, &emin, &eavg);
     cfpo_nn_stats(xy, (size_t)n, NULL, &smin, &savg);
-    CHECK(emin == bmin && fabs(eavg - bavg) < 1e-12, "engine deltas %.17g %.17g, brute %.17g %.17g",
+    /* The engine sums distances in units of Delta / 2^24 (an exact sum, the
+     * same for any split into ranks): each term is off by at most 3e-8. */
+    CHECK(emin == bmin && fabs(eavg - bavg) < 4e-8, "engine deltas %.17g %.17g, brute %.17g %.17g",
           emin, eavg, bmin, bavg);
     CHECK(smin == bmin && fabs(savg - bavg) < 1e-12, "cfpo_nn_stats %.17g %.17g, brute %.17g %.17g",
           smin, savg, bmin, bavg);
@@ -245,7 +247,7 @@ static void test_api_matches_engine(void)
     char err[256];
     cfpo_engine *E = cfpo_engine_create(n, &o, err, sizeof err);
     cfpo_result r;
-    cfpo_engine_run(E, &r);
+    cfpo_engine_run(E, &r, err, sizeof err);
     double *a = malloc(2 * n * sizeof *a);
     cfpo_engine_points(E, a);
     cfpo_engine_free(E);

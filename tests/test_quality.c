@@ -53,7 +53,8 @@ int main(void)
                 CHECK(r.converged, "seed %d did not converge", seed);
                 CHECK(dmin >= 0.92, "seed %d: delta_min %.4f < 0.92", seed, dmin);
                 CHECK(davg >= 0.928, "seed %d: delta_avg %.4f < 0.928", seed, davg);
-                CHECK(fabs(dmin - r.delta_min) < 1e-12 && fabs(davg - r.delta_avg) < 1e-12,
+                /* delta_avg is an exact sum in units of Delta / 2^24 */
+                CHECK(fabs(dmin - r.delta_min) < 1e-12 && fabs(davg - r.delta_avg) < 4e-8,
                       "seed %d: engine reports %.6f/%.6f, brute force %.6f/%.6f", seed,
                       r.delta_min, r.delta_avg, dmin, davg);
             }

@@ -1,0 +1,154 @@
+#!/usr/bin/env bash
+# test_mpi.sh BUILD_DIR MPIRUN - cfpo under mpirun: output byte-identical to
+# the one-process file for any rank count and cut (1 x P, P x 1, uneven
+# tiles), invariants checked after every migration and halo refresh
+# (--check: point count, id checksum, ownership, every halo cell equal to
+# its owner's cell), checkpoint and resume on another rank count, a rank
+# killed mid-run leaving a usable checkpoint, and errors reported once with
+# every rank exiting non-zero.
+set -u
+B=$(cd "$1" && pwd)
+MPIRUN=$2
+CFPO="$B/cfpo"
+T=$(mktemp -d /tmp/cfpo-mpi-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 1
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
+run() { # run P ARGS...: cfpo on P ranks, 120 s at most
+  local p=$1; shift
+  timeout 120 "$MPIRUN" --oversubscribe -np "$p" "$CFPO" -q "$@"
+}
+
+# The reference: one process, no mpirun, 2 threads.
+N=4096
+"$CFPO" -n $N -q -t 2 -o ref.npy --trace ref.tsv >ref.out || bad "reference run failed"
+"$CFPO" -n $N -q -t 1 --variant simplified -o refs.bin >/dev/null || bad "simplified reference failed"
+
+same() { # same FILE REF WHAT
+  if cmp -s "$1" "$2"; then ok; else bad "$3: output differs from the one-process run"; fi
+}
+
+# P = 1, 2, 3, 4, 6 with the chosen cut; 1 x P, P x 1 and uneven tiles
+# (g = 57 for 4096 points: 57 / 2, 4 and 6 do not divide evenly).
+for spec in "1 -" "2 -" "3 -" "4 -" "6 -" "4 1x4" "4 4x1" "6 2x3" "6 3x2" "6 6x1" "3 1x3"; do
+  set -- $spec
+  p=$1 tiles=()
+  [ "$2" != "-" ] && tiles=(--tiles "$2")
+  rm -f out.npy
+  if run "$p" -n $N -t 1 "${tiles[@]}" -o out.npy --trace out.tsv >run.out 2>run.err; then
+    same out.npy ref.npy "P=$p tiles=$2"
+    # the statistics are reduced exactly: the trace matches but for timings
+    if cmp -s <(cut -f1-6 out.tsv) <(cut -f1-6 ref.tsv); then ok; else bad "P=$p tiles=$2: trace statistics differ"; fi
+    grep -q "ranks=$p " run.out && ok || bad "P=$p: summary does not say ranks=$p"
+  else
+    bad "P=$p tiles=$2: run failed: $(head -3 run.err)"
+  fi
+done
+
+# Threads inside ranks, and the simplified variant, in raw format.
+run 2 -n $N -t 2 -o out.npy >/dev/null 2>run.err && same out.npy ref.npy "2 ranks x 2 threads" || bad "2x2 run failed"
+run 3 -n $N -t 1 --variant simplified -o outs.bin >/dev/null 2>run.err && same outs.bin refs.bin "simplified on 3 ranks" ||
+  bad "simplified on 3 ranks failed: $(head -3 run.err)"
+
+# --check: invariants after every migration and halo refresh; on a tiny
+# grid (n = 100: 9 x 9 cells, tiles of 3 to 5 cells) and on 4096 points.
+for spec in "4 100 2x2" "3 100 3x1" "3 100 1x3" "6 4096 3x2"; do
+  set -- $spec
+  if run "$1" -n "$2" -t 1 --tiles "$3" --check --max-iter 40 -o chk.npy >/dev/null 2>chk.err; then
+    if grep -Eq "check: [1-9][0-9]* migrations and [1-9][0-9]* halo refreshes verified" chk.err; then ok
+    else bad "--check on $1 ranks n=$2: no verification reported: $(cat chk.err)"; fi
+    "$CFPO" -n "$2" -q -t 1 --max-iter 40 -o chk1.npy >/dev/null
+    same chk.npy chk1.npy "--check on $1 ranks n=$2 tiles $3"
+  else
+    bad "--check on $1 ranks n=$2 tiles $3 failed: $(head -3 chk.err)"
+  fi
+done
+
+# Checkpoint then resume, also on another rank count: the same final bytes.
+run 2 -n $N -t 1 --max-iter 60 --checkpoint ck.bin --checkpoint-every 25 -o part.npy >/dev/null 2>ck.err ||
+  bad "checkpointed run failed: $(head -3 ck.err)"
+[ -f ck.bin ] && ok || bad "no checkpoint written"
+ls ck.bin.tmp.* >/dev/null 2>&1 && bad "a temporary checkpoint was left behind" || ok
+for p in 1 3 4; do
+  rm -f res.npy
+  if [ $p = 1 ]; then "$CFPO" -q -t 1 --resume ck.bin -o res.npy >res.out 2>res.err
+  else run $p -t 1 --resume ck.bin -o res.npy >res.out 2>res.err; fi
+  same res.npy ref.npy "resume (from iteration 50) on $p ranks"
+done
+# The resumed run's iterations continue the count.
+grep -q "iterations=$(grep -o 'iterations=[0-9]*' ref.out | cut -d= -f2) " res.out && ok ||
+  bad "resumed run reports $(grep -o 'iterations=[0-9]*' res.out), reference $(grep -o 'iterations=[0-9]*' ref.out)"
+
+# A rank killed mid-run: the job ends, the checkpoint under its final name
+# is whole, and resuming it gives the uninterrupted result.
+"$CFPO" -n 65536 -q -t 1 --max-iter 40 -o big_ref.npy >/dev/null
+timeout 120 "$MPIRUN" --oversubscribe -np 2 "$CFPO" -q -n 65536 -t 1 --max-iter 40 --checkpoint kill.bin \
+  --checkpoint-every 2 -o big.npy >/dev/null 2>kill.err &
+job=$!
+for _ in $(seq 600); do [ -f kill.bin ] && break; sleep 0.05; done
+sleep 0.3
+victim=$(pgrep -f -- "--checkpoint kill.bin" | while read -r p; do
+  [ "$(cat /proc/$p/comm 2>/dev/null)" = cfpo ] && echo "$p"; done | tail -1)
+if [ -n "$victim" ]; then
+  kill -KILL "$victim"
+  wait $job
+  rc=$?
+  [ $rc -ne 0 ] && ok || bad "killing a rank did not end the job with an error"
+  [ -f big.npy ] && bad "output written although a rank died" || ok
+  if "$CFPO" -q -t 1 --max-iter 40 --resume kill.bin -o big_res.npy >/dev/null 2>res.err; then
+    same big_res.npy big_ref.npy "resume after a killed rank"
+  else bad "checkpoint left by the killed job is unusable: $(cat res.err)"; fi
+else
+  wait $job
+  bad "could not find a rank to kill (the run ended too soon?)"
+fi
+
+# Errors: one message for the whole job, every rank non-zero, no files.
+expect_err() { # CODE PATTERN P ARGS...
+  local code=$1 pat=$2 p=$3; shift 3
+  local before; before=$(ls -A | sort)
+  timeout 60 "$MPIRUN" --oversubscribe -np "$p" "$CFPO" "$@" >e.out 2>e.err
+  local rc=$?
+  local msgs; msgs=$(grep -c '^cfpo:' e.err)
+  local after; after=$(ls -A | grep -v -e '^e.out$' -e '^e.err$' | sort)
+  if [ $rc -eq 0 ]; then bad "mpirun -np $p cfpo $*: exit 0"
+  elif [ "$msgs" -ne 1 ]; then bad "mpirun -np $p cfpo $*: $msgs messages: $(grep '^cfpo:' e.err)"
+  elif ! grep -q -- "$pat" e.err; then bad "mpirun -np $p cfpo $*: message lacks '$pat': $(grep '^cfpo:' e.err)"
+  elif [ "$after" != "$(echo "$before" | grep -v -e '^e.out$' -e '^e.err$')" ]; then bad "cfpo $*: left files"
+  else ok; fi
+  # every rank exits with the same code: mpirun reports it
+  [ $rc -eq "$code" ] && ok || bad "mpirun -np $p cfpo $*: exit $rc, expected $code"
+}
+expect_err 2 "unknown option" 3 -n $N --bogus
+expect_err 2 "not a positive whole number" 2 -n abc
+expect_err 2 "tiles too small" 5 -n 100 -o x.npy
+expect_err 2 "use at most 9 ranks" 11 -n 100
+expect_err 2 "does not give one tile" 2 -n $N --tiles 3x1
+expect_err 2 "text output needs one rank" 2 -n $N -o x.txt
+expect_err 2 "the checkpoint is for" 2 --resume ck.bin --seed 9
+head -c 1000 ck.bin >trunc.bin
+expect_err 1 "truncated" 2 --resume trunc.bin -o y.npy
+expect_err 1 "cannot open" 2 --resume missing.bin
+mkdir ro && chmod 555 ro
+if [ "$(id -u)" = 0 ]; then : # root writes anywhere; use a missing folder instead
+  expect_err 1 "cannot create" 2 -n $N -o nodir/x.npy
+else
+  expect_err 1 "cannot create" 2 -n $N -o ro/x.npy
+fi
+
+# --dry-run: arithmetic only, for any P.
+if "$CFPO" -n 1e10 --dry-run --ranks 1024 >dry.out 2>dry.err; then
+  grep -q "px=32 py=32" dry.out && ok || bad "dry run for 1024 ranks is not a 32x32 cut: $(cat dry.out)"
+  bpr=$(grep -o 'bytes_per_rank=[0-9]*' dry.out | cut -d= -f2)
+  ppr=$(grep -o 'points_per_rank=[0-9]*' dry.out | cut -d= -f2)
+  awk -v b="$bpr" -v p="$ppr" 'BEGIN { exit !(p > 9.0e6 && p < 1.1e7 && b / p > 40 && b / p < 80) }' && ok ||
+    bad "dry run: $ppr points and $bpr bytes per rank for 1e10 on 1024 ranks"
+else
+  bad "dry run failed: $(cat dry.err)"
+fi
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
