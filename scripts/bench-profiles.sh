@@ -10,7 +10,9 @@
 #   RT_REPS       seeds per configuration of the runtime experiment
 #   RT_THREADS    thread counts of CFPO in the runtime experiment (the
 #                 baselines are single-threaded); 1, powers of two, all cores
-#   RT_SIZES_<m>  n of the runtime experiment per method m (empty: none)
+#   RT_SIZES_<m>  n of the runtime experiment per method m (empty: none);
+#                 CFPO also runs on as many MPI ranks as cores (one thread
+#                 each) at RT_SIZES_cfpo when mpirun is installed
 #
 # The runtime figure uses every uncapped run (comparison and runtime
 # experiments), so the runtime plan leaves out n = COMP_N on COMP_THREADS.
@@ -66,6 +68,7 @@ bench_profile() {
 # seconds per point and iteration on one core.
 bench_estimate() {
   awk -v k="$1" -v n="$2" -v t="$3" -v m="$4" 'BEGIN {
+    if (k == "cfpo-mpi") { k = "cfpo"; t = 2 }
     if (k == "dart") { print 8e-6 * n + 0.01; exit }
     if (k == "bs") { print 1.5e-6 * n + 0.01; exit }
     if (k == "bridson") { print 5e-6 * n + 0.01; exit }

@@ -80,6 +80,16 @@ for k in cfpo simplified fpo lfpo dart bs bridson; do
     done
   done
 done
+# CFPO on several ranks (one thread each, as many ranks as cores) at the
+# runtime sizes, when mpirun is here: the speedup figure's ranks lines.
+MPIRUN=$(command -v mpirun || true)
+if [ -n "$MPIRUN" ] && [ "$cores" -ge 2 ]; then
+  for n in $RT_SIZES_cfpo; do
+    for s in $(seq 1 "$RT_REPS"); do add runtime cfpo-mpi "$n" "$s" 1 - -; done
+  done
+fi
+# mpirun refuses root unless told (these machines run as root)
+[ "$(id -u)" = 0 ] && export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 NJOBS=$(wc -l <"$plan")
 EST_TOTAL=$(awk -F'\t' '{ s += $7 } END { printf "%.3f", s }' "$plan")
 if [ "$PLAN_ONLY" = 1 ]; then
@@ -158,12 +168,14 @@ while IFS=$'\t' read -r exp key n seed t maxit est out; do
   k=$((k + 1))
   id=$(printf '%04d' "$k")
   label="$exp $key n=$n seed=$seed threads=$t"
+  [ "$key" = cfpo-mpi ] && label="$label ranks=$cores"
   [ "$maxit" != - ] && label="$label max-iter=$maxit"
   progress "$k" "$label" "$est_done" "$act_done" \
     "$(awk -v tot="$EST_TOTAL" -v d="$est_done" 'BEGIN { print tot - d }')"
   trace=-
   case $key in
     cfpo|simplified) cmd=("$B/cfpo" --variant "$([ "$key" = cfpo ] && echo cfpo || echo simplified)" -t "$t") ;;
+    cfpo-mpi) cmd=("$MPIRUN" --oversubscribe -np "$cores" "$B/cfpo" --variant cfpo -t "$t") ;;
     fpo) cmd=("$B/cfpo-fpo") ;;
     lfpo) cmd=("$B/cfpo-lfpo") ;;
     dart) cmd=("$B/cfpo-dart") ;;

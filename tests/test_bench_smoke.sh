@@ -49,7 +49,7 @@ bad_rows=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, '
   $2 !~ /^(evolution|comparison|runtime)$/ { e = e " experiment" }
   $3 !~ /^(cfpo|fpo|lfpo|dart|bs|bridson)$/ { e = e " method" }
   ($3 == "cfpo") != ($4 == "cfpo" || $4 == "simplified") || ($3 != "cfpo" && $4 != "-") { e = e " variant" }
-  !int_($5) || !int_($6) || !int_($7) || !int_($8) || $9 != 1 { e = e " n/seed/threads/ranks" }
+  !int_($5) || !int_($6) || !int_($7) || !int_($8) || !int_($9) || ($9 != 1 && !($3 == "cfpo" && $8 == 1 && $2 == "runtime")) { e = e " n/seed/threads/ranks" }
   $10 != "-" && !int_($10) { e = e " max_iter" }
   !num($12) || !num($16) || $16 == 0 || !num($18) { e = e " seconds/peak/wall" }
   !num($14) || !num($15) || $14 > 1.2 || $15 > 1.2 || $14 > $15 + 1e-9 { e = e " delta" }
@@ -66,6 +66,17 @@ for e in evolution comparison runtime; do check "experiment $e present" grep -q 
 threads=$(grep -v '^#' "$csv" | awk -F, '$2 == "runtime" && $3 == "cfpo" { print $8 }' | sort -un | tr '\n' ' ')
 want=$(. scripts/bench-profiles.sh && bench_threads_list | tr ' ' '\n' | sort -un | tr '\n' ' ')
 check "runtime has CFPO on $want threads (found: $threads)" [ "$threads" = "$want" ]
+if command -v mpirun >/dev/null && [ "$(nproc)" -ge 2 ]; then
+  # CFPO on several ranks: present, and the same set as on one rank (the
+  # same iterations and statistics at each n and seed)
+  mpi=$(grep -v '^#' "$csv" | awk -F, '$2 == "runtime" && $3 == "cfpo" && $9 > 1' | wc -l)
+  check "runtime has CFPO on several ranks ($mpi rows)" [ "$mpi" -gt 0 ]
+  diffr=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, '$3 == "cfpo" && $4 == "cfpo" && $10 == "-" {
+      k = $6 "/" $7; v = $11 "/" $14 "/" $15
+      if ($9 == 1) one[k] = v; else many[k] = v }
+    END { for (k in many) if (!(k in one) || one[k] != many[k]) printf "%s ", k }')
+  check "CFPO on several ranks gives the one-rank result${diffr:+ (differs: $diffr)}" [ -z "$diffr" ]
+fi
 for f in $(grep -v '^#' "$csv" | tail -n +2 | cut -d, -f19 | grep -v '^-$'); do
   [ -s "$R/$f" ] || { bad "trace $f missing"; break; }
 done
