@@ -808,6 +808,8 @@ typedef struct {
     uint64_t id;
 } ck_rec;
 
+static void sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi);
+
 /* Every rank reads a contiguous share of ids, sends each point to the rank
  * owning its cell, then builds its buckets. */
 static int load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
@@ -903,21 +905,7 @@ static int load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
         E->py[k] = E->ty[i];
         E->pid[k] = E->tid[i];
     }
-    for (int64_t c = 0; c < E->cells; c++)
-        for (uint32_t k = E->start[c] + 1; k < E->start[c + 1]; k++) {
-            double x = E->px[k], y = E->py[k];
-            uint64_t id = E->pid[k];
-            uint32_t j = k;
-            while (j > E->start[c] && E->pid[j - 1] > id) {
-                E->px[j] = E->px[j - 1];
-                E->py[j] = E->py[j - 1];
-                E->pid[j] = E->pid[j - 1];
-                j--;
-            }
-            E->px[j] = x;
-            E->py[j] = y;
-            E->pid[j] = id;
-        }
+    for (int64_t c = 0; c < E->cells; c++) sort3(E->pid, E->px, E->py, E->start[c], E->start[c + 1]);
     E->nloc = (int64_t)have;
     E->maxcell = maxcell;
     int64_t tot = E->nloc;
