@@ -187,7 +187,7 @@ while IFS=$'\t' read -r exp key n seed t maxit est out; do
   case $key in dart|bs|bridson) ;; *) trace="data/traces/run-$id.tsv"; cmd+=(--trace "$work/$trace") ;; esac
   [ "$out" != - ] && cmd+=(-o "$work/$out")
   t1=$(now)
-  "${cmd[@]}" >"$work/tmp/run.out" 2>"$work/tmp/run.err" &
+  "${cmd[@]}" </dev/null >"$work/tmp/run.out" 2>"$work/tmp/run.err" &
   child=$!
   rc=0
   wait "$child" || rc=$?
