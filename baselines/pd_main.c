@@ -114,13 +114,10 @@ int pd_main(int argc, char **argv, int kind)
         int64_t v;
         switch (ch) {
         case 'n':
-            if (cli_parse_i64(optarg, 1, INT64_MAX, &v) != 0)
-                cli_usage_error(prog, "-n: '%s' is not a positive whole number", optarg);
-            n = v;
+            n = cli_arg_points(prog, optarg);
             break;
         case 's':
-            if (cli_parse_u64(optarg, &p.seed) != 0)
-                cli_usage_error(prog, "--seed: '%s' is not a non-negative 64-bit integer", optarg);
+            p.seed = cli_arg_seed(prog, optarg);
             break;
         case 'r':
             if (cli_parse_double(optarg, 0, 1, &radius) != 0 || !(radius > 0))

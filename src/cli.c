@@ -173,6 +173,22 @@ void cli_fail(const char *prog, const char *fmt, ...)
     leave(CLI_FAIL);
 }
 
+int64_t cli_arg_points(const char *prog, const char *s)
+{
+    int64_t v;
+    if (cli_parse_i64(s, 1, INT64_MAX, &v) != 0)
+        cli_usage_error(prog, "-n: '%s' is not a positive whole number", s);
+    return v;
+}
+
+uint64_t cli_arg_seed(const char *prog, const char *s)
+{
+    uint64_t v;
+    if (cli_parse_u64(s, &v) != 0)
+        cli_usage_error(prog, "--seed: '%s' is not a non-negative 64-bit integer", s);
+    return v;
+}
+
 /* ------------------------------------------------------ time, memory */
 
 double cli_now(void)

@@ -22,6 +22,12 @@ int cli_parse_i64(const char *s, int64_t lo, int64_t hi, int64_t *out);
 int cli_parse_u64(const char *s, uint64_t *out);
 int cli_parse_double(const char *s, double lo, double hi, double *out);
 
+/* The options every sampler shares, parsed or refused with the suite's
+ * usage error: -n (a positive whole number, 2^20 and 1e6 forms too) and
+ * --seed (a 64-bit unsigned integer). */
+int64_t cli_arg_points(const char *prog, const char *s);
+uint64_t cli_arg_seed(const char *prog, const char *s);
+
 /* One line "prog: message" on stderr, then exit 2 (the line ends with a
  * pointer to --help) or 1.
  * Temporary files registered with cli_guard_tmp are removed first. */
