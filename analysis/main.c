@@ -141,7 +141,8 @@ typedef struct {
     size_t n;
     int K, set;
     double *P, *Psum, *Pref;
-    double *dmin, *davg;
+    double *dmin, *davg, *spike; /* per set */
+    int *spike_k;                /* per set: kx, ky */
     uint64_t hist[AN_NN_BINS];
     an_certificate cert;
     an_nufft_info nufft;
@@ -182,7 +183,9 @@ static void start(const char *file, size_t n)
     R.Pref = R.opt.check ? malloc(N * sizeof *R.Pref) : NULL;
     R.dmin = malloc((size_t)R.opt.nfiles * sizeof *R.dmin);
     R.davg = malloc((size_t)R.opt.nfiles * sizeof *R.davg);
-    if (!R.P || !R.Psum || (R.opt.check && !R.Pref) || !R.dmin || !R.davg)
+    R.spike = malloc((size_t)R.opt.nfiles * sizeof *R.spike);
+    R.spike_k = malloc(2 * (size_t)R.opt.nfiles * sizeof *R.spike_k);
+    if (!R.P || !R.Psum || (R.opt.check && !R.Pref) || !R.dmin || !R.davg || !R.spike || !R.spike_k)
         fail("%s: out of memory for K = %d", file, R.K);
     char *out = R.opt.out ? strdup(R.opt.out) : default_out(&R.opt);
     if (!out) fail("out of memory");
@@ -208,6 +211,12 @@ static void spectrum(const char *file, const double *xy, size_t n)
     }
     const size_t N = an_side(R.K) * an_side(R.K);
     for (size_t t = 0; t < N; t++) R.Psum[t] += R.P[t];
+    an_rings rings; /* this set's own spike ratio */
+    if (an_rings_compute(R.P, R.K, &rings) != 0) fail("%s: out of memory", file);
+    R.spike[R.set] = rings.spike_ratio;
+    R.spike_k[2 * R.set] = rings.spike_kx;
+    R.spike_k[2 * R.set + 1] = rings.spike_ky;
+    an_rings_free(&rings);
 }
 
 static void distances(const char *file, const double *xy, size_t n)
@@ -299,6 +308,7 @@ int main(int argc, char **argv)
         .delta_min_mean = R.n >= 2 ? mean_of(R.dmin, sets) : NAN,
         .delta_avg_mean = R.n >= 2 ? mean_of(R.davg, sets) : NAN,
         .nn_hist = R.n >= 2 ? R.hist : NULL, .rings = &rings, .hsd = &hsd,
+        .spike = R.spike, .spike_k = R.spike_k, .spike_mean = mean_of(R.spike, sets),
         .cert = R.opt.certify ? &R.cert : NULL, .threads = omp_get_max_threads(),
         .spectrum_seconds = R.spectrum_seconds, .out = outname};
     rep.seconds = cli_now() - t0;
@@ -314,6 +324,6 @@ int main(int argc, char **argv)
     an_print_summary(stdout, &rep);
     an_rings_free(&rings);
     free(outname);
-    free(R.P); free(R.Psum); free(R.Pref); free(R.dmin); free(R.davg);
+    free(R.P); free(R.Psum); free(R.Pref); free(R.dmin); free(R.davg); free(R.spike); free(R.spike_k);
     return 0;
 }

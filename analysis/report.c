@@ -176,11 +176,28 @@ static void json_spectrum(FILE *f, const an_report *r)
     jkey(f, "spike", 0);
     fprintf(f, "{\"ratio\": ");
     jnum(f, g->spike_ratio);
-    fprintf(f, ", \"kx\": %d, \"ky\": %d, \"ring\": %d, \"P\": ", g->spike_kx, g->spike_ky, g->spike_ring);
+    if (g->spike_ring > 0)
+        fprintf(f, ", \"kx\": %d, \"ky\": %d, \"ring\": %d", g->spike_kx, g->spike_ky, g->spike_ring);
+    else
+        fputs(", \"kx\": null, \"ky\": null, \"ring\": null", f);
+    fputs(", \"P\": ", f);
     jnum(f, g->spike_P);
     fputs(", \"ring_mean\": ", f);
     jnum(f, g->spike_mean);
-    fputc('}', f);
+    fprintf(f, ", \"min_ring_count\": %d}", AN_SPIKE_MIN_COUNT);
+    jkey(f, "spike_per_set", 0);
+    fputc('[', f);
+    for (int i = 0; i < r->sets; i++) {
+        fputs(i ? ", {\"ratio\": " : "{\"ratio\": ", f);
+        jnum(f, r->spike[i]);
+        if (isfinite(r->spike[i]))
+            fprintf(f, ", \"kx\": %d, \"ky\": %d}", r->spike_k[2 * i], r->spike_k[2 * i + 1]);
+        else
+            fputs(", \"kx\": null, \"ky\": null}", f);
+    }
+    fputc(']', f);
+    jkey(f, "spike_ratio_set_mean", 0);
+    jnum(f, r->spike_mean);
     jkey(f, "effective_nyquist", 0);
     jnum(f, h->eff_nyquist);
     jkey(f, "effective_nyquist_detail", 0);
@@ -319,8 +336,10 @@ void an_print_summary(FILE *f, const an_report *r)
     kv(f, "raps_peak_r", "%.6f", g->peak_ring / sqrt((double)r->n));
     kv(f, "eff_nyquist", "%.6f", r->hsd->eff_nyquist);
     kv(f, "oscillation", "%.6f", r->hsd->oscillation);
-    kv(f, "spike", "%.6g", g->spike_ratio);
-    fprintf(f, " spike_k=%d,%d", g->spike_kx, g->spike_ky);
+    kv(f, "spike_ratio", "%.6g", g->spike_ratio);
+    if (g->spike_ring > 0) fprintf(f, " spike_k=%d,%d", g->spike_kx, g->spike_ky);
+    else fputs(" spike_k=-", f);
+    kv(f, "spike_ratio_set_mean", "%.6g", r->spike_mean);
     if (r->cert) {
         const an_certificate *c = r->cert;
         fprintf(f, " certify=%s", c->fpd ? "pass" : "fail");

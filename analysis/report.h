@@ -31,8 +31,11 @@ typedef struct {
     const double *delta_min, *delta_avg; /* per set; NULL when n < 2 */
     double delta_min_mean, delta_avg_mean;
     const uint64_t *nn_hist;   /* AN_NN_BINS counts over all sets; NULL when n < 2 */
-    const an_rings *rings;
+    const an_rings *rings;     /* of the averaged spectrum */
     const an_hsd *hsd;
+    const double *spike;       /* per set: the set's own spike ratio (NAN: none) */
+    const int *spike_k;        /* per set: its kx, ky */
+    double spike_mean;         /* mean of the per-set spike ratios */
     const an_certificate *cert; /* NULL without --certify */
     int threads;
     double seconds, spectrum_seconds;

@@ -63,14 +63,18 @@ static void anisotropy(const double *P, int K, an_rings *r, double *dev)
 
 static void spike(const double *P, int K, an_rings *r)
 {
-    r->spike_ratio = 0;
+    r->spike_ratio = NAN;
+    r->spike_P = r->spike_mean = NAN;
+    r->spike_ring = 0;
+    double best = -1;
     for (int ky = 0; ky <= K; ky++)
         for (int kx = -K; kx <= K; kx++) {
             if (!in_half(kx, ky)) continue;
             int i = an_ring_of((int64_t)kx * kx + (int64_t)ky * ky);
-            if (i > K || !(r->mean[i] > 0)) continue;
+            if (i > K || r->count[i] < AN_SPIKE_MIN_COUNT || !(r->mean[i] > 0)) continue;
             double q = P[an_pidx(K, kx, ky)] / r->mean[i];
-            if (q > r->spike_ratio) {
+            if (q > best) {
+                best = q;
                 r->spike_ratio = q;
                 r->spike_P = P[an_pidx(K, kx, ky)];
                 r->spike_mean = r->mean[i];

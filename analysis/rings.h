@@ -4,13 +4,21 @@
  * i - 1/2 <= |k| < i + 1/2, i.e. i(i-1) < |k|^2 <= i(i+1)), the radially
  * averaged power spectrum (RAPS, the mean of P on each ring), the
  * anisotropy (10 log10 of the unbiased variance of P on the ring over the
- * squared mean, in dB, as psa computes it) and the largest single spike
- * P(k) / (its ring's mean). Rings 1..K are complete inside [-K, K]^2; k = 0
- * (ring 0) and the corners beyond ring K are left out. */
+ * squared mean, in dB, as psa computes it) and the spike ratio: the largest
+ * single P(k) over its ring's mean, on the rings of at least
+ * AN_SPIKE_MIN_COUNT frequencies. Rings 1..K are complete inside [-K, K]^2;
+ * k = 0 (ring 0) and the corners beyond ring K are left out. */
 #ifndef AN_RINGS_H
 #define AN_RINGS_H
 
 #include <stdint.h>
+
+/* Rings with fewer frequencies than this are left out of the spike ratio:
+ * P(-k) = P(k), so a ring of c frequencies holds c/2 independent values and
+ * its largest ratio is at most c/2, an average of too few values to say
+ * anything. Rings 1 and 2 (8 and 12 frequencies) are left out; ring 3 has
+ * 20 and every later ring more. */
+#define AN_SPIKE_MIN_COUNT 16
 
 typedef struct {
     int K;
@@ -19,8 +27,11 @@ typedef struct {
     double *mean;      /* [K+1] RAPS; mean[0] unused (0) */
     double *aniso_db;  /* [K+1] anisotropy in dB; NAN where undefined
                           (fewer than 2 values, or a zero mean) */
-    /* The largest P(k) / mean of its ring, k taken in the half plane
-     * ky > 0 or (ky = 0, kx > 0); ties go to the first in (ky, kx) order. */
+    /* The spike ratio: the largest P(k) / mean of its ring over the rings
+     * of at least AN_SPIKE_MIN_COUNT frequencies, k taken in the half plane
+     * ky > 0 or (ky = 0, kx > 0); ties go to the first in (ky, kx) order.
+     * NAN (and spike_ring 0) when no ring qualifies or every such ring
+     * has mean 0. */
     double spike_ratio, spike_P, spike_mean;
     int spike_kx, spike_ky, spike_ring;
     /* The highest ring mean. */

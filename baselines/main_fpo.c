@@ -1,5 +1,5 @@
 /* main_fpo.c - the `cfpo-fpo` and `cfpo-lfpo` commands: global and local
- * Farthest Point Optimization with cfpo's options, stopping rule, trace,
+ * Farthest Point Optimization with cfpo's options, stop rules, trace,
  * progress and summary. Everything computed comes from fpo.h; this file
  * only talks to the user. Built twice: FPO_PROG names the command and
  * FPO_LOCAL_DEFAULT picks the method when --local/--global is not given. */
@@ -13,6 +13,7 @@
 #include "cli.h"
 #include "fpo.h"
 #include "pointfile.h"
+#include "stoprule.h"
 
 #ifndef FPO_PROG
 #define FPO_PROG "cfpo-fpo"
@@ -34,11 +35,15 @@ static void usage(void)
            "      --local          LFPO: the largest empty circle in the removed point's\n"
            "                       2-ring only%s\n"
            "      --start S        random (default: uniform points) or grid (cfpo's\n"
-           "                       stratified start, the same points as `cfpo -s S`)\n"
+           "                       stratified start, the same points as\n"
+           "                       `cfpo --variant paper -s S`)\n"
            "      --max-iter K     stop after K iterations (default %d)\n"
            "      --tol T          a move must gain more than T * L, L = cfpo's cell side;\n"
            "                       converged when no point's net move over an iteration\n"
            "                       reaches it (default %g; 0 = any strict gain)\n"
+           "      --target-min D   stop as soon as delta_min >= D (and every other target holds)\n"
+           "      --target-avg D   stop as soon as delta_avg >= D (and every other target holds)\n"
+           "      --time-limit S   stop at the first iteration boundary past S seconds\n"
            "  -o, --output FILE    write the points; format from the extension:\n"
            "                       %s\n"
            "      --trace FILE     one TSV row per iteration (the columns of cfpo's trace)\n"
@@ -50,7 +55,9 @@ static void usage(void)
            CFPO_DEFAULT_MAX_ITER, CFPO_DEFAULT_TOL, PF_EXTENSIONS);
 }
 
-static void trace_row(bl_run *r, const cfpo_iter_stats *s)
+/* Writes the row and the progress line; returns the elapsed seconds it
+ * wrote, which the stop rules then judge. */
+static double trace_row(bl_run *r, const cfpo_iter_stats *s)
 {
     double el = cli_now() - r->t0;
     if (r->tf)
@@ -62,6 +69,7 @@ static void trace_row(bl_run *r, const cfpo_iter_stats *s)
                       "%.1fs/iter  elapsed %.1fs",
                       s->iteration, s->delta_min, s->delta_avg, (long long)s->moved,
                       s->max_disp, s->seconds, el);
+    return el;
 }
 
 int main(int argc, char **argv)
@@ -72,9 +80,13 @@ int main(int argc, char **argv)
         {"start", required_argument, 0, 'S'}, {"max-iter", required_argument, 0, 'm'},
         {"tol", required_argument, 0, 'T'}, {"output", required_argument, 0, 'o'},
         {"trace", required_argument, 0, 'r'}, {"quiet", no_argument, 0, 'q'},
-        {"help", no_argument, 0, 'h'}, {"version", no_argument, 0, 'V'}, {0, 0, 0, 0}};
+        {"help", no_argument, 0, 'h'}, {"version", no_argument, 0, 'V'},
+        {"target-min", required_argument, 0, 1001}, {"target-avg", required_argument, 0, 1002},
+        {"time-limit", required_argument, 0, 1003}, {0, 0, 0, 0}};
     fpo_options o;
     fpo_options_init(&o);
+    cfpo_stop_rules rules;
+    cfpo_stop_rules_init(&rules);
     o.local = FPO_LOCAL_DEFAULT;
     int64_t n = -1, max_iter = CFPO_DEFAULT_MAX_ITER;
     const char *out = NULL, *trace = NULL;
@@ -105,6 +117,9 @@ int main(int argc, char **argv)
             if (cli_parse_double(optarg, 0, 0.49, &o.tol) != 0)
                 cli_usage_error(prog, "--tol: '%s' is not a number in [0, 0.49]", optarg);
             break;
+        case 1001: cli_stop_option(prog, "target-min", optarg, &rules); break;
+        case 1002: cli_stop_option(prog, "target-avg", optarg, &rules); break;
+        case 1003: cli_stop_option(prog, "time-limit", optarg, &rules); break;
         case 'o': out = optarg; break;
         case 'r': trace = optarg; break;
         case 'q': quiet = 1; break;
@@ -139,12 +154,16 @@ int main(int argc, char **argv)
     double t = cli_now();
     fpo_deltas(E, &s.delta_min, &s.delta_avg);
     s.seconds = cli_now() - t;
-    trace_row(&run, &s);
+    double el = trace_row(&run, &s);
+    /* The stop rules of cfpo (stoprule.h), checked after the start and after
+     * every iteration, on the clock of the trace's elapsed column. */
     int it = 0;
-    while (!s.converged && it < max_iter) {
+    int why = cfpo_stop_check(&rules, &s, el, (int)max_iter);
+    while (!why) {
         fpo_iterate(E, &s);
         s.iteration = ++it;
-        trace_row(&run, &s);
+        el = trace_row(&run, &s);
+        why = cfpo_stop_check(&rules, &s, el, (int)max_iter);
     }
     double seconds = cli_now() - run.t0;
     bl_run_finish(&run, fpo_points(E), (size_t)n);
@@ -152,7 +171,8 @@ int main(int argc, char **argv)
     cli_summary sm = {.method = o.local ? "lfpo" : "fpo", .variant = "-", .n = n,
                       .seed = o.seed, .threads = 1, .ranks = 1, .iterations = it,
                       .seconds = seconds, .delta_min = s.delta_min, .delta_avg = s.delta_avg,
-                      .converged = s.converged, .peak_bytes = cli_peak_rss()};
+                      .converged = s.converged, .peak_bytes = cli_peak_rss(),
+                      .stop = cfpo_stop_name(why)};
     cli_print_summary(stdout, &sm);
     fpo_free(E);
     return 0;

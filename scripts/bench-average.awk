@@ -1,9 +1,12 @@
 # bench-average.awk - averages power spectra written by cfpo-analyze
 # (spectrum.txt, gnuplot nonuniform matrix, all with the same K) and derives
 # from the average what cfpo-analyze derives from its own: RAPS, anisotropy,
-# effective Nyquist frequency and oscillation, with analysis/README.md's
-# definitions (rings i(i-1) < |k|^2 <= i(i+1); unbiased ring variance; C(r)
-# at every |k|^2 <= K^2; oscillation over rings nu_osc .. nu_osc + 5 sqrt(n)).
+# effective Nyquist frequency, oscillation and spike ratio, with
+# analysis/README.md's definitions (rings i(i-1) < |k|^2 <= i(i+1); unbiased
+# ring variance; C(r) at every |k|^2 <= K^2; oscillation over rings nu_osc ..
+# nu_osc + 5 sqrt(n); spike: the largest P / ring mean over the half plane
+# ky > 0 or (ky = 0, kx > 0), rings of >= 16 frequencies, first in (ky, kx)
+# order on ties).
 #
 # Why it exists: cfpo-analyze averages only sets of equal n, and the maximal
 # Poisson-disk samplers (BS, Bridson) give a slightly different n per seed.
@@ -98,6 +101,15 @@ END {
     for (i = from; i <= to; i++) { d = mean[i] - 1; acc += cnt[i] * d * d; w += cnt[i] }
     osc = sprintf("%.6f", 10 * sqrt(acc / w))
   }
+  # spike ratio (rings.c)
+  best = -1; spike = "-"; sk = "-"
+  for (ky = 0; ky <= K; ky++) for (kx = -K; kx <= K; kx++) {
+    if (!(ky > 0 || kx > 0)) continue
+    i = ring(kx * kx + ky * ky)
+    if (i > K || cnt[i] < 16 || !(mean[i] > 0)) continue
+    q = P[ky, kx] / mean[i]
+    if (q > best) { best = q; spike = sprintf("%.6g", q); sk = kx "," ky }
+  }
   write_crop()
-  printf "sets=%d K=%d raps_peak=%.6f raps_peak_r=%.6f eff_nyquist=%s oscillation=%s\n", files, K, mean[peak], peak / sn, eff, osc
+  printf "sets=%d K=%d raps_peak=%.6f raps_peak_r=%.6f eff_nyquist=%s oscillation=%s spike_ratio=%s spike_k=%s\n", files, K, mean[peak], peak / sn, eff, osc, spike, sk
 }

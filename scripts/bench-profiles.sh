@@ -13,6 +13,19 @@
 #   RT_SIZES_<m>  n of the runtime experiment per method m (empty: none);
 #                 CFPO also runs on as many MPI ranks as cores (one thread
 #                 each) at RT_SIZES_cfpo when mpirun is installed
+#   TTQ_SIZES     n of the time-to-quality experiment: every iterative
+#                 method (TTQ_CONFIGS) runs with --trace until the quality
+#                 target TTQ_TARGET_MIN / TTQ_TARGET_AVG holds, it converges,
+#                 or its time limit (bench_ttq_limit) passes
+#   TTQ_BIG       n at which only CFPO (default variant, 2 threads) runs
+#                 that experiment (empty: none)
+#   TTQ_SEEDS     seeds per configuration of that experiment
+#   TTQ_MAXITER   iteration cap of its runs (- none)
+#   TTQ_CONFIGS   its configurations, KEY:THREADS (adaptive = cfpo's default
+#                 variant, paper = cfpo --variant paper); the one-thread runs
+#                 of one n and seed start together, one per core, pinned
+#                 (taskset), in groups of as many as there are cores, in this
+#                 order; a run on several threads runs alone
 #
 # The runtime figure uses every uncapped run (comparison and runtime
 # experiments), so the runtime plan leaves out n = COMP_N on COMP_THREADS.
@@ -33,12 +46,16 @@ bench_profile() {
   COMP_THREADS=1
   EVO_ITERS="0 1 2 5 10"
   RT_THREADS=$(bench_threads_list)
+  TTQ_TARGET_MIN=0.925; TTQ_TARGET_AVG=0.929
+  TTQ_CONFIGS="adaptive:1 fpo:1 paper:1 lfpo:1 adaptive:2"
+  TTQ_SIZES="4096 65536"; TTQ_BIG=""; TTQ_SEEDS=3; TTQ_MAXITER=-
   case "$1" in
     smoke)
       SETS=2; COMP_N=1024; RT_REPS=1
       RT_SIZES_cfpo="256 512"; RT_SIZES_simplified="256"
       RT_SIZES_fpo="256"; RT_SIZES_lfpo="256"
       RT_SIZES_dart="4096"; RT_SIZES_bs="4096"; RT_SIZES_bridson="4096"
+      TTQ_SIZES="1024"; TTQ_SEEDS=1; TTQ_MAXITER=80
       ;;
     default)
       SETS=10; COMP_N=4096; RT_REPS=1
@@ -56,6 +73,7 @@ bench_profile() {
       RT_SIZES_dart="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_bs="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_bridson="1024 4096 16384 65536 262144 1048576"
+      TTQ_BIG="1048576"
       ;;
     *) return 1 ;;
   esac
@@ -80,5 +98,36 @@ bench_estimate() {
     if (m != "-" && m + 0 < it) it = m + 0
     s = c[k] * n * it
     if ((k == "cfpo" || k == "simplified") && t > 1) s /= 0.95 * t
+    printf "%.3f\n", s + 0.01 }'
+}
+
+# bench_ttq_limit N: the time limit (seconds) of a time-to-quality run with
+# n points. FPO needs about 65 s at 65,536 points to reach the target on
+# this machine; LFPO several times that (it stops at the limit).
+bench_ttq_limit() {
+  awk -v n="$1" 'BEGIN { print (n <= 1024) ? 10 : (n <= 4096) ? 30 : (n <= 65536) ? 150 : 900 }'
+}
+
+# bench_ttq_estimate KEY N THREADS MAXITER LIMIT: rough seconds of one
+# time-to-quality run: until the target holds or the run converges, at most
+# LIMIT (or MAXITER iterations). Single runs on this 2-core machine: adaptive
+# CFPO reaches the target in 72 iterations at 4,096 points (0.71 s on one
+# thread) and converges just short of it at 16,384 (339 iterations, 7.7 s on
+# two), so at most about 350 iterations at 2.2e-6 s per point and iteration
+# on one thread; paper CFPO converges before the target (cfpo model of
+# bench_estimate); FPO reaches the target in 0.78 s at 4,096 points and
+# about 65 s at 65,536, LFPO in 4.75 s at 4,096 (both 2.2-2.5e-6 s per point
+# and iteration).
+bench_ttq_estimate() {
+  local conv
+  if [ "$1" = paper ]; then conv=$(bench_estimate cfpo "$2" "$3" "$4"); else conv=0; fi
+  awk -v k="$1" -v n="$2" -v t="$3" -v m="$4" -v lim="$5" -v conv="$conv" 'BEGIN {
+    r = n / 4096
+    if (k == "adaptive") { it = 72 * r ^ 1.1; if (it > 350) it = 350; if (m != "-" && m + 0 < it) it = m + 0
+      s = 2.2e-6 * n * it; if (t > 1) s /= 0.95 * t }
+    else if (k == "paper") s = conv
+    else { s = (k == "fpo") ? 0.78 * r ^ 1.6 : 4.75 * r ^ 1.64
+      if (m != "-" && 2.5e-6 * n * m < s) s = 2.5e-6 * n * m }
+    if (s > lim + 0) s = lim + 0
     printf "%.3f\n", s + 0.01 }'
 }

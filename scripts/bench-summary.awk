@@ -1,11 +1,12 @@
 # bench-summary.awk - summary.md of a results folder (run by replot.sh):
-#   awk -F, -v convkeys="fpo lfpo ..." -f bench-summary.awk runs.csv spectra.csv \
-#       plotdata/runtime.tsv plotdata/speedup.tsv
+#   awk -F, -v convkeys="fpo lfpo ..." -v tmin=0.925 -v tavg=0.929 -f bench-summary.awk \
+#       runs.csv spectra.csv plotdata/runtime.tsv plotdata/speedup.tsv plotdata/ttq-runs.tsv
 # Every number is computed here from those files, and every table names the
 # rows of runs.csv (column `run`) and spectra.csv (column `group`) it comes
 # from; runtime.tsv and speedup.tsv are themselves medians of runs.csv rows
-# (replot.sh), listed in the tables.
-function key(m, v) { return (m == "cfpo") ? v : m }
+# (replot.sh), ttq-runs.tsv one line per time-to-quality run read from its
+# trace and quality.csv (bench-ttq.awk), all listed in the tables.
+function key(m, v) { return (m != "cfpo") ? m : (v == "paper" || v == "cfpo") ? "cfpo" : v }
 function label(k) {
   return k == "dart" ? "DT" : k == "bs" ? "BS" : k == "bridson" ? "Bridson" : k == "fpo" ? "FPO" : \
     k == "lfpo" ? "LFPO" : k == "cfpo" ? "CFPO" : k == "simplified" ? "simplified CFPO" : k
@@ -35,6 +36,20 @@ function pm(s, d) { return sprintf("%." d "f ± %." d "f", mean(s), sd(s)) }
 function pmsig(s,   m, d) { m = mean(s); d = (m > 0) ? 2 - int(log(m) / log(10) + (m < 1 ? -0.999999 : 0)) : 3; if (d < 0) d = 0; return sprintf("%." d "f ± %." d "f", m, sd(s)) }
 function f3(x) { return (x == "-" || x == "") ? "-" : sprintf("%.3f", x) }
 function f2(x) { return (x == "-" || x == "") ? "-" : sprintf("%.2f", x) }
+# median of a list where "never" is infinite: "never" when the median is
+function med(s,   a, k, i, j, t, m) {
+  k = split(s, a, " "); if (!k) return "-"
+  for (i = 1; i <= k; i++) a[i] = (a[i] == "never") ? 1e300 : a[i] + 0
+  for (i = 2; i <= k; i++) { t = a[i]; for (j = i - 1; j >= 1 && a[j] > t; j--) a[j + 1] = a[j]; a[j + 1] = t }
+  m = (k % 2) ? a[(k + 1) / 2] : (a[k / 2] + a[k / 2 + 1]) / 2
+  return m >= 1e299 ? "never" : m
+}
+function reached(s,   a, k, i, c) { k = split(s, a, " "); c = 0; for (i = 1; i <= k; i++) if (a[i] != "never") c++; return c }
+function tcell(s,   m, k, c) { m = med(s); k = split(s, tmp2, " "); c = reached(s)
+  return (m == "never" ? "never" : secs(m)) (c < k && c > 0 ? " (" c " of " k ")" : "") }
+function spk(g) { return (g in sg) && sspm[g] != "" ? sprintf("%.1f / %.1f", sspm[g], sspk[g]) : "-" }
+function ttqlabel(k) { return k == "adaptive" ? "CFPO (adaptive)" : k == "paper" ? "CFPO (paper)" : label(k) }
+function ttqrank(k, t) { return (k == "adaptive" ? 1 : k == "paper" ? 3 : k == "fpo" ? 4 : k == "lfpo" ? 5 : 6) * 1000 + t }
 function nice_n(n) { return n >= 1048576 && n % 1048576 == 0 ? n / 1048576 "M" : n >= 1024 && n % 1024 == 0 ? n / 1024 "k" : n }
 
 FILENAME ~ /runs\.csv$/ {
@@ -57,6 +72,19 @@ FILENAME ~ /runs\.csv$/ {
 FILENAME ~ /spectra\.csv$/ {
   if ($1 == "group") next
   sg[$1] = 1; seff[$1] = $14; sosc[$1] = $15; speak[$1] = $12; sruns[$1] = $8; sby[$1] = $16; ssets[$1] = $7
+  sspk[$1] = ($17 == "-") ? "" : $17; sspm[$1] = ($19 == "-") ? "" : $19
+  next
+}
+FILENAME ~ /ttq-runs\.tsv$/ {
+  if ($0 ~ /^#/) next
+  split($0, a, "\t")
+  c = a[4] SUBSEP a[2] SUBSEP a[3]
+  if (!(c in qn)) { nq++; qconf[nq] = c; if (!(a[4] in qsz)) { qsz[a[4]] = 1; nqs++; qsizes[nqs] = a[4] } }
+  qn[c]++; qid[c] = qid[c] " " a[1]; qlim[a[4]] = a[6]; qst[c, a[7]]++
+  qta[c] = qta[c] " " a[8]; q90[c] = q90[c] " " a[9]; q92[c] = q92[c] " " a[10]; qtt[c] = qtt[c] " " a[11]
+  qfd[c] = qfd[c] " " a[13]; qfa[c] = qfa[c] " " a[14]
+  if (a[16] != "-") qcp[c] = qcp[c] " " a[16]
+  if (a[17] != "-") qsr[c] = qsr[c] " " a[17]
   next
 }
 FILENAME ~ /runtime\.tsv$/ {
@@ -84,15 +112,15 @@ END {
   # ---- comparison
   fpo = ("fpo" in cn) ? mean(csec["fpo"]) : 0
   printf "## Quality and cost at n = %s, %d sets per method\n\n", N, cn["cfpo"]
-  print "| method | runs.csv rows | δ_min / Δ(n) | δ_avg / Δ(n) | eff. Nyquist | oscillation | iterations | converged | seconds | time / FPO's | threads | peak MB | spectra.csv group |"
-  print "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+  print "| method | runs.csv rows | δ_min / Δ(n) | δ_avg / Δ(n) | eff. Nyquist | oscillation | spike ratio (sets / average) | iterations | converged | seconds | time / FPO's | threads | peak MB | spectra.csv group |"
+  print "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
   for (i = 1; i <= no; i++) {
     k = order[i]; g = "comparison-" k
     it = (k in cit) ? sprintf("%.0f ± %.0f", mean(cit[k]), sd(cit[k])) : "-"
     cv = (k in cit) ? sprintf("%d of %d", cconv[k], cn[k]) : "-"
     ratio = fpo > 0 ? sprintf("%.3f", mean(csec[k]) / fpo) : "-"
-    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f | `%s` |\n", label(k), ranges(cid[k]), pm(cdmin[k], 4), pm(cdavg[k], 4),
-      (g in sg) ? f3(seff[g]) : "-", (g in sg) ? f2(sosc[g]) : "-", it, cv, pmsig(csec[k]), ratio, cthr[k], mean(cmem[k]) / 1048576, g
+    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f | `%s` |\n", label(k), ranges(cid[k]), pm(cdmin[k], 4), pm(cdavg[k], 4),
+      (g in sg) ? f3(seff[g]) : "-", (g in sg) ? f2(sosc[g]) : "-", spk(g), it, cv, pmsig(csec[k]), ratio, cthr[k], mean(cmem[k]) / 1048576, g
   }
   print ""
   print "δ_min / Δ(n), δ_avg / Δ(n): the smallest and the mean nearest-neighbour distance over the"
@@ -100,7 +128,10 @@ END {
   print "deviation over the sets (columns `delta_min`, `delta_avg` of the rows). Effective Nyquist"
   print "(r_01 / √n, higher: less aliasing) and oscillation (10 × RMS deviation of the RAPS from 1 beyond"
   print "its first crossing of 0.98; lower: flatter) are those of the power spectrum averaged over the"
-  print "sets (spectra.csv, analysis/README.md for the definitions). Iterations and seconds: mean ±"
+  print "sets (spectra.csv, analysis/README.md for the definitions). Spike ratio: the largest P(k) over"
+  print "the mean of its ring, as the mean of the per-set values (white noise: 10-15) / of the averaged"
+  print "spectrum (white noise averaged over 10 sets: about 3); a lattice imprint stands far above both."
+  print "Iterations and seconds: mean ±"
   print "standard deviation; seconds is the tool's sampling time (until converged for the iterative"
   print "methods); time / FPO's = mean seconds over FPO's mean seconds, same n and one thread each"
   print "(column `threads`). BS and Bridson produce maximal sets whose size varies a little with the seed"
@@ -122,13 +153,13 @@ END {
   if (neo) {
     print "## Evolution of CFPO"
     print ""
-    print "| iteration | runs.csv rows | δ_min / Δ(n) | δ_avg / Δ(n) | eff. Nyquist | oscillation | spectra.csv group |"
-    print "| --- | --- | --- | --- | --- | --- | --- |"
+    print "| iteration | runs.csv rows | δ_min / Δ(n) | δ_avg / Δ(n) | eff. Nyquist | oscillation | spike ratio (sets / average) | spectra.csv group |"
+    print "| --- | --- | --- | --- | --- | --- | --- | --- |"
     for (i = 1; i <= neo; i++) {
       ev = eorder[i]; g = "evolution-it" ev
-      printf "| %s | %s | %s | %s | %s | %s | `%s` |\n", ev, ranges(eid[ev]), pm(edmin[ev], 4), pm(edavg[ev], 4), (g in sg) ? f3(seff[g]) : "-", (g in sg) ? f2(sosc[g]) : "-", g
+      printf "| %s | %s | %s | %s | %s | %s | %s | `%s` |\n", ev, ranges(eid[ev]), pm(edmin[ev], 4), pm(edavg[ev], 4), (g in sg) ? f3(seff[g]) : "-", (g in sg) ? f2(sosc[g]) : "-", spk(g), g
     }
-    if ("cfpo" in cn) printf "| converged | %s | %s | %s | %s | %s | `comparison-cfpo` |\n", ranges(cid["cfpo"]), pm(cdmin["cfpo"], 4), pm(cdavg["cfpo"], 4), f3(seff["comparison-cfpo"]), f2(sosc["comparison-cfpo"])
+    if ("cfpo" in cn) printf "| converged | %s | %s | %s | %s | %s | %s | `comparison-cfpo` |\n", ranges(cid["cfpo"]), pm(cdmin["cfpo"], 4), pm(cdavg["cfpo"], 4), f3(seff["comparison-cfpo"]), f2(sosc["comparison-cfpo"]), spk("comparison-cfpo")
     print ""
     print "![evolution](fig-evolution.png)"
     print ""
@@ -165,4 +196,55 @@ END {
   }
   print ""
   print "![speedup](fig-speedup.png)"
+  if (nq) ttq_section()
+}
+# ---- time to quality: one table per n
+function ttq_section(   i, j, c, a, n, k, t, lv, f, fc, cc, r, st, x) {
+  print ""
+  print "## Time to quality"
+  print ""
+  printf "Every iterative method, run with `--trace` until δ_min ≥ %s and δ_avg ≥ %s both hold (the\n", tmin, tavg
+  print "target: the run's `--target-min`/`--target-avg`), it converges (cfpo's rule and tolerance) or its"
+  print "`--time-limit` passes (column `time_limit` of runs.csv). One-thread runs that are compared started"
+  print "together, one per core (runs.csv column `batch`); runs on several threads ran alone. Seconds: the"
+  print "trace's `elapsed` column (wall clock from the start of the run, the start included) at the first"
+  print "iteration where the level holds; median over the seeds, \"never\" when the median run did not get"
+  print "there (\"k of m\": the seeds that did). Final δ: the last trace row. Certificate pass: the fraction"
+  print "of the final set's points that are farthest points of the rest (`cfpo-analyze --certify`); spike"
+  print "ratio: the largest P(k) over its ring's mean for the final set (white noise: 10-15; a lattice"
+  print "imprint: far more), both from `quality.csv`, medians. FPO / this: FPO's median seconds over this"
+  print "row's at each level, same n (above 1: this row is faster); - where either never got there."
+  print "Per run: `plotdata/ttq-runs.tsv`."
+  # configurations in order
+  for (i = 2; i <= nq; i++) { c = qconf[i]; split(c, a, SUBSEP); x = a[1] * 1e6 + ttqrank(a[2], a[3])
+    for (j = i - 1; j >= 1; j--) { split(qconf[j], b, SUBSEP); if (b[1] * 1e6 + ttqrank(b[2], b[3]) <= x) break; qconf[j + 1] = qconf[j] }
+    qconf[j + 1] = c }
+  for (i = 2; i <= nqs; i++) { x = qsizes[i]; for (j = i - 1; j >= 1 && qsizes[j] + 0 > x + 0; j--) qsizes[j + 1] = qsizes[j]; qsizes[j + 1] = x }
+  split("ta 90 92 tt", lv, " ")
+  for (j = 1; j <= nqs; j++) {
+    n = qsizes[j]
+    print ""
+    printf "### n = %s (time limit %s s)\n\n", n, qlim[n]
+    printf "| method | threads | runs.csv rows | δ_avg ≥ 0.929 (s) | δ_min ≥ 0.90 (s) | δ_min ≥ 0.92 (s) | target (s) | stopped by | final δ_min | final δ_avg | certificate pass | spike ratio | FPO / this: δ_avg ≥ 0.929 | δ_min ≥ 0.90 | δ_min ≥ 0.92 | target |\n"
+    print "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+    f = n SUBSEP "fpo" SUBSEP 1
+    for (i = 1; i <= nq; i++) {
+      c = qconf[i]; split(c, a, SUBSEP)
+      if (a[1] != n) continue
+      k = a[2]; t = a[3]
+      st = ""; split("target converged time max-iter", stn, " ")
+      for (r = 1; r <= 4; r++) if ((c, stn[r]) in qst) st = st (st == "" ? "" : ", ") stn[r] " " qst[c, stn[r]]
+      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s", ttqlabel(k), t, ranges(qid[c]), tcell(qta[c]), tcell(q90[c]),
+        tcell(q92[c]), tcell(qtt[c]), st, sprintf("%.4f", med(qfd[c])), sprintf("%.4f", med(qfa[c])),
+        (c in qcp) ? sprintf("%.4f", med(qcp[c])) : "-", (c in qsr) ? sprintf("%.1f", med(qsr[c])) : "-"
+      for (r = 1; r <= 4; r++) {
+        fc = (f in qn) ? med(r == 1 ? qta[f] : r == 2 ? q90[f] : r == 3 ? q92[f] : qtt[f]) : "never"
+        cc = med(r == 1 ? qta[c] : r == 2 ? q90[c] : r == 3 ? q92[c] : qtt[c])
+        printf " | %s", (k != "adaptive" && k != "paper") || fc == "never" || cc == "never" || cc + 0 <= 0 ? "-" : sprintf("%.2f", fc / cc)
+      }
+      printf " |\n"
+    }
+  }
+  print ""
+  print "![time to quality](fig-time-to-quality.png)"
 }

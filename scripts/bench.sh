@@ -5,14 +5,18 @@
 # Runs every method of the suite (DT, BS, Bridson, FPO, LFPO, CFPO,
 # simplified CFPO) as the plan of PROFILE (scripts/bench-profiles.sh: smoke,
 # default, paper) says, then analyses the point sets with cfpo-analyze and
-# draws the figures with scripts/replot.sh. Three experiments:
+# draws the figures with scripts/replot.sh. Four experiments:
 #   evolution   CFPO stopped after EVO_ITERS iterations, SETS seeds
 #   comparison  every method, SETS seeds of COMP_N points (traces kept: they
 #               are the convergence figure)
 #   runtime     every method over n (and CFPO over thread counts)
+#   ttq         time to quality: the iterative methods with --trace until a
+#               quality target, convergence or a time limit; compared
+#               one-thread runs start together, one per core
 # Output: $CFPO_RESULTS (default results/)/<date>-<time>-<host>/ with runs.csv
 # (one row per run, machine and build in # lines), spectra.csv (one row per
-# averaged spectrum, naming its runs), data/ (traces, seed-1 point sets,
+# averaged spectrum, naming its runs), quality.csv (certificate and spike
+# ratio of every ttq run's final set), data/ (traces, seed-1 point sets,
 # averaged spectra), plotdata/, fig-*.png and summary.md. The folder is built
 # under a temporary name and renamed when complete: a failure or Ctrl-C leaves
 # nothing (--plan: print the runs and the estimated time, run nothing;
@@ -41,10 +45,11 @@ final="$ROOT/$name"
 [ -e "$final" ] && die "$final already exists"
 work="$ROOT/.$name.tmp.$$"
 ticker=""
-child=""
+children=()
 cleanup() {
   [ -n "$ticker" ] && kill "$ticker" 2>/dev/null
-  [ -n "$child" ] && kill "$child" 2>/dev/null
+  local p
+  for p in "${children[@]}"; do kill "$p" 2>/dev/null; done
   if [ "${CFPO_BENCH_KEEP:-0}" = 1 ] && [ -d "$work" ]; then echo "bench: kept $work (CFPO_BENCH_KEEP=1)" >&2; else rm -rf "$work"; fi
 }
 trap cleanup EXIT
@@ -54,11 +59,12 @@ mkdir -p "$work/data/traces" "$work/data/points" "$work/data/analysis" "$work/se
 T0=$(date +%s.%N)
 
 # ---- the plan: one line per run -------------------------------------------
-# experiment key n seed threads max_iter estimate output
+# experiment key n seed threads max_iter estimate output time_limit batch
+# (batch: runs with the same number start together; - runs alone)
 plan="$work/tmp/plan.tsv"
 : >"$plan"
 cores=$(nproc)
-add() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$(bench_estimate "$2" "$3" "$5" "$6")" "$7" >>"$plan"; }
+add() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t-\t-\n' "$1" "$2" "$3" "$4" "$5" "$6" "$(bench_estimate "$2" "$3" "$5" "$6")" "$7" >>"$plan"; }
 for it in $EVO_ITERS; do
   for s in $(seq 1 "$SETS"); do add evolution cfpo "$COMP_N" "$s" "$cores" "$it" "sets/evolution-it$it-s$s.txt"; done
 done
@@ -88,13 +94,50 @@ if [ -n "$MPIRUN" ] && [ "$cores" -ge 2 ]; then
     for s in $(seq 1 "$RT_REPS"); do add runtime cfpo-mpi "$n" "$s" 1 - -; done
   done
 fi
+# Time to quality: per n and seed, the one-thread configurations in groups
+# of `cores` that start together (a batch), each pinned to its own core; a
+# configuration on several threads is a batch of its own.
+batch=0
+add_ttq() { # key n seed threads
+  local lim
+  lim=$(bench_ttq_limit "$2")
+  printf 'ttq\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$4" "$TTQ_MAXITER" \
+    "$(bench_ttq_estimate "$1" "$2" "$4" "$TTQ_MAXITER" "$lim")" "sets/ttq-$1-t$4-n$2-s$3.bin" "$lim" "$batch" >>"$plan"
+}
+for n in $TTQ_SIZES; do
+  for s in $(seq 1 "$TTQ_SEEDS"); do
+    slot=0
+    for c in $TTQ_CONFIGS; do
+      key=${c%:*}; t=${c#*:}
+      if [ "$t" -gt 1 ] || [ "$slot" -eq 0 ] || [ "$slot" -ge "$cores" ]; then batch=$((batch + 1)); slot=0; fi
+      if [ "$t" -gt 1 ]; then slot=$cores; else slot=$((slot + 1)); fi
+      add_ttq "$key" "$n" "$s" "$t"
+    done
+  done
+done
+for n in $TTQ_BIG; do
+  for s in $(seq 1 "$TTQ_SEEDS"); do batch=$((batch + 1)); add_ttq adaptive "$n" "$s" 2; done
+done
+# the CPUs this process may use: one-thread runs of a batch are pinned to
+# them in order (when taskset is here)
+TASKSET=$(command -v taskset || true)
+CPUS=()
+if [ -n "$TASKSET" ]; then
+  read -r -a CPUS <<<"$("$TASKSET" -cp $$ 2>/dev/null | sed 's/.*: *//' | tr ',' '\n' |
+    awk -F- 'NF == 2 { for (c = $1; c <= $2; c++) printf "%d ", c; next } NF == 1 && $1 != "" { printf "%d ", $1 }')"
+  [ "${#CPUS[@]}" -ge 1 ] || TASKSET=""
+fi
 # mpirun refuses root unless told (these machines run as root)
 [ "$(id -u)" = 0 ] && export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 NJOBS=$(wc -l <"$plan")
-EST_TOTAL=$(awk -F'\t' '{ s += $7 } END { printf "%.3f", s }' "$plan")
+# a batch costs its longest run: the runs in it share the wall clock
+EST_TOTAL=$(awk -F'\t' '$10 == "-" { s += $7; next } { if ($7 > b[$10]) b[$10] = $7 } END { for (k in b) s += b[k]; printf "%.3f", s }' "$plan")
 if [ "$PLAN_ONLY" = 1 ]; then
-  awk -F'\t' '{ printf "%-10s %-10s n=%-8s seed=%-3s threads=%s max_iter=%s estimate=%ss\n", $1, $2, $3, $4, $5, $6, $7 }' "$plan"
-  echo "bench: profile $PROFILE: $NJOBS runs, about $(awk -v s="$EST_TOTAL" 'BEGIN { printf "%d", s / 60 + 0.5 }') min of runs by the rough cost model (analyses and figures not included)"
+  awk -F'\t' '{ printf "%-10s %-10s n=%-8s seed=%-3s threads=%s max_iter=%s estimate=%ss", $1, $2, $3, $4, $5, $6, $7
+    if ($9 != "-") printf " time_limit=%ss", $9
+    if ($10 != "-") printf " batch=%s", $10
+    printf "\n" }' "$plan"
+  echo "bench: profile $PROFILE: $NJOBS runs, about $(awk -v s="$EST_TOTAL" 'BEGIN { printf "%d", s / 60 + 0.5 }') min of runs by the rough cost model (a batch counts its longest run; analyses and figures not included)"
   exit 0
 fi
 
@@ -147,10 +190,10 @@ csv="$work/runs.csv"
   echo "# git commit: $commit"
   echo "# libraries: FFTW $(pkgver libfftw3-dev); CGAL $(pkgver libcgal-dev); OpenMPI $(pkgver libopenmpi-dev); GMP $(pkgver libgmp-dev); gnuplot $(gnuplot --version | cut -d' ' -f2-)"
   echo "# environment: $( (env | grep -E '^(OMP|GOMP)_' || echo 'no OMP_ or GOMP_ variables') | sort | tr '\n' ' ' | sed 's/ $//')"
-  echo "# plan: SETS=$SETS COMP_N=$COMP_N COMP_THREADS=$COMP_THREADS EVO_ITERS=$EVO_ITERS RT_REPS=$RT_REPS RT_THREADS=$RT_THREADS; $NJOBS runs"
+  echo "# plan: SETS=$SETS COMP_N=$COMP_N COMP_THREADS=$COMP_THREADS EVO_ITERS=$EVO_ITERS RT_REPS=$RT_REPS RT_THREADS=$RT_THREADS TTQ_SIZES=$(echo $TTQ_SIZES $TTQ_BIG | tr ' ' ,) TTQ_SEEDS=$TTQ_SEEDS TTQ_MAXITER=$TTQ_MAXITER TTQ_TARGET_MIN=$TTQ_TARGET_MIN TTQ_TARGET_AVG=$TTQ_TARGET_AVG TTQ_CONFIGS=$(echo $TTQ_CONFIGS | tr ' ' ,) TASKSET=$([ -n "$TASKSET" ] && echo yes || echo no); $NJOBS runs"
   echo "# load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "# columns: seconds = the tool's own sampling time (start included, writing excluded); seconds_per_iteration = seconds / iterations; peak_bytes = peak resident memory of the process; n = points produced, n_target = points asked for; max_iter = iteration cap (- none); wall_seconds = the whole process as timed by this script"
-  echo "run,experiment,method,variant,n,n_target,seed,threads,ranks,max_iter,iterations,seconds,seconds_per_iteration,delta_min,delta_avg,peak_bytes,converged,wall_seconds,trace"
+  echo "# columns: seconds = the tool's own sampling time (start included, writing excluded); seconds_per_iteration = seconds / iterations; peak_bytes = peak resident memory of the process; n = points produced, n_target = points asked for; max_iter = iteration cap (- none); wall_seconds = the whole process as timed by this script; time_limit = --time-limit of a ttq run (- none); stop = the rule that ended the run (SUMMARY stop=); batch = runs with the same number started together, one per core (- alone)"
+  echo "run,experiment,method,variant,n,n_target,seed,threads,ranks,max_iter,iterations,seconds,seconds_per_iteration,delta_min,delta_avg,peak_bytes,converged,wall_seconds,trace,time_limit,stop,batch"
 } >"$csv"
 
 field() { sed -n "s/.* $1=\([^ ]*\).*/\1/p" <<<"$2"; }
@@ -161,53 +204,131 @@ if awk -v l="$load1" 'BEGIN { exit !(l > 0.5) }'; then
 fi
 
 # ---- the runs ----------------------------------------------------------------
-k=0
-est_done=0
-act_done=0
-while IFS=$'\t' read -r exp key n seed t maxit est out; do
-  k=$((k + 1))
-  id=$(printf '%04d' "$k")
-  label="$exp $key n=$n seed=$seed threads=$t"
-  [ "$key" = cfpo-mpi ] && label="$label ranks=$cores"
-  [ "$maxit" != - ] && label="$label max-iter=$maxit"
-  progress "$k" "$label" "$est_done" "$act_done" \
-    "$(awk -v tot="$EST_TOTAL" -v d="$est_done" 'BEGIN { print tot - d }')"
-  trace=-
+# Plan lines in order; the lines of one batch start together and are waited
+# for together, every other line runs alone.
+mapfile -t PLAN <"$plan"
+declare -a R_LABEL R_PID R_T1 R_T2 R_RC
+# launch I SLOT: starts plan line I (0-based; run I+1) in the background,
+# one-thread ttq runs pinned to the SLOT-th allowed CPU
+launch() {
+  local i=$1 slot=$2 exp key n seed t maxit est out lim bat id cmd
+  IFS=$'\t' read -r exp key n seed t maxit est out lim bat <<<"${PLAN[$i]}"
+  id=$(printf '%04d' $((i + 1)))
+  cmd=()
+  if [ "$exp" = ttq ] && [ "$t" = 1 ] && [ -n "$TASKSET" ]; then
+    cmd=("$TASKSET" -c "${CPUS[$((slot % ${#CPUS[@]}))]}")
+  fi
   case $key in
-    cfpo|simplified) cmd=("$B/cfpo" --variant "$([ "$key" = cfpo ] && echo cfpo || echo simplified)" -t "$t") ;;
-    cfpo-mpi) cmd=("$MPIRUN" --oversubscribe -np "$cores" "$B/cfpo" --variant cfpo -t "$t") ;;
-    fpo) cmd=("$B/cfpo-fpo") ;;
-    lfpo) cmd=("$B/cfpo-lfpo") ;;
-    dart) cmd=("$B/cfpo-dart") ;;
-    bs) cmd=("$B/cfpo-bs") ;;
-    bridson) cmd=("$B/cfpo-bridson") ;;
+    cfpo|paper) cmd+=("$B/cfpo" --variant paper -t "$t") ;;
+    adaptive|simplified) cmd+=("$B/cfpo" --variant "$key" -t "$t") ;;
+    cfpo-mpi) cmd+=("$MPIRUN" --oversubscribe -np "$cores" "$B/cfpo" --variant paper -t "$t") ;;
+    fpo) cmd+=("$B/cfpo-fpo") ;;
+    lfpo) cmd+=("$B/cfpo-lfpo") ;;
+    dart) cmd+=("$B/cfpo-dart") ;;
+    bs) cmd+=("$B/cfpo-bs") ;;
+    bridson) cmd+=("$B/cfpo-bridson") ;;
   esac
   cmd+=(-n "$n" -s "$seed" -q)
   [ "$maxit" != - ] && cmd+=(--max-iter "$maxit")
-  case $key in dart|bs|bridson) ;; *) trace="data/traces/run-$id.tsv"; cmd+=(--trace "$work/$trace") ;; esac
+  [ "$exp" = ttq ] && cmd+=(--target-min "$TTQ_TARGET_MIN" --target-avg "$TTQ_TARGET_AVG" --time-limit "$lim")
+  case $key in dart|bs|bridson) ;; *) cmd+=(--trace "$work/data/traces/run-$id.tsv") ;; esac
   [ "$out" != - ] && cmd+=(-o "$work/$out")
-  t1=$(now)
-  "${cmd[@]}" </dev/null >"$work/tmp/run.out" 2>"$work/tmp/run.err" &
-  child=$!
-  rc=0
-  wait "$child" || rc=$?
-  child=""
-  t2=$(now)
-  line=$(grep '^SUMMARY' "$work/tmp/run.out" || true)
-  if [ "$rc" -ne 0 ] || [ -z "$line" ]; then
+  R_T1[i]=$(now)
+  "${cmd[@]}" </dev/null >"$work/tmp/run-$id.out" 2>"$work/tmp/run-$id.err" &
+  R_PID[i]=$!
+  children+=("$!")
+}
+# finish_all FROM TO: waits for plan lines FROM..TO-1, each end time taken
+# when that run ends (polling, so a short run of a batch is not charged the
+# longest one's time)
+finish_all() {
+  local i left rc
+  left=$(($2 - $1))
+  while [ "$left" -gt 0 ]; do
+    for ((i = $1; i < $2; i++)); do
+      [ -n "${R_T2[i]:-}" ] && continue
+      if [ $(($2 - $1)) -eq 1 ] || ! kill -0 "${R_PID[i]}" 2>/dev/null; then
+        rc=0
+        wait "${R_PID[i]}" || rc=$?
+        R_T2[i]=$(now)
+        R_RC[i]=$rc
+        left=$((left - 1))
+      fi
+    done
+    [ "$left" -gt 0 ] && sleep 0.05
+  done
+  children=()
+}
+# record I: the row of runs.csv of plan line I; dies when the run failed
+record() {
+  local i=$1 exp key n seed t maxit est out lim bat id line it secs spi wall trace=-
+  IFS=$'\t' read -r exp key n seed t maxit est out lim bat <<<"${PLAN[$i]}"
+  id=$(printf '%04d' $((i + 1)))
+  line=$(grep '^SUMMARY' "$work/tmp/run-$id.out" || true)
+  if [ "${R_RC[i]}" -ne 0 ] || [ -z "$line" ]; then
     [ -n "$ticker" ] && printf '\n' >&2
-    die "run $k ($label) failed (exit $rc): $(tail -n 1 "$work/tmp/run.err")"
+    die "run $((i + 1)) (${R_LABEL[i]}) failed (exit ${R_RC[i]}): $(tail -n 1 "$work/tmp/run-$id.err")"
   fi
+  case $key in dart|bs|bridson) ;; *) trace="data/traces/run-$id.tsv" ;; esac
   it=$(field iterations "$line"); secs=$(field seconds "$line")
   spi=$(awk -v s="$secs" -v i="$it" 'BEGIN { if (i == "-" || i + 0 == 0) print "-"; else printf "%.6g", s / i }')
-  wall=$(awk -v a="$t2" -v b="$t1" 'BEGIN { printf "%.3f", a - b }')
-  printf '%d,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n' "$k" "$exp" "$(field method "$line")" \
+  wall=$(awk -v a="${R_T2[i]}" -v b="${R_T1[i]}" 'BEGIN { printf "%.3f", a - b }')
+  printf '%d,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n' $((i + 1)) "$exp" "$(field method "$line")" \
     "$(field variant "$line")" "$(field n "$line")" "$n" "$seed" "$(field threads "$line")" "$(field ranks "$line")" \
     "$maxit" "$it" "$secs" "$spi" "$(field delta_min "$line")" "$(field delta_avg "$line")" \
-    "$(field peak_bytes "$line")" "$(field converged "$line")" "$wall" "$trace" >>"$csv"
-  est_done=$(awk -v a="$est_done" -v b="$est" 'BEGIN { print a + b }')
+    "$(field peak_bytes "$line")" "$(field converged "$line")" "$wall" "$trace" "$lim" "$(field stop "$line")" "$bat" >>"$csv"
+  [ "$exp" = ttq ] && printf '%d\t%s\n' $((i + 1)) "$out" >>"$work/tmp/ttq-sets.tsv"
+  rm -f "$work/tmp/run-$id.out" "$work/tmp/run-$id.err"
+}
+: >"$work/tmp/ttq-sets.tsv"
+est_done=0
+act_done=0
+i=0
+while [ "$i" -lt "$NJOBS" ]; do
+  IFS=$'\t' read -r exp key n seed t maxit est out lim bat <<<"${PLAN[$i]}"
+  j=$((i + 1))
+  if [ "$bat" != - ]; then
+    while [ "$j" -lt "$NJOBS" ] && [ "$(cut -f10 <<<"${PLAN[$j]}")" = "$bat" ]; do j=$((j + 1)); done
+  fi
+  label=""; best=0
+  for ((m = i; m < j; m++)); do
+    IFS=$'\t' read -r exp key n seed t maxit est out lim bat <<<"${PLAN[$m]}"
+    R_LABEL[m]="$exp $key n=$n seed=$seed threads=$t"
+    [ "$key" = cfpo-mpi ] && R_LABEL[m]="${R_LABEL[m]} ranks=$cores"
+    [ "$maxit" != - ] && R_LABEL[m]="${R_LABEL[m]} max-iter=$maxit"
+    [ "$lim" != - ] && R_LABEL[m]="${R_LABEL[m]} limit=${lim}s"
+    label="$label${label:+ + }${R_LABEL[m]}"
+    best=$(awk -v a="$best" -v b="$est" 'BEGIN { print (b > a) ? b : a }')
+  done
+  [ $((j - i)) -gt 1 ] && label="together: $label"
+  progress $((i + 1)) "$label" "$est_done" "$act_done" \
+    "$(awk -v tot="$EST_TOTAL" -v d="$est_done" 'BEGIN { print tot - d }')"
+  for ((m = i; m < j; m++)); do launch "$m" $((m - i)); done
+  finish_all "$i" "$j"
+  wall=0
+  for ((m = i; m < j; m++)); do
+    record "$m"
+    wall=$(awk -v a="$wall" -v b="${R_T2[m]}" -v c="${R_T1[m]}" 'BEGIN { print (b - c > a) ? b - c : a }')
+  done
+  est_done=$(awk -v a="$est_done" -v b="$best" 'BEGIN { print a + b }')
   act_done=$(awk -v a="$act_done" -v b="$wall" 'BEGIN { print a + b }')
-done <"$plan"
+  i=$j
+done
+
+# ---- quality of the ttq runs' final sets: certificate and spike ratio --------
+qcsv="$work/quality.csv"
+echo "run,n,K,certify,cert_pass,cert_max_violation,lct_pass,spike_ratio,spike_k" >"$qcsv"
+nq=$(wc -l <"$work/tmp/ttq-sets.tsv")
+q=0
+while IFS=$'\t' read -r run out; do
+  q=$((q + 1))
+  progress "$NJOBS" "final-set analysis $q of $nq (run $run)" 1 1 0
+  sum=$("$B/cfpo-analyze" -q --certify -o "$work/tmp/an-q" "$work/$out") || die "cfpo-analyze --certify failed on $out (run $run)"
+  printf '%s,%s,%s,%s,%s,%s,%s,%s,%s\n' "$run" "$(field n "$sum")" "$(field K "$sum")" "$(field certify "$sum")" \
+    "$(field cert_pass "$sum")" "$(field cert_max_violation "$sum")" "$(field lct_pass "$sum")" \
+    "$(field spike_ratio "$sum")" "$(field spike_k "$sum" | tr , ';')" >>"$qcsv"
+  rm -rf "$work/tmp/an-q" "${work:?}/$out"
+done <"$work/tmp/ttq-sets.tsv"
 
 # ---- spectra: one averaged analysis per group of sets ------------------------
 # group experiment key iteration: the runs whose output is sets/<group>-s*.txt
@@ -220,7 +341,7 @@ K=$(awk -v n="$COMP_N" 'BEGIN { k = 6 * sqrt(n); printf "%d", (k == int(k)) ? k 
 AVG="$here/bench-average.awk"
 AWK=$(command -v mawk || command -v awk)  # mawk: Debian's default awk, the fastest here
 scsv="$work/spectra.csv"
-echo "group,experiment,method,variant,n,iteration,sets,runs,K,delta_min,delta_avg,raps_peak,raps_peak_r,eff_nyquist,oscillation,averaged_by" >"$scsv"
+echo "group,experiment,method,variant,n,iteration,sets,runs,K,delta_min,delta_avg,raps_peak,raps_peak_r,eff_nyquist,oscillation,averaged_by,spike_ratio,spike_k,spike_ratio_set_mean" >"$scsv"
 # ranges 3 4 5 9 -> 3-5;9
 ranges() { tr ' ' '\n' | sort -n | awk 'NF { if (p != "" && $1 == p + 1) { p = $1; next } if (s != "") printf "%s%s;", s, (p != s ? "-" p : ""); s = $1; p = $1 } END { if (s != "") printf "%s%s", s, (p != s ? "-" p : "") }'; }
 checked=0
@@ -234,13 +355,13 @@ while IFS=$'\t' read -r grp exp key it; do
   # the runs of this group, from runs.csv: experiment, key and cap
   ids=$(awk -F, -v e="$exp" -v k="$key" -v m="$( [ "$it" = - ] && echo - || echo "$it")" '
     /^#/ || $1 == "run" { next }
-    { kk = ($3 == "cfpo") ? $4 : $3 }
+    { kk = ($3 != "cfpo") ? $3 : ($4 == "paper" || $4 == "cfpo") ? "cfpo" : $4 }
     $2 == e && kk == k && $10 == m { printf "%s ", $1 }' "$csv" | ranges)
   dst="$work/data/analysis/$grp"
   mkdir -p "$dst"
   nvals=$(for f in "${files[@]}"; do grep -vc '^#' "$f"; done | sort -u | wc -l)
   variant=-; mname=$key
-  [ "$key" = cfpo ] && variant=cfpo
+  [ "$key" = cfpo ] && variant=paper
   [ "$key" = simplified ] && { variant=simplified; mname=cfpo; }
   if [ "$nvals" -eq 1 ]; then
     a="$work/tmp/an-$grp"
@@ -251,17 +372,18 @@ while IFS=$'\t' read -r grp exp key it; do
     if [ "$checked" -eq 0 ] && [ "$exp" = comparison ]; then
       # check bench-average.awk against cfpo-analyze on this group
       chk=$("$AWK" -v out="$work/tmp" -v n="$(field n "$sum")" -v crop=1 -f "$AVG" "$a/spectrum.txt")
-      for m in eff_nyquist oscillation raps_peak; do
-        awk -v a="$(field "$m" " $sum")" -v b="$(field "$m" " $chk")" 'BEGIN { d = a - b; exit !(d < 1e-5 && d > -1e-5) }' \
+      for m in eff_nyquist oscillation raps_peak spike_ratio; do
+        awk -v a="$(field "$m" " $sum")" -v b="$(field "$m" " $chk")" 'BEGIN { d = a - b; t = 1e-5 * (b > 1 ? b : 1); exit !(d < t && d > -t) }' \
           || die "bench-average.awk disagrees with cfpo-analyze on $grp: $m $(field "$m" " $sum") vs $(field "$m" " $chk")"
       done
       checked=1
     fi
     rm -rf "$a"
-    printf '%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,cfpo-analyze\n' "$grp" "$exp" "$mname" "$variant" \
+    printf '%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,cfpo-analyze,%s,%s,%s\n' "$grp" "$exp" "$mname" "$variant" \
       "$(field n "$sum")" "$it" "$(field sets "$sum")" "$ids" "$(field K "$sum")" "$(field delta_min "$sum")" \
       "$(field delta_avg "$sum")" "$(field raps_peak "$sum")" "$(field raps_peak_r "$sum")" \
-      "$(field eff_nyquist "$sum")" "$(field oscillation "$sum")" >>"$scsv"
+      "$(field eff_nyquist "$sum")" "$(field oscillation "$sum")" "$(field spike_ratio "$sum")" \
+      "$(field spike_k "$sum" | tr , ';')" "$(field spike_ratio_set_mean "$sum")" >>"$scsv"
   else
     # sets of different n (maximal Poisson-disk sets): one analysis per set at
     # a common K, averaged by bench-average.awk
@@ -274,11 +396,13 @@ while IFS=$'\t' read -r grp exp key it; do
     nmean=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* n=\([0-9]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.1f", s / k }')
     dmin=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* delta_min=\([^ ]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.6f", s / k }')
     davg=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* delta_avg=\([^ ]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.6f", s / k }')
+    spm=$(cat "$work"/tmp/an-"$grp"-*.sum | sed -n 's/.* spike_ratio=\([^ ]*\).*/\1/p' | awk '{ s += $1; k++ } END { printf "%.6g", s / k }')
     sum=$("$AWK" -v out="$dst" -v n="$nmean" -v crop="$crop" -f "$AVG" "${specs[@]}") || die "averaging the spectra of $grp failed"
     rm -rf "$work"/tmp/an-"$grp"-*
-    printf '%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,bench-average.awk\n' "$grp" "$exp" "$mname" "$variant" \
+    printf '%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,bench-average.awk,%s,%s,%s\n' "$grp" "$exp" "$mname" "$variant" \
       "$nmean" "$it" "$(field sets " $sum")" "$ids" "$(field K " $sum")" "$dmin" "$davg" "$(field raps_peak " $sum")" \
-      "$(field raps_peak_r " $sum")" "$(field eff_nyquist " $sum")" "$(field oscillation " $sum")" >>"$scsv"
+      "$(field raps_peak_r " $sum")" "$(field eff_nyquist " $sum")" "$(field oscillation " $sum")" \
+      "$(field spike_ratio " $sum")" "$(field spike_k " $sum" | tr , ';')" "$spm" >>"$scsv"
   fi
   mv "$work/sets/$grp-s1.txt" "$work/data/points/$grp.txt"
 done <"$groups"

@@ -5,10 +5,12 @@
 # folder under results/ that has a runs.csv.
 #
 # Writes RESULTS_DIR/plotdata/ (the tables the figures draw, derived from
-# runs.csv and data/traces), fig-evolution.png, fig-comparison.png,
-# fig-convergence.png, fig-runtime.png, fig-speedup.png (scripts/fig-*.gp)
-# and summary.md (scripts/bench-summary.awk). Each file is written under a
-# temporary name and renamed, so a failure leaves the earlier version.
+# runs.csv, quality.csv and data/traces), fig-evolution.png,
+# fig-comparison.png, fig-convergence.png, fig-runtime.png, fig-speedup.png,
+# fig-time-to-quality.png when the folder has time-to-quality runs
+# (scripts/fig-*.gp, scripts/bench-ttq.awk) and summary.md
+# (scripts/bench-summary.awk). Each file is written under a temporary name
+# and renamed, so a failure leaves the earlier version.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 die() { echo "replot: $*" >&2; exit 1; }
@@ -45,7 +47,9 @@ plural() { if [ "$1" -gt 1 ]; then echo s; fi; }
 ranks_note() { if [ "$1" -gt 1 ]; then echo ", $1 ranks"; fi; }
 # rows of runs.csv as "key,..." (key: method, or the variant for cfpo)
 rows() { awk -F, '/^#/ || $1 == "run" { next } { print }' "$R/runs.csv"; }
-KEYCOL='function key(m, v) { return (m == "cfpo") ? v : m }'
+# cfpo's paper variant (named cfpo before the adaptive variant existed) is
+# the key cfpo; its other variants are keys of their own
+KEYCOL='function key(m, v) { return (m != "cfpo") ? m : (v == "paper" || v == "cfpo") ? "cfpo" : v }'
 MEDIAN='function median(s,   a, k, i, j, t) { k = split(s, a, " "); for (i = 2; i <= k; i++) { t = a[i] + 0; for (j = i - 1; j >= 1 && a[j] + 0 > t; j--) a[j + 1] = a[j]; a[j + 1] = t } return (k % 2) ? a[(k + 1) / 2] : (a[k / 2] + a[k / 2 + 1]) / 2 }'
 
 # ---- evolution and comparison: the groups of spectra.csv ---------------------
@@ -213,8 +217,25 @@ mv "$P/speedup-n.dat.tmp.$$" "$P/speedup-n.dat"
   : "$nsz"
 } >"$P/fig-speedup.vars.gp"
 
+# ---- time to quality: per run, from its trace and quality.csv ------------------
+FIGS="evolution comparison convergence runtime speedup"
+rm -f "$P"/ttq-*.dat
+if rows | awk -F, '$2 == "ttq" { f = 1 } END { exit !f }'; then
+  [ -f "$R/quality.csv" ] || die "$R/quality.csv missing (the folder has time-to-quality runs)"
+  tmin=$(planv TTQ_TARGET_MIN); tavg=$(planv TTQ_TARGET_AVG)
+  [ -n "$tmin" ] && [ -n "$tavg" ] || die "$R/runs.csv: no TTQ_TARGET_MIN/TTQ_TARGET_AVG in the '# plan:' line"
+  awk -F, -v dir="$R" -v pdir="$P" -v tmin="$tmin" -v tavg="$tavg" -f "$here/bench-ttq.awk" "$R/runs.csv" "$R/quality.csv" \
+    >"$P/ttq-runs.tsv.tmp.$$" || die "reading the time-to-quality traces failed"
+  mv "$P/ttq-runs.tsv.tmp.$$" "$P/ttq-runs.tsv"
+  FIGS="$FIGS time-to-quality"
+else
+  tmin=-; tavg=-
+  echo "# no time-to-quality runs in this folder" >"$P/ttq-runs.tsv"
+  rm -f "$R/fig-time-to-quality.png" "$P/fig-time-to-quality.vars.gp"
+fi
+
 # ---- figures -------------------------------------------------------------------
-for fig in evolution comparison convergence runtime speedup; do
+for fig in $FIGS; do
   out="$R/.fig-$fig.png.tmp.$$"
   gnuplot -e "VARS='$P/fig-$fig.vars.gp'; OUT='$out'" "$here/fig-$fig.gp" 2>"$P/gnuplot-$fig.log" \
     || die "gnuplot failed on scripts/fig-$fig.gp: $(grep -m1 -v '^$' "$P/gnuplot-$fig.log")"
@@ -223,7 +244,8 @@ for fig in evolution comparison convergence runtime speedup; do
 done
 
 # ---- summary.md --------------------------------------------------------------------
-awk -F, -v convkeys="$conv_keys" -f "$here/bench-summary.awk" "$R/runs.csv" "$R/spectra.csv" "$P/runtime.tsv" "$P/speedup.tsv" \
+awk -F, -v convkeys="$conv_keys" -v tmin="$tmin" -v tavg="$tavg" -f "$here/bench-summary.awk" "$R/runs.csv" "$R/spectra.csv" \
+  "$P/runtime.tsv" "$P/speedup.tsv" "$P/ttq-runs.tsv" \
   >"$R/.summary.md.tmp.$$" || die "writing summary.md failed"
 mv "$R/.summary.md.tmp.$$" "$R/summary.md"
 echo "replot: figures and summary.md in $R" >&2

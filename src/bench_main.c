@@ -51,6 +51,7 @@ static int sweep(int64_t n, int threads, int k, uint64_t seed)
     for (int it = -1; it < k; it++) {
         double t0 = cli_now();
         int64_t solved = 0;
+        cfpo_engine_begin(E);
         for (int c = 0; c < ncol; c++) {
             int64_t s;
             cfpo_engine_phase(E, c, &s);

@@ -2,6 +2,8 @@
 #define _DEFAULT_SOURCE
 #include "cfpo.h"
 
+#include <string.h>
+
 #include <math.h>
 #include <stdio.h>
 #include <unistd.h>
@@ -12,13 +14,33 @@
 void cfpo_options_init(cfpo_options *o)
 {
     o->seed = 1;
-    o->variant = CFPO_VARIANT_FULL;
+    o->variant = CFPO_VARIANT_ADAPTIVE;
     o->threads = 0;
     o->max_iter = CFPO_DEFAULT_MAX_ITER;
     o->tol = CFPO_DEFAULT_TOL;
     o->skip = 1;
+    o->stop.target_min = o->stop.target_avg = o->stop.time_limit = 0;
     o->progress = NULL;
     o->user = NULL;
+}
+
+int cfpo_variant_parse(const char *name, int *variant)
+{
+    if (strcmp(name, "adaptive") == 0) *variant = CFPO_VARIANT_ADAPTIVE;
+    else if (strcmp(name, "paper") == 0 || strcmp(name, "cfpo") == 0) *variant = CFPO_VARIANT_PAPER;
+    else if (strcmp(name, "simplified") == 0) *variant = CFPO_VARIANT_SIMPLIFIED;
+    else return -1;
+    return 0;
+}
+
+const char *cfpo_variant_name(int variant)
+{
+    switch (variant) {
+    case CFPO_VARIANT_ADAPTIVE: return "adaptive";
+    case CFPO_VARIANT_PAPER: return "paper";
+    case CFPO_VARIANT_SIMPLIFIED: return "simplified";
+    default: return "?";
+    }
 }
 
 static double physical_memory(void)
@@ -29,7 +51,8 @@ static double physical_memory(void)
 
 static int validate_options(const cfpo_options *o, char *err, size_t errlen)
 {
-    if (o->variant != CFPO_VARIANT_FULL && o->variant != CFPO_VARIANT_SIMPLIFIED) {
+    if (o->variant != CFPO_VARIANT_PAPER && o->variant != CFPO_VARIANT_SIMPLIFIED &&
+        o->variant != CFPO_VARIANT_ADAPTIVE) {
         snprintf(err, errlen, "unknown variant %d", o->variant);
         return -1;
     }

@@ -27,7 +27,12 @@ extern "C" {
 
 #define CFPO_VERSION "0.1.0"
 
-enum { CFPO_VARIANT_FULL = 0, CFPO_VARIANT_SIMPLIFIED = 1 };
+/* PAPER: the published algorithm (9 phases, S = cell grown by L - Delta(n),
+ * the stratified start). SIMPLIFIED: 4 phases, S = own cell. ADAPTIVE (the
+ * default): 9 phases on the same grid with the margin and start described
+ * in docs/method.md. FULL is the old name of PAPER. */
+enum { CFPO_VARIANT_PAPER = 0, CFPO_VARIANT_SIMPLIFIED = 1, CFPO_VARIANT_ADAPTIVE = 2 };
+#define CFPO_VARIANT_FULL CFPO_VARIANT_PAPER
 
 /* Default move/convergence tolerance, relative to the cell side. */
 #define CFPO_DEFAULT_TOL 1e-4
@@ -49,9 +54,16 @@ typedef struct {
  * nonzero stops the run early (the result then says converged = 0). */
 typedef int (*cfpo_progress_fn)(const cfpo_iter_stats *s, void *user);
 
+/* Stop rules besides convergence and max_iter (0 = not set): stop as soon
+ * as every given target holds (delta_min >= target_min, delta_avg >=
+ * target_avg), or at the first iteration boundary past time_limit seconds. */
+typedef struct {
+    double target_min, target_avg, time_limit;
+} cfpo_stop_rules;
+
 typedef struct {
     uint64_t seed;
-    int variant;       /* CFPO_VARIANT_FULL or CFPO_VARIANT_SIMPLIFIED */
+    int variant;       /* CFPO_VARIANT_* */
     int threads;       /* OpenMP threads; 0 = all cores */
     int max_iter;      /* cap on iterations */
     double tol;        /* relative to the cell side: a move must gain more
@@ -59,6 +71,7 @@ typedef struct {
                           point's net move over an iteration reaches tol * L */
     int skip;          /* 1: do not re-solve points whose neighbourhood did
                           not change (same output, less work) */
+    cfpo_stop_rules stop;
     cfpo_progress_fn progress;
     void *user;
 } cfpo_options;
@@ -69,9 +82,16 @@ typedef struct {
     double seconds;
     double delta_min, delta_avg;
     int64_t cells_per_side;
+    int stop;          /* why it stopped: CFPO_STOP_* of stoprule.h */
 } cfpo_result;
 
 void cfpo_options_init(cfpo_options *o);
+
+/* "adaptive", "paper" (alias "cfpo") or "simplified" to CFPO_VARIANT_*:
+ * 0, or -1 for another name. */
+int cfpo_variant_parse(const char *name, int *variant);
+/* The name of a variant ("adaptive", "paper", "simplified", "?"). */
+const char *cfpo_variant_name(int variant);
 
 /* Checks n and the options without allocating anything: 0; -1 with a
  * one-line message for an invalid request (n too small, bad tolerance,

@@ -68,7 +68,7 @@ void cli_progress_end(cli_progress *p);
 /* The summary line every method prints on stdout at the end:
  *   SUMMARY method=cfpo variant=cfpo n=4096 seed=1 threads=2 ranks=1
  *   iterations=424 seconds=1.58 delta_min=0.9242 delta_avg=0.9304
- *   converged=yes peak_bytes=... bytes_per_point=...
+ *   converged=yes peak_bytes=... bytes_per_point=... stop=converged
  * Fields that do not apply to a method are given as '-'. */
 typedef struct {
     const char *method, *variant;
@@ -80,6 +80,7 @@ typedef struct {
     double delta_min, delta_avg;
     int converged;        /* 1 yes, 0 no, -1 not applicable */
     uint64_t peak_bytes;
+    const char *stop;     /* which rule stopped the run (NULL: '-') */
 } cli_summary;
 void cli_print_summary(FILE *f, const cli_summary *s);
 

@@ -28,6 +28,8 @@
  * travel with the point); a move there and back cancels exactly, so a
  * point cycling between cells does not keep the run from converging. */
 #include "engine.h"
+#include "start.h"
+#include "stoprule.h"
 
 #include <float.h>
 #include <math.h>
@@ -44,6 +46,8 @@
 #define CENTRE_BIT (1u << 4)
 #define SUM_SCALE 16777216.0 /* nearest-neighbour distances summed in units of Delta / 2^24 */
 #define SB 8 /* statistics blocks: SB x SB cells */
+#define SHIFT_SALT 0x3c6ef372fe94f82aULL
+#define ADAPTIVE_THETA 0.7 /* the adaptive margin never reaches past L - 0.7 Delta(n) */
 #define CKPT_MAGIC "CFPOCKP1"
 #define CKPT_HEADER 64
 
@@ -116,6 +120,10 @@ struct cfpo_engine {
     int iter0;        /* iteration the engine stands at */
     int resumed_converged;
     double max_move;  /* largest single move this iteration */
+    double t_born;    /* when cfpo_engine_create_ex began */
+    int shifting;     /* inside move_grid: cells hold points of the old grid */
+    int cur;          /* the iteration under way (or last done) */
+    double dmin_now;  /* delta_min / Delta(n) of the set as it stands (1 until measured) */
     uint64_t id_sum;  /* checksum of all ids (check mode) */
     /* timing and traffic */
     double t_compute, t_migrate, t_halo, b_halo, b_migrate;
@@ -282,6 +290,21 @@ static size_t first_arrival(const cfpo_engine *E, int64_t c)
         else hi = mid;
     }
     return lo;
+}
+
+/* The adaptive variant's grid offset in iteration k (0 before the first). */
+static double shift_of(const cfpo_grid *G, int k)
+{
+    if (G->variant != CFPO_VARIANT_ADAPTIVE || k <= 0) return 0;
+    return G->L * cfpo_rand01(G->seed ^ SHIFT_SALT, (uint64_t)k, 0);
+}
+
+/* v's offset from the low edge of global cell column (or row) c, for v
+ * in that cell: in [0, L) up to rounding, whatever the grid's shift. */
+static inline double cell_offset(const cfpo_engine *E, double v, int64_t c)
+{
+    double d = v - ((double)c * E->G.L + E->G.shift);
+    return d < -0.5 ? d + 1.0 : d;
 }
 
 static inline int in_cell(const cfpo_engine *E, double x, double y, int64_t lx, int64_t ly)
@@ -708,8 +731,60 @@ static void check_halo(cfpo_engine *E)
 /* Ids: cells in row-major order over the whole grid, points of a cell
  * consecutive. The first id of each own cell needs the point counts of all
  * earlier cells: every rank counts a share of the rows, then all share. */
+/* The adaptive start: every rank makes the start's points of a band of
+ * rows (its share for the row sums, then its tile's rows). */
+static int make_initial_adaptive(cfpo_engine *E, char *err, size_t errlen)
+{
+    const int64_t g = E->G.g;
+    int64_t *rowsum = calloc((size_t)g, sizeof *rowsum);
+    cfpo_start_pt *pt = NULL;
+    if (!rowsum) goto oom;
+    int64_t r0 = g * E->rank / E->nranks, r1 = g * (E->rank + 1) / E->nranks;
+    int64_t m = cfpo_start_band(&E->G, r0, r1, &pt);
+    if (m < 0) goto oom;
+    for (int64_t i = 0; i < m; i++) rowsum[pt[i].cell / g]++;
+    free(pt);
+    pt = NULL;
+    comm_sum_i64(rowsum, (int)g); /* rows are disjoint: the sum gathers them */
+    int64_t id = 0;
+    for (int64_t y = 0; y < E->y0; y++) id += rowsum[y];
+    m = cfpo_start_band(&E->G, E->y0, E->y0 + E->h, &pt);
+    if (m < 0) goto oom;
+    int64_t nloc = 0;
+    for (int64_t i = 0; i < m; i++) {
+        const int64_t lx = pt[i].cell % g - E->x0;
+        if (lx >= 0 && lx < E->w) nloc++;
+    }
+    if (ensure_cap(E, (size_t)nloc) != 0) goto oom;
+    int64_t k = 0, c = 0;
+    int maxcell = 0;
+    for (int64_t i = 0; i < m; i++, id++) { /* sorted by global cell: row-major */
+        const int64_t lx = pt[i].cell % g - E->x0, ly = pt[i].cell / g - E->y0;
+        if (lx < 0 || lx >= E->w) continue;
+        const int64_t cc = ly * E->w + lx;
+        while (c <= cc) E->start[c++] = (uint32_t)k;
+        E->px[k] = pt[i].x;
+        E->py[k] = pt[i].y;
+        E->pid[k] = (uint64_t)id;
+        k++;
+        if ((int)(k - E->start[cc]) > maxcell) maxcell = (int)(k - E->start[cc]);
+    }
+    while (c <= E->cells) E->start[c++] = (uint32_t)k;
+    E->nloc = k;
+    E->maxcell = maxcell;
+    free(pt);
+    free(rowsum);
+    return 0;
+oom:
+    free(pt);
+    free(rowsum);
+    snprintf(err, errlen, "out of memory");
+    return -1;
+}
+
 static int make_initial(cfpo_engine *E, char *err, size_t errlen)
 {
+    if (E->G.variant == CFPO_VARIANT_ADAPTIVE) return make_initial_adaptive(E, err, errlen);
     const int64_t g = E->G.g;
     const uint64_t cells = (uint64_t)(g * g);
     const int simple = E->G.extra % cells == 0;
@@ -717,7 +792,7 @@ static int make_initial(cfpo_engine *E, char *err, size_t errlen)
     if (!rowsum) { snprintf(err, errlen, "out of memory"); return -1; }
     if (!simple) {
         int64_t r0 = g * E->rank / E->nranks, r1 = g * (E->rank + 1) / E->nranks;
-#pragma omp parallel for schedule(static) num_threads(E->nthreads)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(E->nthreads)
         for (int64_t y = r0; y < r1; y++) {
             int64_t s = 0;
             for (int64_t x = 0; x < g; x++) s += (int64_t)cfpo_grid_cell_count(&E->G, (uint64_t)(y * g + x));
@@ -729,34 +804,50 @@ static int make_initial(cfpo_engine *E, char *err, size_t errlen)
     }
     int64_t total = 0;
     for (int64_t y = 0; y < E->y0; y++) total += rowsum[y];
-    /* Count own points first. */
+    /* Count own points first (and the points left of the tile in its rows,
+     * for the ids). */
+    int64_t *cnt = malloc(((size_t)E->cells + (size_t)E->h) * sizeof *cnt);
+    if (!cnt) { free(rowsum); snprintf(err, errlen, "out of memory"); return -1; }
+    int64_t *left = cnt + E->cells;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(E->nthreads)
+    for (int64_t ly = 0; ly < E->h; ly++) {
+        int64_t s = 0;
+        for (int64_t x = 0; x < E->x0; x++) s += (int64_t)cfpo_grid_cell_count(&E->G, (uint64_t)((E->y0 + ly) * g + x));
+        left[ly] = s;
+        for (int64_t lx = 0; lx < E->w; lx++) cnt[ly * E->w + lx] = (int64_t)cfpo_grid_cell_count(&E->G, (uint64_t)((E->y0 + ly) * g + E->x0 + lx));
+    }
     int64_t nloc = 0;
-    for (int64_t ly = 0; ly < E->h; ly++)
-        for (int64_t lx = 0; lx < E->w; lx++)
-            nloc += (int64_t)cfpo_grid_cell_count(&E->G, (uint64_t)((E->y0 + ly) * g + E->x0 + lx));
-    if (ensure_cap(E, (size_t)nloc) != 0) { free(rowsum); snprintf(err, errlen, "out of memory"); return -1; }
+    for (int64_t c = 0; c < E->cells; c++) nloc += cnt[c];
+    if (ensure_cap(E, (size_t)nloc) != 0) {
+        free(rowsum); free(cnt);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
     int64_t k = 0;
     int maxcell = 0;
     for (int64_t ly = 0; ly < E->h; ly++) {
         const int64_t gy = E->y0 + ly;
-        int64_t id = total;
-        for (int64_t x = 0; x < E->x0; x++) id += (int64_t)cfpo_grid_cell_count(&E->G, (uint64_t)(gy * g + x));
+        int64_t id = total + left[ly];
         for (int64_t lx = 0; lx < E->w; lx++) {
-            const int64_t gx = E->x0 + lx, c = ly * E->w + lx;
+            const int64_t c = ly * E->w + lx;
             E->start[c] = (uint32_t)k;
-            uint64_t cnt = cfpo_grid_cell_count(&E->G, (uint64_t)(gy * g + gx));
-            if ((int)cnt > maxcell) maxcell = (int)cnt;
-            for (uint64_t j = 0; j < cnt; j++, k++, id++) {
-                cfpo_grid_cell_point(&E->G, gx, gy, j, &E->px[k], &E->py[k]);
-                E->pid[k] = (uint64_t)id;
-            }
+            if ((int)cnt[c] > maxcell) maxcell = (int)cnt[c];
+            for (int64_t j = 0; j < cnt[c]; j++) E->pid[k + j] = (uint64_t)(id + j);
+            k += cnt[c];
+            id += cnt[c];
         }
         total += rowsum[gy];
     }
     E->start[E->cells] = (uint32_t)k;
+#pragma omp parallel for schedule(dynamic, 16) num_threads(E->nthreads)
+    for (int64_t c = 0; c < E->cells; c++)
+        for (int64_t j = 0; j < cnt[c]; j++)
+            cfpo_grid_cell_point(&E->G, E->x0 + c % E->w, E->y0 + c / E->w, (uint64_t)j,
+                                 &E->px[E->start[c] + j], &E->py[E->start[c] + j]);
     E->nloc = k;
     E->maxcell = maxcell;
     free(rowsum);
+    free(cnt);
     return 0;
 }
 
@@ -789,7 +880,8 @@ int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err
     memcpy(&info->tol, &tb, 8);
     info->iteration = (int64_t)get64(h + 40);
     info->converged = (int)get64(h + 48);
-    if (info->n < 1 || (info->variant != CFPO_VARIANT_FULL && info->variant != CFPO_VARIANT_SIMPLIFIED) ||
+    if (info->n < 1 || (info->variant != CFPO_VARIANT_PAPER && info->variant != CFPO_VARIANT_SIMPLIFIED &&
+                        info->variant != CFPO_VARIANT_ADAPTIVE) ||
         !(info->tol >= 0 && info->tol < 0.5) || info->iteration < 0 || info->iteration > 1000000000) {
         snprintf(err, errlen, "%s: corrupt checkpoint header", path);
         return -1;
@@ -928,6 +1020,7 @@ cfpo_engine *cfpo_engine_create(int64_t n, const cfpo_options *o, char *err, siz
 cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_engine_config *cfg,
                                    char *err, size_t errlen)
 {
+    const double born = now();
     cfpo_grid G;
     if (cfpo_grid_init(&G, n, o->variant, o->seed, err, errlen) != 0) return NULL;
     cfpo_tiling T;
@@ -940,6 +1033,8 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         return NULL;
     }
     E->G = G;
+    E->t_born = born;
+    E->dmin_now = 1.0;
     E->T = T;
     E->o = *o;
     E->cfg = *cfg;
@@ -984,6 +1079,8 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         }
         if (rc == 0) {
             E->iter0 = (int)info.iteration;
+            E->cur = E->iter0;
+            E->G.shift = shift_of(&E->G, E->iter0);
             E->resumed_converged = info.converged;
             rc = load_checkpoint(E, err, errlen);
         }
@@ -1025,8 +1122,26 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
 static int gather(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre)
 {
     const int64_t g = E->G.g, cx = E->x0 + lx, cy = E->y0 + ly;
-    const double ox = (double)cx * E->G.L, oy = (double)cy * E->G.L;
+    const double L = E->G.L, sh = E->G.shift;
+    const double ox = (double)cx * L + sh, oy = (double)cy * L + sh;
     int m = 0;
+    if (sh != 0) { /* a shifted grid: the last cell wraps, so unwrap point by point */
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dx = -1; dx <= 1; dx++) {
+                if (dx == 0 && dy == 0) *centre = m;
+                const double mx = ((double)(cx + dx) + 0.5) * L + sh, my = ((double)(cy + dy) + 0.5) * L + sh;
+                const int64_t e = locate(E, lx + dx, ly + dy);
+                const double *X, *Y;
+                uint32_t a, b;
+                if (e >= 0) { X = E->px; Y = E->py; a = E->start[e]; b = E->start[e + 1]; }
+                else { X = E->hx; Y = E->hy; a = E->hstart[-1 - e]; b = E->hstart[-e]; }
+                for (uint32_t k = a; k < b; k++, m++) {
+                    ox_[m] = (X[k] + nearbyint(mx - X[k])) - ox;
+                    oy_[m] = (Y[k] + nearbyint(my - Y[k])) - oy;
+                }
+            }
+        return m;
+    }
     for (int dy = -1; dy <= 1; dy++) {
         const int64_t ny = cy + dy;
         const double sy = ny < 0 ? -1.0 : (ny >= g ? 1.0 : 0.0);
@@ -1062,7 +1177,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     const int m = gather(E, lx, ly, lxs, lys, &off);
     const cfpo_square S = cfpo_grid_square(&E->G);
     const double tolL = E->o.tol * E->G.L;
-    const double ox = (double)cx * E->G.L, oy = (double)cy * E->G.L;
+    const double ox = (double)cx * E->G.L + E->G.shift, oy = (double)cy * E->G.L + E->G.shift;
     int64_t moves = 0;
     unsigned mask = 0;
     for (uint32_t k = 0; k < e - s; k++) {
@@ -1180,28 +1295,18 @@ static int exchange_migrants(cfpo_engine *E)
     return 0;
 }
 
-int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
+/* After the cells of one colour changed (points moved, or the grid moved
+ * under them): mark the blocks that changed, send points that left the
+ * tile, move points that changed cell, clear the masks, refresh the halo.
+ * `moves`: whether any cell of the colour has mask bits. */
+static void settle(cfpo_engine *E, int colour, int64_t moves)
 {
     const int p = E->G.period;
     const int64_t a = colour / p, b = colour % p;
     const int64_t bx = first_of(E->x0, p, b), by = first_of(E->y0, p, a);
     const int64_t nxc = bx < E->w ? (E->w - bx + p - 1) / p : 0, nyc = by < E->h ? (E->h - by + p - 1) / p : 0;
     const int64_t T = nxc * nyc;
-    int64_t moves = 0, solv = 0;
-    double mm = E->max_move;
-    double t0 = now();
-#pragma omp parallel for schedule(dynamic, 16) reduction(+ : moves, solv) reduction(max : mm) num_threads(E->nthreads)
-    for (int64_t t = 0; t < T; t++) {
-        const int64_t ly = by + p * (t / nxc), lx = bx + p * (t % nxc);
-        moves += solve_cell(E, lx, ly, E->scratch[omp_get_thread_num()], &solv, &mm);
-    }
-    E->max_move = mm;
-    *solved = solv;
     double t1 = now();
-    E->t_compute += t1 - t0;
-    E->phases++;
-    /* Mark the blocks that changed, send points that left the tile, move
-     * points that changed cell, clear the masks, refresh the halo. */
     int crossed = 0;
     if (moves)
         for (int64_t t = 0; t < T; t++) {
@@ -1231,13 +1336,72 @@ int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
     E->narr = 0;
     double t2 = now();
     E->t_migrate += t2 - t1;
-    if (E->cfg.check) check_migration(E);
+    if (E->cfg.check && !E->shifting) check_migration(E);
     if (refresh_halo(E) != 0) {
         fprintf(stderr, "cfpo: rank %d: out of memory while refreshing the halo\n", E->rank);
         comm_abort(1);
     }
-    if (E->cfg.check) check_halo(E);
+    if (E->cfg.check && !E->shifting) check_halo(E);
+}
+
+int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
+{
+    const int p = E->G.period;
+    const int64_t a = colour / p, b = colour % p;
+    const int64_t bx = first_of(E->x0, p, b), by = first_of(E->y0, p, a);
+    const int64_t nxc = bx < E->w ? (E->w - bx + p - 1) / p : 0, nyc = by < E->h ? (E->h - by + p - 1) / p : 0;
+    const int64_t T = nxc * nyc;
+    int64_t moves = 0, solv = 0;
+    double mm = E->max_move;
+    double t0 = now();
+#pragma omp parallel for schedule(dynamic, 16) reduction(+ : moves, solv) reduction(max : mm) num_threads(E->nthreads)
+    for (int64_t t = 0; t < T; t++) {
+        const int64_t ly = by + p * (t / nxc), lx = bx + p * (t % nxc);
+        moves += solve_cell(E, lx, ly, E->scratch[omp_get_thread_num()], &solv, &mm);
+    }
+    E->max_move = mm;
+    *solved = solv;
+    E->t_compute += now() - t0;
+    E->phases++;
+    settle(E, colour, moves);
     return moves;
+}
+
+/* Moves the grid under the points to offset `shift` (both axes): colour by
+ * colour, the points of each cell go to the cell that holds them now
+ * (the same or a neighbour, as |change| < L), through the same steps as a
+ * phase's moves. Then every cell is solved again and every statistics
+ * block recomputed (each cell's frame and constraint square moved). */
+static void move_grid(cfpo_engine *E, double shift)
+{
+    E->G.shift = shift;
+    E->shifting = 1;
+    const int p = E->G.period, g = (int)E->G.g;
+    for (int colour = 0; colour < p * p; colour++) {
+        const int64_t a = colour / p, b = colour % p;
+        const int64_t bx = first_of(E->x0, p, b), by = first_of(E->y0, p, a);
+        const int64_t nxc = bx < E->w ? (E->w - bx + p - 1) / p : 0, nyc = by < E->h ? (E->h - by + p - 1) / p : 0;
+#pragma omp parallel for schedule(static) num_threads(E->nthreads)
+        for (int64_t t = 0; t < nxc * nyc; t++) {
+            const int64_t ly = by + p * (t / nxc), lx = bx + p * (t % nxc), c = ly * E->w + lx;
+            const int64_t cx = E->x0 + lx, cy = E->y0 + ly;
+            unsigned mask = 0;
+            for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
+                int ddx = wrap_offset(cfpo_grid_coord(&E->G, E->px[k]) - cx, g);
+                int ddy = wrap_offset(cfpo_grid_coord(&E->G, E->py[k]) - cy, g);
+                mask |= 1u << ((ddy + 1) * 3 + (ddx + 1));
+            }
+            E->mask[c] = (uint16_t)((E->mask[c] & NEED_BIT) | mask);
+        }
+        settle(E, colour, 1);
+    }
+    E->shifting = 0;
+    for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    memset(E->bdirty, 1, (size_t)(E->nbx * E->nby));
+    if (E->cfg.check) {
+        check_migration(E);
+        check_halo(E);
+    }
 }
 
 /* ---- statistics ---- */
@@ -1254,8 +1418,7 @@ typedef struct {
 static double nn2_block(const cfpo_engine *E, int64_t lx, int64_t ly, uint32_t k, int *sure)
 {
     const double L = E->G.L, x = E->px[k], y = E->py[k];
-    const double ox = (double)(E->x0 + lx) * L, oy = (double)(E->y0 + ly) * L;
-    double ex = x - ox, ey = y - oy;
+    const double ex = cell_offset(E, x, E->x0 + lx), ey = cell_offset(E, y, E->y0 + ly);
     double edge = fmin(fmin(ex, L - ex), fmin(ey, L - ey));
     if (edge < 0) edge = 0;
     double best = INFINITY;
@@ -1397,7 +1560,7 @@ void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg)
                 if (done[i]) continue;
                 const nn_query *q = &Q[i];
                 int64_t cx = cfpo_grid_coord(&E->G, q->x), cy = cfpo_grid_coord(&E->G, q->y);
-                double ex = q->x - (double)cx * L, ey = q->y - (double)cy * L;
+                double ex = cell_offset(E, q->x, cx), ey = cell_offset(E, q->y, cy);
                 double edge = fmax(0, fmin(fmin(ex, L - ex), fmin(ey, L - ey)));
                 double reach = (double)B[i] * L + edge;
                 if (res[i] <= reach * reach || 2 * B[i] + 1 >= E->G.g) {
@@ -1427,13 +1590,29 @@ void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg)
     for (int r = 0; r < E->nranks; r++) S += (uint64_t)all[r];
     free(all);
     comm_min_d(&mn, 1);
+    E->dmin_now = mn;
     *dmin = mn;
     *davg = (double)((long double)S / SUM_SCALE / (long double)E->n);
+}
+
+/* The adaptive variant's margin for the coming iteration: S reaches
+ * L - max(delta(X), theta Delta(n)) past the cell, the most the
+ * convergence argument allows while delta(X) is large, and no more than
+ * L - theta Delta(n) early on (delta(X) taken a hair high, so rounding
+ * can only shrink S). */
+void cfpo_engine_begin(cfpo_engine *E)
+{
+    E->cur++;
+    if (E->G.variant != CFPO_VARIANT_ADAPTIVE) return;
+    const double d = fmax(E->dmin_now * (1 + 1e-9), ADAPTIVE_THETA) * E->G.delta;
+    E->G.margin = d < E->G.L ? E->G.L - d : 0;
+    move_grid(E, shift_of(&E->G, E->cur));
 }
 
 void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
 {
     double t0 = now();
+    cfpo_engine_begin(E);
     memset(E->dq, 0, 2 * (size_t)E->nloc * sizeof(float));
     E->max_move = 0;
     int64_t moved = 0, solved = 0;
@@ -1443,14 +1622,14 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
         moved += cfpo_engine_phase(E, colour, &sv);
         solved += sv;
     }
+    /* Every rank looks: a point that moved may have migrated to a rank
+     * that moved none itself. */
     double maxd2 = 0;
-    if (moved) {
 #pragma omp parallel for schedule(static) reduction(max : maxd2) num_threads(E->nthreads)
-        for (int64_t i = 0; i < E->nloc; i++) {
-            double dx = E->dq[2 * i], dy = E->dq[2 * i + 1];
-            double d2 = dx * dx + dy * dy;
-            if (d2 > maxd2) maxd2 = d2;
-        }
+    for (int64_t i = 0; i < E->nloc; i++) {
+        double dx = E->dq[2 * i], dy = E->dq[2 * i + 1];
+        double d2 = dx * dx + dy * dy;
+        if (d2 > maxd2) maxd2 = d2;
     }
     int64_t v[2] = {moved, solved};
     comm_sum_i64(v, 2);
@@ -1597,12 +1776,19 @@ int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen)
     s.converged = E->resumed_converged;
     cfpo_engine_deltas(E, &s.delta_min, &s.delta_avg);
     s.seconds = now() - t0;
-    int stop = E->o.progress ? E->o.progress(&s, E->o.user) : 0;
+    /* Seconds since the engine was created, the start included, reduced
+     * over ranks: every rank stops at the same iteration. */
+    double elapsed = now() - E->t_born;
+    comm_max_d(&elapsed, 1);
+    int why = cfpo_stop_check(&E->o.stop, &s, elapsed, E->o.max_iter);
+    if (E->o.progress && E->o.progress(&s, E->o.user) && !why) why = CFPO_STOP_CALLER;
     int it = E->iter0, rc = 0;
-    while (!stop && !s.converged && it < E->o.max_iter) {
+    while (!why) {
         cfpo_engine_iterate(E, &s);
         s.iteration = ++it;
-        if (E->o.progress) stop = E->o.progress(&s, E->o.user);
+        elapsed += s.seconds;
+        why = cfpo_stop_check(&E->o.stop, &s, elapsed, E->o.max_iter);
+        if (E->o.progress && E->o.progress(&s, E->o.user) && !why) why = CFPO_STOP_CALLER;
         if (E->cfg.checkpoint && E->cfg.checkpoint_every > 0 && it % E->cfg.checkpoint_every == 0 &&
             write_checkpoint(E, it, s.converged, err, errlen) != 0) {
             rc = -1;
@@ -1612,6 +1798,7 @@ int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen)
     E->iter0 = it;
     res->iterations = it;
     res->converged = s.converged;
+    res->stop = why;
     res->seconds = now() - t0;
     res->delta_min = s.delta_min;
     res->delta_avg = s.delta_avg;

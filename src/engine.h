@@ -62,6 +62,11 @@ uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads);
 int cfpo_validate_ranks(int64_t n, const cfpo_options *o, int64_t rank_points, int64_t rank_cells,
                         int64_t rank_ring, int ranks_here, char *err, size_t errlen);
 
+/* Prepares the coming iteration from the set as it stands (the adaptive
+ * variant's margin, from delta(X) as last measured by cfpo_engine_deltas):
+ * call before the phases of an iteration (cfpo_engine_iterate does). */
+void cfpo_engine_begin(cfpo_engine *E);
+
 /* One phase: every cell of colour `colour` in parallel, then migration and
  * halo refresh. Returns the number of moves on this rank; *solved gets the
  * number of local problems solved. */

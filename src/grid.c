@@ -47,6 +47,7 @@ int cfpo_grid_init(cfpo_grid *G, int64_t n, int variant, uint64_t seed, char *er
     G->margin = variant == CFPO_VARIANT_SIMPLIFIED ? 0.0 : G->L - delta;
     G->seed = seed;
     G->extra = (uint64_t)(n - g * g);
+    G->shift = 0;
     return 0;
 }
 

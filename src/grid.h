@@ -26,6 +26,9 @@ typedef struct {
     double margin;  /* how far S reaches past the cell: L - Delta(n), or 0 */
     uint64_t seed;
     uint64_t extra; /* n - g^2: cells with a second point */
+    double shift;   /* the grid's offset on both axes, in [0, L): cell cx spans
+                       [cx L + shift, (cx + 1) L + shift) (mod 1); 0 except
+                       in the adaptive variant, which moves it every iteration */
 } cfpo_grid;
 
 /* Chooses g: a multiple of the period with g^2 close to 0.8 n and
@@ -39,6 +42,10 @@ int64_t cfpo_grid_min_n(int variant);
 
 static inline int64_t cfpo_grid_coord(const cfpo_grid *G, double v)
 {
+    if (G->shift != 0) {
+        v -= G->shift;
+        if (v < 0) v += 1.0;
+    }
     int64_t c = (int64_t)(v * (double)G->g);
     return c >= G->g ? G->g - 1 : (c < 0 ? 0 : c);
 }

@@ -14,6 +14,7 @@
 #include "tiles.h"
 #include "omp_compat.h"
 #include "pointfile.h"
+#include "stoprule.h"
 
 static const char *prog = "cfpo";
 
@@ -24,7 +25,10 @@ static void usage(void)
            "Optimization (Chen & Gotsman). Prints one SUMMARY line on stdout.\n\n"
            "  -n, --points N       number of points (required; e.g. 65536, 2^20, 1e6)\n"
            "  -s, --seed S         random seed (default 1)\n"
-           "      --variant V      cfpo (default: 9 phases, S = cell grown by L - Delta)\n"
+           "      --variant V      adaptive (default: 9 phases, S = cell grown by\n"
+           "                       L - max(delta(X), 0.7 Delta), uniform start; see docs/method.md),\n"
+           "                       paper (the published algorithm: S = cell grown by\n"
+           "                       L - Delta, stratified start; 'cfpo' is an alias)\n"
            "                       or simplified (4 phases, S = own cell)\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "      --max-iter K     stop after K iterations (default %d)\n"
@@ -32,6 +36,9 @@ static void usage(void)
            "                       no point's net move over an iteration reaches it\n"
            "                       (default %g; 0 = any strict gain)\n"
            "      --no-skip        re-solve every point every iteration (same output)\n"
+           "      --target-min D   stop as soon as delta_min >= D (and every other target holds)\n"
+           "      --target-avg D   stop as soon as delta_avg >= D (and every other target holds)\n"
+           "      --time-limit S   stop at the first iteration boundary past S seconds\n"
            "  -o, --output FILE    write the points; format from the extension:\n"
            "                       %s\n"
            "      --trace FILE     one TSV row per iteration\n"
@@ -128,7 +135,7 @@ static int dry_run(int64_t n, const cfpo_options *o, int P, int fpx, int fpy)
      * border cells leaves, 32 bytes each. */
     const double mig = halo_cells / (G.period * G.period) * ppc * 32 * 1.5;
     printf("dry run: n=%lld on %d ranks (%d threads each), variant %s\n", (long long)n, P, threads,
-           o->variant == CFPO_VARIANT_FULL ? "cfpo" : "simplified");
+           cfpo_variant_name(o->variant));
     printf("  grid          %lld x %lld cells (L = %.3g, Delta(n) = %.3g, %.3f points per cell)\n",
            (long long)g, (long long)g, G.L, G.delta, ppc);
     printf("  tiling        %d x %d tiles; tile sides %lld..%lld by %lld..%lld cells\n", T.px, T.py,
@@ -160,7 +167,9 @@ int main(int argc, char **argv)
         {"tiles", required_argument, 0, 'X'}, {"check", no_argument, 0, 'C'},
         {"checkpoint", required_argument, 0, 'P'}, {"checkpoint-every", required_argument, 0, 'E'},
         {"resume", required_argument, 0, 'R'}, {"dry-run", no_argument, 0, 'D'},
-        {"ranks", required_argument, 0, 'N'}, {0, 0, 0, 0}};
+        {"ranks", required_argument, 0, 'N'}, {"target-min", required_argument, 0, 1001},
+        {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003},
+        {0, 0, 0, 0}};
     cfpo_options o;
     cfpo_options_init(&o);
     cfpo_engine_config cfg = {0};
@@ -179,9 +188,8 @@ int main(int argc, char **argv)
             given_seed = 1;
             break;
         case 'v':
-            if (strcmp(optarg, "cfpo") == 0) o.variant = CFPO_VARIANT_FULL;
-            else if (strcmp(optarg, "simplified") == 0) o.variant = CFPO_VARIANT_SIMPLIFIED;
-            else cli_usage_error(prog, "--variant: '%s' is not one of cfpo, simplified", optarg);
+            if (cfpo_variant_parse(optarg, &o.variant) != 0)
+                cli_usage_error(prog, "--variant: '%s' is not one of adaptive, paper, simplified", optarg);
             given_variant = 1;
             break;
         case 't':
@@ -200,6 +208,9 @@ int main(int argc, char **argv)
             given_tol = 1;
             break;
         case 'K': o.skip = 0; break;
+        case 1001: cli_stop_option(prog, "target-min", optarg, &o.stop); break;
+        case 1002: cli_stop_option(prog, "target-avg", optarg, &o.stop); break;
+        case 1003: cli_stop_option(prog, "time-limit", optarg, &o.stop); break;
         case 'o': out = optarg; break;
         case 'r': trace = optarg; break;
         case 'q': quiet = 1; break;
@@ -251,7 +262,7 @@ int main(int argc, char **argv)
             cli_usage_error(prog, "--resume %s: the checkpoint is for n=%lld seed=%llu variant=%s tol=%g; "
                             "leave those options out or give the same values", cfg.resume,
                             (long long)info.n, (unsigned long long)info.seed,
-                            info.variant == CFPO_VARIANT_FULL ? "cfpo" : "simplified", info.tol);
+                            cfpo_variant_name(info.variant), info.tol);
         n = info.n;
         o.seed = info.seed;
         o.variant = info.variant;
@@ -369,12 +380,13 @@ int main(int argc, char **argv)
     if (rank == 0) {
         cli_summary sm = {
             .method = "cfpo",
-            .variant = o.variant == CFPO_VARIANT_FULL ? "cfpo" : "simplified",
+            .variant = cfpo_variant_name(o.variant),
             .n = n, .seed = o.seed,
             .threads = o.threads > 0 ? o.threads : omp_get_num_procs(),
             .ranks = P, .iterations = res.iterations, .seconds = seconds,
             .delta_min = res.delta_min, .delta_avg = res.delta_avg,
-            .converged = res.converged, .peak_bytes = (uint64_t)peak};
+            .converged = res.converged, .peak_bytes = (uint64_t)peak,
+            .stop = cfpo_stop_name(res.stop)};
         cli_print_summary(stdout, &sm);
         if (P > 1) {
             const double ph = tm.phases > 0 ? (double)tm.phases : 1;

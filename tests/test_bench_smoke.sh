@@ -3,10 +3,14 @@
 # (scripts/bench.sh, scripts/replot.sh) into a temporary results root:
 # the folder and nothing else appears; runs.csv has the documented header and
 # columns, one well-formed row per planned run, every method and experiment;
-# the evolution snapshots are the states their traces say; every figure is a
-# PNG (signature and header checked); summary.md shows every figure and
-# numbers that recompute from runs.csv; replot redraws everything from the
-# folder alone; errors give one line, a non-zero exit and leave nothing.
+# the evolution snapshots are the states their traces say; the time-to-
+# quality runs are the planned configurations, batched one per core, each
+# stopped by the rule its own trace shows, with a quality.csv row each;
+# `--plan` lists exactly the runs made; every figure is a PNG (signature and
+# header checked); summary.md shows every figure and numbers that recompute
+# from runs.csv and the traces; replot redraws everything from the folder
+# alone (and a folder without time-to-quality runs); errors give one line,
+# a non-zero exit and leave nothing.
 set -uo pipefail
 B=$(cd "${1:-build}" && pwd)
 SRC=$(cd "$(dirname "$0")/.." && pwd)
@@ -32,7 +36,7 @@ check "progress lines on stderr ([k/N] ... elapsed ... left)" grep -Eq '^bench: 
 
 # ---- runs.csv -------------------------------------------------------------------
 csv="$R/runs.csv"
-cols="run,experiment,method,variant,n,n_target,seed,threads,ranks,max_iter,iterations,seconds,seconds_per_iteration,delta_min,delta_avg,peak_bytes,converged,wall_seconds,trace"
+cols="run,experiment,method,variant,n,n_target,seed,threads,ranks,max_iter,iterations,seconds,seconds_per_iteration,delta_min,delta_avg,peak_bytes,converged,wall_seconds,trace,time_limit,stop,batch"
 check "runs.csv column line" [ "$(grep -v '^#' "$csv" | head -n 1)" = "$cols" ]
 for h in 'cpu: ' 'cores: ' 'compiler: ' 'C flags: ' 'git commit: ' 'FFTW ' 'CGAL ' 'OpenMPI ' 'gnuplot ' 'load average before' 'load average after'; do
   check "runs.csv header names '$h'" grep -q "^# .*$h" "$csv"
@@ -44,25 +48,30 @@ bad_rows=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, '
   function num(x) { return x ~ /^[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?$/ }
   function int_(x) { return x ~ /^[0-9]+$/ }
   { e = "" }
-  NF != 19 { e = e " fields=" NF }
+  NF != 22 { e = e " fields=" NF }
   $1 != NR { e = e " run" }
-  $2 !~ /^(evolution|comparison|runtime)$/ { e = e " experiment" }
+  $2 !~ /^(evolution|comparison|runtime|ttq)$/ { e = e " experiment" }
   $3 !~ /^(cfpo|fpo|lfpo|dart|bs|bridson)$/ { e = e " method" }
-  ($3 == "cfpo") != ($4 == "cfpo" || $4 == "simplified") || ($3 != "cfpo" && $4 != "-") { e = e " variant" }
+  ($3 == "cfpo") != ($4 ~ /^(paper|adaptive|simplified)$/) || ($3 != "cfpo" && $4 != "-") { e = e " variant" }
+  $2 != "ttq" && $4 == "adaptive" { e = e " variant (the other experiments run the paper variant)" }
   !int_($5) || !int_($6) || !int_($7) || !int_($8) || !int_($9) || ($9 != 1 && !($3 == "cfpo" && $8 == 1 && $2 == "runtime")) { e = e " n/seed/threads/ranks" }
   $10 != "-" && !int_($10) { e = e " max_iter" }
   !num($12) || !num($16) || $16 == 0 || !num($18) { e = e " seconds/peak/wall" }
   !num($14) || !num($15) || $14 > 1.2 || $15 > 1.2 || $14 > $15 + 1e-9 { e = e " delta" }
-  $3 ~ /^(dart|bs|bridson)$/ && ($11 != "-" || $13 != "-" || $17 != "-" || $19 != "-") { e = e " non-iterative" }
+  $3 ~ /^(dart|bs|bridson)$/ && ($11 != "-" || $13 != "-" || $17 != "-" || $19 != "-" || $21 != "-") { e = e " non-iterative" }
   $3 ~ /^(cfpo|fpo|lfpo)$/ && (!int_($11) || $17 !~ /^(yes|no)$/ || $19 == "-") { e = e " iterative" }
   $3 ~ /^(cfpo|fpo|lfpo)$/ && $11 > 0 && ($13 - $12 / $11 > 1e-5 * $13 + 1e-9 || $12 / $11 - $13 > 1e-5 * $13 + 1e-9) { e = e " s/iter" }
-  $10 != "-" && ($11 != $10 || $17 != "no") { e = e " capped" }
+  $3 ~ /^(cfpo|fpo|lfpo)$/ && $21 !~ /^(converged|target|time|max-iter)$/ { e = e " stop" }
+  ($21 == "converged") != ($17 == "yes") || ($21 == "max-iter" && $11 != $10) { e = e " stop/converged/cap" }
+  $2 != "ttq" && ($20 != "-" || $22 != "-" || $21 == "target" || $21 == "time") { e = e " ttq fields outside ttq" }
+  $2 == "ttq" && (!num($20) || !int_($22) || $3 == "dart" || $3 == "bs" || $3 == "bridson") { e = e " ttq fields" }
+  $10 != "-" && $2 != "ttq" && ($11 != $10 || $17 != "no") { e = e " capped" }
   $2 == "comparison" && $3 ~ /^(cfpo|fpo|lfpo)$/ && $17 != "yes" { e = e " not converged" }
   e != "" { print $1 ":" e }')
 check "every row well formed${bad_rows:+ (bad: $bad_rows)}" [ -z "$bad_rows" ]
 keys=$(grep -v '^#' "$csv" | awk -F, '$2 == "comparison" { print ($3 == "cfpo" ? $4 : $3) }' | sort -u | tr '\n' ' ')
-check "comparison has all 7 methods (found: $keys)" [ "$keys" = "bridson bs cfpo dart fpo lfpo simplified " ]
-for e in evolution comparison runtime; do check "experiment $e present" grep -q "^[0-9]*,$e," "$csv"; done
+check "comparison has all 7 methods (found: $keys)" [ "$keys" = "bridson bs dart fpo lfpo paper simplified " ]
+for e in evolution comparison runtime ttq; do check "experiment $e present" grep -q "^[0-9]*,$e," "$csv"; done
 threads=$(grep -v '^#' "$csv" | awk -F, '$2 == "runtime" && $3 == "cfpo" { print $8 }' | sort -un | tr '\n' ' ')
 want=$(. scripts/bench-profiles.sh && bench_threads_list | tr ' ' '\n' | sort -un | tr '\n' ' ')
 check "runtime has CFPO on $want threads (found: $threads)" [ "$threads" = "$want" ]
@@ -71,7 +80,7 @@ if command -v mpirun >/dev/null && [ "$(nproc)" -ge 2 ]; then
   # same iterations and statistics at each n and seed)
   mpi=$(grep -v '^#' "$csv" | awk -F, '$2 == "runtime" && $3 == "cfpo" && $9 > 1' | wc -l)
   check "runtime has CFPO on several ranks ($mpi rows)" [ "$mpi" -gt 0 ]
-  diffr=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, '$3 == "cfpo" && $4 == "cfpo" && $10 == "-" {
+  diffr=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, '$2 != "ttq" && $3 == "cfpo" && $4 == "paper" && $10 == "-" {
       k = $6 "/" $7; v = $11 "/" $14 "/" $15
       if ($9 == 1) one[k] = v; else many[k] = v }
     END { for (k in many) if (!(k in one) || one[k] != many[k]) printf "%s ", k }')
@@ -85,7 +94,7 @@ ok
 # the evolution snapshot after K iterations is the state of row K of the
 # comparison run's trace (same seed; the output is thread-independent)
 mism=$(grep -v '^#' "$csv" | awk -F, -v R="$R" '
-  $2 == "comparison" && $3 == "cfpo" && $4 == "cfpo" { tr[$7] = $19 }
+  $2 == "comparison" && $3 == "cfpo" && $4 == "paper" { tr[$7] = $19 }
   $2 == "evolution" { ev[NR] = $0 }
   END { for (i in ev) { split(ev[i], a, ","); f = R "/" tr[a[7]]; d = ""
     while ((getline line < f) > 0) { split(line, b, "\t"); if (b[1] == a[10]) d = b[2] }
@@ -93,6 +102,67 @@ mism=$(grep -v '^#' "$csv" | awk -F, -v R="$R" '
     if (d == "" && a[10] == 0) continue
     if (d == "" || d - a[14] > 1e-6 || a[14] - d > 1e-6) print a[1] } }')
 check "evolution rows match the comparison traces${mism:+ (rows: $mism)}" [ -z "$mism" ]
+
+# ---- time to quality ---------------------------------------------------------------
+prof() { (. scripts/bench-profiles.sh && bench_profile smoke && eval "echo \"\$$1\""); }
+ttq_sizes=$(prof TTQ_SIZES); ttq_seeds=$(prof TTQ_SEEDS); ttq_configs=$(prof TTQ_CONFIGS)
+tmin=$(prof TTQ_TARGET_MIN); tavg=$(prof TTQ_TARGET_AVG)
+want_ttq=$(for n in $ttq_sizes; do for s in $(seq 1 "$ttq_seeds"); do for c in $ttq_configs; do echo "$n/$s/${c%:*}/${c#*:}"; done; done; done | sort | tr '\n' ' ')
+got_ttq=$(grep -v '^#' "$csv" | awk -F, '$2 == "ttq" { print $6 "/" $7 "/" ($3 == "cfpo" ? $4 : $3) "/" $8 }' | sort | tr '\n' ' ')
+check "ttq runs are the planned configurations (want: $want_ttq; got: $got_ttq)" [ "$want_ttq" = "$got_ttq" ]
+# batches: one n and seed each; several runs only when all have one thread,
+# at most one per core; adaptive CFPO on one thread shares its batch with FPO
+badb=$(grep -v '^#' "$csv" | awk -F, -v cores="$(nproc)" '$2 == "ttq" {
+    b = $22; c[b]++; k = $6 "/" $7; if ((b in key) && key[b] != k) bad[b] = 1; key[b] = k; if ($8 > 1) multi[b] = 1
+    m = ($3 == "cfpo" ? $4 : $3) $8; if (m == "adaptive1") ad[b] = 1; if (m == "fpo1") fp[b] = 1 }
+  END { for (b in c) if (bad[b] || c[b] > cores || ((b in multi) && c[b] > 1)) printf "%s ", b
+        if (cores >= 2) for (b in ad) if (!(b in fp)) printf "%s(cfpo without fpo) ", b }')
+check "ttq batches well formed${badb:+ (bad: $badb)}" [ -z "$badb" ]
+# each run stopped by the rule its own trace shows
+badt=$(grep -v '^#' "$csv" | awk -F, -v R="$R" -v a="$tmin" -v b="$tavg" '$2 == "ttq" {
+    f = R "/" $19; first = ""; last = ""; lel = ""; rows = 0
+    while ((getline line < f) > 0) { if (++rows == 1) continue; split(line, t, "\t"); last = t[1]; lel = t[8]
+      if (first == "" && t[2] >= a && t[3] >= b) first = t[1] }
+    close(f)
+    ok = (last == $11)
+    if ($21 == "target") ok = ok && first == last
+    else if ($21 == "converged") ok = ok && (first == "" || first == last)
+    else ok = ok && first == ""
+    if ($21 == "time") ok = ok && lel >= $20
+    if (!ok) printf "%s(stop=%s first=%s last=%s) ", $1, $21, first, last }')
+check "ttq runs stop where their traces say${badt:+ (bad: $badt)}" [ -z "$badt" ]
+check "a ttq run reaches the target in smoke" grep -Eq '^[0-9]+,ttq,.*,target,[0-9]+$' "$csv"
+q="$R/quality.csv"
+check "quality.csv header" [ "$(head -n 1 "$q")" = "run,n,K,certify,cert_pass,cert_max_violation,lct_pass,spike_ratio,spike_k" ]
+badq=$(awk -F, 'FNR == NR { if ($2 == "ttq") { want[$1] = $5 } next }
+  FNR > 1 { if (!($1 in want) || $2 != want[$1] || NF != 9 || $4 !~ /^(pass|fail)$/ || !($5 >= 0 && $5 <= 1) || !($7 >= 0 && $7 <= 1) ||
+      !($8 > 1 && $8 < 1000) || $9 !~ /^-?[0-9]+;-?[0-9]+$/) printf "%s ", $1; seen[$1]++ }
+  END { for (r in want) if (seen[r] != 1) printf "missing:%s ", r }' <(grep -v '^#' "$csv") "$q")
+check "quality.csv: one well-formed row per ttq run${badq:+ (bad: $badq)}" [ -z "$badq" ]
+# summary.md: a table per n, a row per configuration, and the FPO row's
+# time to delta_avg >= 0.929 and the adaptive CFPO ratio recomputed from
+# the traces (one seed in smoke, so the medians are the runs' own values)
+for n in $ttq_sizes; do
+  check "summary.md: time-to-quality table for n = $n" grep -q "^### n = $n (time limit [0-9.]* s)" "$R/summary.md"
+  rows_n=$(awk -v n="$n" '/^### n = / { on = ($4 == n) } on && /^\| (CFPO|FPO|LFPO)/' "$R/summary.md")
+  check "summary.md: $(echo "$ttq_configs" | wc -w) rows of 16 cells for n = $n" \
+    [ "$(grep -c . <<<"$rows_n")" -eq "$(echo "$ttq_configs" | wc -w)" ] && [ -z "$(awk -F' [|] ' 'NF != 16' <<<"$rows_n")" ]
+  t_of() { grep -v '^#' "$csv" | awk -F, -v R="$R" -v n="$n" -v k="$1" '$2 == "ttq" && $6 == n && $7 == 1 && ($3 == "cfpo" ? $4 : $3) == k && $8 == 1 {
+      f = R "/" $19; while ((getline line < f) > 0) { split(line, t, "\t"); if (t[1] ~ /^[0-9]+$/ && t[3] >= 0.929) { print t[8]; exit } } }'; }
+  tf=$(t_of fpo); tc=$(t_of adaptive)
+  fcell=$(awk -v x="$tf" 'BEGIN { if (x == "") print "never"; else if (x >= 100) printf "%.0f", x; else if (x >= 10) printf "%.1f", x; else if (x >= 1) printf "%.2f", x; else printf "%.3g", x }')
+  rcell=$(awk -v f="$tf" -v c="$tc" 'BEGIN { if (f == "" || c == "") print "-"; else printf "%.2f", f / c }')
+  check "summary.md: FPO reaches delta_avg 0.929 at $fcell s (trace)" grep -q "^| FPO | 1 | [0-9]* | $fcell |" <<<"$rows_n"
+  check "summary.md: CFPO (adaptive) 1 thread, FPO / this at delta_avg 0.929 = $rcell" \
+    awk -F' [|] ' -v r="$rcell" '$1 == "| CFPO (adaptive)" && $2 == 1 { found = 1; if ($13 != r) exit 1 } END { exit !found }' <<<"$rows_n"
+done
+# the plan lists exactly these runs, the ttq ones with their limit and batch
+scripts/bench.sh "$B" smoke --plan >"$T/plan" 2>&1
+check "--plan lists one line per run made ($(grep -c '^[a-z]' "$T/plan") lines for $rows runs)" \
+  [ "$(grep -Ec '^(evolution|comparison|runtime|ttq) ' "$T/plan")" -eq "$rows" ]
+check "--plan: ttq runs with time_limit and batch" \
+  [ "$(grep -Ec '^ttq .* time_limit=[0-9.]+s batch=[0-9]+$' "$T/plan")" -eq "$(echo $want_ttq | wc -w)" ]
+check "--plan: the total" grep -Eq "^bench: profile smoke: $rows runs, about [0-9]+ min" "$T/plan"
 
 # ---- spectra.csv ------------------------------------------------------------------
 groups=$(tail -n +2 "$R/spectra.csv" | cut -d, -f1 | tr '\n' ' ')
@@ -102,6 +172,9 @@ for g in $groups; do
   check "analysis of $g (spectrum, raps)" [ -s "$R/data/analysis/$g/spectrum.txt" ] && [ -s "$R/data/analysis/$g/raps.txt" ]
   check "seed-1 point set of $g" [ -s "$R/data/points/$g.txt" ]
 done
+check "spectra.csv: 19 columns, spike ratio (average and per-set mean) and its k" \
+  awk -F, 'NR == 1 { exit !($17 == "spike_ratio" && $18 == "spike_k" && $19 == "spike_ratio_set_mean" && NF == 19) }
+    NF != 19 || !($17 > 1 && $17 < 1000) || $18 !~ /^-?[0-9]+;-?[0-9]+$/ || !($19 > 1 && $19 < 1000) { exit 1 }' "$R/spectra.csv"
 check "BS and Bridson averaged by bench-average.awk, same-n groups by cfpo-analyze" \
   awk -F, 'NR > 1 && (($3 == "bs" || $3 == "bridson") != ($16 == "bench-average.awk")) { exit 1 }' "$R/spectra.csv"
 
@@ -115,17 +188,17 @@ png_ok() { # PNG signature, then an IHDR chunk with a non-zero width and height
   h=$(head -c 24 "$1" | tail -c 4 | od -An -tu1 | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }')
   [ "$w" -ge 400 ] && [ "$h" -ge 300 ] && [ "$(stat -c %s "$1")" -gt 10000 ]
 }
-FIGS="evolution comparison convergence runtime speedup"
+FIGS="evolution comparison convergence runtime speedup time-to-quality"
 for f in $FIGS; do
   check "fig-$f.png is a PNG image" png_ok "$R/fig-$f.png"
   check "summary.md shows fig-$f.png" grep -q "](fig-$f.png)" "$R/summary.md"
   check "scripts/fig-$f.gp exists" [ -f scripts/fig-$f.gp ]
 done
-check "no other PNG than the figures" [ "$(find "$R" -name '*.png' | wc -l)" -eq 5 ]
+check "no other PNG than the figures" [ "$(find "$R" -name '*.png' | wc -l)" -eq 6 ]
 
 # ---- summary.md: numbers recompute from runs.csv ------------------------------------
 for k in cfpo fpo; do
-  row=$(grep -v '^#' "$csv" | awk -F, -v k="$k" '$2 == "comparison" && $3 == k && ($4 == "cfpo" || $4 == "-") { s += $14; c++; id = id (id == "" ? "" : " ") $1 }
+  row=$(grep -v '^#' "$csv" | awk -F, -v k="$k" '$2 == "comparison" && $3 == k && ($4 == "paper" || $4 == "-") { s += $14; c++; id = id (id == "" ? "" : " ") $1 }
     END { printf "%.4f|%s", s / c, id }')
   mean=${row%%|*}
   ids=${row#*|}
@@ -144,6 +217,12 @@ if scripts/replot.sh "$R" >"$T/rout" 2>"$T/rerr"; then ok; else bad "replot.sh f
 for f in $FIGS; do check "replot redrew fig-$f.png" png_ok "$R/fig-$f.png"; done
 check "replot rewrote the same summary.md" cmp -s "$R/summary.md" "$T/summary.before"
 check "replot left runs.csv and spectra.csv alone" [ "$(md5sum "$csv" "$R/spectra.csv")" = "$sum_before" ]
+# a folder without time-to-quality runs (written before they existed)
+old="$T/old"; cp -r "$R" "$old"
+awk -F, '/^#/ || $2 != "ttq"' "$R/runs.csv" >"$old/runs.csv"; rm -f "$old/quality.csv" "$old/fig-time-to-quality.png"
+if scripts/replot.sh "$old" >/dev/null 2>"$T/rerr2"; then ok; else bad "replot of a folder without ttq runs: $(tail -n 1 "$T/rerr2")"; fi
+check "no ttq runs: no time-to-quality figure or section" [ ! -e "$old/fig-time-to-quality.png" ] && ! grep -q "Time to quality" "$old/summary.md"
+rm -rf "$old"
 (cd "$T/res/.." && mkdir -p results && cp -r "$R" results/ && "$SRC/scripts/replot.sh" >/dev/null 2>&1)
 check "replot without an argument takes the newest folder under results/" [ -s "$T/results/$(basename "$R")/fig-speedup.png" ]
 

@@ -73,7 +73,7 @@ expect 1 "too large for memory" -n 2^31
 # --- success: formats, summary, trace
 "$CFPO" -n 1000 --seed 7 -o p.bin --trace t.tsv >s.txt 2>e.txt && ok || bad "plain run failed: $(cat e.txt)"
 [ ! -s e.txt ] && ok || bad "stderr not empty when not a terminal: $(cat e.txt)"
-[ "$(wc -l <s.txt)" -eq 1 ] && grep -Eq '^SUMMARY method=cfpo variant=cfpo n=1000 seed=7 threads=[0-9]+ ranks=1 iterations=[0-9]+ seconds=[0-9.]+ delta_min=0\.9[0-9]+ delta_avg=0\.9[0-9]+ converged=yes peak_bytes=[0-9]+ bytes_per_point=[0-9.]+$' s.txt && ok || bad "summary line: $(cat s.txt)"
+[ "$(wc -l <s.txt)" -eq 1 ] && grep -Eq '^SUMMARY method=cfpo variant=adaptive n=1000 seed=7 threads=[0-9]+ ranks=1 iterations=[0-9]+ seconds=[0-9.]+ delta_min=0\.9[0-9]+ delta_avg=0\.9[0-9]+ converged=yes peak_bytes=[0-9]+ bytes_per_point=[0-9.]+ stop=converged$' s.txt && ok || bad "summary line: $(cat s.txt)"
 [ "$(stat -c %s p.bin)" -eq 16000 ] && ok || bad "p.bin has $(stat -c %s p.bin) bytes"
 iters=$(sed -n 's/.* iterations=\([0-9]*\).*/\1/p' s.txt)
 [ "$(head -1 t.tsv)" = "$(printf 'iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed\tmax_move')" ] && ok || bad "trace header: $(head -1 t.tsv)"

@@ -16,6 +16,7 @@
 #include "engine.h"
 #include "grid.h"
 #include "rng.h"
+#include "start.h"
 #include "stats.h"
 #include "testutil.h"
 
@@ -40,7 +41,7 @@ static void brute_deltas(const double *xy, int64_t n, double *dmin, double *davg
 static void test_grid_choice(void)
 {
     int bad = 0;
-    for (int variant = 0; variant < 2; variant++)
+    for (int variant = 0; variant < 3; variant++)
         for (int64_t n = 1; n < 200000; n += (n < 2000 ? 1 : n / 97)) {
             cfpo_grid G;
             char err[256];
@@ -102,6 +103,53 @@ static void test_start(void)
     }
 }
 
+/* The adaptive start: n points, each in the cell it is filed under, sorted
+ * by cell; any cut into bands of rows gives the same points (so any rank
+ * count makes the same start); different seeds differ. */
+static void test_adaptive_start(void)
+{
+    int64_t ns[] = {11, 100, 1000, 4096, 65536 + 7};
+    for (size_t t = 0; t < sizeof ns / sizeof *ns; t++) {
+        int64_t n = ns[t];
+        cfpo_grid G;
+        char err[256];
+        cfpo_grid_init(&G, n, CFPO_VARIANT_ADAPTIVE, 9, err, sizeof err);
+        cfpo_start_pt *all = NULL;
+        int64_t m = cfpo_start_band(&G, 0, G.g, &all);
+        int64_t bad = 0;
+        for (int64_t i = 0; i < m; i++) {
+            const cfpo_start_pt *p = &all[i];
+            if (!(p->x >= 0 && p->x < 1 && p->y >= 0 && p->y < 1)) bad++;
+            if (cfpo_grid_coord(&G, p->y) * G.g + cfpo_grid_coord(&G, p->x) != p->cell) bad++;
+            if (i && (all[i - 1].cell > p->cell || (all[i - 1].cell == p->cell && all[i - 1].key >= p->key))) bad++;
+        }
+        CHECK(m == n && bad == 0, "adaptive start n=%lld: %lld points, %lld bad", (long long)n, (long long)m,
+              (long long)bad);
+        /* bands of 1, 2, ... rows, concatenated */
+        int64_t k = 0, diff = 0;
+        for (int64_t y0 = 0, w = 1; y0 < G.g; y0 += w, w++) {
+            int64_t y1 = y0 + w < G.g ? y0 + w : G.g;
+            cfpo_start_pt *b = NULL;
+            int64_t mb = cfpo_start_band(&G, y0, y1, &b);
+            for (int64_t i = 0; i < mb; i++, k++)
+                if (k >= m || memcmp(&b[i], &all[k], sizeof *b) != 0) diff++;
+            free(b);
+        }
+        CHECK(k == m && diff == 0, "adaptive start n=%lld: bands give %lld points, %lld differ", (long long)n,
+              (long long)k, (long long)diff);
+        cfpo_grid G2 = G;
+        G2.seed = 10;
+        cfpo_start_pt *o = NULL;
+        int64_t m2 = cfpo_start_band(&G2, 0, G2.g, &o);
+        int64_t same = 0;
+        for (int64_t i = 0; i < m2 && i < m; i++) same += o[i].x == all[i].x;
+        CHECK(m2 == n && same < 3, "adaptive start n=%lld: seeds 9 and 10 share %lld points", (long long)n,
+              (long long)same);
+        free(o);
+        free(all);
+    }
+}
+
 static double *run_points(int64_t n, uint64_t seed, int threads, int skip, int variant,
                           int max_iter, cfpo_result *res)
 {
@@ -138,23 +186,31 @@ static void test_monotone(int variant)
     int decreases = 0, phases = 0;
     const int ncol = cfpo_engine_grid(E)->period * cfpo_engine_grid(E)->period;
     double first = prev;
-    for (int it = 0; it < 40; it++)
+    /* Paper and simplified: S is within L - Delta(n) of the cell, so no
+     * phase lowers delta(X). Adaptive: S reaches L - delta(X) at the
+     * iteration's start, so no phase takes delta(X) below that value (it
+     * may dip below a higher value reached earlier in the iteration). */
+    for (int it = 0; it < 40; it++) {
+        cfpo_engine_begin(E);
+        const double at_start = prev;
         for (int c = 0; c < ncol; c++) {
             int64_t solved;
             cfpo_engine_phase(E, c, &solved);
             double dmin;
             cfpo_engine_deltas(E, &dmin, &avg);
-            if (dmin < prev) {
+            const double floor_ = variant == CFPO_VARIANT_ADAPTIVE ? at_start : prev;
+            if (dmin < floor_) {
                 decreases++;
-                fprintf(stderr, "delta_min fell from %.17g to %.17g (iteration %d, phase %d)\n", prev, dmin, it, c);
+                fprintf(stderr, "delta_min fell from %.17g to %.17g (iteration %d, phase %d)\n", floor_, dmin, it, c);
             }
             prev = dmin;
             phases++;
         }
+    }
     CHECK(decreases == 0, "%s: delta_min decreased in %d of %d phases",
-          variant ? "simplified" : "cfpo", decreases, phases);
+          cfpo_variant_name(variant), decreases, phases);
     CHECK(prev > first + 0.3, "%s: delta_min did not grow (%.4f -> %.4f)",
-          variant ? "simplified" : "cfpo", first, prev);
+          cfpo_variant_name(variant), first, prev);
     /* Statistics from the engine's buckets equal brute force. */
     double *xy = malloc(2 * n * sizeof *xy);
     cfpo_engine_points(E, xy);
@@ -195,6 +251,16 @@ static void test_determinism(void)
     for (int64_t i = 0; i < 2 * n; i++) same += other[i] == ref[i];
     CHECK(same < 10, "seeds 3 and 4 share %zu coordinates", same);
     free(other);
+    /* Adaptive variant (start, margin): the same bytes for any thread
+     * count and with skipping off. */
+    cfpo_result a1, a3;
+    double *ad1 = run_points(n, 3, 1, 1, CFPO_VARIANT_ADAPTIVE, 10000, &a1);
+    double *ad3 = run_points(n, 3, 3, 0, CFPO_VARIANT_ADAPTIVE, 10000, &a3);
+    CHECK(a1.converged && memcmp(ad1, ad3, 2 * n * sizeof *ad1) == 0 && a1.iterations == a3.iterations,
+          "adaptive: 1 thread vs 3 threads without skipping differ (or no convergence)");
+    CHECK(memcmp(ad1, ref, 2 * n * sizeof *ad1) != 0, "adaptive equals the paper variant");
+    free(ad1);
+    free(ad3);
     /* Simplified variant: deterministic too. */
     double *s1 = run_points(n, 3, 1, 1, CFPO_VARIANT_SIMPLIFIED, 200, NULL);
     double *s2 = run_points(n, 3, 3, 0, CFPO_VARIANT_SIMPLIFIED, 200, NULL);
@@ -212,7 +278,7 @@ static void test_small_n(void)
 {
     int64_t ns[] = {1, 2, 10, 11, 12, 19, 20, 100, 101, 997, 1009};
     for (size_t t = 0; t < sizeof ns / sizeof *ns; t++)
-        for (int variant = 0; variant < 2; variant++) {
+        for (int variant = 0; variant < 3; variant++) {
             int64_t n = ns[t];
             cfpo_options o;
             cfpo_options_init(&o);
@@ -251,7 +317,7 @@ static void test_api_matches_engine(void)
     double *a = malloc(2 * n * sizeof *a);
     cfpo_engine_points(E, a);
     cfpo_engine_free(E);
-    double *b = run_points(n, 11, 2, 1, CFPO_VARIANT_FULL, o.max_iter, NULL);
+    double *b = run_points(n, 11, 2, 1, CFPO_VARIANT_ADAPTIVE, o.max_iter, NULL);
     CHECK(memcmp(a, b, 2 * n * sizeof *a) == 0, "cfpo_sample differs from the engine");
     free(a);
     free(b);
@@ -273,6 +339,8 @@ int main(void)
     test_start();
     test_monotone(CFPO_VARIANT_FULL);
     test_monotone(CFPO_VARIANT_SIMPLIFIED);
+    test_monotone(CFPO_VARIANT_ADAPTIVE);
+    test_adaptive_start();
     test_determinism();
     test_small_n();
     test_api_matches_engine();

@@ -2,7 +2,8 @@
 # cli_average.sh - averaging many files equals the mean of the single-file
 # results: the averaged spectrum matrix and RAPS are the means of the three
 # single-file ones (to the printed precision), delta_min and delta_avg the
-# means of the single values, the NN histogram the sum; averaging one file
+# means of the single values, the NN histogram the sum, the mean spike
+# ratio the mean of the single ones; averaging one file
 # three times gives that file's result.
 . "$(dirname "$0")/common.sh"
 cd "$T" || exit 1
@@ -28,6 +29,11 @@ for k in delta_min delta_avg; do
   a=$(field "$avg" $k)
   check "awk -v a=$a -v m=$m 'BEGIN { d = a - m; if (d < 0) d = -d; exit d > 2e-6 }'" "$k: average $a, mean of singles $m"
 done
+# the per-set spike ratios: their mean, and each one, are the single runs'
+m=$(for s in 1 2 3; do field "$("$A" -q -K 24 -o y$s s$s.txt)" spike_ratio; done | awk '{ s += $1 } END { printf "%.9g", s / 3 }')
+a=$(field "$avg" spike_ratio_set_mean)
+check "awk -v a=$a -v m=$m 'BEGIN { d = a - m; if (d < 0) d = -d; exit d > 1e-5 * m }'" "spike_ratio_set_mean: average $a, mean of singles $m"
+check "[ \"\$(field \"\$avg\" spike_ratio)\" != \"$a\" ]" "spike ratio of the averaged spectrum equals the mean of the per-set ratios"
 "$A" -q -K 24 -o same s1.txt s1.txt s1.txt >/dev/null
 check "paste one1/raps.txt same/raps.txt | awk '!/^#/ { d = \$3 - \$8; if (d < 0) d = -d; if (d > 1e-9 * (\$3 > 1 ? \$3 : 1)) exit 1 }'" \
   "one file averaged three times differs from itself"

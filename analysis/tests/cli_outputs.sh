@@ -1,6 +1,7 @@
 #!/bin/sh
 # cli_outputs.sh - cfpo-analyze end to end on a CFPO set: the default
 # folder name and K, the shapes of every output file, the SUMMARY line,
+# the spike ratio recomputed from spectrum.txt and raps.txt,
 # --check (NUFFT against exact summation, within 1e-6), --exact giving the
 # same RAPS, replacing an earlier output folder but never a foreign one,
 # and plot.gp running under gnuplot when gnuplot is installed.
@@ -32,6 +33,23 @@ if command -v jq >/dev/null 2>&1; then
     "stats.json content"
 else
   check 'grep -q "\"n\": 1024" set.analysis/stats.json' "stats.json content"
+fi
+# spike ratio: the summary's value and k are the largest P(k) / ring mean
+# over rings of >= 16 frequencies as spectrum.txt and raps.txt give them
+sr=$(field "$out" spike_ratio); sk=$(field "$out" spike_k)
+check 'le 3 "$sr" && le "$sr" 40' "spike_ratio $sr of a CFPO set outside [3, 40]"
+check '[ "$(field "$out" spike_ratio_set_mean)" = "$sr" ]' "one set: spike_ratio_set_mean differs from spike_ratio"
+want=$(awk 'FNR == 1 { f++ } f == 1 && !/^#/ { m[$1] = $3; c[$1] = $5; next }
+  f == 2 && FNR == 1 { for (i = 2; i <= NF; i++) kx[i] = $i; next }
+  f == 2 { ky = $1; for (i = 2; i <= NF; i++) { x = kx[i]; if (!(ky > 0 || (ky == 0 && x > 0))) continue
+      q = x * x + ky * ky; r = int(sqrt(q) + 0.5); if (!(r in m) || c[r] < 16) continue
+      v = $i / m[r]; if (v > best) { best = v; bk = x "," ky } } }
+  END { printf "%s %s", best, bk }' set.analysis/raps.txt set.analysis/spectrum.txt)
+check 'awk -v a="$sr" -v b="${want%% *}" "BEGIN { d = a - b; exit !(d < 1e-5 * b && d > -1e-5 * b) }" && [ "$sk" = "${want#* }" ]' \
+  "summary spike_ratio=$sr spike_k=$sk, from the files: $want"
+if command -v jq >/dev/null 2>&1; then
+  check "jq -e '(.spike_per_set | length) == 1 and .spike.min_ring_count == 16 and (.spike_per_set[0].ratio - .spike.ratio | fabs) < 1e-9' set.analysis/stats.json >/dev/null" \
+    "stats.json spike fields"
 fi
 # --check: NUFFT against exact summation
 out=$("$A" set.npy -q -K 96 --check -o chk)

@@ -90,6 +90,7 @@ static void check_grid_start(void)
     cfpo_options_init(&co);
     co.seed = 5;
     co.threads = 1;
+    co.variant = CFPO_VARIANT_PAPER; /* the stratified start; the default variant starts otherwise */
     cfpo_engine *C = cfpo_engine_create(n, &co, err, sizeof err);
     CHECK(E && C, "grid start: %s", err);
     if (!E || !C) return;

@@ -1,0 +1,137 @@
+/* start.c - see start.h. */
+#include "start.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "geom.h"
+#include "rng.h"
+
+#define START_SALT 0x2545f4914f6cdd1dULL
+#define EXTRA_SALT 0x9e6c63d0676a9a99ULL
+#define WARP_SALT 0x7f4a7c159e3779b9ULL
+#define WARP_MAX_MODES 64
+/* The warp's strength, measured at 65,536 points (docs/method.md): an rms
+ * displacement of 1.5 start cells at a wavelength of 8 start cells, 16
+ * modes, removes the start lattice's spike without making holes. */
+#define WARP_AMP 1.5
+#define WARP_LEN 8.0
+#define WARP_MODES 16
+
+typedef struct {
+    int64_t h;        /* start cells per side */
+    uint64_t extra;   /* n - h^2 */
+    double amp;       /* displacement amplitude, in start cells */
+    double len;       /* wavelength of the field, in start cells */
+    int modes;
+} start_params;
+
+static void params(const cfpo_grid *G, start_params *p)
+{
+    int64_t h = (int64_t)floor(sqrt((double)G->n));
+    while (h * h > G->n) h--;
+    while ((h + 1) * (h + 1) <= G->n) h++;
+    p->h = h;
+    p->extra = (uint64_t)(G->n - h * h);
+    p->amp = WARP_AMP;
+    p->len = WARP_LEN;
+    p->modes = WARP_MODES;
+}
+
+typedef struct {
+    double kx, ky, ph, cx, cy; /* wave vector, phase, displacement direction * amplitude */
+} mode;
+
+/* The field: the curl of a random stream function, a sum of `modes` plane
+ * waves with integer wave vectors of length near h / len (so it is
+ * periodic on the torus), scaled so the rms displacement is amp / h. Its
+ * divergence is zero: it moves points without compressing them, to first
+ * order. */
+static int make_modes(const cfpo_grid *G, const start_params *p, mode *md)
+{
+    if (!(p->amp > 0) || p->modes < 1) return 0;
+    const double K = (double)p->h / p->len;
+    const uint64_t key = G->seed ^ WARP_SALT;
+    const double a = p->amp / (double)p->h / sqrt(0.5 * p->modes);
+    for (int j = 0; j < p->modes; j++) {
+        double ang = 2 * M_PI * cfpo_rand01(key, (uint64_t)j, 0);
+        double rad = K * (0.75 + 0.5 * cfpo_rand01(key, (uint64_t)j, 1));
+        double kx = round(rad * cos(ang)), ky = round(rad * sin(ang));
+        if (kx == 0 && ky == 0) kx = 1;
+        double kk = sqrt(kx * kx + ky * ky);
+        md[j].kx = 2 * M_PI * kx;
+        md[j].ky = 2 * M_PI * ky;
+        md[j].ph = 2 * M_PI * cfpo_rand01(key, (uint64_t)j, 2);
+        md[j].cx = -a * ky / kk;
+        md[j].cy = a * kx / kk;
+    }
+    return p->modes;
+}
+
+static void warp(const mode *md, int nm, double *x, double *y)
+{
+    double ux = 0, uy = 0;
+    for (int j = 0; j < nm; j++) {
+        double s = sin(md[j].kx * *x + md[j].ky * *y + md[j].ph);
+        ux += md[j].cx * s;
+        uy += md[j].cy * s;
+    }
+    *x = cfpo_wrap01(*x + ux);
+    *y = cfpo_wrap01(*y + uy);
+}
+
+static uint64_t start_count(const cfpo_grid *G, const start_params *p, int64_t i, int64_t j)
+{
+    const uint64_t cells = (uint64_t)(p->h * p->h);
+    const uint64_t base = 1 + p->extra / cells, rem = p->extra % cells;
+    if (rem == 0) return base;
+    uint64_t c = (uint64_t)(j * p->h + i);
+    return base + (cfpo_permute(c, cells, cfpo_mix64(G->seed ^ EXTRA_SALT)) < rem ? 1 : 0);
+}
+
+static int cmp_pt(const void *a, const void *b)
+{
+    const cfpo_start_pt *p = a, *q = b;
+    if (p->cell != q->cell) return p->cell < q->cell ? -1 : 1;
+    return p->key < q->key ? -1 : (p->key > q->key);
+}
+
+int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, cfpo_start_pt **out)
+{
+    start_params p;
+    params(G, &p);
+    mode md[WARP_MAX_MODES];
+    const int nm = make_modes(G, &p, md);
+    /* Start rows whose points can land in rows [y0, y1): the band's extent
+     * plus the largest displacement, at most every row once. */
+    const double reach = nm ? p.amp * sqrt(2.0 * nm) + 1.0 : 1.0;
+    int64_t jlo = (int64_t)floor((double)y0 * G->L * (double)p.h - reach) - 1;
+    int64_t jhi = (int64_t)ceil((double)y1 * G->L * (double)p.h + reach) + 1;
+    if (jhi - jlo > p.h) { jlo = 0; jhi = p.h; }
+    const uint64_t per = 1 + p.extra / (uint64_t)(p.h * p.h) + 1;
+    size_t cap = (size_t)((jhi - jlo) * p.h) * (size_t)per, m = 0;
+    cfpo_start_pt *pts = malloc((cap ? cap : 1) * sizeof *pts);
+    if (!pts) return -1;
+    const uint64_t seed = G->seed ^ START_SALT;
+    for (int64_t jj = jlo; jj < jhi; jj++) {
+        const int64_t j = (jj % p.h + p.h) % p.h;
+        for (int64_t i = 0; i < p.h; i++) {
+            const uint64_t cnt = start_count(G, &p, i, j), sc = (uint64_t)(j * p.h + i);
+            for (uint64_t k = 0; k < cnt; k++) {
+                double x = cfpo_wrap01(((double)i + cfpo_rand01(seed, 2 * sc + 1, 2 * k)) / (double)p.h);
+                double y = cfpo_wrap01(((double)j + cfpo_rand01(seed, 2 * sc + 1, 2 * k + 1)) / (double)p.h);
+                warp(md, nm, &x, &y);
+                const int64_t cy = cfpo_grid_coord(G, y);
+                if (cy < y0 || cy >= y1) continue;
+                pts[m].cell = cy * G->g + cfpo_grid_coord(G, x);
+                pts[m].key = sc * per + k;
+                pts[m].x = x;
+                pts[m].y = y;
+                m++;
+            }
+        }
+    }
+    qsort(pts, m, sizeof *pts, cmp_pt);
+    *out = pts;
+    return (int64_t)m;
+}

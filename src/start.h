@@ -1,0 +1,29 @@
+/* start.h - layer 2: the initial point set of the adaptive variant.
+ *
+ * Owns: the start of CFPO_VARIANT_ADAPTIVE, as points per optimisation
+ * cell. The start is a jittered grid of h x h start cells, h = floor(sqrt
+ * n), one uniform point in each, the n - h^2 remaining points in distinct
+ * random start cells, then displaced by a smooth divergence-free random
+ * field (docs/method.md says why). Every coordinate is a pure function of
+ * (seed, start cell), so any process makes any optimisation cell's points
+ * without the others. Order inside a cell: by start cell, then by point.
+ * May include: geom.h, rng.h, grid.h (the optimisation grid). */
+#ifndef CFPO_START_H
+#define CFPO_START_H
+
+#include <stdint.h>
+
+#include "grid.h"
+
+typedef struct {
+    int64_t cell;  /* global row-major index of the optimisation cell */
+    uint64_t key;  /* order inside the cell */
+    double x, y;
+} cfpo_start_pt;
+
+/* The points of the start that fall into optimisation rows [y0, y1) (all
+ * columns), sorted by cell and then by key; *out is malloc'ed. Returns
+ * their number, or -1 when out of memory. */
+int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, cfpo_start_pt **out);
+
+#endif
