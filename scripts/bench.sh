@@ -50,6 +50,12 @@ cleanup() {
   [ -n "$ticker" ] && kill "$ticker" 2>/dev/null
   local p
   for p in "${children[@]}"; do kill "$p" 2>/dev/null; done
+  # the killed runs may still be writing into the folder: let them end
+  # (at most 5 s) before it goes
+  local k
+  for p in "${children[@]}"; do
+    for ((k = 0; k < 100; k++)); do kill -0 "$p" 2>/dev/null || break; sleep 0.05; done
+  done
   if [ "${CFPO_BENCH_KEEP:-0}" = 1 ] && [ -d "$work" ]; then echo "bench: kept $work (CFPO_BENCH_KEEP=1)" >&2; else rm -rf "$work"; fi
 }
 trap cleanup EXIT

@@ -11,13 +11,18 @@
 #include "engine.h"
 #include "grid.h"
 
+double cfpo_default_tol(int variant)
+{
+    return variant == CFPO_VARIANT_ADAPTIVE ? CFPO_ADAPTIVE_TOL : CFPO_DEFAULT_TOL;
+}
+
 void cfpo_options_init(cfpo_options *o)
 {
     o->seed = 1;
     o->variant = CFPO_VARIANT_ADAPTIVE;
     o->threads = 0;
     o->max_iter = CFPO_DEFAULT_MAX_ITER;
-    o->tol = CFPO_DEFAULT_TOL;
+    o->tol = cfpo_default_tol(o->variant);
     o->skip = 1;
     o->stop.target_min = o->stop.target_avg = o->stop.time_limit = 0;
     o->progress = NULL;

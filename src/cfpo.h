@@ -34,9 +34,15 @@ extern "C" {
 enum { CFPO_VARIANT_PAPER = 0, CFPO_VARIANT_SIMPLIFIED = 1, CFPO_VARIANT_ADAPTIVE = 2 };
 #define CFPO_VARIANT_FULL CFPO_VARIANT_PAPER
 
-/* Default move/convergence tolerance, relative to the cell side. */
+/* Default move/convergence tolerance, relative to the cell side: the
+ * paper's variants use 1e-4; the adaptive variant 3e-5, where it reaches
+ * FPO's delta_min at convergence (docs/method.md). */
 #define CFPO_DEFAULT_TOL 1e-4
+#define CFPO_ADAPTIVE_TOL 3e-5
 #define CFPO_DEFAULT_MAX_ITER 10000
+
+/* The default tolerance of a variant. */
+double cfpo_default_tol(int variant);
 
 typedef struct {
     int iteration;     /* 1-based; 0 is the initial set */

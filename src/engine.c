@@ -1177,6 +1177,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     const int m = gather(E, lx, ly, lxs, lys, &off);
     const cfpo_square S = cfpo_grid_square(&E->G);
     const double tolL = E->o.tol * E->G.L;
+    const int adaptive = E->G.variant == CFPO_VARIANT_ADAPTIVE;
     const double ox = (double)cx * E->G.L + E->G.shift, oy = (double)cy * E->G.L + E->G.shift;
     int64_t moves = 0;
     unsigned mask = 0;
@@ -1187,7 +1188,17 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
         if (isinf(r02)) continue;
         const double thr = sqrt(r02) + tolL, floor2 = thr * thr;
         double nx, ny;
-        const double v = cfpo_local_solve(lxs, lys, m, gi, S, x, y, floor2, &nx, &ny, sol);
+        cfpo_square Sx = S;
+        if (adaptive) {
+            /* The square reaches no closer than thr to the points outside
+             * the block (negative margins shrink it), so a move raises x's
+             * distance to all of X, not only to Y(x): without this, points
+             * in holes (r0 > L) cycle between spots forever. */
+            if (thr >= 1.5 * E->G.L) continue;
+            const double ex = fmin(E->G.margin, E->G.L - thr);
+            Sx = (cfpo_square){-ex, -ex, E->G.L + ex, E->G.L + ex};
+        }
+        const double v = cfpo_local_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol);
         (*solved)++;
         if (!(v > floor2)) continue;
         lxs[gi] = nx;

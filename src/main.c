@@ -34,7 +34,7 @@ static void usage(void)
            "      --max-iter K     stop after K iterations (default %d)\n"
            "      --tol T          a move must gain more than T * cell side; converged when\n"
            "                       no point's net move over an iteration reaches it\n"
-           "                       (default %g; 0 = any strict gain)\n"
+           "                       (default %g, paper and simplified %g; 0 = any strict gain)\n"
            "      --no-skip        re-solve every point every iteration (same output)\n"
            "      --target-min D   stop as soon as delta_min >= D (and every other target holds)\n"
            "      --target-avg D   stop as soon as delta_avg >= D (and every other target holds)\n"
@@ -59,7 +59,7 @@ static void usage(void)
            "With several ranks the output must be .npy or raw; it is the same file,\n"
            "byte for byte, as one process writes.\n"
            "Exit status: 0 success, 1 runtime failure, 2 usage error.\n",
-           omp_get_num_procs(), CFPO_DEFAULT_MAX_ITER, CFPO_DEFAULT_TOL, PF_EXTENSIONS);
+           omp_get_num_procs(), CFPO_DEFAULT_MAX_ITER, CFPO_ADAPTIVE_TOL, CFPO_DEFAULT_TOL, PF_EXTENSIONS);
 }
 
 typedef struct {
@@ -249,6 +249,7 @@ int main(int argc, char **argv)
         }
     }
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
+    if (!given_tol) o.tol = cfpo_default_tol(o.variant);
     if (every > 0 && !cfg.checkpoint) cli_usage_error(prog, "--checkpoint-every needs --checkpoint FILE");
     if (cfg.checkpoint) cfg.checkpoint_every = every > 0 ? every : 100;
     if (dry_ranks > 0 && !dry) cli_usage_error(prog, "--ranks is for --dry-run (under mpirun the rank count is mpirun's)");
