@@ -69,21 +69,47 @@ typedef struct {
     int64_t n;
     int max_iter;
     double last_moved[16];
+    double last_min[16], last_avg[16];
+    int seen; /* iterations reported */
+    cfpo_stop_rules stop;
 } run_ctx;
 
-/* Rough ETA: the number of moves decays about geometrically in the tail;
- * extrapolate the decay of the last 8 iterations down to zero moves. */
+/* Iterations until a target is met, from the rise of the last 8
+ * iterations (-1: met; +inf: not rising). */
+static double iters_to(double target, const double *hist, int i, double now)
+{
+    if (!(target > 0) || now >= target) return -1;
+    double rise = (now - hist[(i - 8) % 16]) / 8;
+    return rise > 0 ? (target - now) / rise : INFINITY;
+}
+
+/* Rough ETA. With a quality target: the time until both targets hold,
+ * from the rise of delta_min and delta_avg over the last 8 iterations.
+ * Without: the number of moves decays about geometrically in the tail;
+ * extrapolate the decay of the last 8 iterations down to zero moves. At
+ * most the time left under --time-limit. */
 static double eta_seconds(run_ctx *c, const cfpo_iter_stats *s)
 {
     int i = s->iteration;
     c->last_moved[i % 16] = (double)s->moved + 0.5;
-    if (i < 9) return -1;
+    c->last_min[i % 16] = s->delta_min;
+    c->last_avg[i % 16] = s->delta_avg;
+    if (++c->seen < 9) return -1; /* (a resumed run starts at its checkpoint) */
+    if (c->stop.target_min > 0 || c->stop.target_avg > 0) { /* time to the targets */
+        double a = iters_to(c->stop.target_min, c->last_min, i, s->delta_min);
+        double b = iters_to(c->stop.target_avg, c->last_avg, i, s->delta_avg);
+        double left = fmax(fmax(a, b), 0);
+        if (left > c->max_iter - i) left = c->max_iter - i;
+        double eta = left * s->seconds;
+        if (c->stop.time_limit > 0) eta = fmin(eta, fmax(0, c->stop.time_limit - (cli_now() - c->t0)));
+        return eta;
+    }
     double ratio = c->last_moved[i % 16] / c->last_moved[(i - 8) % 16];
-    if (!(ratio < 0.999)) return (double)(c->max_iter - i) * s->seconds;
-    double rate = log(ratio) / 8;
-    double left = log(c->last_moved[i % 16]) / -rate;
-    if (left > c->max_iter - i) left = c->max_iter - i;
-    return left * s->seconds;
+    double left = c->max_iter - i;
+    if (ratio < 0.999) left = fmin(left, log(c->last_moved[i % 16]) / -(log(ratio) / 8));
+    double eta = left * s->seconds;
+    if (c->stop.time_limit > 0) eta = fmin(eta, fmax(0, c->stop.time_limit - (cli_now() - c->t0)));
+    return eta;
 }
 
 static int on_iteration(const cfpo_iter_stats *s, void *user)
@@ -316,7 +342,7 @@ int main(int argc, char **argv)
         if (rank == 0) cli_guard_tmp(comm_file_tmpname(cf));
     }
     cli_atomic tr = {0};
-    run_ctx ctx = {.n = n, .max_iter = o.max_iter};
+    run_ctx ctx = {.n = n, .max_iter = o.max_iter, .stop = o.stop};
     if (trace) {
         int ok = rank != 0 || cli_atomic_open(&tr, trace, err, sizeof err) == 0;
         if (!comm_all(ok)) {

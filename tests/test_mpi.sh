@@ -82,6 +82,32 @@ done
 grep -q "iterations=$(grep -o 'iterations=[0-9]*' ref.out | cut -d= -f2) " res.out && ok ||
   bad "resumed run reports $(grep -o 'iterations=[0-9]*' res.out), reference $(grep -o 'iterations=[0-9]*' ref.out)"
 
+# Stop rules on 1 and 3 ranks. Targets: the run stops at the first
+# iteration of the reference trace where both hold, with the bytes of a run
+# capped there (the same state). Time: it stops past the limit, before
+# converging, and says so.
+K=$(awk -F'\t' 'NR > 1 && $2 >= 0.9 && $3 >= 0.925 { print $1; exit }' ref.tsv)
+if [ -n "$K" ] && [ "$K" -gt 1 ]; then
+  "$CFPO" -n $N -q -t 1 --max-iter "$K" -o capped.npy >/dev/null
+  for p in 1 3; do
+    rm -f tg.npy
+    if [ $p = 1 ]; then "$CFPO" -n $N -q -t 1 --target-min 0.9 --target-avg 0.925 -o tg.npy >tg.out 2>tg.err
+    else run $p -n $N -t 1 --target-min 0.9 --target-avg 0.925 -o tg.npy >tg.out 2>tg.err; fi
+    if grep -q "iterations=$K .*stop=target" tg.out; then ok; else bad "targets on $p ranks: expected stop=target at iteration $K: $(cat tg.out tg.err)"; fi
+    same tg.npy capped.npy "targets on $p ranks"
+  done
+else
+  bad "reference trace never reaches delta_min 0.9 and delta_avg 0.925"
+fi
+for p in 1 3; do
+  rm -f tl.tsv
+  if [ $p = 1 ]; then "$CFPO" -n 65536 -q -t 1 --time-limit 1 --trace tl.tsv -o tl.npy >tl.out 2>tl.err
+  else run $p -n 65536 -t 1 --time-limit 1 --trace tl.tsv -o tl.npy >tl.out 2>tl.err; fi
+  last=$(tail -n 1 tl.tsv 2>/dev/null | cut -f8)
+  if grep -q "converged=no .*stop=time" tl.out && awk -v e="$last" 'BEGIN { exit !(e >= 1) }'; then ok
+  else bad "--time-limit 1 on $p ranks: $(cat tl.out tl.err), last elapsed $last"; fi
+done
+
 # A rank killed mid-run: the job ends, the checkpoint under its final name
 # is whole, and resuming it gives the uninterrupted result.
 "$CFPO" -n 65536 -q -t 1 --max-iter 40 -o big_ref.npy >/dev/null
