@@ -47,6 +47,7 @@
 #define SUM_SCALE 16777216.0 /* nearest-neighbour distances summed in units of Delta / 2^24 */
 #define SB 8 /* statistics blocks: SB x SB cells */
 #define SHIFT_SALT 0x3c6ef372fe94f82aULL
+#define SHIFT_EVERY 4 /* the grid moves before iterations 1, 5, 9, ...; in between, skipping works */
 #define ADAPTIVE_THETA 0.7 /* the adaptive margin never reaches past L - 0.7 Delta(n) */
 #define CKPT_MAGIC "CFPOCKP1"
 #define CKPT_HEADER 64
@@ -296,6 +297,7 @@ static size_t first_arrival(const cfpo_engine *E, int64_t c)
 static double shift_of(const cfpo_grid *G, int k)
 {
     if (G->variant != CFPO_VARIANT_ADAPTIVE || k <= 0) return 0;
+    k -= (k - 1) % SHIFT_EVERY; /* the shift of the group of iterations k belongs to */
     return G->L * cfpo_rand01(G->seed ^ SHIFT_SALT, (uint64_t)k, 0);
 }
 
@@ -1617,7 +1619,8 @@ void cfpo_engine_begin(cfpo_engine *E)
     if (E->G.variant != CFPO_VARIANT_ADAPTIVE) return;
     const double d = fmax(E->dmin_now * (1 + 1e-9), ADAPTIVE_THETA) * E->G.delta;
     E->G.margin = d < E->G.L ? E->G.L - d : 0;
-    move_grid(E, shift_of(&E->G, E->cur));
+    const double sh = shift_of(&E->G, E->cur);
+    if (sh != E->G.shift) move_grid(E, sh);
 }
 
 void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
