@@ -1,9 +1,10 @@
-/* engine.c - see engine.h.
+/* engine.c - see engine.h; the engine's files are listed in engine_impl.h.
  *
  * Why a phase is race-free (written once, here): cells of one colour are
  * `period` cells apart in both directions, on the whole torus, whatever the
- * tiles. A point of cell C may move only inside S(x), C grown by
- * L - Delta(n) < L, so it stays in C's 3x3 block, and solving C reads only
+ * tiles. A point of cell C may move only inside S(x), C grown by a margin
+ * below L (L - Delta(n) in the paper's variant, at most L - delta(X) in the
+ * adaptive one), so it stays in C's 3x3 block, and solving C reads only
  * C's 3x3 block. With period 3 the blocks of two same-colour cells are
  * disjoint, so no cell is written by one thread (or rank) and read by
  * another (Parallelization Theorem). The simplified variant keeps points in
@@ -27,7 +28,7 @@
  * Net displacement over an iteration is kept per point (two floats that
  * travel with the point); a move there and back cancels exactly, so a
  * point cycling between cells does not keep the run from converging. */
-#include "engine.h"
+#include "engine_impl.h"
 #include "start.h"
 #include "stoprule.h"
 
@@ -40,98 +41,6 @@
 #include "omp_compat.h"
 #include "rng.h"
 
-#define ARRIVE_BIT (1u << 9) /* mask: the cell receives points from other ranks */
-#define NEED_BIT (1u << 15)  /* mask: the cell must be solved (its block changed) */
-#define ARRIVAL_CODE (1ull << 63)
-#define CENTRE_BIT (1u << 4)
-#define SUM_SCALE 16777216.0 /* nearest-neighbour distances summed in units of Delta / 2^24 */
-#define SB 8 /* statistics blocks: SB x SB cells */
-#define SHIFT_SALT 0x3c6ef372fe94f82aULL
-#define SHIFT_EVERY 4 /* the grid moves before iterations 1, 5, 9, ...; in between, skipping works */
-#define ADAPTIVE_THETA 0.7 /* the adaptive margin never reaches past L - 0.7 Delta(n) */
-#define CKPT_MAGIC "CFPOCKP1"
-#define CKPT_HEADER 64
-
-typedef struct { /* a point on the move between ranks */
-    double x, y;
-    uint64_t id;
-    float dq[2];
-} mig_rec;
-
-typedef struct { /* arrival, sorted into its cell */
-    int64_t cell;
-    mig_rec r;
-} arrival;
-
-typedef struct {
-    int rank;
-    int64_t nsend, nrecv;
-    int64_t *send_cells; /* own cells this neighbour keeps in its halo, in its ring order */
-    int64_t *recv_ring;  /* my ring cells it owns, in my ring order */
-    /* migration out */
-    mig_rec *out;
-    size_t nout, outcap;
-    /* halo out */
-    unsigned char *hbuf;
-    size_t hcap;
-} neighbour;
-
-struct cfpo_engine {
-    cfpo_grid G;
-    cfpo_options o;
-    cfpo_engine_config cfg;
-    cfpo_tiling T;
-    int rank, nranks;
-    int64_t n, x0, y0, w, h, cells;
-    int wrapx, wrapy;
-    int64_t nloc;
-    size_t cap;       /* capacity of the point arrays */
-    double *px, *py;  /* positions, cell by cell */
-    uint64_t *pid;    /* global ids, ascending inside a cell */
-    float *dq;        /* 2 per slot: net displacement this iteration */
-    double *tx, *ty;  /* spare buffers for rebuilding and output */
-    uint64_t *tid;    /* while relocating: where each new slot comes from */
-    uint32_t *start;  /* CSR: own cell c holds [start[c], start[c+1]) */
-    uint32_t *start2; /* the next CSR offsets, while relocating */
-    uint16_t *mask;   /* this phase: bit (dy+1)*3+(dx+1) set if a point of
-                         the cell moved into the cell at offset (dx,dy);
-                         ARRIVE_BIT if points arrive from another rank;
-                         NEED_BIT if the cell must be solved again */
-    /* halo ring: bottom row, top row, left column, right column */
-    int64_t nring;
-    uint32_t *hstart, *hstart2;
-    double *hx, *hy, *hx2, *hy2;
-    size_t hcap, hcap2;
-    uint32_t *hcnt;
-    int nnb;
-    neighbour *nb;
-    comm_msg *msg;
-    arrival *arr;
-    size_t narr, arrcap;
-    /* statistics cached per block of SB x SB cells, recomputed only when a
-     * cell of the block was marked (its 3x3 neighbourhood changed) */
-    int64_t nbx, nby;
-    uint64_t *bsum;
-    double *bmin;
-    uint8_t *bdirty;
-    int nthreads;
-    int maxcell;
-    double **scratch; /* per thread */
-    size_t scratch_m; /* points the scratch is sized for */
-    int iter0;        /* iteration the engine stands at */
-    int resumed_converged;
-    double max_move;  /* largest single move this iteration */
-    double t_born;    /* when cfpo_engine_create_ex began */
-    int shifting;     /* inside move_grid: cells hold points of the old grid */
-    int cur;          /* the iteration under way (or last done) */
-    double dmin_now;  /* delta_min / Delta(n) of the set as it stands (1 until measured) */
-    uint64_t id_sum;  /* checksum of all ids (check mode) */
-    /* timing and traffic */
-    double t_compute, t_migrate, t_halo, b_halo, b_migrate;
-    int64_t phases, chk_mig, chk_halo;
-};
-
-static double now(void) { return omp_get_wtime(); }
 
 const cfpo_grid *cfpo_engine_grid(const cfpo_engine *E) { return &E->G; }
 const cfpo_tiling *cfpo_engine_tiling(const cfpo_engine *E) { return &E->T; }
@@ -198,7 +107,7 @@ static int ensure_scratch(cfpo_engine *E)
 }
 
 /* Grows the point arrays to hold at least `need` points. */
-static int ensure_cap(cfpo_engine *E, size_t need)
+int eng_ensure_cap(cfpo_engine *E, size_t need)
 {
     if (need <= E->cap) return 0;
     size_t cap = need + need / 16 + 1024;
@@ -215,61 +124,6 @@ static int ensure_cap(cfpo_engine *E, size_t need)
 #undef GROW
     E->cap = cap;
     return 0;
-}
-
-/* ---- where cells live ---- */
-
-static inline int64_t ring_index(const cfpo_engine *E, int64_t lx, int64_t ly)
-{
-    if (ly == -1) return lx + 1;
-    if (ly == E->h) return E->w + 2 + lx + 1;
-    if (lx == -1) return 2 * (E->w + 2) + ly;
-    return 2 * (E->w + 2) + E->h + ly; /* lx == w */
-}
-
-static inline void ring_coords(const cfpo_engine *E, int64_t i, int64_t *lx, int64_t *ly)
-{
-    const int64_t W = E->w + 2;
-    if (i < W) { *lx = i - 1; *ly = -1; }
-    else if (i < 2 * W) { *lx = i - W - 1; *ly = E->h; }
-    else if (i < 2 * W + E->h) { *lx = -1; *ly = i - 2 * W; }
-    else { *lx = E->w; *ly = i - 2 * W - E->h; }
-}
-
-/* The cell at tile coordinates (lx, ly), lx in [-1, w], ly in [-1, h]:
- * >= 0 an own cell's index, < 0 the halo cell -1 - ring index. A tile that
- * spans the whole torus in a direction wraps onto itself. */
-static inline int64_t locate(const cfpo_engine *E, int64_t lx, int64_t ly)
-{
-    if (E->wrapx) { if (lx < 0) lx += E->w; else if (lx >= E->w) lx -= E->w; }
-    if (E->wrapy) { if (ly < 0) ly += E->h; else if (ly >= E->h) ly -= E->h; }
-    if (lx >= 0 && lx < E->w && ly >= 0 && ly < E->h) return ly * E->w + lx;
-    return -1 - ring_index(E, lx, ly);
-}
-
-/* Own cell index of a position, or -1 if another rank owns its cell. */
-static inline int64_t own_cell_of(const cfpo_engine *E, double x, double y)
-{
-    int64_t lx = cfpo_grid_coord(&E->G, x) - E->x0, ly = cfpo_grid_coord(&E->G, y) - E->y0;
-    if (lx < 0 || lx >= E->w || ly < 0 || ly >= E->h) return -1;
-    return ly * E->w + lx;
-}
-
-static inline int wrap_offset(int64_t d, int64_t g)
-{
-    if (d > 1) d -= g;
-    if (d < -1) d += g;
-    return (int)d;
-}
-
-/* Is cell e's mask bit for the neighbour at offset (dx, dy) set? */
-static inline int sends_to(unsigned mk, int dx, int dy) { return mk >> ((dy + 1) * 3 + (dx + 1)) & 1u; }
-
-static int neighbour_of_rank(const cfpo_engine *E, int r)
-{
-    for (int i = 0; i < E->nnb; i++)
-        if (E->nb[i].rank == r) return i;
-    return -1;
 }
 
 /* ---- moving points between cells, tiles and ranks ---- */
@@ -301,18 +155,6 @@ static double shift_of(const cfpo_grid *G, int k)
     return G->L * cfpo_rand01(G->seed ^ SHIFT_SALT, (uint64_t)k, 0);
 }
 
-/* v's offset from the low edge of global cell column (or row) c, for v
- * in that cell: in [0, L) up to rounding, whatever the grid's shift. */
-static inline double cell_offset(const cfpo_engine *E, double v, int64_t c)
-{
-    double d = v - ((double)c * E->G.L + E->G.shift);
-    return d < -0.5 ? d + 1.0 : d;
-}
-
-static inline int in_cell(const cfpo_engine *E, double x, double y, int64_t lx, int64_t ly)
-{
-    return cfpo_grid_coord(&E->G, x) - E->x0 == lx && cfpo_grid_coord(&E->G, y) - E->y0 == ly;
-}
 
 /* Moves points that changed cell in the last phase into their new cells.
  * Only the cells of that phase's colour can have sent points (their masks
@@ -353,7 +195,7 @@ static int relocate(cfpo_engine *E, int colour)
     const uint32_t *st = E->start;
     uint32_t *ns = E->start2;
     const uint16_t *mask = E->mask;
-    if (ensure_cap(E, (size_t)E->nloc + E->narr) != 0) return -1;
+    if (eng_ensure_cap(E, (size_t)E->nloc + E->narr) != 0) return -1;
 #pragma omp parallel for schedule(static) num_threads(E->nthreads)
     for (int64_t c = 0; c < cells; c++) {
         const int64_t lx = c % w, ly = c / w;
@@ -468,7 +310,7 @@ static inline void mark_cell(cfpo_engine *E, int64_t x, int64_t y)
 
 /* Marks the own cells of the 3x3 block around (lx, ly) (an own cell or a
  * halo cell) to be solved again, and their statistics blocks stale. */
-static void mark_block(cfpo_engine *E, int64_t lx, int64_t ly)
+void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly)
 {
     if (lx >= 1 && lx < E->w - 1 && ly >= 1 && ly < E->h - 1) { /* inside: no wrap, no halo */
         for (int64_t y = ly - 1; y <= ly + 1; y++)
@@ -484,531 +326,6 @@ static void mark_block(cfpo_engine *E, int64_t lx, int64_t ly)
             else if (y < 0 || y >= E->h) continue;
             mark_cell(E, x, y);
         }
-}
-
-/* ---- the halo ---- */
-
-/* Builds, for this tile and its neighbours, which cells go where. The
- * cells of my ring that other ranks own, grouped by owner in my ring
- * order; and for each such owner, the cells of its ring that I own, in its
- * ring order (the order it will unpack them in). */
-static int build_neighbours(cfpo_engine *E)
-{
-    const int64_t g = E->G.g;
-    E->nring = 2 * (E->w + 2) + 2 * E->h;
-    int *owner = malloc((size_t)E->nring * sizeof *owner);
-    if (!owner) return -1;
-    for (int64_t i = 0; i < E->nring; i++) {
-        int64_t lx, ly;
-        ring_coords(E, i, &lx, &ly);
-        owner[i] = -1;
-        if (locate(E, lx, ly) != -1 - i) continue; /* wraps onto an own cell or another ring cell */
-        int64_t gx = (E->x0 + lx + g) % g, gy = (E->y0 + ly + g) % g;
-        int r = cfpo_tiling_owner(&E->T, gx, gy);
-        owner[i] = r;
-        if (neighbour_of_rank(E, r) < 0) {
-            neighbour *nb = realloc(E->nb, (size_t)(E->nnb + 1) * sizeof *nb);
-            if (!nb) { free(owner); return -1; }
-            E->nb = nb;
-            memset(&E->nb[E->nnb], 0, sizeof *nb);
-            E->nb[E->nnb].rank = r;
-            E->nnb++;
-        }
-    }
-    for (int k = 0; k < E->nnb; k++) {
-        neighbour *nb = &E->nb[k];
-        nb->recv_ring = malloc((size_t)E->nring * sizeof(int64_t));
-        if (!nb->recv_ring) { free(owner); return -1; }
-        for (int64_t i = 0; i < E->nring; i++)
-            if (owner[i] == nb->rank) nb->recv_ring[nb->nrecv++] = i;
-        /* The neighbour's tile and ring, walked in its order. */
-        const int qx = nb->rank % E->T.px, qy = nb->rank / E->T.px;
-        const int64_t qx0 = cfpo_tile_start(g, E->T.px, qx), qw = cfpo_tile_len(g, E->T.px, qx);
-        const int64_t qy0 = cfpo_tile_start(g, E->T.py, qy), qh = cfpo_tile_len(g, E->T.py, qy);
-        const int64_t qring = 2 * (qw + 2) + 2 * qh;
-        nb->send_cells = malloc((size_t)qring * sizeof(int64_t));
-        if (!nb->send_cells) { free(owner); return -1; }
-        const int qwrapx = E->T.px == 1, qwrapy = E->T.py == 1;
-        for (int64_t i = 0; i < qring; i++) {
-            int64_t lx, ly, W = qw + 2;
-            if (i < W) { lx = i - 1; ly = -1; }
-            else if (i < 2 * W) { lx = i - W - 1; ly = qh; }
-            else if (i < 2 * W + qh) { lx = -1; ly = i - 2 * W; }
-            else { lx = qw; ly = i - 2 * W - qh; }
-            /* Skip positions that wrap inside its own tile or onto another
-             * ring position (as its locate() would). */
-            int64_t wx = lx, wy = ly;
-            if (qwrapx) wx = (lx + qw) % qw;
-            if (qwrapy) wy = (ly + qh) % qh;
-            if (wx != lx || wy != ly) continue;
-            int64_t gx = (qx0 + lx + g) % g, gy = (qy0 + ly + g) % g;
-            if (cfpo_tiling_owner(&E->T, gx, gy) != E->rank) continue;
-            nb->send_cells[nb->nsend++] = (gy - E->y0) * E->w + (gx - E->x0);
-        }
-    }
-    free(owner);
-    E->msg = calloc((size_t)(E->nnb > 0 ? E->nnb : 1), sizeof(comm_msg));
-    E->hstart = calloc((size_t)E->nring + 1, sizeof(uint32_t));
-    E->hstart2 = calloc((size_t)E->nring + 1, sizeof(uint32_t));
-    E->hcnt = calloc((size_t)E->nring + 1, sizeof(uint32_t));
-    if (!E->msg || !E->hstart || !E->hstart2 || !E->hcnt) return -1;
-    for (int k = 0; k < E->nnb; k++) E->msg[k].rank = E->nb[k].rank;
-    return 0;
-}
-
-/* Sends my border cells to the neighbours that keep them and receives my
- * halo; marks the blocks around every halo cell whose content changed. */
-static int refresh_halo(cfpo_engine *E)
-{
-    if (E->nnb == 0) return 0;
-    double t0 = now();
-    for (int k = 0; k < E->nnb; k++) {
-        neighbour *nb = &E->nb[k];
-        size_t pts = 0;
-        for (int64_t i = 0; i < nb->nsend; i++) {
-            int64_t c = nb->send_cells[i];
-            pts += E->start[c + 1] - E->start[c];
-        }
-        const size_t head = ((size_t)nb->nsend * 4 + 7) & ~(size_t)7;
-        const size_t bytes = head + pts * 16;
-        if (bytes > nb->hcap) {
-            unsigned char *b = realloc(nb->hbuf, bytes + bytes / 2 + 64);
-            if (!b) return -1;
-            nb->hbuf = b;
-            nb->hcap = bytes + bytes / 2 + 64;
-        }
-        uint32_t *cnt = (uint32_t *)nb->hbuf;
-        double *xy = (double *)(nb->hbuf + head);
-        size_t m = 0;
-        for (int64_t i = 0; i < nb->nsend; i++) {
-            int64_t c = nb->send_cells[i];
-            cnt[i] = E->start[c + 1] - E->start[c];
-            for (uint32_t j = E->start[c]; j < E->start[c + 1]; j++) {
-                xy[2 * m] = E->px[j];
-                xy[2 * m + 1] = E->py[j];
-                m++;
-            }
-        }
-        E->msg[k].send = nb->hbuf;
-        E->msg[k].sendbytes = bytes;
-        E->b_halo += (double)bytes;
-    }
-    if (comm_exchange(E->msg, E->nnb) != 0) return -1;
-    /* New ring contents: counts, offsets, then coordinates. */
-    memset(E->hcnt, 0, ((size_t)E->nring + 1) * sizeof(uint32_t));
-    for (int k = 0; k < E->nnb; k++) {
-        const neighbour *nb = &E->nb[k];
-        const uint32_t *cnt = E->msg[k].recv;
-        for (int64_t i = 0; i < nb->nrecv; i++) E->hcnt[nb->recv_ring[i]] = cnt[i];
-    }
-    E->hstart2[0] = 0;
-    for (int64_t i = 0; i < E->nring; i++) E->hstart2[i + 1] = E->hstart2[i] + E->hcnt[i];
-    size_t tot = E->hstart2[E->nring];
-    if (tot > E->hcap2) {
-        size_t c = tot + tot / 2 + 64;
-        double *a = realloc(E->hx2, c * sizeof(double)), *b;
-        if (!a) return -1;
-        E->hx2 = a;
-        if (!(b = realloc(E->hy2, c * sizeof(double)))) return -1;
-        E->hy2 = b;
-        E->hcap2 = c;
-    }
-    for (int k = 0; k < E->nnb; k++) {
-        const neighbour *nb = &E->nb[k];
-        const unsigned char *b = E->msg[k].recv;
-        const double *xy = (const double *)(b + (((size_t)nb->nrecv * 4 + 7) & ~(size_t)7));
-        size_t m = 0;
-        for (int64_t i = 0; i < nb->nrecv; i++) {
-            int64_t r = nb->recv_ring[i];
-            for (uint32_t j = E->hstart2[r]; j < E->hstart2[r + 1]; j++, m++) {
-                E->hx2[j] = xy[2 * m];
-                E->hy2[j] = xy[2 * m + 1];
-            }
-        }
-    }
-    /* Blocks around changed halo cells must be solved again. */
-    for (int64_t i = 0; i < E->nring; i++) {
-        uint32_t a = E->hstart[i], b = E->hstart[i + 1], a2 = E->hstart2[i], b2 = E->hstart2[i + 1];
-        int same = (b - a) == (b2 - a2) && (b == a || (memcmp(E->hx + a, E->hx2 + a2, (b - a) * 8) == 0 &&
-                                                       memcmp(E->hy + a, E->hy2 + a2, (b - a) * 8) == 0));
-        if (!same) {
-            int64_t lx, ly;
-            ring_coords(E, i, &lx, &ly);
-            mark_block(E, lx, ly);
-        }
-    }
-    uint32_t *s = E->hstart; E->hstart = E->hstart2; E->hstart2 = s;
-    double *t = E->hx; E->hx = E->hx2; E->hx2 = t;
-    t = E->hy; E->hy = E->hy2; E->hy2 = t;
-    size_t c = E->hcap; E->hcap = E->hcap2; E->hcap2 = c;
-    E->t_halo += now() - t0;
-    return 0;
-}
-
-/* ---- checks (config.check) ---- */
-
-static void check_fail(const cfpo_engine *E, const char *what)
-{
-    fprintf(stderr, "cfpo: rank %d: check failed: %s\n", E->rank, what);
-    comm_abort(3);
-}
-
-static void check_migration(cfpo_engine *E)
-{
-    int64_t v[2] = {E->nloc, 0};
-    uint64_t sum = 0;
-    for (int64_t c = 0; c < E->cells; c++)
-        for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
-            sum += cfpo_mix64(E->pid[k]);
-            if (!in_cell(E, E->px[k], E->py[k], c % E->w, c / E->w)) check_fail(E, "a point lies outside its cell");
-            if (k > E->start[c] && E->pid[k - 1] >= E->pid[k]) check_fail(E, "ids out of order in a cell");
-        }
-    comm_sum_i64(v, 1);
-    int64_t s = (int64_t)sum;
-    comm_sum_i64(&s, 1);
-    if (v[0] != E->n) check_fail(E, "the global point count changed");
-    if ((uint64_t)s != E->id_sum) check_fail(E, "the checksum of point ids changed");
-    E->chk_mig++;
-}
-
-typedef struct {
-    double x, y;
-    uint64_t id;
-} pt_rec;
-
-static int cmp_cell_id(const void *a, const void *b, const cfpo_grid *G)
-{
-    const pt_rec *p = a, *q = b;
-    int64_t cp = cfpo_grid_coord(G, p->y) * G->g + cfpo_grid_coord(G, p->x);
-    int64_t cq = cfpo_grid_coord(G, q->y) * G->g + cfpo_grid_coord(G, q->x);
-    if (cp != cq) return cp < cq ? -1 : 1;
-    return p->id < q->id ? -1 : p->id > q->id;
-}
-static const cfpo_grid *sort_grid;
-static int cmp_cell_id_q(const void *a, const void *b) { return cmp_cell_id(a, b, sort_grid); }
-
-/* Every halo cell equals its owner's cell: gathers the whole (small) set. */
-static void check_halo(cfpo_engine *E)
-{
-    if (E->n > 200000) return;
-    pt_rec *mine = malloc(((size_t)E->nloc + 1) * sizeof *mine);
-    if (!mine) check_fail(E, "out of memory");
-    for (int64_t k = 0; k < E->nloc; k++) mine[k] = (pt_rec){E->px[k], E->py[k], E->pid[k]};
-    void *all;
-    size_t total;
-    if (comm_allgatherv(mine, (size_t)E->nloc * sizeof *mine, &all, &total) != 0) check_fail(E, "out of memory");
-    free(mine);
-    pt_rec *A = all;
-    size_t na = total / sizeof *A;
-    if ((int64_t)na != E->n) check_fail(E, "gathered set has the wrong size");
-    sort_grid = &E->G;
-    qsort(A, na, sizeof *A, cmp_cell_id_q);
-    const int64_t g = E->G.g;
-    int64_t *first = malloc(((size_t)(g * g) + 1) * sizeof *first);
-    if (!first) check_fail(E, "out of memory");
-    size_t j = 0;
-    for (int64_t c = 0; c <= g * g; c++) {
-        while (j < na && cfpo_grid_coord(&E->G, A[j].y) * g + cfpo_grid_coord(&E->G, A[j].x) < c) j++;
-        first[c] = (int64_t)j;
-    }
-    for (int64_t i = 0; i < E->nring; i++) {
-        int64_t lx, ly;
-        ring_coords(E, i, &lx, &ly);
-        if (locate(E, lx, ly) != -1 - i) continue;
-        int64_t gx = (E->x0 + lx + g) % g, gy = (E->y0 + ly + g) % g, c = gy * g + gx;
-        uint32_t a = E->hstart[i], b = E->hstart[i + 1];
-        if ((int64_t)(b - a) != first[c + 1] - first[c]) check_fail(E, "a halo cell has the wrong point count");
-        for (uint32_t k = a; k < b; k++) {
-            const pt_rec *p = &A[first[c] + (k - a)];
-            if (p->x != E->hx[k] || p->y != E->hy[k]) check_fail(E, "a halo cell differs from its owner's cell");
-        }
-    }
-    free(first);
-    free(A);
-    E->chk_halo++;
-}
-
-/* ---- the initial set ---- */
-
-/* Ids: cells in row-major order over the whole grid, points of a cell
- * consecutive. The first id of each own cell needs the point counts of all
- * earlier cells: every rank counts a share of the rows, then all share. */
-/* The adaptive start: every rank makes the start's points of a band of
- * rows (its share for the row sums, then its tile's rows). */
-static int make_initial_adaptive(cfpo_engine *E, char *err, size_t errlen)
-{
-    const int64_t g = E->G.g;
-    int64_t *rowsum = calloc((size_t)g, sizeof *rowsum);
-    cfpo_start_pt *pt = NULL;
-    if (!rowsum) goto oom;
-    int64_t r0 = g * E->rank / E->nranks, r1 = g * (E->rank + 1) / E->nranks;
-    int64_t m = cfpo_start_band(&E->G, r0, r1, &pt);
-    if (m < 0) goto oom;
-    for (int64_t i = 0; i < m; i++) rowsum[pt[i].cell / g]++;
-    free(pt);
-    pt = NULL;
-    comm_sum_i64(rowsum, (int)g); /* rows are disjoint: the sum gathers them */
-    int64_t id = 0;
-    for (int64_t y = 0; y < E->y0; y++) id += rowsum[y];
-    m = cfpo_start_band(&E->G, E->y0, E->y0 + E->h, &pt);
-    if (m < 0) goto oom;
-    int64_t nloc = 0;
-    for (int64_t i = 0; i < m; i++) {
-        const int64_t lx = pt[i].cell % g - E->x0;
-        if (lx >= 0 && lx < E->w) nloc++;
-    }
-    if (ensure_cap(E, (size_t)nloc) != 0) goto oom;
-    int64_t k = 0, c = 0;
-    int maxcell = 0;
-    for (int64_t i = 0; i < m; i++, id++) { /* sorted by global cell: row-major */
-        const int64_t lx = pt[i].cell % g - E->x0, ly = pt[i].cell / g - E->y0;
-        if (lx < 0 || lx >= E->w) continue;
-        const int64_t cc = ly * E->w + lx;
-        while (c <= cc) E->start[c++] = (uint32_t)k;
-        E->px[k] = pt[i].x;
-        E->py[k] = pt[i].y;
-        E->pid[k] = (uint64_t)id;
-        k++;
-        if ((int)(k - E->start[cc]) > maxcell) maxcell = (int)(k - E->start[cc]);
-    }
-    while (c <= E->cells) E->start[c++] = (uint32_t)k;
-    E->nloc = k;
-    E->maxcell = maxcell;
-    free(pt);
-    free(rowsum);
-    return 0;
-oom:
-    free(pt);
-    free(rowsum);
-    snprintf(err, errlen, "out of memory");
-    return -1;
-}
-
-static int make_initial(cfpo_engine *E, char *err, size_t errlen)
-{
-    if (E->G.variant == CFPO_VARIANT_ADAPTIVE) return make_initial_adaptive(E, err, errlen);
-    const int64_t g = E->G.g;
-    const uint64_t cells = (uint64_t)(g * g);
-    const int simple = E->G.extra % cells == 0;
-    int64_t *rowsum = calloc((size_t)g, sizeof *rowsum);
-    if (!rowsum) { snprintf(err, errlen, "out of memory"); return -1; }
-    if (!simple) {
-        int64_t r0 = g * E->rank / E->nranks, r1 = g * (E->rank + 1) / E->nranks;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(E->nthreads)
-        for (int64_t y = r0; y < r1; y++) {
-            int64_t s = 0;
-            for (int64_t x = 0; x < g; x++) s += (int64_t)cfpo_grid_cell_count(&E->G, (uint64_t)(y * g + x));
-            rowsum[y] = s;
-        }
-        comm_sum_i64(rowsum, (int)g); /* rows are disjoint: the sum gathers them */
-    } else {
-        for (int64_t y = 0; y < g; y++) rowsum[y] = g * (int64_t)(1 + E->G.extra / cells);
-    }
-    int64_t total = 0;
-    for (int64_t y = 0; y < E->y0; y++) total += rowsum[y];
-    /* Count own points first (and the points left of the tile in its rows,
-     * for the ids). */
-    int64_t *cnt = malloc(((size_t)E->cells + (size_t)E->h) * sizeof *cnt);
-    if (!cnt) { free(rowsum); snprintf(err, errlen, "out of memory"); return -1; }
-    int64_t *left = cnt + E->cells;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(E->nthreads)
-    for (int64_t ly = 0; ly < E->h; ly++) {
-        int64_t s = 0;
-        for (int64_t x = 0; x < E->x0; x++) s += (int64_t)cfpo_grid_cell_count(&E->G, (uint64_t)((E->y0 + ly) * g + x));
-        left[ly] = s;
-        for (int64_t lx = 0; lx < E->w; lx++) cnt[ly * E->w + lx] = (int64_t)cfpo_grid_cell_count(&E->G, (uint64_t)((E->y0 + ly) * g + E->x0 + lx));
-    }
-    int64_t nloc = 0;
-    for (int64_t c = 0; c < E->cells; c++) nloc += cnt[c];
-    if (ensure_cap(E, (size_t)nloc) != 0) {
-        free(rowsum); free(cnt);
-        snprintf(err, errlen, "out of memory");
-        return -1;
-    }
-    int64_t k = 0;
-    int maxcell = 0;
-    for (int64_t ly = 0; ly < E->h; ly++) {
-        const int64_t gy = E->y0 + ly;
-        int64_t id = total + left[ly];
-        for (int64_t lx = 0; lx < E->w; lx++) {
-            const int64_t c = ly * E->w + lx;
-            E->start[c] = (uint32_t)k;
-            if ((int)cnt[c] > maxcell) maxcell = (int)cnt[c];
-            for (int64_t j = 0; j < cnt[c]; j++) E->pid[k + j] = (uint64_t)(id + j);
-            k += cnt[c];
-            id += cnt[c];
-        }
-        total += rowsum[gy];
-    }
-    E->start[E->cells] = (uint32_t)k;
-#pragma omp parallel for schedule(dynamic, 16) num_threads(E->nthreads)
-    for (int64_t c = 0; c < E->cells; c++)
-        for (int64_t j = 0; j < cnt[c]; j++)
-            cfpo_grid_cell_point(&E->G, E->x0 + c % E->w, E->y0 + c / E->w, (uint64_t)j,
-                                 &E->px[E->start[c] + j], &E->py[E->start[c] + j]);
-    E->nloc = k;
-    E->maxcell = maxcell;
-    free(rowsum);
-    free(cnt);
-    return 0;
-}
-
-/* ---- checkpoints ---- */
-
-static void put64(unsigned char *b, uint64_t v) { for (int i = 0; i < 8; i++) b[i] = (unsigned char)(v >> (8 * i)); }
-static uint64_t get64(const unsigned char *b)
-{
-    uint64_t v = 0;
-    for (int i = 7; i >= 0; i--) v = v << 8 | b[i];
-    return v;
-}
-
-int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err, size_t errlen)
-{
-    uint64_t size;
-    comm_file *f = comm_file_open_read(path, &size, err, errlen);
-    if (!f) return -1;
-    unsigned char h[CKPT_HEADER];
-    int ok = size >= CKPT_HEADER && comm_file_read_at(f, 0, h, CKPT_HEADER) == 0;
-    comm_file_close(f);
-    if (!ok || memcmp(h, CKPT_MAGIC, 8) != 0) {
-        snprintf(err, errlen, "%s: not a cfpo checkpoint (bad magic)", path);
-        return -1;
-    }
-    info->n = (int64_t)get64(h + 8);
-    info->seed = get64(h + 16);
-    info->variant = (int)get64(h + 24);
-    uint64_t tb = get64(h + 32);
-    memcpy(&info->tol, &tb, 8);
-    info->iteration = (int64_t)get64(h + 40);
-    info->converged = (int)get64(h + 48);
-    if (info->n < 1 || (info->variant != CFPO_VARIANT_PAPER && info->variant != CFPO_VARIANT_SIMPLIFIED &&
-                        info->variant != CFPO_VARIANT_ADAPTIVE) ||
-        !(info->tol >= 0 && info->tol < 0.5) || info->iteration < 0 || info->iteration > 1000000000) {
-        snprintf(err, errlen, "%s: corrupt checkpoint header", path);
-        return -1;
-    }
-    if (size != CKPT_HEADER + 16 * (uint64_t)info->n) {
-        snprintf(err, errlen, "%s: checkpoint of %lld points should be %llu bytes, file has %llu (truncated?)",
-                 path, (long long)info->n, (unsigned long long)(CKPT_HEADER + 16 * (uint64_t)info->n),
-                 (unsigned long long)size);
-        return -1;
-    }
-    return 0;
-}
-
-typedef struct {
-    double x, y;
-    uint64_t id;
-} ck_rec;
-
-static void sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi);
-
-/* Every rank reads a contiguous share of ids, sends each point to the rank
- * owning its cell, then builds its buckets. */
-static int load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
-{
-    const char *path = E->cfg.resume;
-    uint64_t size;
-    comm_file *f = comm_file_open_read(path, &size, err, errlen);
-    if (!f) return -1;
-    const int P = E->nranks;
-    const int64_t lo = E->n * E->rank / P, hi = E->n * (E->rank + 1) / P;
-    const int64_t CH = (int64_t)1 << 20;
-    int64_t rounds = (hi - lo + CH - 1) / CH;
-    comm_max_i64(&rounds, 1);
-    double *buf = malloc((size_t)CH * 16);
-    void **send = calloc((size_t)P, sizeof *send);
-    size_t *sb = calloc((size_t)P, sizeof *sb), *scap = calloc((size_t)P, sizeof *scap);
-    void **recv = calloc((size_t)P, sizeof *recv);
-    size_t *rb = calloc((size_t)P, sizeof *rb);
-    int bad = !buf || !send || !sb || !scap || !recv || !rb;
-    int64_t badpos = -1;
-    size_t have = 0;
-    /* received points land in tx/ty/tid */
-    for (int64_t r = 0; r < rounds; r++) {
-        int64_t a = lo + r * CH, b = a + CH < hi ? a + CH : hi;
-        if (a > b) a = b;
-        for (int q = 0; q < P; q++) sb[q] = 0;
-        if (!bad && b > a && comm_file_read_at(f, CKPT_HEADER + 16 * (uint64_t)a, buf, (size_t)(b - a) * 16) != 0)
-            bad = 1;
-        for (int64_t i = a; !bad && i < b; i++) {
-            double x = buf[2 * (i - a)], y = buf[2 * (i - a) + 1];
-            if (!(x >= 0 && x < 1 && y >= 0 && y < 1)) {
-                badpos = i;
-                bad = 1;
-                break;
-            }
-            int q = cfpo_tiling_owner(&E->T, cfpo_grid_coord(&E->G, x), cfpo_grid_coord(&E->G, y));
-            if (sb[q] + sizeof(ck_rec) > scap[q]) {
-                size_t c = (sb[q] + sizeof(ck_rec)) * 2;
-                void *p = realloc(send[q], c);
-                if (!p) { bad = 1; break; }
-                send[q] = p;
-                scap[q] = c;
-            }
-            ck_rec rec = {x, y, (uint64_t)i};
-            memcpy((char *)send[q] + sb[q], &rec, sizeof rec);
-            sb[q] += sizeof rec;
-        }
-        if (!comm_all(!bad)) break;
-        if (comm_alltoallv(send, sb, recv, rb) != 0) { bad = 1; break; }
-        size_t add = 0;
-        for (int q = 0; q < P; q++) add += rb[q] / sizeof(ck_rec);
-        if (ensure_cap(E, have + add) != 0) bad = 1;
-        for (int q = 0; q < P; q++) {
-            const ck_rec *rr = recv[q];
-            for (size_t i = 0; !bad && i < rb[q] / sizeof(ck_rec); i++, have++) {
-                E->tx[have] = rr[i].x;
-                E->ty[have] = rr[i].y;
-                E->tid[have] = rr[i].id;
-            }
-            free(recv[q]);
-            recv[q] = NULL;
-        }
-        if (!comm_all(!bad)) break;
-    }
-    comm_file_close(f);
-    for (int q = 0; send && q < P; q++) free(send[q]);
-    free(send); free(sb); free(scap); free(recv); free(rb); free(buf);
-    int64_t bp = badpos;
-    comm_max_i64(&bp, 1);
-    if (!comm_all(!bad)) {
-        if (bp >= 0)
-            snprintf(err, errlen, "%s: corrupt checkpoint: point %lld at offset %llu is not in [0,1)^2",
-                     path, (long long)bp, (unsigned long long)(CKPT_HEADER + 16 * (uint64_t)bp));
-        else snprintf(err, errlen, "%s: cannot read the checkpoint (or out of memory)", path);
-        return -1;
-    }
-    /* Counting sort into cells, then id order inside each cell. */
-    memset(E->start, 0, ((size_t)E->cells + 1) * sizeof(uint32_t));
-    for (size_t i = 0; i < have; i++) {
-        int64_t c = own_cell_of(E, E->tx[i], E->ty[i]);
-        E->start[c + 1]++;
-    }
-    int maxcell = 0;
-    for (int64_t c = 0; c < E->cells; c++) {
-        if ((int)E->start[c + 1] > maxcell) maxcell = (int)E->start[c + 1];
-        E->start[c + 1] += E->start[c];
-    }
-    memcpy(E->start2, E->start, ((size_t)E->cells + 1) * sizeof(uint32_t));
-    for (size_t i = 0; i < have; i++) {
-        int64_t c = own_cell_of(E, E->tx[i], E->ty[i]);
-        uint32_t k = E->start2[c]++;
-        E->px[k] = E->tx[i];
-        E->py[k] = E->ty[i];
-        E->pid[k] = E->tid[i];
-    }
-    for (int64_t c = 0; c < E->cells; c++) sort3(E->pid, E->px, E->py, E->start[c], E->start[c + 1]);
-    E->nloc = (int64_t)have;
-    E->maxcell = maxcell;
-    int64_t tot = E->nloc;
-    comm_sum_i64(&tot, 1);
-    if (tot != E->n) {
-        snprintf(err, errlen, "%s: corrupt checkpoint (point count)", path);
-        return -1;
-    }
-    return 0;
 }
 
 /* ---- create ---- */
@@ -1063,7 +380,7 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
     E->bmin = calloc((size_t)(E->nbx * E->nby), sizeof(double));
     E->bdirty = malloc((size_t)(E->nbx * E->nby));
     if (E->bdirty) memset(E->bdirty, 1, (size_t)(E->nbx * E->nby));
-    ok = E->bsum && E->bmin && E->bdirty && E->start && E->start2 && E->mask && E->scratch && build_neighbours(E) == 0;
+    ok = E->bsum && E->bmin && E->bdirty && E->start && E->start2 && E->mask && E->scratch && eng_build_neighbours(E) == 0;
     if (!comm_all(ok)) {
         snprintf(err, errlen, "out of memory for n = %lld (%.1f GB per rank needed)", (long long)n,
                  (double)cfpo_engine_bytes_local(n / E->nranks, G.g * G.g / E->nranks, 0, E->nthreads) / 1e9);
@@ -1084,18 +401,18 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
             E->cur = E->iter0;
             E->G.shift = shift_of(&E->G, E->iter0);
             E->resumed_converged = info.converged;
-            rc = load_checkpoint(E, err, errlen);
+            rc = eng_load_checkpoint(E, err, errlen);
         }
     } else {
-        rc = make_initial(E, err, errlen);
+        rc = eng_make_initial(E, err, errlen);
     }
     if (!comm_all(rc == 0)) {
         if (rc == 0) snprintf(err, errlen, "another rank failed to make its points");
         cfpo_engine_free(E);
         return NULL;
     }
-    if (ensure_scratch(E) != 0 || ensure_cap(E, (size_t)E->nloc + 1) != 0) rc = -1;
-    if (rc == 0 && refresh_halo(E) != 0) rc = -1;
+    if (ensure_scratch(E) != 0 || eng_ensure_cap(E, (size_t)E->nloc + 1) != 0) rc = -1;
+    if (rc == 0 && eng_refresh_halo(E) != 0) rc = -1;
     if (!comm_all(rc == 0)) {
         snprintf(err, errlen, "out of memory");
         cfpo_engine_free(E);
@@ -1107,8 +424,8 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         int64_t v = (int64_t)s;
         comm_sum_i64(&v, 1);
         E->id_sum = (uint64_t)v;
-        check_migration(E);
-        check_halo(E);
+        eng_check_migration(E);
+        eng_check_halo(E);
     }
     E->t_halo = 0;
     E->b_halo = 0;
@@ -1303,7 +620,7 @@ static int exchange_migrants(cfpo_engine *E)
     for (size_t i = 0; i < E->narr; i++) {
         int64_t c = E->arr[i].cell;
         E->mask[c] |= ARRIVE_BIT;
-        mark_block(E, c % E->w, c / E->w);
+        eng_mark_block(E, c % E->w, c / E->w);
     }
     return 0;
 }
@@ -1326,11 +643,11 @@ static void settle(cfpo_engine *E, int colour, int64_t moves)
             const int64_t ly = by + p * (t / nxc), lx = bx + p * (t % nxc), c = ly * E->w + lx;
             const unsigned mk = E->mask[c] & 0x1ffu;
             if (!mk) continue;
-            mark_block(E, lx, ly);
+            eng_mark_block(E, lx, ly);
             for (int bit = 0; bit < 9; bit++)
                 if (bit != 4 && (mk >> bit & 1u)) {
                     crossed = 1;
-                    mark_block(E, lx + bit % 3 - 1, ly + bit / 3 - 1);
+                    eng_mark_block(E, lx + bit % 3 - 1, ly + bit / 3 - 1);
                 }
         }
     int rc = 0;
@@ -1349,12 +666,12 @@ static void settle(cfpo_engine *E, int colour, int64_t moves)
     E->narr = 0;
     double t2 = now();
     E->t_migrate += t2 - t1;
-    if (E->cfg.check && !E->shifting) check_migration(E);
-    if (refresh_halo(E) != 0) {
+    if (E->cfg.check && !E->shifting) eng_check_migration(E);
+    if (eng_refresh_halo(E) != 0) {
         fprintf(stderr, "cfpo: rank %d: out of memory while refreshing the halo\n", E->rank);
         comm_abort(1);
     }
-    if (E->cfg.check && !E->shifting) check_halo(E);
+    if (E->cfg.check && !E->shifting) eng_check_halo(E);
 }
 
 int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
@@ -1412,200 +729,9 @@ static void move_grid(cfpo_engine *E, double shift)
     for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
     memset(E->bdirty, 1, (size_t)(E->nbx * E->nby));
     if (E->cfg.check) {
-        check_migration(E);
-        check_halo(E);
+        eng_check_migration(E);
+        eng_check_halo(E);
     }
-}
-
-/* ---- statistics ---- */
-
-typedef struct {
-    double x, y, best;
-    uint64_t id;
-    int64_t owner;
-} nn_query;
-
-/* Nearest-neighbour distance^2 of own point k of own cell (lx, ly) within
- * the 3x3 block; *sure says whether no point outside the block can be
- * nearer. */
-static double nn2_block(const cfpo_engine *E, int64_t lx, int64_t ly, uint32_t k, int *sure)
-{
-    const double L = E->G.L, x = E->px[k], y = E->py[k];
-    const double ex = cell_offset(E, x, E->x0 + lx), ey = cell_offset(E, y, E->y0 + ly);
-    double edge = fmin(fmin(ex, L - ex), fmin(ey, L - ey));
-    if (edge < 0) edge = 0;
-    double best = INFINITY;
-    for (int dy = -1; dy <= 1; dy++)
-        for (int dx = -1; dx <= 1; dx++) {
-            const int64_t e = locate(E, lx + dx, ly + dy);
-            const double *X, *Y;
-            uint32_t a, b;
-            if (e >= 0) { X = E->px; Y = E->py; a = E->start[e]; b = E->start[e + 1]; }
-            else { X = E->hx; Y = E->hy; a = E->hstart[-1 - e]; b = E->hstart[-e]; }
-            for (uint32_t j = a; j < b; j++) {
-                if (e >= 0 && j == k) continue;
-                double d2 = cfpo_torus_dist2(x, y, X[j], Y[j]);
-                if (d2 < best) best = d2;
-            }
-        }
-    /* With 3 or fewer cells per side the block already wraps onto the
-     * whole torus. */
-    const double reach = L + edge;
-    *sure = best <= reach * reach || E->G.g <= 3;
-    return best;
-}
-
-/* Nearest own point to a query (excluding its id) among own cells within
- * B cells of the query's cell. */
-static double box_min(const cfpo_engine *E, const nn_query *q, int64_t B)
-{
-    const int64_t g = E->G.g;
-    double best = INFINITY;
-    if (2 * B + 1 >= g) {
-        for (int64_t k = 0; k < E->nloc; k++)
-            if (E->pid[k] != q->id) {
-                double d2 = cfpo_torus_dist2(q->x, q->y, E->px[k], E->py[k]);
-                if (d2 < best) best = d2;
-            }
-        return best;
-    }
-    const int64_t qx = cfpo_grid_coord(&E->G, q->x), qy = cfpo_grid_coord(&E->G, q->y);
-    for (int64_t dy = -B; dy <= B; dy++) {
-        int64_t ly = (qy + dy + g) % g - E->y0;
-        if (ly < 0 || ly >= E->h) continue;
-        for (int64_t dx = -B; dx <= B; dx++) {
-            int64_t lx = (qx + dx + g) % g - E->x0;
-            if (lx < 0 || lx >= E->w) continue;
-            int64_t c = ly * E->w + lx;
-            for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++)
-                if (E->pid[k] != q->id) {
-                    double d2 = cfpo_torus_dist2(q->x, q->y, E->px[k], E->py[k]);
-                    if (d2 < best) best = d2;
-                }
-        }
-    }
-    return best;
-}
-
-void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg)
-{
-    const double inv = 1.0 / E->G.delta;
-    uint64_t sum = 0;
-    double mn = INFINITY;
-    nn_query *un = NULL;
-    size_t nun = 0, uncap = 0;
-    int oom = 0;
-    /* Blocks whose cells' neighbourhoods did not change keep their sums. */
-    const int64_t nb = E->nbx * E->nby;
-#pragma omp parallel for schedule(dynamic, 4) num_threads(E->nthreads)
-    for (int64_t bi = 0; bi < nb; bi++) {
-        if (!E->bdirty[bi]) continue;
-        const int64_t bx0 = (bi % E->nbx) * SB, by0 = (bi / E->nbx) * SB;
-        const int64_t bx1 = bx0 + SB < E->w ? bx0 + SB : E->w, by1 = by0 + SB < E->h ? by0 + SB : E->h;
-        uint64_t bs = 0;
-        double bm = INFINITY;
-        int unsure = 0;
-        for (int64_t ly = by0; ly < by1; ly++)
-            for (int64_t lx = bx0; lx < bx1; lx++) {
-            const int64_t c = ly * E->w + lx;
-            for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
-                int sure;
-                double d2 = nn2_block(E, lx, ly, k, &sure);
-                if (sure) {
-                    double d = sqrt(d2) * inv;
-                    bs += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
-                    if (d < bm) bm = d;
-                } else {
-                    unsure = 1;
-#pragma omp critical(cfpo_unresolved)
-                    {
-                        if (nun == uncap) {
-                            size_t cap = uncap * 2 + 64;
-                            nn_query *q = realloc(un, cap * sizeof *q);
-                            if (q) { un = q; uncap = cap; }
-                            else oom = 1;
-                        }
-                        if (nun < uncap) un[nun++] = (nn_query){E->px[k], E->py[k], d2, E->pid[k], E->rank};
-                    }
-                }
-            }
-        }
-        E->bsum[bi] = bs;
-        E->bmin[bi] = bm;
-        E->bdirty[bi] = (uint8_t)unsure; /* blocks with unresolved points: every time */
-    }
-    for (int64_t bi = 0; bi < nb; bi++) {
-        sum += E->bsum[bi];
-        if (E->bmin[bi] < mn) mn = E->bmin[bi];
-    }
-    if (!comm_all(!oom)) {
-        fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
-        comm_abort(1);
-    }
-    /* Points whose nearest neighbour may lie outside their block: ask every
-     * rank for its nearest points within B cells, doubling B until the
-     * answer is certain. Rare after the first iteration. */
-    void *allv;
-    size_t total;
-    if (comm_allgatherv(un, nun * sizeof *un, &allv, &total) != 0) {
-        fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
-        comm_abort(1);
-    }
-    free(un);
-    nn_query *Q = allv;
-    size_t nq = total / sizeof *Q;
-    if (nq) {
-        double *res = malloc(nq * sizeof *res);
-        int64_t *B = malloc(nq * sizeof *B);
-        uint8_t *done = calloc(nq, 1);
-        if (!res || !B || !done) {
-            fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
-            comm_abort(1);
-        }
-        for (size_t i = 0; i < nq; i++) B[i] = 2;
-        const double L = E->G.L;
-        for (;;) {
-#pragma omp parallel for schedule(dynamic, 64) num_threads(E->nthreads)
-            for (size_t i = 0; i < nq; i++) res[i] = done[i] ? INFINITY : box_min(E, &Q[i], B[i]);
-            comm_min_d(res, (int)nq);
-            int left = 0;
-            for (size_t i = 0; i < nq; i++) {
-                if (done[i]) continue;
-                const nn_query *q = &Q[i];
-                int64_t cx = cfpo_grid_coord(&E->G, q->x), cy = cfpo_grid_coord(&E->G, q->y);
-                double ex = cell_offset(E, q->x, cx), ey = cell_offset(E, q->y, cy);
-                double edge = fmax(0, fmin(fmin(ex, L - ex), fmin(ey, L - ey)));
-                double reach = (double)B[i] * L + edge;
-                if (res[i] <= reach * reach || 2 * B[i] + 1 >= E->G.g) {
-                    done[i] = 1;
-                    if (q->owner == E->rank) {
-                        double d = sqrt(res[i]) * inv;
-                        sum += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
-                        if (d < mn) mn = d;
-                    }
-                } else {
-                    B[i] *= 2;
-                    left = 1;
-                }
-            }
-            if (!left) break;
-        }
-        free(res);
-        free(B);
-        free(done);
-    }
-    free(Q);
-    /* Exact integer sums: the same bits for any split into ranks. */
-    int64_t *all = malloc((size_t)E->nranks * sizeof *all);
-    if (!all) comm_abort(1);
-    comm_allgather_i64((int64_t)sum, all);
-    unsigned __int128 S = 0;
-    for (int r = 0; r < E->nranks; r++) S += (uint64_t)all[r];
-    free(all);
-    comm_min_d(&mn, 1);
-    E->dmin_now = mn;
-    *dmin = mn;
-    *davg = (double)((long double)S / SUM_SCALE / (long double)E->n);
 }
 
 /* The adaptive variant's margin for the coming iteration: S reaches
@@ -1662,7 +788,7 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
 
 /* ---- output ---- */
 
-static void sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi)
+void eng_sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi)
 {
     while (hi - lo > 16) {
         int64_t mid = lo + (hi - lo) / 2;
@@ -1680,8 +806,8 @@ static void sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi)
                 j--;
             }
         }
-        if (j + 1 - lo < hi - i) { sort3(id, x, y, lo, j + 1); lo = i; }
-        else { sort3(id, x, y, i, hi); hi = j + 1; }
+        if (j + 1 - lo < hi - i) { eng_sort3(id, x, y, lo, j + 1); lo = i; }
+        else { eng_sort3(id, x, y, i, hi); hi = j + 1; }
     }
     for (int64_t k = lo + 1; k < hi; k++) {
         uint64_t t = id[k];
@@ -1698,7 +824,7 @@ int cfpo_engine_write_points(cfpo_engine *E, comm_file *f, uint64_t base, char *
     memcpy(E->tid, E->pid, (size_t)E->nloc * sizeof(uint64_t));
     memcpy(E->tx, E->px, (size_t)E->nloc * sizeof(double));
     memcpy(E->ty, E->py, (size_t)E->nloc * sizeof(double));
-    sort3(E->tid, E->tx, E->ty, 0, E->nloc);
+    eng_sort3(E->tid, E->tx, E->ty, 0, E->nloc);
     /* In pieces of CH points: each piece is one collective write of its
      * runs of consecutive ids. */
     const int64_t CH = (int64_t)1 << 20;
@@ -1759,29 +885,6 @@ void cfpo_engine_points(const cfpo_engine *E, double *xy)
     }
 }
 
-static int write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err, size_t errlen)
-{
-    comm_file *f = comm_file_create(E->cfg.checkpoint, err, errlen);
-    if (!f) return -1;
-    int ok = 1;
-    if (E->rank == 0) {
-        unsigned char h[CKPT_HEADER] = {0};
-        memcpy(h, CKPT_MAGIC, 8);
-        put64(h + 8, (uint64_t)E->n);
-        put64(h + 16, E->o.seed);
-        put64(h + 24, (uint64_t)E->o.variant);
-        uint64_t tb;
-        memcpy(&tb, &E->o.tol, 8);
-        put64(h + 32, tb);
-        put64(h + 40, (uint64_t)iteration);
-        put64(h + 48, (uint64_t)converged);
-        ok = comm_file_write_at(f, 0, h, sizeof h) == 0;
-    }
-    char e2[256];
-    if (cfpo_engine_write_points(E, f, CKPT_HEADER, e2, sizeof e2) != 0) ok = 0;
-    return comm_file_commit(f, ok, err, errlen);
-}
-
 int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen)
 {
     double t0 = now();
@@ -1804,7 +907,7 @@ int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen)
         why = cfpo_stop_check(&E->o.stop, &s, elapsed, E->o.max_iter);
         if (E->o.progress && E->o.progress(&s, E->o.user) && !why) why = CFPO_STOP_CALLER;
         if (E->cfg.checkpoint && E->cfg.checkpoint_every > 0 && it % E->cfg.checkpoint_every == 0 &&
-            write_checkpoint(E, it, s.converged, err, errlen) != 0) {
+            eng_write_checkpoint(E, it, s.converged, err, errlen) != 0) {
             rc = -1;
             break;
         }

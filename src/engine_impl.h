@@ -1,0 +1,201 @@
+/* engine_impl.h - the engine's insides, shared by its files (not a public
+ * header: only src/engine*.c include it). Layer 3, like engine.h; may
+ * include engine.h and the layers below it.
+ *
+ * The engine is split by concept:
+ *   engine.c        creation, the start, relocation and migration between
+ *                   cells and ranks, the colour schedule, the grid shift,
+ *                   the run loop and output
+ *   engine_halo.c   the halo ring (who keeps which cell, the refresh after
+ *                   every phase) and the --check verifications
+ *   engine_init.c   the initial set of each variant
+ *   engine_ckpt.c   checkpoints: reading, validating, writing
+ *   engine_stats.c  delta_min and delta_avg of the set, exact and cached
+ *                   per block of cells */
+#ifndef CFPO_ENGINE_IMPL_H
+#define CFPO_ENGINE_IMPL_H
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "engine.h"
+#include "omp_compat.h"
+#include "rng.h"
+
+#define ARRIVE_BIT (1u << 9) /* mask: the cell receives points from other ranks */
+#define NEED_BIT (1u << 15)  /* mask: the cell must be solved (its block changed) */
+#define ARRIVAL_CODE (1ull << 63)
+#define CENTRE_BIT (1u << 4)
+#define SUM_SCALE 16777216.0 /* nearest-neighbour distances summed in units of Delta / 2^24 */
+#define SB 8 /* statistics blocks: SB x SB cells */
+#define SHIFT_SALT 0x3c6ef372fe94f82aULL
+#define SHIFT_EVERY 4 /* the grid moves before iterations 1, 5, 9, ...; in between, skipping works */
+#define ADAPTIVE_THETA 0.7 /* the adaptive margin never reaches past L - 0.7 Delta(n) */
+#define CKPT_MAGIC "CFPOCKP1"
+#define CKPT_HEADER 64
+
+typedef struct { /* a point on the move between ranks */
+    double x, y;
+    uint64_t id;
+    float dq[2];
+} mig_rec;
+
+typedef struct { /* arrival, sorted into its cell */
+    int64_t cell;
+    mig_rec r;
+} arrival;
+
+typedef struct {
+    int rank;
+    int64_t nsend, nrecv;
+    int64_t *send_cells; /* own cells this neighbour keeps in its halo, in its ring order */
+    int64_t *recv_ring;  /* my ring cells it owns, in my ring order */
+    /* migration out */
+    mig_rec *out;
+    size_t nout, outcap;
+    /* halo out */
+    unsigned char *hbuf;
+    size_t hcap;
+} neighbour;
+
+struct cfpo_engine {
+    cfpo_grid G;
+    cfpo_options o;
+    cfpo_engine_config cfg;
+    cfpo_tiling T;
+    int rank, nranks;
+    int64_t n, x0, y0, w, h, cells;
+    int wrapx, wrapy;
+    int64_t nloc;
+    size_t cap;       /* capacity of the point arrays */
+    double *px, *py;  /* positions, cell by cell */
+    uint64_t *pid;    /* global ids, ascending inside a cell */
+    float *dq;        /* 2 per slot: net displacement this iteration */
+    double *tx, *ty;  /* spare buffers for rebuilding and output */
+    uint64_t *tid;    /* while relocating: where each new slot comes from */
+    uint32_t *start;  /* CSR: own cell c holds [start[c], start[c+1]) */
+    uint32_t *start2; /* the next CSR offsets, while relocating */
+    uint16_t *mask;   /* this phase: bit (dy+1)*3+(dx+1) set if a point of
+                         the cell moved into the cell at offset (dx,dy);
+                         ARRIVE_BIT if points arrive from another rank;
+                         NEED_BIT if the cell must be solved again */
+    /* halo ring: bottom row, top row, left column, right column */
+    int64_t nring;
+    uint32_t *hstart, *hstart2;
+    double *hx, *hy, *hx2, *hy2;
+    size_t hcap, hcap2;
+    uint32_t *hcnt;
+    int nnb;
+    neighbour *nb;
+    comm_msg *msg;
+    arrival *arr;
+    size_t narr, arrcap;
+    /* statistics cached per block of SB x SB cells, recomputed only when a
+     * cell of the block was marked (its 3x3 neighbourhood changed) */
+    int64_t nbx, nby;
+    uint64_t *bsum;
+    double *bmin;
+    uint8_t *bdirty;
+    int nthreads;
+    int maxcell;
+    double **scratch; /* per thread */
+    size_t scratch_m; /* points the scratch is sized for */
+    int iter0;        /* iteration the engine stands at */
+    int resumed_converged;
+    double max_move;  /* largest single move this iteration */
+    double t_born;    /* when cfpo_engine_create_ex began */
+    int shifting;     /* inside move_grid: cells hold points of the old grid */
+    int cur;          /* the iteration under way (or last done) */
+    double dmin_now;  /* delta_min / Delta(n) of the set as it stands (1 until measured) */
+    uint64_t id_sum;  /* checksum of all ids (check mode) */
+    /* timing and traffic */
+    double t_compute, t_migrate, t_halo, b_halo, b_migrate;
+    int64_t phases, chk_mig, chk_halo;
+};
+
+
+static inline double now(void) { return omp_get_wtime(); }
+
+/* ---- where cells live ---- */
+
+static inline int64_t ring_index(const cfpo_engine *E, int64_t lx, int64_t ly)
+{
+    if (ly == -1) return lx + 1;
+    if (ly == E->h) return E->w + 2 + lx + 1;
+    if (lx == -1) return 2 * (E->w + 2) + ly;
+    return 2 * (E->w + 2) + E->h + ly; /* lx == w */
+}
+
+static inline void ring_coords(const cfpo_engine *E, int64_t i, int64_t *lx, int64_t *ly)
+{
+    const int64_t W = E->w + 2;
+    if (i < W) { *lx = i - 1; *ly = -1; }
+    else if (i < 2 * W) { *lx = i - W - 1; *ly = E->h; }
+    else if (i < 2 * W + E->h) { *lx = -1; *ly = i - 2 * W; }
+    else { *lx = E->w; *ly = i - 2 * W - E->h; }
+}
+
+/* The cell at tile coordinates (lx, ly), lx in [-1, w], ly in [-1, h]:
+ * >= 0 an own cell's index, < 0 the halo cell -1 - ring index. A tile that
+ * spans the whole torus in a direction wraps onto itself. */
+static inline int64_t locate(const cfpo_engine *E, int64_t lx, int64_t ly)
+{
+    if (E->wrapx) { if (lx < 0) lx += E->w; else if (lx >= E->w) lx -= E->w; }
+    if (E->wrapy) { if (ly < 0) ly += E->h; else if (ly >= E->h) ly -= E->h; }
+    if (lx >= 0 && lx < E->w && ly >= 0 && ly < E->h) return ly * E->w + lx;
+    return -1 - ring_index(E, lx, ly);
+}
+
+/* Own cell index of a position, or -1 if another rank owns its cell. */
+static inline int64_t own_cell_of(const cfpo_engine *E, double x, double y)
+{
+    int64_t lx = cfpo_grid_coord(&E->G, x) - E->x0, ly = cfpo_grid_coord(&E->G, y) - E->y0;
+    if (lx < 0 || lx >= E->w || ly < 0 || ly >= E->h) return -1;
+    return ly * E->w + lx;
+}
+
+static inline int wrap_offset(int64_t d, int64_t g)
+{
+    if (d > 1) d -= g;
+    if (d < -1) d += g;
+    return (int)d;
+}
+
+/* Is cell e's mask bit for the neighbour at offset (dx, dy) set? */
+static inline int sends_to(unsigned mk, int dx, int dy) { return mk >> ((dy + 1) * 3 + (dx + 1)) & 1u; }
+
+static inline int neighbour_of_rank(const cfpo_engine *E, int r)
+{
+    for (int i = 0; i < E->nnb; i++)
+        if (E->nb[i].rank == r) return i;
+    return -1;
+}
+
+/* v's offset from the low edge of global cell column (or row) c, for v
+ * in that cell: in [0, L) up to rounding, whatever the grid's shift. */
+static inline double cell_offset(const cfpo_engine *E, double v, int64_t c)
+{
+    double d = v - ((double)c * E->G.L + E->G.shift);
+    return d < -0.5 ? d + 1.0 : d;
+}
+
+static inline int in_cell(const cfpo_engine *E, double x, double y, int64_t lx, int64_t ly)
+{
+    return cfpo_grid_coord(&E->G, x) - E->x0 == lx && cfpo_grid_coord(&E->G, y) - E->y0 == ly;
+}
+
+/* Shared between the engine's files. */
+int eng_ensure_cap(cfpo_engine *E, size_t need);
+void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly);
+void eng_sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi);
+int eng_build_neighbours(cfpo_engine *E);
+int eng_refresh_halo(cfpo_engine *E);
+void eng_check_fail(const cfpo_engine *E, const char *what);
+void eng_check_migration(cfpo_engine *E);
+void eng_check_halo(cfpo_engine *E);
+int eng_make_initial(cfpo_engine *E, char *err, size_t errlen);
+int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen);
+int eng_write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err, size_t errlen);
+
+#endif

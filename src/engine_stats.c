@@ -1,0 +1,198 @@
+/* engine_stats.c - delta_min and delta_avg of the set, exact (see
+ * engine_impl.h). */
+#include "engine_impl.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- statistics ---- */
+
+typedef struct {
+    double x, y, best;
+    uint64_t id;
+    int64_t owner;
+} nn_query;
+
+/* Nearest-neighbour distance^2 of own point k of own cell (lx, ly) within
+ * the 3x3 block; *sure says whether no point outside the block can be
+ * nearer. */
+static double nn2_block(const cfpo_engine *E, int64_t lx, int64_t ly, uint32_t k, int *sure)
+{
+    const double L = E->G.L, x = E->px[k], y = E->py[k];
+    const double ex = cell_offset(E, x, E->x0 + lx), ey = cell_offset(E, y, E->y0 + ly);
+    double edge = fmin(fmin(ex, L - ex), fmin(ey, L - ey));
+    if (edge < 0) edge = 0;
+    double best = INFINITY;
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            const int64_t e = locate(E, lx + dx, ly + dy);
+            const double *X, *Y;
+            uint32_t a, b;
+            if (e >= 0) { X = E->px; Y = E->py; a = E->start[e]; b = E->start[e + 1]; }
+            else { X = E->hx; Y = E->hy; a = E->hstart[-1 - e]; b = E->hstart[-e]; }
+            for (uint32_t j = a; j < b; j++) {
+                if (e >= 0 && j == k) continue;
+                double d2 = cfpo_torus_dist2(x, y, X[j], Y[j]);
+                if (d2 < best) best = d2;
+            }
+        }
+    /* With 3 or fewer cells per side the block already wraps onto the
+     * whole torus. */
+    const double reach = L + edge;
+    *sure = best <= reach * reach || E->G.g <= 3;
+    return best;
+}
+
+/* Nearest own point to a query (excluding its id) among own cells within
+ * B cells of the query's cell. */
+static double box_min(const cfpo_engine *E, const nn_query *q, int64_t B)
+{
+    const int64_t g = E->G.g;
+    double best = INFINITY;
+    if (2 * B + 1 >= g) {
+        for (int64_t k = 0; k < E->nloc; k++)
+            if (E->pid[k] != q->id) {
+                double d2 = cfpo_torus_dist2(q->x, q->y, E->px[k], E->py[k]);
+                if (d2 < best) best = d2;
+            }
+        return best;
+    }
+    const int64_t qx = cfpo_grid_coord(&E->G, q->x), qy = cfpo_grid_coord(&E->G, q->y);
+    for (int64_t dy = -B; dy <= B; dy++) {
+        int64_t ly = (qy + dy + g) % g - E->y0;
+        if (ly < 0 || ly >= E->h) continue;
+        for (int64_t dx = -B; dx <= B; dx++) {
+            int64_t lx = (qx + dx + g) % g - E->x0;
+            if (lx < 0 || lx >= E->w) continue;
+            int64_t c = ly * E->w + lx;
+            for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++)
+                if (E->pid[k] != q->id) {
+                    double d2 = cfpo_torus_dist2(q->x, q->y, E->px[k], E->py[k]);
+                    if (d2 < best) best = d2;
+                }
+        }
+    }
+    return best;
+}
+
+void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg)
+{
+    const double inv = 1.0 / E->G.delta;
+    uint64_t sum = 0;
+    double mn = INFINITY;
+    nn_query *un = NULL;
+    size_t nun = 0, uncap = 0;
+    int oom = 0;
+    /* Blocks whose cells' neighbourhoods did not change keep their sums. */
+    const int64_t nb = E->nbx * E->nby;
+#pragma omp parallel for schedule(dynamic, 4) num_threads(E->nthreads)
+    for (int64_t bi = 0; bi < nb; bi++) {
+        if (!E->bdirty[bi]) continue;
+        const int64_t bx0 = (bi % E->nbx) * SB, by0 = (bi / E->nbx) * SB;
+        const int64_t bx1 = bx0 + SB < E->w ? bx0 + SB : E->w, by1 = by0 + SB < E->h ? by0 + SB : E->h;
+        uint64_t bs = 0;
+        double bm = INFINITY;
+        int unsure = 0;
+        for (int64_t ly = by0; ly < by1; ly++)
+            for (int64_t lx = bx0; lx < bx1; lx++) {
+            const int64_t c = ly * E->w + lx;
+            for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
+                int sure;
+                double d2 = nn2_block(E, lx, ly, k, &sure);
+                if (sure) {
+                    double d = sqrt(d2) * inv;
+                    bs += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
+                    if (d < bm) bm = d;
+                } else {
+                    unsure = 1;
+#pragma omp critical(cfpo_unresolved)
+                    {
+                        if (nun == uncap) {
+                            size_t cap = uncap * 2 + 64;
+                            nn_query *q = realloc(un, cap * sizeof *q);
+                            if (q) { un = q; uncap = cap; }
+                            else oom = 1;
+                        }
+                        if (nun < uncap) un[nun++] = (nn_query){E->px[k], E->py[k], d2, E->pid[k], E->rank};
+                    }
+                }
+            }
+        }
+        E->bsum[bi] = bs;
+        E->bmin[bi] = bm;
+        E->bdirty[bi] = (uint8_t)unsure; /* blocks with unresolved points: every time */
+    }
+    for (int64_t bi = 0; bi < nb; bi++) {
+        sum += E->bsum[bi];
+        if (E->bmin[bi] < mn) mn = E->bmin[bi];
+    }
+    if (!comm_all(!oom)) {
+        fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
+        comm_abort(1);
+    }
+    /* Points whose nearest neighbour may lie outside their block: ask every
+     * rank for its nearest points within B cells, doubling B until the
+     * answer is certain. Rare after the first iteration. */
+    void *allv;
+    size_t total;
+    if (comm_allgatherv(un, nun * sizeof *un, &allv, &total) != 0) {
+        fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
+        comm_abort(1);
+    }
+    free(un);
+    nn_query *Q = allv;
+    size_t nq = total / sizeof *Q;
+    if (nq) {
+        double *res = malloc(nq * sizeof *res);
+        int64_t *B = malloc(nq * sizeof *B);
+        uint8_t *done = calloc(nq, 1);
+        if (!res || !B || !done) {
+            fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
+            comm_abort(1);
+        }
+        for (size_t i = 0; i < nq; i++) B[i] = 2;
+        const double L = E->G.L;
+        for (;;) {
+#pragma omp parallel for schedule(dynamic, 64) num_threads(E->nthreads)
+            for (size_t i = 0; i < nq; i++) res[i] = done[i] ? INFINITY : box_min(E, &Q[i], B[i]);
+            comm_min_d(res, (int)nq);
+            int left = 0;
+            for (size_t i = 0; i < nq; i++) {
+                if (done[i]) continue;
+                const nn_query *q = &Q[i];
+                int64_t cx = cfpo_grid_coord(&E->G, q->x), cy = cfpo_grid_coord(&E->G, q->y);
+                double ex = cell_offset(E, q->x, cx), ey = cell_offset(E, q->y, cy);
+                double edge = fmax(0, fmin(fmin(ex, L - ex), fmin(ey, L - ey)));
+                double reach = (double)B[i] * L + edge;
+                if (res[i] <= reach * reach || 2 * B[i] + 1 >= E->G.g) {
+                    done[i] = 1;
+                    if (q->owner == E->rank) {
+                        double d = sqrt(res[i]) * inv;
+                        sum += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
+                        if (d < mn) mn = d;
+                    }
+                } else {
+                    B[i] *= 2;
+                    left = 1;
+                }
+            }
+            if (!left) break;
+        }
+        free(res);
+        free(B);
+        free(done);
+    }
+    free(Q);
+    /* Exact integer sums: the same bits for any split into ranks. */
+    int64_t *all = malloc((size_t)E->nranks * sizeof *all);
+    if (!all) comm_abort(1);
+    comm_allgather_i64((int64_t)sum, all);
+    unsigned __int128 S = 0;
+    for (int r = 0; r < E->nranks; r++) S += (uint64_t)all[r];
+    free(all);
+    comm_min_d(&mn, 1);
+    E->dmin_now = mn;
+    *dmin = mn;
+    *davg = (double)((long double)S / SUM_SCALE / (long double)E->n);
+}
