@@ -92,7 +92,7 @@ void cfpo_engine_free(cfpo_engine *E)
     free(E);
 }
 
-static int ensure_scratch(cfpo_engine *E)
+int eng_ensure_scratch(cfpo_engine *E)
 {
     size_t m = (size_t)9 * (size_t)E->maxcell + 1;
     if (m <= E->scratch_m) return 0;
@@ -111,7 +111,7 @@ int eng_ensure_cap(cfpo_engine *E, size_t need)
 {
     if (need <= E->cap) return 0;
     size_t cap = need + need / 16 + 1024;
-    /* Five buffers of 8 bytes a slot swap roles in relocate(), so they
+    /* Five buffers of 8 bytes a slot swap roles in eng_relocate(), so they
      * all have the same capacity. */
 #define GROW(p, T, per)                                       \
     do {                                                      \
@@ -126,206 +126,12 @@ int eng_ensure_cap(cfpo_engine *E, size_t need)
     return 0;
 }
 
-/* ---- moving points between cells, tiles and ranks ---- */
-
-static int cmp_arrival(const void *a, const void *b)
-{
-    const arrival *p = a, *q = b;
-    if (p->cell != q->cell) return p->cell < q->cell ? -1 : 1;
-    return p->r.id < q->r.id ? -1 : p->r.id > q->r.id;
-}
-
-/* First arrival of cell c in the sorted list. */
-static size_t first_arrival(const cfpo_engine *E, int64_t c)
-{
-    size_t lo = 0, hi = E->narr;
-    while (lo < hi) {
-        size_t mid = (lo + hi) / 2;
-        if (E->arr[mid].cell < c) lo = mid + 1;
-        else hi = mid;
-    }
-    return lo;
-}
-
 /* The adaptive variant's grid offset in iteration k (0 before the first). */
 static double shift_of(const cfpo_grid *G, int k)
 {
     if (G->variant != CFPO_VARIANT_ADAPTIVE || k <= 0) return 0;
     k -= (k - 1) % SHIFT_EVERY; /* the shift of the group of iterations k belongs to */
     return G->L * cfpo_rand01(G->seed ^ SHIFT_SALT, (uint64_t)k, 0);
-}
-
-
-/* Moves points that changed cell in the last phase into their new cells.
- * Only the cells of that phase's colour can have sent points (their masks
- * say where to), plus arrivals from other ranks, so each own cell gathers
- * its own new content: the points of its old slice that stayed, then
- * arrivals from the neighbours whose mask points at it, then those from
- * other ranks, then id order. Parallel over cells, deterministic. */
-static inline uint64_t id_of(const cfpo_engine *E, uint64_t code)
-{
-    return (code & ARRIVAL_CODE) ? E->arr[code & ~ARRIVAL_CODE].r.id : E->pid[code];
-}
-
-/* The cells that can have sent points into own cell (lx, ly) in the phase
- * of colour (a, b): the cell itself and, with period 3, the one cell of
- * that colour in its 3x3 block (every 3x3 block holds one cell of each
- * colour); with another period, all nine. Returns the count. */
-static int senders(const cfpo_engine *E, int64_t lx, int64_t ly, int a, int b, int off[9][2])
-{
-    if (E->G.period != 3) {
-        int m = 0;
-        for (int dy = -1; dy <= 1; dy++)
-            for (int dx = -1; dx <= 1; dx++) off[m][0] = dx, off[m][1] = dy, m++;
-        return m;
-    }
-    int sx = (int)(((b - (E->x0 + lx)) % 3 + 3) % 3), sy = (int)(((a - (E->y0 + ly)) % 3 + 3) % 3);
-    if (sx == 2) sx = -1;
-    if (sy == 2) sy = -1;
-    off[0][0] = 0, off[0][1] = 0;
-    if (sx == 0 && sy == 0) return 1;
-    off[1][0] = sx, off[1][1] = sy;
-    return 2;
-}
-
-static int relocate(cfpo_engine *E, int colour)
-{
-    const int a_ = colour / E->G.period, b_ = colour % E->G.period;
-    const int64_t w = E->w, cells = E->cells;
-    const uint32_t *st = E->start;
-    uint32_t *ns = E->start2;
-    const uint16_t *mask = E->mask;
-    if (eng_ensure_cap(E, (size_t)E->nloc + E->narr) != 0) return -1;
-#pragma omp parallel for schedule(static) num_threads(E->nthreads)
-    for (int64_t c = 0; c < cells; c++) {
-        const int64_t lx = c % w, ly = c / w;
-        uint32_t cnt = 0;
-        int off[9][2];
-        const int no = senders(E, lx, ly, a_, b_, off);
-        for (int o = 0; o < no; o++) {
-                const int dx = off[o][0], dy = off[o][1];
-                const int64_t e = locate(E, lx + dx, ly + dy);
-                if (e < 0) continue;
-                const unsigned mk = mask[e] & 0x1ffu;
-                if (dx == 0 && dy == 0) {
-                    if (!(mk & ~CENTRE_BIT)) { cnt += st[c + 1] - st[c]; continue; }
-                } else if (!sends_to(mk, -dx, -dy)) continue;
-                for (uint32_t k = st[e]; k < st[e + 1]; k++) cnt += in_cell(E, E->px[k], E->py[k], lx, ly);
-            }
-        if (mask[c] & ARRIVE_BIT)
-            for (size_t a = first_arrival(E, c); a < E->narr && E->arr[a].cell == c; a++) cnt++;
-        ns[c + 1] = cnt;
-    }
-    ns[0] = 0;
-    for (int64_t c = 0; c < cells; c++) ns[c + 1] += ns[c];
-    int maxcell = 0;
-#pragma omp parallel for schedule(static) reduction(max : maxcell) num_threads(E->nthreads)
-    for (int64_t c = 0; c < cells; c++) {
-        const int64_t lx = c % w, ly = c / w;
-        uint32_t wpos = ns[c];
-        int arrivals = 0;
-        int off[9][2];
-        const int no = senders(E, lx, ly, a_, b_, off);
-        for (int o = 0; o < no; o++) {
-                const int dx = off[o][0], dy = off[o][1];
-                const int64_t e = locate(E, lx + dx, ly + dy);
-                if (e < 0) continue;
-                const unsigned mk = mask[e] & 0x1ffu;
-                int check;
-                if (dx == 0 && dy == 0) check = (mk & ~CENTRE_BIT) != 0;
-                else if (sends_to(mk, -dx, -dy)) check = 1, arrivals = 1;
-                else continue;
-                for (uint32_t k = st[e]; k < st[e + 1]; k++) {
-                    if (check && !in_cell(E, E->px[k], E->py[k], lx, ly)) continue;
-                    E->tx[wpos] = E->px[k];
-                    E->ty[wpos] = E->py[k];
-                    E->tid[wpos] = k;
-                    wpos++;
-                }
-            }
-        if (mask[c] & ARRIVE_BIT) {
-            arrivals = 1;
-            for (size_t a = first_arrival(E, c); a < E->narr && E->arr[a].cell == c; a++) {
-                const mig_rec *r = &E->arr[a].r;
-                E->tx[wpos] = r->x;
-                E->ty[wpos] = r->y;
-                E->tid[wpos] = ARRIVAL_CODE | a;
-                wpos++;
-            }
-        }
-        if (arrivals) /* insertion sort by id; cells hold a handful of points */
-            for (uint32_t k = ns[c] + 1; k < wpos; k++) {
-                const uint64_t code = E->tid[k], id = id_of(E, code);
-                const double x = E->tx[k], y = E->ty[k];
-                uint32_t j = k;
-                while (j > ns[c] && id_of(E, E->tid[j - 1]) > id) {
-                    E->tid[j] = E->tid[j - 1];
-                    E->tx[j] = E->tx[j - 1];
-                    E->ty[j] = E->ty[j - 1];
-                    j--;
-                }
-                E->tid[j] = code;
-                E->tx[j] = x;
-                E->ty[j] = y;
-            }
-        if ((int)(wpos - ns[c]) > maxcell) maxcell = (int)(wpos - ns[c]);
-    }
-    /* Ids and displacements follow the sources recorded in tid; the new
-     * displacements go into the old positions' buffer, free by now. */
-    const uint32_t total = ns[cells];
-    float *ndq = (float *)E->px;
-#pragma omp parallel for schedule(static) num_threads(E->nthreads)
-    for (uint32_t j = 0; j < total; j++) {
-        const uint64_t code = E->tid[j];
-        if (code & ARRIVAL_CODE) {
-            const mig_rec *r = &E->arr[code & ~ARRIVAL_CODE].r;
-            ndq[2 * j] = r->dq[0];
-            ndq[2 * j + 1] = r->dq[1];
-            E->tid[j] = r->id;
-        } else {
-            ndq[2 * j] = E->dq[2 * code];
-            ndq[2 * j + 1] = E->dq[2 * code + 1];
-            E->tid[j] = E->pid[code];
-        }
-    }
-    double *oldx = E->px, *oldy = E->py;
-    float *olddq = E->dq;
-    E->px = E->tx;
-    E->py = E->ty;
-    E->dq = (float *)oldx;
-    E->tx = (double *)olddq;
-    E->ty = oldy;
-    uint64_t *u = E->pid; E->pid = E->tid; E->tid = u;
-    uint32_t *s = E->start; E->start = E->start2; E->start2 = s;
-    E->nloc = E->start[cells];
-    E->maxcell = maxcell;
-    return ensure_scratch(E);
-}
-
-static inline void mark_cell(cfpo_engine *E, int64_t x, int64_t y)
-{
-    E->mask[y * E->w + x] |= NEED_BIT;
-    E->bdirty[(y / SB) * E->nbx + x / SB] = 1;
-}
-
-/* Marks the own cells of the 3x3 block around (lx, ly) (an own cell or a
- * halo cell) to be solved again, and their statistics blocks stale. */
-void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly)
-{
-    if (lx >= 1 && lx < E->w - 1 && ly >= 1 && ly < E->h - 1) { /* inside: no wrap, no halo */
-        for (int64_t y = ly - 1; y <= ly + 1; y++)
-            for (int64_t x = lx - 1; x <= lx + 1; x++) mark_cell(E, x, y);
-        return;
-    }
-    for (int dy = -1; dy <= 1; dy++)
-        for (int dx = -1; dx <= 1; dx++) {
-            int64_t x = lx + dx, y = ly + dy;
-            if (E->wrapx) x = (x % E->w + E->w) % E->w;
-            else if (x < 0 || x >= E->w) continue;
-            if (E->wrapy) y = (y % E->h + E->h) % E->h;
-            else if (y < 0 || y >= E->h) continue;
-            mark_cell(E, x, y);
-        }
 }
 
 /* ---- create ---- */
@@ -411,7 +217,7 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         cfpo_engine_free(E);
         return NULL;
     }
-    if (ensure_scratch(E) != 0 || eng_ensure_cap(E, (size_t)E->nloc + 1) != 0) rc = -1;
+    if (eng_ensure_scratch(E) != 0 || eng_ensure_cap(E, (size_t)E->nloc + 1) != 0) rc = -1;
     if (rc == 0 && eng_refresh_halo(E) != 0) rc = -1;
     if (!comm_all(rc == 0)) {
         snprintf(err, errlen, "out of memory");
@@ -431,6 +237,7 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
     E->b_halo = 0;
     return E;
 }
+
 
 /* ---- solving ---- */
 
@@ -539,91 +346,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     return moves;
 }
 
-/* Own cells of one colour: tile column lx = bx, bx + p, ... */
-static inline int64_t first_of(int64_t origin, int p, int64_t want)
-{
-    return ((want - origin) % p + p) % p;
-}
 
-/* Points that crossed into another rank's cell: packed per neighbour. */
-static int pack_migrants(cfpo_engine *E, int64_t bx, int64_t by, int64_t nxc, int64_t nyc, int p)
-{
-    for (int k = 0; k < E->nnb; k++) E->nb[k].nout = 0;
-    if (E->nnb == 0) return 0;
-    const int64_t g = E->G.g;
-    for (int64_t j = 0; j < nyc; j++)
-        for (int64_t i = 0; i < nxc; i++) {
-            const int64_t lx = bx + p * i, ly = by + p * j, c = ly * E->w + lx;
-            const unsigned mk = E->mask[c];
-            if (!(mk & ~CENTRE_BIT & 0x1ffu)) continue;
-            for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
-                const int64_t gx = cfpo_grid_coord(&E->G, E->px[k]), gy = cfpo_grid_coord(&E->G, E->py[k]);
-                const int64_t dlx = lx + wrap_offset(gx - (E->x0 + lx), g), dly = ly + wrap_offset(gy - (E->y0 + ly), g);
-                if (locate(E, dlx, dly) >= 0) continue;
-                const int q = neighbour_of_rank(E, cfpo_tiling_owner(&E->T, gx, gy));
-                if (q < 0) return -1;
-                neighbour *nb = &E->nb[q];
-                if (nb->nout == nb->outcap) {
-                    size_t cap = nb->outcap * 2 + 16;
-                    mig_rec *o = realloc(nb->out, cap * sizeof *o);
-                    if (!o) return -1;
-                    nb->out = o;
-                    nb->outcap = cap;
-                }
-                mig_rec *r = &nb->out[nb->nout++];
-                memset(r, 0, sizeof *r);
-                r->x = E->px[k];
-                r->y = E->py[k];
-                r->id = E->pid[k];
-                r->dq[0] = E->dq[2 * k];
-                r->dq[1] = E->dq[2 * k + 1];
-            }
-        }
-    return 0;
-}
-
-/* Sends the packed migrants, receives arrivals, sorts them into cells. */
-static int exchange_migrants(cfpo_engine *E)
-{
-    E->narr = 0;
-    if (E->nnb == 0) return 0;
-    for (int k = 0; k < E->nnb; k++) {
-        E->msg[k].send = E->nb[k].out;
-        E->msg[k].sendbytes = E->nb[k].nout * sizeof(mig_rec);
-        E->b_migrate += (double)E->msg[k].sendbytes;
-    }
-    if (comm_exchange(E->msg, E->nnb) != 0) return -1;
-    size_t tot = 0;
-    for (int k = 0; k < E->nnb; k++) tot += E->msg[k].recvbytes / sizeof(mig_rec);
-    if (tot > E->arrcap) {
-        arrival *a = realloc(E->arr, (tot + 16) * sizeof *a);
-        if (!a) return -1;
-        E->arr = a;
-        E->arrcap = tot + 16;
-    }
-    for (int k = 0; k < E->nnb; k++) {
-        const mig_rec *r = E->msg[k].recv;
-        for (size_t i = 0; i < E->msg[k].recvbytes / sizeof(mig_rec); i++) {
-            mig_rec rec;
-            memcpy(&rec, &r[i], sizeof rec);
-            int64_t c = own_cell_of(E, rec.x, rec.y);
-            if (c < 0) {
-                fprintf(stderr, "cfpo: rank %d received a point outside its tile\n", E->rank);
-                comm_abort(3);
-            }
-            E->arr[E->narr].cell = c;
-            E->arr[E->narr].r = rec;
-            E->narr++;
-        }
-    }
-    if (E->narr > 1) qsort(E->arr, E->narr, sizeof *E->arr, cmp_arrival);
-    for (size_t i = 0; i < E->narr; i++) {
-        int64_t c = E->arr[i].cell;
-        E->mask[c] |= ARRIVE_BIT;
-        eng_mark_block(E, c % E->w, c / E->w);
-    }
-    return 0;
-}
 
 /* After the cells of one colour changed (points moved, or the grid moved
  * under them): mark the blocks that changed, send points that left the
@@ -651,11 +374,11 @@ static void settle(cfpo_engine *E, int colour, int64_t moves)
                 }
         }
     int rc = 0;
-    if (crossed && pack_migrants(E, bx, by, nxc, nyc, p) != 0) rc = -1;
+    if (crossed && eng_pack_migrants(E, bx, by, nxc, nyc, p) != 0) rc = -1;
     if (!crossed)
         for (int k = 0; k < E->nnb; k++) E->nb[k].nout = 0;
-    if (rc == 0 && exchange_migrants(E) != 0) rc = -1;
-    if (rc == 0 && (crossed || E->narr) && relocate(E, colour) != 0) rc = -1;
+    if (rc == 0 && eng_exchange_migrants(E) != 0) rc = -1;
+    if (rc == 0 && (crossed || E->narr) && eng_relocate(E, colour) != 0) rc = -1;
     if (rc != 0) {
         fprintf(stderr, "cfpo: rank %d: out of memory while moving points between cells\n", E->rank);
         comm_abort(1);

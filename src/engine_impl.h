@@ -3,9 +3,9 @@
  * include engine.h and the layers below it.
  *
  * The engine is split by concept:
- *   engine.c        creation, the start, relocation and migration between
- *                   cells and ranks, the colour schedule, the grid shift,
- *                   the run loop and output
+ *   engine.c        creation, solving a cell, the colour schedule and
+ *                   phase, the grid shift, the run loop and output
+ *   engine_move.c   points moving between cells, tiles and ranks
  *   engine_halo.c   the halo ring (who keeps which cell, the refresh after
  *                   every phase) and the --check verifications
  *   engine_init.c   the initial set of each variant
@@ -185,6 +185,12 @@ static inline int in_cell(const cfpo_engine *E, double x, double y, int64_t lx, 
     return cfpo_grid_coord(&E->G, x) - E->x0 == lx && cfpo_grid_coord(&E->G, y) - E->y0 == ly;
 }
 
+/* Own cells of one colour: tile column lx = bx, bx + p, ... */
+static inline int64_t first_of(int64_t origin, int p, int64_t want)
+{
+    return ((want - origin) % p + p) % p;
+}
+
 /* Shared between the engine's files. */
 int eng_ensure_cap(cfpo_engine *E, size_t need);
 void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly);
@@ -194,6 +200,10 @@ int eng_refresh_halo(cfpo_engine *E);
 void eng_check_fail(const cfpo_engine *E, const char *what);
 void eng_check_migration(cfpo_engine *E);
 void eng_check_halo(cfpo_engine *E);
+int eng_ensure_scratch(cfpo_engine *E);
+int eng_relocate(cfpo_engine *E, int colour);
+int eng_pack_migrants(cfpo_engine *E, int64_t bx, int64_t by, int64_t nxc, int64_t nyc, int p);
+int eng_exchange_migrants(cfpo_engine *E);
 int eng_make_initial(cfpo_engine *E, char *err, size_t errlen);
 int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen);
 int eng_write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err, size_t errlen);
