@@ -259,8 +259,7 @@ static int gather(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, dou
                 const int64_t e = locate(E, lx + dx, ly + dy);
                 const double *X, *Y;
                 uint32_t a, b;
-                if (e >= 0) { X = E->px; Y = E->py; a = E->start[e]; b = E->start[e + 1]; }
-                else { X = E->hx; Y = E->hy; a = E->hstart[-1 - e]; b = E->hstart[-e]; }
+                cell_slice(E, e, &X, &Y, &a, &b);
                 for (uint32_t k = a; k < b; k++, m++) {
                     ox_[m] = (X[k] + nearbyint(mx - X[k])) - ox;
                     oy_[m] = (Y[k] + nearbyint(my - Y[k])) - oy;
@@ -278,8 +277,7 @@ static int gather(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, dou
             const int64_t e = locate(E, lx + dx, ly + dy);
             const double *X, *Y;
             uint32_t a, b;
-            if (e >= 0) { X = E->px; Y = E->py; a = E->start[e]; b = E->start[e + 1]; }
-            else { X = E->hx; Y = E->hy; a = E->hstart[-1 - e]; b = E->hstart[-e]; }
+            cell_slice(E, e, &X, &Y, &a, &b);
             for (uint32_t k = a; k < b; k++, m++) {
                 ox_[m] = (X[k] + sx) - ox;
                 oy_[m] = (Y[k] + sy) - oy;

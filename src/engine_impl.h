@@ -148,6 +148,14 @@ static inline int64_t locate(const cfpo_engine *E, int64_t lx, int64_t ly)
 }
 
 /* Own cell index of a position, or -1 if another rank owns its cell. */
+/* The points of cell e as locate() returns it: own (e >= 0) or halo. */
+static inline void cell_slice(const cfpo_engine *E, int64_t e, const double **X, const double **Y, uint32_t *a,
+                              uint32_t *b)
+{
+    if (e >= 0) { *X = E->px; *Y = E->py; *a = E->start[e]; *b = E->start[e + 1]; }
+    else { *X = E->hx; *Y = E->hy; *a = E->hstart[-1 - e]; *b = E->hstart[-e]; }
+}
+
 static inline int64_t own_cell_of(const cfpo_engine *E, double x, double y)
 {
     int64_t lx = cfpo_grid_coord(&E->G, x) - E->x0, ly = cfpo_grid_coord(&E->G, y) - E->y0;

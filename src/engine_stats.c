@@ -29,8 +29,7 @@ static double nn2_block(const cfpo_engine *E, int64_t lx, int64_t ly, uint32_t k
             const int64_t e = locate(E, lx + dx, ly + dy);
             const double *X, *Y;
             uint32_t a, b;
-            if (e >= 0) { X = E->px; Y = E->py; a = E->start[e]; b = E->start[e + 1]; }
-            else { X = E->hx; Y = E->hy; a = E->hstart[-1 - e]; b = E->hstart[-e]; }
+            cell_slice(E, e, &X, &Y, &a, &b);
             for (uint32_t j = a; j < b; j++) {
                 if (e >= 0 && j == k) continue;
                 double d2 = cfpo_torus_dist2(x, y, X[j], Y[j]);

@@ -51,6 +51,10 @@ expect 2 "--seed" -n 100 --seed -1
 expect 2 "--seed" -n 100 --seed 1x
 expect 2 "--max-iter" -n 100 --max-iter -3
 expect 2 "--variant" -n 100 --variant fast
+expect 2 "--target-min" -n 100 --target-min 2
+expect 2 "--target-avg" -n 100 --target-avg abc
+expect 2 "--time-limit" -n 100 --time-limit -1
+expect 2 "--time-limit" -n 100 --time-limit 0
 expect 2 "unknown option '--bogus'" -n 100 --bogus
 expect 2 "unknown option '-z'" -n 100 -z
 expect 2 "needs a value" -n 100 -o
