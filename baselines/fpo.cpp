@@ -36,6 +36,7 @@ extern "C" {
 #include "grid.h"
 #include "rng.h"
 #include "stats.h"
+#include "stoprule.h"
 }
 
 using namespace bl;
@@ -353,7 +354,7 @@ void fpo_iterate(fpo_engine *E, cfpo_iter_stats *s)
     s->moved = moved;
     s->solved = E->n;
     s->max_disp = std::sqrt(maxd2) / E->G.L;
-    s->converged = moved == 0 || s->max_disp < E->o.tol;
+    s->converged = cfpo_net_converged(moved, s->max_disp, E->o.tol);
     fpo_deltas(E, &s->delta_min, &s->delta_avg);
     s->seconds = cli_now() - t0;
 }

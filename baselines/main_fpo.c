@@ -114,8 +114,8 @@ int main(int argc, char **argv)
             max_iter = v;
             break;
         case 'T':
-            if (cli_parse_double(optarg, 0, 0.49, &o.tol) != 0)
-                cli_usage_error(prog, "--tol: '%s' is not a number in [0, 0.49]", optarg);
+            if (cli_parse_double(optarg, 0, CFPO_TOL_MAX, &o.tol) != 0)
+                cli_usage_error(prog, "--tol: '%s' is not a number in [0, %g]", optarg, CFPO_TOL_MAX);
             break;
         case 1001: cli_stop_option(prog, "target-min", optarg, &rules); break;
         case 1002: cli_stop_option(prog, "target-avg", optarg, &rules); break;

@@ -61,8 +61,8 @@ static int validate_options(const cfpo_options *o, char *err, size_t errlen)
         snprintf(err, errlen, "unknown variant %d", o->variant);
         return -1;
     }
-    if (!(o->tol >= 0 && o->tol < 0.5)) {
-        snprintf(err, errlen, "tolerance %g is out of range [0, 0.5)", o->tol);
+    if (!(o->tol >= 0 && o->tol <= CFPO_TOL_MAX)) {
+        snprintf(err, errlen, "tolerance %g is out of range [0, %g]", o->tol, CFPO_TOL_MAX);
         return -1;
     }
     if (o->threads < 0 || o->threads > 4096) {

@@ -39,6 +39,9 @@ enum { CFPO_VARIANT_PAPER = 0, CFPO_VARIANT_SIMPLIFIED = 1, CFPO_VARIANT_ADAPTIV
  * FPO's delta_min at convergence (docs/method.md). */
 #define CFPO_DEFAULT_TOL 1e-4
 #define CFPO_ADAPTIVE_TOL 3e-5
+/* The largest tolerance any command, option set or checkpoint may carry
+ * (the one bound, checked everywhere a tolerance comes in). */
+#define CFPO_TOL_MAX 0.49
 #define CFPO_DEFAULT_MAX_ITER 10000
 
 /* The default tolerance of a variant. */

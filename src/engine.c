@@ -500,7 +500,7 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
     s->solved = v[1];
     s->max_disp = sqrt(mx[0]) / E->G.L;
     s->max_move = sqrt(mx[1]) / E->G.L;
-    s->converged = v[0] == 0 || s->max_disp < E->o.tol;
+    s->converged = cfpo_net_converged(v[0], s->max_disp, E->o.tol);
     cfpo_engine_deltas(E, &s->delta_min, &s->delta_avg);
     double el = now() - t0;
     comm_max_d(&el, 1);

@@ -37,7 +37,7 @@ int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err
     info->converged = (int)get64(h + 48);
     if (info->n < 1 || (info->variant != CFPO_VARIANT_PAPER && info->variant != CFPO_VARIANT_SIMPLIFIED &&
                         info->variant != CFPO_VARIANT_ADAPTIVE) ||
-        !(info->tol >= 0 && info->tol < 0.5) || info->iteration < 0 || info->iteration > 1000000000) {
+        !(info->tol >= 0 && info->tol <= CFPO_TOL_MAX) || info->iteration < 0 || info->iteration > 1000000000) {
         snprintf(err, errlen, "%s: corrupt checkpoint header", path);
         return -1;
     }

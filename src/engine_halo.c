@@ -15,7 +15,7 @@
 int eng_build_neighbours(cfpo_engine *E)
 {
     const int64_t g = E->G.g;
-    E->nring = 2 * (E->w + 2) + 2 * E->h;
+    E->nring = cfpo_tile_ring(E->w, E->h);
     int *owner = malloc((size_t)E->nring * sizeof *owner);
     if (!owner) return -1;
     for (int64_t i = 0; i < E->nring; i++) {
@@ -45,7 +45,7 @@ int eng_build_neighbours(cfpo_engine *E)
         const int qx = nb->rank % E->T.px, qy = nb->rank / E->T.px;
         const int64_t qx0 = cfpo_tile_start(g, E->T.px, qx), qw = cfpo_tile_len(g, E->T.px, qx);
         const int64_t qy0 = cfpo_tile_start(g, E->T.py, qy), qh = cfpo_tile_len(g, E->T.py, qy);
-        const int64_t qring = 2 * (qw + 2) + 2 * qh;
+        const int64_t qring = cfpo_tile_ring(qw, qh);
         nb->send_cells = malloc((size_t)qring * sizeof(int64_t));
         if (!nb->send_cells) { free(owner); return -1; }
         const int qwrapx = E->T.px == 1, qwrapy = E->T.py == 1;

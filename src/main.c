@@ -146,7 +146,7 @@ static int dry_run(int64_t n, const cfpo_options *o, int P, int fpx, int fpy)
     const int64_t wmax = cfpo_tile_len(g, T.px, 0), hmax = cfpo_tile_len(g, T.py, 0);
     const int64_t wmin = cfpo_tile_len(g, T.px, T.px - 1), hmin = cfpo_tile_len(g, T.py, T.py - 1);
     const int64_t cmax = wmax * hmax;
-    const int64_t ring = 2 * (wmax + 2) + 2 * hmax;
+    const int64_t ring = cfpo_tile_ring(wmax, hmax);
     const double pmax = (double)cmax * ppc;
     const int threads = o->threads > 0 ? o->threads : omp_get_num_procs();
     const double mem = (double)cfpo_engine_bytes_local((int64_t)(pmax * 1.02), cmax, ring, threads);
@@ -229,8 +229,8 @@ int main(int argc, char **argv)
             o.max_iter = (int)v;
             break;
         case 'T':
-            if (cli_parse_double(optarg, 0, 0.49, &o.tol) != 0)
-                cli_usage_error(prog, "--tol: '%s' is not a number in [0, 0.49]", optarg);
+            if (cli_parse_double(optarg, 0, CFPO_TOL_MAX, &o.tol) != 0)
+                cli_usage_error(prog, "--tol: '%s' is not a number in [0, %g]", optarg, CFPO_TOL_MAX);
             given_tol = 1;
             break;
         case 'K': o.skip = 0; break;
@@ -322,7 +322,7 @@ int main(int argc, char **argv)
     if (P > 1) {
         const int64_t wmax = cfpo_tile_len(G.g, T.px, 0), hmax = cfpo_tile_len(G.g, T.py, 0);
         const int64_t pmax = (int64_t)((double)(wmax * hmax) * (double)n / (double)(G.g * G.g) * 1.05) + 64;
-        int vr = cfpo_validate_ranks(n, &o, pmax, wmax * hmax, 2 * (wmax + 2) + 2 * hmax, comm_local_size(),
+        int vr = cfpo_validate_ranks(n, &o, pmax, wmax * hmax, cfpo_tile_ring(wmax, hmax), comm_local_size(),
                                      err, sizeof err);
         if (vr == -1) cli_usage_error(prog, "%s", err);
         if (vr != 0) cli_fail(prog, "%s", err);

@@ -29,6 +29,14 @@ void cfpo_stop_rules_init(cfpo_stop_rules *r);
  * otherwise (nothing done). */
 int cli_stop_option(const char *prog, const char *name, const char *arg, cfpo_stop_rules *r);
 
+/* The convergence rule of CFPO and the FPO baselines alike: an iteration
+ * that moved no point, or whose largest net displacement of a point (in
+ * cell sides) stayed under tol. */
+static inline int cfpo_net_converged(int64_t moved, double max_disp, double tol)
+{
+    return moved == 0 || max_disp < tol;
+}
+
 /* The rule that stops a run after an iteration with statistics s (s->iteration
  * iterations done, s->converged as the method defines it), `elapsed`
  * seconds since the run started, under an iteration cap max_iter; rules are

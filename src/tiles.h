@@ -44,6 +44,9 @@ static inline int64_t cfpo_tile_len(int64_t g, int parts, int t)
 {
     return g / parts + (t < g % parts ? 1 : 0);
 }
+/* Cells in the halo ring of a w x h tile: the rows above and below it
+ * (corners included) and the columns left and right of it. */
+static inline int64_t cfpo_tile_ring(int64_t w, int64_t h) { return 2 * (w + 2) + 2 * h; }
 /* Which tile column holds cell column x. */
 static inline int cfpo_tile_of(int64_t g, int parts, int64_t x)
 {
