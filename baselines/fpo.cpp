@@ -291,6 +291,28 @@ void fpo_options_init(fpo_options *o)
     o->tol = CFPO_DEFAULT_TOL;
 }
 
+uint64_t fpo_bytes(int64_t n)
+{
+    return (uint64_t)n * 720 + ((uint64_t)8 << 20);
+}
+
+int fpo_validate(int64_t n, const fpo_options *o, char *err, size_t errlen)
+{
+    if (n >= (int64_t)UINT32_MAX) {
+        snprintf(err, errlen, "n = %lld is too large (ids are 32-bit)", (long long)n);
+        return -1;
+    }
+    cfpo_grid G;
+    if (cfpo_grid_init(&G, n, CFPO_VARIANT_FULL, o->seed, err, errlen) != 0) return -1;
+    const double need = (double)fpo_bytes(n), have = cli_physical_memory();
+    if (need > 0.9 * have) {
+        snprintf(err, errlen, "n = %lld is too large for memory: the triangulation needs about %.1f GB, "
+                 "this machine has %.1f GB", (long long)n, need / 1e9, have / 1e9);
+        return -2;
+    }
+    return 0;
+}
+
 fpo_engine *fpo_create(int64_t n, const fpo_options *o, char *err, size_t errlen)
 {
     if (n >= (int64_t)UINT32_MAX) {

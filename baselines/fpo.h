@@ -18,7 +18,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "cfpo.h"
+#include "cfpo_types.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -35,6 +35,17 @@ typedef struct {
 } fpo_options;
 
 void fpo_options_init(fpo_options *o);
+
+/* Bytes the engine needs for n points: CGAL's periodic triangulation
+ * (vertices, about 2n faces with their offsets), the circumradius heap,
+ * the points and caches. About 680 bytes a point measured at n = 2^18
+ * (peak resident set of cfpo-fpo); the model rounds up to 720. */
+uint64_t fpo_bytes(int64_t n);
+
+/* Checks n without allocating: 0; -1 with a one-line message when n is
+ * too small for the grid the tolerance is measured on (the same minimum
+ * as cfpo); -2 when the triangulation would not fit in memory. */
+int fpo_validate(int64_t n, const fpo_options *o, char *err, size_t errlen);
 
 typedef struct fpo_engine fpo_engine;
 

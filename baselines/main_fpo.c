@@ -135,11 +135,8 @@ int main(int argc, char **argv)
     if (n < 0) cli_usage_error(prog, "the number of points is required: -n N");
     bl_check_output_name(prog, out);
     char err[512];
-    { /* n too small or too large: the same check and message as cfpo. */
-        cfpo_options co;
-        cfpo_options_init(&co);
-        co.tol = o.tol;
-        int vr = cfpo_validate(n, &co, err, sizeof err);
+    { /* n too small (the same minimum as cfpo) or too large for FPO's memory */
+        int vr = fpo_validate(n, &o, err, sizeof err);
         if (vr == -1) cli_usage_error(prog, "%s", err);
         if (vr != 0) cli_fail(prog, "%s", err);
     }

@@ -45,18 +45,12 @@ static int sweep(int64_t n, int threads, int k, uint64_t seed)
     char err[256];
     cfpo_engine *E = cfpo_engine_create(n, &o, err, sizeof err);
     if (!E) cli_fail(prog, "%s", err);
-    const int ncol = cfpo_engine_grid(E)->period * cfpo_engine_grid(E)->period;
     double *ts = malloc((size_t)k * sizeof *ts), *ss = malloc((size_t)k * sizeof *ss);
     double *solves = malloc((size_t)k * sizeof *solves);
     for (int it = -1; it < k; it++) {
         double t0 = cli_now();
-        int64_t solved = 0;
-        cfpo_engine_begin(E);
-        for (int c = 0; c < ncol; c++) {
-            int64_t s;
-            cfpo_engine_phase(E, c, &s);
-            solved += s;
-        }
+        int64_t moved, solved;
+        cfpo_engine_sweep(E, &moved, &solved);
         double t1 = cli_now();
         double dmin, davg;
         cfpo_engine_deltas(E, &dmin, &davg);

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include "cli.h"
 #include "engine.h"
 #include "grid.h"
 
@@ -48,12 +49,6 @@ const char *cfpo_variant_name(int variant)
     }
 }
 
-static double physical_memory(void)
-{
-    long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
-    return (pages > 0 && size > 0) ? (double)pages * (double)size : INFINITY;
-}
-
 static int validate_options(const cfpo_options *o, char *err, size_t errlen)
 {
     if (o->variant != CFPO_VARIANT_PAPER && o->variant != CFPO_VARIANT_SIMPLIFIED &&
@@ -89,7 +84,7 @@ int cfpo_validate_ranks(int64_t n, const cfpo_options *o, int64_t rank_points, i
     }
     double need = (double)cfpo_engine_bytes_local(rank_points, rank_cells, rank_ring, o->threads) *
                   (ranks_here > 0 ? ranks_here : 1);
-    double have = physical_memory();
+    double have = cli_physical_memory();
     if (need > 0.9 * have) {
         snprintf(err, errlen, "n = %lld is too large for memory: the ranks on this machine need %.1f GB, "
                  "it has %.1f GB", (long long)n, need / 1e9, have / 1e9);
@@ -109,7 +104,7 @@ int cfpo_validate(int64_t n, const cfpo_options *o, char *err, size_t errlen)
                  (long long)n, (long long)UINT32_MAX - 1);
         return -1;
     }
-    double need = (double)cfpo_engine_bytes(n, o->variant, o->threads), have = physical_memory();
+    double need = (double)cfpo_engine_bytes(n, o->variant, o->threads), have = cli_physical_memory();
     if (need > 0.9 * have) {
         snprintf(err, errlen, "n = %lld is too large for memory: needs %.1f GB, this machine has "
                  "%.1f GB", (long long)n, need / 1e9, have / 1e9);

@@ -198,6 +198,12 @@ double cli_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+double cli_physical_memory(void)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+    return (pages > 0 && size > 0) ? (double)pages * (double)size : INFINITY;
+}
+
 uint64_t cli_peak_rss(void)
 {
     struct rusage ru;
@@ -256,66 +262,22 @@ void cli_print_summary(FILE *f, const cli_summary *s)
 
 int cli_atomic_open(cli_atomic *a, const char *path, char *err, size_t errlen)
 {
-    memset(a, 0, sizeof *a);
-    struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "%s: is a directory", path);
-        return -1;
-    }
-    size_t len = strlen(path);
-    a->path = malloc(len + 1);
-    a->tmp = malloc(len + 16);
-    if (!a->path || !a->tmp) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        free(a->path); free(a->tmp);
-        return -1;
-    }
-    memcpy(a->path, path, len + 1);
-    snprintf(a->tmp, len + 16, "%s.tmp.XXXXXX", path);
-    int fd = mkstemp(a->tmp);
-    if (fd < 0) {
-        snprintf(err, errlen, "%s: cannot create file: %s", path, strerror(errno));
-        free(a->path); free(a->tmp);
-        a->path = a->tmp = NULL;
-        return -1;
-    }
-    fchmod(fd, 0644);
-    a->f = fdopen(fd, "w");
-    if (!a->f) {
-        snprintf(err, errlen, "%s: cannot open file: %s", path, strerror(errno));
-        close(fd);
-        unlink(a->tmp);
-        free(a->path); free(a->tmp);
-        a->path = a->tmp = NULL;
-        return -1;
-    }
+    if (atomic_open(a, path, "w", err, errlen) != 0) return -1;
     cli_guard_tmp(a->tmp);
     return 0;
 }
 
 int cli_atomic_commit(cli_atomic *a, char *err, size_t errlen)
 {
-    int bad = ferror(a->f);
-    if (fclose(a->f) != 0) bad = 1;
-    a->f = NULL;
-    if (bad || rename(a->tmp, a->path) != 0) {
-        snprintf(err, errlen, "%s: write failed: %s", a->path, strerror(errno));
-        cli_atomic_abort(a);
-        return -1;
-    }
-    cli_unguard_tmp(a->tmp);
-    free(a->path); free(a->tmp);
-    a->path = a->tmp = NULL;
-    return 0;
+    char *tmp = a->tmp ? strdup(a->tmp) : NULL;
+    const int rc = atomic_commit(a, err, errlen); /* renamed or removed */
+    if (tmp) cli_unguard_tmp(tmp);
+    free(tmp);
+    return rc;
 }
 
 void cli_atomic_abort(cli_atomic *a)
 {
-    if (a->f) fclose(a->f);
-    if (a->tmp) {
-        unlink(a->tmp);
-        cli_unguard_tmp(a->tmp);
-    }
-    free(a->path); free(a->tmp);
-    memset(a, 0, sizeof *a);
+    if (a->tmp) cli_unguard_tmp(a->tmp);
+    atomic_abort(a);
 }

@@ -1,5 +1,5 @@
-/* cli.h - conventions shared by every command of the suite (cfpo, the
- * baselines, the analysis tools).
+/* cli.h - layer 2 (includes atomic.h, layer 0): conventions shared
+ * by every command of the suite (cfpo, the baselines, the analysis tools).
  *
  * Owns: strict number parsing, the one-line error messages and exit codes
  * (0 success, 1 runtime failure, 2 usage error), the progress line on a
@@ -11,6 +11,8 @@
 
 #include <stdarg.h>
 #include <stdint.h>
+
+#include "atomic.h"
 #include <stdio.h>
 
 enum { CLI_OK = 0, CLI_FAIL = 1, CLI_USAGE = 2 };
@@ -50,6 +52,9 @@ void cli_unguard_tmp(const char *path);
 /* Peak resident memory of this process in bytes (0 if unknown). */
 uint64_t cli_peak_rss(void);
 
+/* This machine's physical memory in bytes (+inf if unknown). */
+double cli_physical_memory(void);
+
 /* Wall clock in seconds. */
 double cli_now(void);
 
@@ -84,11 +89,9 @@ typedef struct {
 } cli_summary;
 void cli_print_summary(FILE *f, const cli_summary *s);
 
-/* Text file written under a temporary name and renamed on commit. */
-typedef struct {
-    FILE *f;
-    char *path, *tmp;
-} cli_atomic;
+/* Text file written under a temporary name (registered with the signal
+ * clean-up) and renamed on commit: atomic.h's file. */
+typedef atomic_file cli_atomic;
 int cli_atomic_open(cli_atomic *a, const char *path, char *err, size_t errlen);
 int cli_atomic_commit(cli_atomic *a, char *err, size_t errlen);
 void cli_atomic_abort(cli_atomic *a);

@@ -2,6 +2,8 @@
 #define _GNU_SOURCE
 #include "comm.h"
 
+#include "atomic.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -314,47 +316,41 @@ static void free_file(comm_file *f)
 comm_file *comm_file_create(const char *path, char *err, size_t errlen)
 {
     comm_file *f = calloc(1, sizeof *f);
-    size_t len = strlen(path);
-    char *tmp = malloc(len + 16);
-    if (!f || !tmp || !(f->path = strdup(path))) {
-        free(tmp);
+    const size_t len = strlen(path) + 16; /* the temporary's name, as atomic_create makes it */
+    if (!f || !(f->path = strdup(path)) || !(f->tmp = calloc(1, len))) {
         free_file(f);
         snprintf(err, errlen, "%s: out of memory", path);
         return NULL;
     }
-    f->tmp = tmp;
     f->fd = -1;
-    struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "%s: is a directory", path);
-        free_file(f);
-        return NULL;
-    }
     /* Rank 0 makes the temporary file (a unique name in the same folder),
      * every rank then opens it. */
     int e = 0;
     if (rank == 0) {
-        snprintf(tmp, len + 16, "%s.tmp.XXXXXX", path);
-        int fd = mkstemp(tmp);
-        if (fd >= 0) fchmod(fd, 0644); /* mkstemp makes 0600; a result is for sharing */
-        if (fd < 0) e = errno;
-        else if (size > 1 && active) close(fd);
-        else f->fd = fd;
+        char *tmp = NULL;
+        const int fd = atomic_create(path, &tmp, err, errlen);
+        if (fd < 0) e = 1;
+        else {
+            snprintf(f->tmp, len, "%s", tmp);
+            free(tmp);
+            if (size > 1 && active) close(fd);
+            else f->fd = fd;
+        }
     }
     int64_t ev = e;
     comm_bcast(&ev, sizeof ev, 0);
-    if (ev) {
-        snprintf(err, errlen, "%s: cannot create: %s", path, strerror((int)ev));
+    if (ev) { /* rank 0 has the reason in err */
+        if (rank != 0) snprintf(err, errlen, "%s: cannot create file", path);
         free_file(f);
         return NULL;
     }
 #ifdef CFPO_HAVE_MPI
     if (active && size > 1) {
-        comm_bcast(tmp, len + 16, 0);
-        int rc = MPI_File_open(MPI_COMM_WORLD, tmp, MPI_MODE_WRONLY, MPI_INFO_NULL, &f->fh);
+        comm_bcast(f->tmp, len, 0);
+        int rc = MPI_File_open(MPI_COMM_WORLD, f->tmp, MPI_MODE_WRONLY, MPI_INFO_NULL, &f->fh);
         if (!comm_all(rc == MPI_SUCCESS)) {
             if (rc == MPI_SUCCESS) MPI_File_close(&f->fh);
-            if (rank == 0) unlink(tmp);
+            if (rank == 0) unlink(f->tmp);
             snprintf(err, errlen, "%s: cannot open for MPI-IO", path);
             free_file(f);
             return NULL;
@@ -506,8 +502,8 @@ int comm_file_commit(comm_file *f, int ok, char *err, size_t errlen)
     }
     int64_t e = 0;
     if (rank == 0) {
-        if (good && rename(f->tmp, f->path) != 0) e = errno ? errno : EIO;
-        if (!good || e) unlink(f->tmp);
+        if (!good) unlink(f->tmp);
+        else if (atomic_replace(f->tmp, f->path) != 0) e = errno;
     }
     comm_bcast(&e, sizeof e, 0);
     if (!good) {

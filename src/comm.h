@@ -1,4 +1,5 @@
-/* comm.h - layer 4's only door to MPI: the one file that calls it.
+/* comm.h - layer 2 (includes nothing of the project; its code uses atomic.h): the only door to
+ * MPI, the one file that calls it.
  *
  * Owns: starting and ending MPI (only when the program was started by a
  * launcher such as mpirun; a plain start is one rank and never touches

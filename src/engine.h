@@ -1,6 +1,6 @@
 /* engine.h - layer 3: the CFPO iteration over one tile of cells with
- * OpenMP, plus the layer-4 duties that need the tile's insides (packing
- * halo cells and migrating points; the messages go through comm).
+ * OpenMP, plus the duties that need the tile's insides (packing halo cells
+ * and migrating points; the messages go through comm).
  *
  * Owns: the buckets (points stored cell by cell, CSR offsets, id order
  * inside a cell), the halo ring (copies of the neighbouring ranks' cells
@@ -8,18 +8,36 @@
  * variant), the per-phase solve of every cell of one colour in parallel, the
  * skip flags, net displacements, the per-iteration statistics (reduced over
  * ranks), output in id order and checkpoints.
- * Does not own: choosing g or the initial points (grid), the cut into tiles
- * (tiles), the local solver (geom), MPI itself (comm), the command line.
+ * Does not own: choosing g or the initial points (grid, start), the cut
+ * into tiles (tiles), the local solver (geom), MPI itself (comm), the
+ * command line.
+ * May include: cfpo_types.h (layer 0), geom.h (1), grid.h, tiles.h,
+ * comm.h, pointfile.h (2). Never cfpo.h (the library's front, above).
  *
  * With one rank the tile is the whole torus and a cell's neighbours across
  * the seam are its own cells (column -1 is column g - 1, shifted by -1):
- * there is no halo and no message. */
+ * there is no halo and no message.
+ *
+ * Compute backends. The schedule (engine_schedule.c) runs each phase as
+ * solve -> mark -> migrate -> relocate -> halo; solve, mark, relocate and
+ * the per-iteration displacement reset and maximum go through a table of
+ * functions, struct cfpo_backend in src/backend.h, while migration and the
+ * halo (MPI) stay on the host. The OpenMP backend (backend_cpu.c) is the
+ * first. A second one (a GPU) plugs in by
+ *   1. filling a cfpo_backend with its own functions (backend_<name>.c),
+ *      keeping the per-cell order of the OpenMP backend (points of a cell
+ *      in id order, the same solver source) so the bytes stay the same;
+ *   2. keeping the host arrays current where the host reads them, through
+ *      its sync_host / sync_device functions (see backend.h);
+ *   3. being chosen in cfpo_engine_create_ex (engine.c sets E->be).
+ * Everything above the engine (cfpo_engine_run, checkpoints, the output)
+ * is the same for every backend. */
 #ifndef CFPO_ENGINE_H
 #define CFPO_ENGINE_H
 
 #include <stdint.h>
 
-#include "cfpo.h"
+#include "cfpo_types.h"
 #include "comm.h"
 #include "grid.h"
 #include "pointfile.h"
@@ -55,13 +73,6 @@ uint64_t cfpo_engine_bytes_local(int64_t nlocal, int64_t cells, int64_t ring, in
 /* The same for the whole torus on one rank. */
 uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads);
 
-/* cfpo_validate for one rank of several: options, n, and whether the
- * largest tile (rank_points points in rank_cells cells plus rank_ring halo
- * cells) fits, times the ranks sharing this machine. 0, -1 (invalid) or
- * -2 (memory). */
-int cfpo_validate_ranks(int64_t n, const cfpo_options *o, int64_t rank_points, int64_t rank_cells,
-                        int64_t rank_ring, int ranks_here, char *err, size_t errlen);
-
 /* Prepares the coming iteration from the set as it stands (the adaptive
  * variant's margin, from delta(X) as last measured by cfpo_engine_deltas):
  * call before the phases of an iteration (cfpo_engine_iterate does). */
@@ -72,8 +83,13 @@ void cfpo_engine_begin(cfpo_engine *E);
  * number of local problems solved. */
 int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved);
 
-/* One whole iteration (all colours in order), with its statistics reduced
- * over all ranks. */
+/* One sweep: cfpo_engine_begin, the net displacements cleared, then every
+ * colour's phase in order; *moved and *solved are this rank's totals. The
+ * one colour loop: cfpo_engine_iterate and cfpo-bench both sweep so. */
+void cfpo_engine_sweep(cfpo_engine *E, int64_t *moved, int64_t *solved);
+
+/* One whole iteration (a sweep), with its statistics reduced over all
+ * ranks. */
 void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s);
 
 /* delta_min and delta_avg of the current set over all ranks, normalised by

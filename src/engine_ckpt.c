@@ -1,6 +1,6 @@
 /* engine_ckpt.c - checkpoints: the header, reading with validation,
- * writing (see engine_impl.h). */
-#include "engine_impl.h"
+ * writing (see cells.h). */
+#include "cells.h"
 
 #include <stdio.h>
 #include <stdlib.h>

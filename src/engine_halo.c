@@ -1,12 +1,10 @@
-/* engine_halo.c - the halo ring and the --check verifications (see
- * engine_impl.h). */
-#include "engine_impl.h"
+/* engine_halo.c - the halo ring (see cells.h): which of this tile's cells
+ * each neighbouring rank keeps, and the refresh after every phase. */
+#include "cells.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* ---- the halo ---- */
 
 /* Builds, for this tile and its neighbours, which cells go where. The
  * cells of my ring that other ranks own, grouped by owner in my ring
@@ -76,45 +74,45 @@ int eng_build_neighbours(cfpo_engine *E)
     return 0;
 }
 
-/* Sends my border cells to the neighbours that keep them and receives my
- * halo; marks the blocks around every halo cell whose content changed. */
-int eng_refresh_halo(cfpo_engine *E)
+/* Packs the own cells neighbour k keeps in its halo: counts, then
+ * coordinates. 0 or -1 (out of memory). */
+static int pack_halo(cfpo_engine *E, int k)
 {
-    if (E->nnb == 0) return 0;
-    double t0 = now();
-    for (int k = 0; k < E->nnb; k++) {
-        neighbour *nb = &E->nb[k];
-        size_t pts = 0;
-        for (int64_t i = 0; i < nb->nsend; i++) {
-            int64_t c = nb->send_cells[i];
-            pts += E->start[c + 1] - E->start[c];
-        }
-        const size_t head = ((size_t)nb->nsend * 4 + 7) & ~(size_t)7;
-        const size_t bytes = head + pts * 16;
-        if (bytes > nb->hcap) {
-            unsigned char *b = realloc(nb->hbuf, bytes + bytes / 2 + 64);
-            if (!b) return -1;
-            nb->hbuf = b;
-            nb->hcap = bytes + bytes / 2 + 64;
-        }
-        uint32_t *cnt = (uint32_t *)nb->hbuf;
-        double *xy = (double *)(nb->hbuf + head);
-        size_t m = 0;
-        for (int64_t i = 0; i < nb->nsend; i++) {
-            int64_t c = nb->send_cells[i];
-            cnt[i] = E->start[c + 1] - E->start[c];
-            for (uint32_t j = E->start[c]; j < E->start[c + 1]; j++) {
-                xy[2 * m] = E->px[j];
-                xy[2 * m + 1] = E->py[j];
-                m++;
-            }
-        }
-        E->msg[k].send = nb->hbuf;
-        E->msg[k].sendbytes = bytes;
-        E->b_halo += (double)bytes;
+    neighbour *nb = &E->nb[k];
+    size_t pts = 0;
+    for (int64_t i = 0; i < nb->nsend; i++) {
+        const int64_t c = nb->send_cells[i];
+        pts += E->start[c + 1] - E->start[c];
     }
-    if (comm_exchange(E->msg, E->nnb) != 0) return -1;
-    /* New ring contents: counts, offsets, then coordinates. */
+    const size_t head = ((size_t)nb->nsend * 4 + 7) & ~(size_t)7;
+    const size_t bytes = head + pts * 16;
+    if (bytes > nb->hcap) {
+        unsigned char *b = realloc(nb->hbuf, bytes + bytes / 2 + 64);
+        if (!b) return -1;
+        nb->hbuf = b;
+        nb->hcap = bytes + bytes / 2 + 64;
+    }
+    uint32_t *cnt = (uint32_t *)nb->hbuf;
+    double *xy = (double *)(nb->hbuf + head);
+    size_t m = 0;
+    for (int64_t i = 0; i < nb->nsend; i++) {
+        const int64_t c = nb->send_cells[i];
+        cnt[i] = E->start[c + 1] - E->start[c];
+        for (uint32_t j = E->start[c]; j < E->start[c + 1]; j++, m++) {
+            xy[2 * m] = E->px[j];
+            xy[2 * m + 1] = E->py[j];
+        }
+    }
+    E->msg[k].send = nb->hbuf;
+    E->msg[k].sendbytes = bytes;
+    E->b_halo += (double)bytes;
+    return 0;
+}
+
+/* The received ring into the spare halo buffers: counts, offsets, then
+ * coordinates. 0 or -1 (out of memory). */
+static int unpack_halo(cfpo_engine *E)
+{
     memset(E->hcnt, 0, ((size_t)E->nring + 1) * sizeof(uint32_t));
     for (int k = 0; k < E->nnb; k++) {
         const neighbour *nb = &E->nb[k];
@@ -123,9 +121,9 @@ int eng_refresh_halo(cfpo_engine *E)
     }
     E->hstart2[0] = 0;
     for (int64_t i = 0; i < E->nring; i++) E->hstart2[i + 1] = E->hstart2[i] + E->hcnt[i];
-    size_t tot = E->hstart2[E->nring];
+    const size_t tot = E->hstart2[E->nring];
     if (tot > E->hcap2) {
-        size_t c = tot + tot / 2 + 64;
+        const size_t c = tot + tot / 2 + 64;
         double *a = realloc(E->hx2, c * sizeof(double)), *b;
         if (!a) return -1;
         E->hx2 = a;
@@ -139,18 +137,31 @@ int eng_refresh_halo(cfpo_engine *E)
         const double *xy = (const double *)(b + (((size_t)nb->nrecv * 4 + 7) & ~(size_t)7));
         size_t m = 0;
         for (int64_t i = 0; i < nb->nrecv; i++) {
-            int64_t r = nb->recv_ring[i];
+            const int64_t r = nb->recv_ring[i];
             for (uint32_t j = E->hstart2[r]; j < E->hstart2[r + 1]; j++, m++) {
                 E->hx2[j] = xy[2 * m];
                 E->hy2[j] = xy[2 * m + 1];
             }
         }
     }
+    return 0;
+}
+
+/* Sends my border cells to the neighbours that keep them and receives my
+ * halo; marks the blocks around every halo cell whose content changed. */
+int eng_refresh_halo(cfpo_engine *E)
+{
+    if (E->nnb == 0) return 0;
+    const double t0 = now();
+    for (int k = 0; k < E->nnb; k++)
+        if (pack_halo(E, k) != 0) return -1;
+    if (comm_exchange(E->msg, E->nnb) != 0) return -1;
+    if (unpack_halo(E) != 0) return -1;
     /* Blocks around changed halo cells must be solved again. */
     for (int64_t i = 0; i < E->nring; i++) {
-        uint32_t a = E->hstart[i], b = E->hstart[i + 1], a2 = E->hstart2[i], b2 = E->hstart2[i + 1];
-        int same = (b - a) == (b2 - a2) && (b == a || (memcmp(E->hx + a, E->hx2 + a2, (b - a) * 8) == 0 &&
-                                                       memcmp(E->hy + a, E->hy2 + a2, (b - a) * 8) == 0));
+        const uint32_t a = E->hstart[i], b = E->hstart[i + 1], a2 = E->hstart2[i], b2 = E->hstart2[i + 1];
+        const int same = (b - a) == (b2 - a2) && (b == a || (memcmp(E->hx + a, E->hx2 + a2, (b - a) * 8) == 0 &&
+                                                             memcmp(E->hy + a, E->hy2 + a2, (b - a) * 8) == 0));
         if (!same) {
             int64_t lx, ly;
             ring_coords(E, i, &lx, &ly);
@@ -160,90 +171,7 @@ int eng_refresh_halo(cfpo_engine *E)
     uint32_t *s = E->hstart; E->hstart = E->hstart2; E->hstart2 = s;
     double *t = E->hx; E->hx = E->hx2; E->hx2 = t;
     t = E->hy; E->hy = E->hy2; E->hy2 = t;
-    size_t c = E->hcap; E->hcap = E->hcap2; E->hcap2 = c;
+    const size_t c = E->hcap; E->hcap = E->hcap2; E->hcap2 = c;
     E->t_halo += now() - t0;
     return 0;
-}
-
-/* ---- checks (config.check) ---- */
-
-void eng_check_fail(const cfpo_engine *E, const char *what)
-{
-    fprintf(stderr, "cfpo: rank %d: check failed: %s\n", E->rank, what);
-    comm_abort(3);
-}
-
-void eng_check_migration(cfpo_engine *E)
-{
-    int64_t v[2] = {E->nloc, 0};
-    uint64_t sum = 0;
-    for (int64_t c = 0; c < E->cells; c++)
-        for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
-            sum += cfpo_mix64(E->pid[k]);
-            if (!in_cell(E, E->px[k], E->py[k], c % E->w, c / E->w)) eng_check_fail(E, "a point lies outside its cell");
-            if (k > E->start[c] && E->pid[k - 1] >= E->pid[k]) eng_check_fail(E, "ids out of order in a cell");
-        }
-    comm_sum_i64(v, 1);
-    int64_t s = (int64_t)sum;
-    comm_sum_i64(&s, 1);
-    if (v[0] != E->n) eng_check_fail(E, "the global point count changed");
-    if ((uint64_t)s != E->id_sum) eng_check_fail(E, "the checksum of point ids changed");
-    E->chk_mig++;
-}
-
-typedef struct {
-    double x, y;
-    uint64_t id;
-} pt_rec;
-
-static int cmp_cell_id(const void *a, const void *b, const cfpo_grid *G)
-{
-    const pt_rec *p = a, *q = b;
-    int64_t cp = cfpo_grid_coord(G, p->y) * G->g + cfpo_grid_coord(G, p->x);
-    int64_t cq = cfpo_grid_coord(G, q->y) * G->g + cfpo_grid_coord(G, q->x);
-    if (cp != cq) return cp < cq ? -1 : 1;
-    return p->id < q->id ? -1 : p->id > q->id;
-}
-static const cfpo_grid *sort_grid;
-static int cmp_cell_id_q(const void *a, const void *b) { return cmp_cell_id(a, b, sort_grid); }
-
-/* Every halo cell equals its owner's cell: gathers the whole (small) set. */
-void eng_check_halo(cfpo_engine *E)
-{
-    if (E->n > 200000) return;
-    pt_rec *mine = malloc(((size_t)E->nloc + 1) * sizeof *mine);
-    if (!mine) eng_check_fail(E, "out of memory");
-    for (int64_t k = 0; k < E->nloc; k++) mine[k] = (pt_rec){E->px[k], E->py[k], E->pid[k]};
-    void *all;
-    size_t total;
-    if (comm_allgatherv(mine, (size_t)E->nloc * sizeof *mine, &all, &total) != 0) eng_check_fail(E, "out of memory");
-    free(mine);
-    pt_rec *A = all;
-    size_t na = total / sizeof *A;
-    if ((int64_t)na != E->n) eng_check_fail(E, "gathered set has the wrong size");
-    sort_grid = &E->G;
-    qsort(A, na, sizeof *A, cmp_cell_id_q);
-    const int64_t g = E->G.g;
-    int64_t *first = malloc(((size_t)(g * g) + 1) * sizeof *first);
-    if (!first) eng_check_fail(E, "out of memory");
-    size_t j = 0;
-    for (int64_t c = 0; c <= g * g; c++) {
-        while (j < na && cfpo_grid_coord(&E->G, A[j].y) * g + cfpo_grid_coord(&E->G, A[j].x) < c) j++;
-        first[c] = (int64_t)j;
-    }
-    for (int64_t i = 0; i < E->nring; i++) {
-        int64_t lx, ly;
-        ring_coords(E, i, &lx, &ly);
-        if (locate(E, lx, ly) != -1 - i) continue;
-        int64_t gx = (E->x0 + lx + g) % g, gy = (E->y0 + ly + g) % g, c = gy * g + gx;
-        uint32_t a = E->hstart[i], b = E->hstart[i + 1];
-        if ((int64_t)(b - a) != first[c + 1] - first[c]) eng_check_fail(E, "a halo cell has the wrong point count");
-        for (uint32_t k = a; k < b; k++) {
-            const pt_rec *p = &A[first[c] + (k - a)];
-            if (p->x != E->hx[k] || p->y != E->hy[k]) eng_check_fail(E, "a halo cell differs from its owner's cell");
-        }
-    }
-    free(first);
-    free(A);
-    E->chk_halo++;
 }

@@ -1,6 +1,6 @@
 /* engine_init.c - the initial set of each variant, made cell by cell
- * on the rank that owns the cell (see engine_impl.h). */
-#include "engine_impl.h"
+ * on the rank that owns the cell (see cells.h). */
+#include "cells.h"
 
 #include <stdio.h>
 #include <stdlib.h>

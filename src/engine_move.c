@@ -1,7 +1,7 @@
 /* engine_move.c - points moving between cells, tiles and ranks after a
  * phase: relocation into the new cells, packing and exchanging migrants,
- * marking the blocks that must be solved again (see engine_impl.h). */
-#include "engine_impl.h"
+ * marking the blocks that must be solved again (see cells.h). */
+#include "cells.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -62,91 +62,98 @@ static int senders(const cfpo_engine *E, int64_t lx, int64_t ly, int a, int b, i
     return 2;
 }
 
-int eng_relocate(cfpo_engine *E, int colour)
+/* How many points own cell c holds after the moves of colour (a_, b_)
+ * and the arrivals. */
+static uint32_t count_cell(const cfpo_engine *E, int64_t c, int a_, int b_)
 {
-    const int a_ = colour / E->G.period, b_ = colour % E->G.period;
-    const int64_t w = E->w, cells = E->cells;
+    const int64_t lx = c % E->w, ly = c / E->w;
     const uint32_t *st = E->start;
-    uint32_t *ns = E->start2;
-    const uint16_t *mask = E->mask;
-    if (eng_ensure_cap(E, (size_t)E->nloc + E->narr) != 0) return -1;
-#pragma omp parallel for schedule(static) num_threads(E->nthreads)
-    for (int64_t c = 0; c < cells; c++) {
-        const int64_t lx = c % w, ly = c / w;
-        uint32_t cnt = 0;
-        int off[9][2];
-        const int no = senders(E, lx, ly, a_, b_, off);
-        for (int o = 0; o < no; o++) {
-                const int dx = off[o][0], dy = off[o][1];
-                const int64_t e = locate(E, lx + dx, ly + dy);
-                if (e < 0) continue;
-                const unsigned mk = mask[e] & 0x1ffu;
-                if (dx == 0 && dy == 0) {
-                    if (!(mk & ~CENTRE_BIT)) { cnt += st[c + 1] - st[c]; continue; }
-                } else if (!sends_to(mk, -dx, -dy)) continue;
-                for (uint32_t k = st[e]; k < st[e + 1]; k++) cnt += in_cell(E, E->px[k], E->py[k], lx, ly);
-            }
-        if (mask[c] & ARRIVE_BIT)
-            for (size_t a = first_arrival(E, c); a < E->narr && E->arr[a].cell == c; a++) cnt++;
-        ns[c + 1] = cnt;
+    uint32_t cnt = 0;
+    int off[9][2];
+    const int no = senders(E, lx, ly, a_, b_, off);
+    for (int o = 0; o < no; o++) {
+        const int dx = off[o][0], dy = off[o][1];
+        const int64_t e = locate(E, lx + dx, ly + dy);
+        if (e < 0) continue;
+        const unsigned mk = E->mask[e] & 0x1ffu;
+        if (dx == 0 && dy == 0) {
+            if (!(mk & ~CENTRE_BIT)) { cnt += st[c + 1] - st[c]; continue; }
+        } else if (!sends_to(mk, -dx, -dy)) continue;
+        for (uint32_t k = st[e]; k < st[e + 1]; k++) cnt += in_cell(E, E->px[k], E->py[k], lx, ly);
     }
-    ns[0] = 0;
-    for (int64_t c = 0; c < cells; c++) ns[c + 1] += ns[c];
-    int maxcell = 0;
-#pragma omp parallel for schedule(static) reduction(max : maxcell) num_threads(E->nthreads)
-    for (int64_t c = 0; c < cells; c++) {
-        const int64_t lx = c % w, ly = c / w;
-        uint32_t wpos = ns[c];
-        int arrivals = 0;
-        int off[9][2];
-        const int no = senders(E, lx, ly, a_, b_, off);
-        for (int o = 0; o < no; o++) {
-                const int dx = off[o][0], dy = off[o][1];
-                const int64_t e = locate(E, lx + dx, ly + dy);
-                if (e < 0) continue;
-                const unsigned mk = mask[e] & 0x1ffu;
-                int check;
-                if (dx == 0 && dy == 0) check = (mk & ~CENTRE_BIT) != 0;
-                else if (sends_to(mk, -dx, -dy)) check = 1, arrivals = 1;
-                else continue;
-                for (uint32_t k = st[e]; k < st[e + 1]; k++) {
-                    if (check && !in_cell(E, E->px[k], E->py[k], lx, ly)) continue;
-                    E->tx[wpos] = E->px[k];
-                    E->ty[wpos] = E->py[k];
-                    E->tid[wpos] = k;
-                    wpos++;
-                }
-            }
-        if (mask[c] & ARRIVE_BIT) {
-            arrivals = 1;
-            for (size_t a = first_arrival(E, c); a < E->narr && E->arr[a].cell == c; a++) {
-                const mig_rec *r = &E->arr[a].r;
-                E->tx[wpos] = r->x;
-                E->ty[wpos] = r->y;
-                E->tid[wpos] = ARRIVAL_CODE | a;
-                wpos++;
-            }
+    if (E->mask[c] & ARRIVE_BIT)
+        for (size_t a = first_arrival(E, c); a < E->narr && E->arr[a].cell == c; a++) cnt++;
+    return cnt;
+}
+
+/* Slots [lo, hi) of the spare buffers by id (insertion sort: cells hold a
+ * handful of points). */
+static void sort_slots(cfpo_engine *E, uint32_t lo, uint32_t hi)
+{
+    for (uint32_t k = lo + 1; k < hi; k++) {
+        const uint64_t code = E->tid[k], id = id_of(E, code);
+        const double x = E->tx[k], y = E->ty[k];
+        uint32_t j = k;
+        while (j > lo && id_of(E, E->tid[j - 1]) > id) {
+            E->tid[j] = E->tid[j - 1];
+            E->tx[j] = E->tx[j - 1];
+            E->ty[j] = E->ty[j - 1];
+            j--;
         }
-        if (arrivals) /* insertion sort by id; cells hold a handful of points */
-            for (uint32_t k = ns[c] + 1; k < wpos; k++) {
-                const uint64_t code = E->tid[k], id = id_of(E, code);
-                const double x = E->tx[k], y = E->ty[k];
-                uint32_t j = k;
-                while (j > ns[c] && id_of(E, E->tid[j - 1]) > id) {
-                    E->tid[j] = E->tid[j - 1];
-                    E->tx[j] = E->tx[j - 1];
-                    E->ty[j] = E->ty[j - 1];
-                    j--;
-                }
-                E->tid[j] = code;
-                E->tx[j] = x;
-                E->ty[j] = y;
-            }
-        if ((int)(wpos - ns[c]) > maxcell) maxcell = (int)(wpos - ns[c]);
+        E->tid[j] = code;
+        E->tx[j] = x;
+        E->ty[j] = y;
     }
-    /* Ids and displacements follow the sources recorded in tid; the new
-     * displacements go into the old positions' buffer, free by now. */
-    const uint32_t total = ns[cells];
+}
+
+/* Writes own cell c's new points into the spare buffers from slot
+ * start2[c] on, in id order, each with its source in tid (an old slot, or
+ * ARRIVAL_CODE | arrival). Returns the count. */
+static int fill_cell(cfpo_engine *E, int64_t c, int a_, int b_)
+{
+    const int64_t lx = c % E->w, ly = c / E->w;
+    const uint32_t *st = E->start, lo = E->start2[c];
+    uint32_t wpos = lo;
+    int arrivals = 0;
+    int off[9][2];
+    const int no = senders(E, lx, ly, a_, b_, off);
+    for (int o = 0; o < no; o++) {
+        const int dx = off[o][0], dy = off[o][1];
+        const int64_t e = locate(E, lx + dx, ly + dy);
+        if (e < 0) continue;
+        const unsigned mk = E->mask[e] & 0x1ffu;
+        int check;
+        if (dx == 0 && dy == 0) check = (mk & ~CENTRE_BIT) != 0;
+        else if (sends_to(mk, -dx, -dy)) check = 1, arrivals = 1;
+        else continue;
+        for (uint32_t k = st[e]; k < st[e + 1]; k++) {
+            if (check && !in_cell(E, E->px[k], E->py[k], lx, ly)) continue;
+            E->tx[wpos] = E->px[k];
+            E->ty[wpos] = E->py[k];
+            E->tid[wpos] = k;
+            wpos++;
+        }
+    }
+    if (E->mask[c] & ARRIVE_BIT) {
+        arrivals = 1;
+        for (size_t a = first_arrival(E, c); a < E->narr && E->arr[a].cell == c; a++) {
+            const mig_rec *r = &E->arr[a].r;
+            E->tx[wpos] = r->x;
+            E->ty[wpos] = r->y;
+            E->tid[wpos] = ARRIVAL_CODE | a;
+            wpos++;
+        }
+    }
+    if (arrivals) sort_slots(E, lo, wpos);
+    return (int)(wpos - lo);
+}
+
+/* Ids and displacements follow the sources recorded in tid; the new
+ * displacements go into the old positions' buffer, free by now. Then the
+ * spare buffers become the live ones. */
+static void follow_sources(cfpo_engine *E)
+{
+    const uint32_t total = E->start2[E->cells];
     float *ndq = (float *)E->px;
 #pragma omp parallel for schedule(static) num_threads(E->nthreads)
     for (uint32_t j = 0; j < total; j++) {
@@ -171,40 +178,35 @@ int eng_relocate(cfpo_engine *E, int colour)
     E->ty = oldy;
     uint64_t *u = E->pid; E->pid = E->tid; E->tid = u;
     uint32_t *s = E->start; E->start = E->start2; E->start2 = s;
-    E->nloc = E->start[cells];
+    E->nloc = E->start[E->cells];
+}
+
+int eng_relocate(cfpo_engine *E, int colour)
+{
+    const int a_ = colour / E->G.period, b_ = colour % E->G.period;
+    const int64_t cells = E->cells;
+    uint32_t *ns = E->start2;
+    if (eng_ensure_cap(E, (size_t)E->nloc + E->narr) != 0) return -1;
+#pragma omp parallel for schedule(static) num_threads(E->nthreads)
+    for (int64_t c = 0; c < cells; c++) ns[c + 1] = count_cell(E, c, a_, b_);
+    ns[0] = 0;
+    for (int64_t c = 0; c < cells; c++) ns[c + 1] += ns[c];
+    int maxcell = 0;
+#pragma omp parallel for schedule(static) reduction(max : maxcell) num_threads(E->nthreads)
+    for (int64_t c = 0; c < cells; c++) {
+        const int m = fill_cell(E, c, a_, b_);
+        if (m > maxcell) maxcell = m;
+    }
+    follow_sources(E);
     E->maxcell = maxcell;
     return eng_ensure_scratch(E);
 }
 
-static inline void mark_cell(cfpo_engine *E, int64_t x, int64_t y)
-{
-    E->mask[y * E->w + x] |= NEED_BIT;
-    E->bdirty[(y / SB) * E->nbx + x / SB] = 1;
-}
-
-/* Marks the own cells of the 3x3 block around (lx, ly) (an own cell or a
- * halo cell) to be solved again, and their statistics blocks stale. */
-void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly)
-{
-    if (lx >= 1 && lx < E->w - 1 && ly >= 1 && ly < E->h - 1) { /* inside: no wrap, no halo */
-        for (int64_t y = ly - 1; y <= ly + 1; y++)
-            for (int64_t x = lx - 1; x <= lx + 1; x++) mark_cell(E, x, y);
-        return;
-    }
-    for (int dy = -1; dy <= 1; dy++)
-        for (int dx = -1; dx <= 1; dx++) {
-            int64_t x = lx + dx, y = ly + dy;
-            if (E->wrapx) x = (x % E->w + E->w) % E->w;
-            else if (x < 0 || x >= E->w) continue;
-            if (E->wrapy) y = (y % E->h + E->h) % E->h;
-            else if (y < 0 || y >= E->h) continue;
-            mark_cell(E, x, y);
-        }
-}
-
 /* Points that crossed into another rank's cell: packed per neighbour. */
-int eng_pack_migrants(cfpo_engine *E, int64_t bx, int64_t by, int64_t nxc, int64_t nyc, int p)
+int eng_pack_migrants(cfpo_engine *E, const eng_colour *C)
 {
+    const int64_t bx = C->bx, by = C->by, nxc = C->nxc, nyc = C->nyc;
+    const int p = C->p;
     for (int k = 0; k < E->nnb; k++) E->nb[k].nout = 0;
     if (E->nnb == 0) return 0;
     const int64_t g = E->G.g;

@@ -1,6 +1,6 @@
 /* engine_stats.c - delta_min and delta_avg of the set, exact (see
- * engine_impl.h). */
-#include "engine_impl.h"
+ * cells.h). */
+#include "cells.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -75,117 +75,136 @@ static double box_min(const cfpo_engine *E, const nn_query *q, int64_t B)
     return best;
 }
 
-void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg)
+static void stats_oom(const cfpo_engine *E)
 {
-    const double inv = 1.0 / E->G.delta;
-    uint64_t sum = 0;
-    double mn = INFINITY;
-    nn_query *un = NULL;
-    size_t nun = 0, uncap = 0;
-    int oom = 0;
-    /* Blocks whose cells' neighbourhoods did not change keep their sums. */
-    const int64_t nb = E->nbx * E->nby;
-#pragma omp parallel for schedule(dynamic, 4) num_threads(E->nthreads)
-    for (int64_t bi = 0; bi < nb; bi++) {
-        if (!E->bdirty[bi]) continue;
-        const int64_t bx0 = (bi % E->nbx) * SB, by0 = (bi / E->nbx) * SB;
-        const int64_t bx1 = bx0 + SB < E->w ? bx0 + SB : E->w, by1 = by0 + SB < E->h ? by0 + SB : E->h;
-        uint64_t bs = 0;
-        double bm = INFINITY;
-        int unsure = 0;
-        for (int64_t ly = by0; ly < by1; ly++)
-            for (int64_t lx = bx0; lx < bx1; lx++) {
+    fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
+    comm_abort(1);
+}
+
+/* Points whose nearest neighbour may lie outside their block. */
+typedef struct {
+    nn_query *q;
+    size_t n, cap;
+    int oom;
+} unsure_list;
+
+static void add_unsure(unsure_list *u, nn_query q)
+{
+#pragma omp critical(cfpo_unresolved)
+    {
+        if (u->n == u->cap) {
+            size_t cap = u->cap * 2 + 64;
+            nn_query *p = realloc(u->q, cap * sizeof *p);
+            if (p) { u->q = p; u->cap = cap; }
+            else u->oom = 1;
+        }
+        if (u->n < u->cap) u->q[u->n++] = q;
+    }
+}
+
+/* Recomputes one marked block: its sum and minimum of the distances that
+ * are sure inside it; the others go to u. Returns whether any was not. */
+static int block_pass(cfpo_engine *E, int64_t bi, double inv, unsure_list *u)
+{
+    const int64_t bx0 = (bi % E->nbx) * SB, by0 = (bi / E->nbx) * SB;
+    const int64_t bx1 = bx0 + SB < E->w ? bx0 + SB : E->w, by1 = by0 + SB < E->h ? by0 + SB : E->h;
+    uint64_t bs = 0;
+    double bm = INFINITY;
+    int unsure = 0;
+    for (int64_t ly = by0; ly < by1; ly++)
+        for (int64_t lx = bx0; lx < bx1; lx++) {
             const int64_t c = ly * E->w + lx;
             for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
                 int sure;
-                double d2 = nn2_block(E, lx, ly, k, &sure);
-                if (sure) {
-                    double d = sqrt(d2) * inv;
-                    bs += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
-                    if (d < bm) bm = d;
-                } else {
+                const double d2 = nn2_block(E, lx, ly, k, &sure);
+                if (!sure) {
                     unsure = 1;
-#pragma omp critical(cfpo_unresolved)
-                    {
-                        if (nun == uncap) {
-                            size_t cap = uncap * 2 + 64;
-                            nn_query *q = realloc(un, cap * sizeof *q);
-                            if (q) { un = q; uncap = cap; }
-                            else oom = 1;
-                        }
-                        if (nun < uncap) un[nun++] = (nn_query){E->px[k], E->py[k], d2, E->pid[k], E->rank};
-                    }
+                    add_unsure(u, (nn_query){E->px[k], E->py[k], d2, E->pid[k], E->rank});
+                    continue;
                 }
+                const double d = sqrt(d2) * inv;
+                bs += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
+                if (d < bm) bm = d;
             }
         }
-        E->bsum[bi] = bs;
-        E->bmin[bi] = bm;
-        E->bdirty[bi] = (uint8_t)unsure; /* blocks with unresolved points: every time */
+    E->bsum[bi] = bs;
+    E->bmin[bi] = bm;
+    return unsure;
+}
+
+/* Is query i's answer res certain with the search radius B cells? */
+static int settled(const cfpo_engine *E, const nn_query *q, double res, int64_t B)
+{
+    const double L = E->G.L;
+    const int64_t cx = cfpo_grid_coord(&E->G, q->x), cy = cfpo_grid_coord(&E->G, q->y);
+    const double ex = cell_offset(E, q->x, cx), ey = cell_offset(E, q->y, cy);
+    const double edge = fmax(0, fmin(fmin(ex, L - ex), fmin(ey, L - ey)));
+    const double reach = (double)B * L + edge;
+    return res <= reach * reach || 2 * B + 1 >= E->G.g;
+}
+
+/* Points whose nearest neighbour may lie outside their block: ask every
+ * rank for its nearest points within B cells, doubling B until the answer
+ * is certain. Rare after the first iteration. Adds the owned ones to
+ * *sum and *mn. */
+static void resolve_unsure(cfpo_engine *E, const nn_query *Q, size_t nq, double inv, uint64_t *sum, double *mn)
+{
+    double *res = malloc(nq * sizeof *res);
+    int64_t *B = malloc(nq * sizeof *B);
+    uint8_t *done = calloc(nq, 1);
+    if (!res || !B || !done) stats_oom(E);
+    for (size_t i = 0; i < nq; i++) B[i] = 2;
+    for (int left = 1; left;) {
+#pragma omp parallel for schedule(dynamic, 64) num_threads(E->nthreads)
+        for (size_t i = 0; i < nq; i++) res[i] = done[i] ? INFINITY : box_min(E, &Q[i], B[i]);
+        comm_min_d(res, (int)nq);
+        left = 0;
+        for (size_t i = 0; i < nq; i++) {
+            if (done[i]) continue;
+            if (!settled(E, &Q[i], res[i], B[i])) {
+                B[i] *= 2;
+                left = 1;
+                continue;
+            }
+            done[i] = 1;
+            if (Q[i].owner != E->rank) continue;
+            const double d = sqrt(res[i]) * inv;
+            *sum += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
+            if (d < *mn) *mn = d;
+        }
     }
+    free(res);
+    free(B);
+    free(done);
+}
+
+void cfpo_engine_deltas(cfpo_engine *E, double *dmin, double *davg)
+{
+    const double inv = 1.0 / E->G.delta;
+    unsure_list u = {0};
+    /* Blocks whose cells' neighbourhoods did not change keep their sums;
+     * blocks with unresolved points are recomputed every time. */
+    const int64_t nb = E->nbx * E->nby;
+#pragma omp parallel for schedule(dynamic, 4) num_threads(E->nthreads)
+    for (int64_t bi = 0; bi < nb; bi++)
+        if (E->bdirty[bi]) E->bdirty[bi] = (uint8_t)block_pass(E, bi, inv, &u);
+    uint64_t sum = 0;
+    double mn = INFINITY;
     for (int64_t bi = 0; bi < nb; bi++) {
         sum += E->bsum[bi];
         if (E->bmin[bi] < mn) mn = E->bmin[bi];
     }
-    if (!comm_all(!oom)) {
-        fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
-        comm_abort(1);
-    }
-    /* Points whose nearest neighbour may lie outside their block: ask every
-     * rank for its nearest points within B cells, doubling B until the
-     * answer is certain. Rare after the first iteration. */
+    if (!comm_all(!u.oom)) stats_oom(E);
     void *allv;
     size_t total;
-    if (comm_allgatherv(un, nun * sizeof *un, &allv, &total) != 0) {
-        fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
-        comm_abort(1);
-    }
-    free(un);
-    nn_query *Q = allv;
-    size_t nq = total / sizeof *Q;
-    if (nq) {
-        double *res = malloc(nq * sizeof *res);
-        int64_t *B = malloc(nq * sizeof *B);
-        uint8_t *done = calloc(nq, 1);
-        if (!res || !B || !done) {
-            fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
-            comm_abort(1);
-        }
-        for (size_t i = 0; i < nq; i++) B[i] = 2;
-        const double L = E->G.L;
-        for (;;) {
-#pragma omp parallel for schedule(dynamic, 64) num_threads(E->nthreads)
-            for (size_t i = 0; i < nq; i++) res[i] = done[i] ? INFINITY : box_min(E, &Q[i], B[i]);
-            comm_min_d(res, (int)nq);
-            int left = 0;
-            for (size_t i = 0; i < nq; i++) {
-                if (done[i]) continue;
-                const nn_query *q = &Q[i];
-                int64_t cx = cfpo_grid_coord(&E->G, q->x), cy = cfpo_grid_coord(&E->G, q->y);
-                double ex = cell_offset(E, q->x, cx), ey = cell_offset(E, q->y, cy);
-                double edge = fmax(0, fmin(fmin(ex, L - ex), fmin(ey, L - ey)));
-                double reach = (double)B[i] * L + edge;
-                if (res[i] <= reach * reach || 2 * B[i] + 1 >= E->G.g) {
-                    done[i] = 1;
-                    if (q->owner == E->rank) {
-                        double d = sqrt(res[i]) * inv;
-                        sum += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
-                        if (d < mn) mn = d;
-                    }
-                } else {
-                    B[i] *= 2;
-                    left = 1;
-                }
-            }
-            if (!left) break;
-        }
-        free(res);
-        free(B);
-        free(done);
-    }
-    free(Q);
+    if (comm_allgatherv(u.q, u.n * sizeof *u.q, &allv, &total) != 0) stats_oom(E);
+    free(u.q);
+    const size_t nq = total / sizeof(nn_query);
+    if (nq) resolve_unsure(E, allv, nq, inv, &sum, &mn);
+    free(allv);
     /* Exact integer sums: the same bits for any split into ranks. */
     int64_t *all = malloc((size_t)E->nranks * sizeof *all);
-    if (!all) comm_abort(1);
+    if (!all) stats_oom(E);
     comm_allgather_i64((int64_t)sum, all);
     unsigned __int128 S = 0;
     for (int r = 0; r < E->nranks; r++) S += (uint64_t)all[r];

@@ -1,4 +1,5 @@
-/* geom.h - layer 1: torus geometry and the exact local solver.
+/* geom.h - layer 1 (may include layer 0): torus geometry and the exact
+ * local solver.
  *
  * Owns: the hexagonal bound Delta(n), wrapping onto [0,1), periodic
  * distances, and LocalCFPO: the point of an axis-aligned square S that is

@@ -1,4 +1,5 @@
-/* grid.h - layer 2: the cell grid, colours and the stratified start.
+/* grid.h - layer 2 (may include cfpo_types.h, geom.h, rng.h): the cell
+ * grid, colours and the stratified start.
  *
  * Owns: choosing g (cells per side) from n, the constraint square of a
  * point's cell, cell coordinates of a position, the colour classes, and the
@@ -13,7 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "cfpo.h"
+#include "cfpo_types.h"
 #include "geom.h"
 
 typedef struct {

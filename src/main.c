@@ -1,6 +1,7 @@
-/* main.c - the `cfpo` command: options, progress, trace, output, summary.
- * Everything it computes comes from the engine; this file only talks to
- * the user. */
+/* main.c - the `cfpo` command (layer 5): parse the options, validate them,
+ * run, report. Everything it computes comes from the library (the engine,
+ * the plan, the run's files); this file only talks to the user. Of MPI it
+ * sees only the process's start, end and rank. */
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -11,9 +12,10 @@
 #include "cli.h"
 #include "comm.h"
 #include "engine.h"
-#include "tiles.h"
 #include "omp_compat.h"
+#include "plan.h"
 #include "pointfile.h"
+#include "runfiles.h"
 #include "stoprule.h"
 
 static const char *prog = "cfpo";
@@ -71,6 +73,7 @@ typedef struct {
     double last_moved[16];
     double last_min[16], last_avg[16];
     int seen; /* iterations reported */
+    double seconds; /* the run's wall time, files not included */
     cfpo_stop_rules stop;
 } run_ctx;
 
@@ -136,53 +139,108 @@ static int on_iteration(const cfpo_iter_stats *s, void *user)
 static int dry_run(int64_t n, const cfpo_options *o, int P, int fpx, int fpy)
 {
     char err[512];
-    cfpo_grid G;
-    if (cfpo_grid_init(&G, n, o->variant, o->seed, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
-    cfpo_tiling T;
-    if (cfpo_tiling_init(&T, G.g, P, fpx, fpy, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
+    cfpo_plan p;
+    if (cfpo_plan_make(&p, n, o, P, fpx, fpy, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
     if (comm_rank() != 0) return 0;
-    const int64_t g = G.g;
-    const double ppc = (double)n / (double)(g * g); /* points per cell */
-    const int64_t wmax = cfpo_tile_len(g, T.px, 0), hmax = cfpo_tile_len(g, T.py, 0);
-    const int64_t wmin = cfpo_tile_len(g, T.px, T.px - 1), hmin = cfpo_tile_len(g, T.py, T.py - 1);
-    const int64_t cmax = wmax * hmax;
-    const int64_t ring = cfpo_tile_ring(wmax, hmax);
-    const double pmax = (double)cmax * ppc;
-    const int threads = o->threads > 0 ? o->threads : omp_get_num_procs();
-    const double mem = (double)cfpo_engine_bytes_local((int64_t)(pmax * 1.02), cmax, ring, threads);
-    /* Halo per phase: a rank sends the cells of its border that its
-     * neighbours keep (every border cell, corners to up to three ranks):
-     * 4 bytes of count per cell and 16 per point. */
-    const int64_t sx = T.px > 1 ? 2 * hmax : 0, sy = T.py > 1 ? 2 * wmax : 0;
-    const int64_t corners = (T.px > 1 && T.py > 1) ? 4 : 0;
-    const double halo_cells = (double)(sx + sy + corners);
-    const double halo = halo_cells * (4 + 16 * ppc);
-    /* Migration per phase: at most every point of the phase's colour in the
-     * border cells leaves, 32 bytes each. */
-    const double mig = halo_cells / (G.period * G.period) * ppc * 32 * 1.5;
-    printf("dry run: n=%lld on %d ranks (%d threads each), variant %s\n", (long long)n, P, threads,
+    printf("dry run: n=%lld on %d ranks (%d threads each), variant %s\n", (long long)n, P, p.threads,
            cfpo_variant_name(o->variant));
     printf("  grid          %lld x %lld cells (L = %.3g, Delta(n) = %.3g, %.3f points per cell)\n",
-           (long long)g, (long long)g, G.L, G.delta, ppc);
-    printf("  tiling        %d x %d tiles; tile sides %lld..%lld by %lld..%lld cells\n", T.px, T.py,
-           (long long)wmin, (long long)wmax, (long long)hmin, (long long)hmax);
-    printf("  per rank      up to %lld cells, about %.4g points\n", (long long)cmax, pmax);
-    printf("  memory/rank   %.4g GB (%.1f bytes per point)\n", mem / 1e9, mem / pmax);
+           (long long)p.G.g, (long long)p.G.g, p.G.L, p.G.delta, p.points_per_cell);
+    printf("  tiling        %d x %d tiles; tile sides %lld..%lld by %lld..%lld cells\n", p.T.px, p.T.py,
+           (long long)p.wmin, (long long)p.wmax, (long long)p.hmin, (long long)p.hmax);
+    printf("  per rank      up to %lld cells, about %.4g points\n", (long long)p.cells_max, p.points_max);
+    printf("  memory/rank   %.4g GB (%.1f bytes per point)\n", p.bytes_per_rank / 1e9,
+           p.bytes_per_rank / p.points_max);
     printf("  halo/phase    %.0f cells, about %.4g bytes sent per rank (%d phases per iteration)\n",
-           halo_cells, halo, G.period * G.period);
-    printf("  migrate/phase at most about %.4g bytes sent per rank\n", mig);
-    printf("  largest rank count for this n: %lld\n", (long long)cfpo_tiling_max_ranks(g));
+           p.halo_cells, p.halo_bytes, p.G.period * p.G.period);
+    printf("  migrate/phase at most about %.4g bytes sent per rank\n", p.migrate_bytes);
+    printf("  largest rank count for this n: %lld\n", (long long)p.max_ranks);
     printf("DRYRUN n=%lld ranks=%d px=%d py=%d g=%lld cells_per_rank=%lld points_per_rank=%.0f "
            "bytes_per_rank=%.0f halo_bytes_per_phase=%.0f migrate_bytes_per_phase=%.0f\n",
-           (long long)n, P, T.px, T.py, (long long)g, (long long)cmax, pmax, mem, halo, mig);
+           (long long)n, P, p.T.px, p.T.py, (long long)p.G.g, (long long)p.cells_max, p.points_max,
+           p.bytes_per_rank, p.halo_bytes, p.migrate_bytes);
     return 0;
 }
 
-int main(int argc, char **argv)
+/* The command line, parsed. */
+typedef struct {
+    cfpo_options o;
+    cfpo_engine_config cfg;
+    int64_t n, dry_ranks;
+    const char *out, *trace;
+    int quiet, dry, every;
+    int given_seed, given_variant, given_tol;
+} cmdline;
+
+static int64_t whole(const char *opt, const char *arg, int64_t lo, int64_t hi, const char *range)
 {
-    comm_init(&argc, &argv);
-    const int rank = comm_rank(), P = comm_size();
-    cli_set_exit(rank != 0, comm_finalize);
+    int64_t v;
+    if (cli_parse_i64(arg, lo, hi, &v) != 0) cli_usage_error(prog, "%s: '%s' is not a whole number in %s", opt, arg, range);
+    return v;
+}
+
+static void parse_tiles(cmdline *c, char *arg)
+{
+    char *x = strchr(arg, 'x');
+    int64_t a, b;
+    if (!x) cli_usage_error(prog, "--tiles: '%s' is not of the form AxB (e.g. 2x3)", arg);
+    *x = '\0';
+    int bad = cli_parse_i64(arg, 1, 1 << 20, &a) != 0 || cli_parse_i64(x + 1, 1, 1 << 20, &b) != 0;
+    *x = 'x';
+    if (bad) cli_usage_error(prog, "--tiles: '%s' is not of the form AxB (e.g. 2x3)", arg);
+    c->cfg.px = (int)a;
+    c->cfg.py = (int)b;
+}
+
+/* One option of the sampler itself. Returns 0 when ch is not one. */
+static int sampler_option(cmdline *c, int ch, char *arg)
+{
+    switch (ch) {
+    case 'n': c->n = cli_arg_points(prog, arg); break;
+    case 's': c->o.seed = cli_arg_seed(prog, arg); c->given_seed = 1; break;
+    case 'v':
+        if (cfpo_variant_parse(arg, &c->o.variant) != 0)
+            cli_usage_error(prog, "--variant: '%s' is not one of adaptive, paper, simplified", arg);
+        c->given_variant = 1;
+        break;
+    case 't': c->o.threads = (int)whole("--threads", arg, 1, 4096, "1..4096"); break;
+    case 'm': c->o.max_iter = (int)whole("--max-iter", arg, 0, 1000000000, "0..1e9"); break;
+    case 'T':
+        if (cli_parse_double(arg, 0, CFPO_TOL_MAX, &c->o.tol) != 0)
+            cli_usage_error(prog, "--tol: '%s' is not a number in [0, %g]", arg, CFPO_TOL_MAX);
+        c->given_tol = 1;
+        break;
+    case 'K': c->o.skip = 0; break;
+    case 1001: cli_stop_option(prog, "target-min", arg, &c->o.stop); break;
+    case 1002: cli_stop_option(prog, "target-avg", arg, &c->o.stop); break;
+    case 1003: cli_stop_option(prog, "time-limit", arg, &c->o.stop); break;
+    default: return 0;
+    }
+    return 1;
+}
+
+/* One option about files, ranks and checks. Returns 0 when ch is not one. */
+static int run_option(cmdline *c, int ch, char *arg)
+{
+    switch (ch) {
+    case 'o': c->out = arg; break;
+    case 'r': c->trace = arg; break;
+    case 'q': c->quiet = 1; break;
+    case 'X': parse_tiles(c, arg); break;
+    case 'C': c->cfg.check = 1; break;
+    case 'P': c->cfg.checkpoint = arg; break;
+    case 'E': c->every = (int)whole("--checkpoint-every", arg, 1, 1000000000, "1..1e9"); break;
+    case 'R': c->cfg.resume = arg; break;
+    case 'D': c->dry = 1; break;
+    case 'N': c->dry_ranks = whole("--ranks", arg, 1, 1 << 24, "1..16777216"); break;
+    default: return 0;
+    }
+    return 1;
+}
+
+/* Parses argv into c; --help and --version answer and exit. */
+static void parse(int argc, char **argv, cmdline *c)
+{
     static const struct option longopts[] = {
         {"points", required_argument, 0, 'n'}, {"seed", required_argument, 0, 's'},
         {"variant", required_argument, 0, 'v'}, {"threads", required_argument, 0, 't'},
@@ -196,78 +254,16 @@ int main(int argc, char **argv)
         {"ranks", required_argument, 0, 'N'}, {"target-min", required_argument, 0, 1001},
         {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003},
         {0, 0, 0, 0}};
-    cfpo_options o;
-    cfpo_options_init(&o);
-    cfpo_engine_config cfg = {0};
-    int64_t n = -1, dry_ranks = -1;
-    const char *out = NULL, *trace = NULL;
-    int quiet = 0, ch, dry = 0, given_seed = 0, given_variant = 0, given_tol = 0, every = -1;
+    cfpo_options_init(&c->o);
+    c->n = c->dry_ranks = -1;
+    c->every = -1;
     opterr = 0;
+    int ch;
     while ((ch = getopt_long(argc, argv, ":n:s:t:o:qhV", longopts, NULL)) != -1) {
-        int64_t v;
+        if (sampler_option(c, ch, optarg) || run_option(c, ch, optarg)) continue;
         switch (ch) {
-        case 'n':
-            n = cli_arg_points(prog, optarg);
-            break;
-        case 's':
-            o.seed = cli_arg_seed(prog, optarg);
-            given_seed = 1;
-            break;
-        case 'v':
-            if (cfpo_variant_parse(optarg, &o.variant) != 0)
-                cli_usage_error(prog, "--variant: '%s' is not one of adaptive, paper, simplified", optarg);
-            given_variant = 1;
-            break;
-        case 't':
-            if (cli_parse_i64(optarg, 1, 4096, &v) != 0)
-                cli_usage_error(prog, "--threads: '%s' is not a whole number in 1..4096", optarg);
-            o.threads = (int)v;
-            break;
-        case 'm':
-            if (cli_parse_i64(optarg, 0, 1000000000, &v) != 0)
-                cli_usage_error(prog, "--max-iter: '%s' is not a whole number in 0..1e9", optarg);
-            o.max_iter = (int)v;
-            break;
-        case 'T':
-            if (cli_parse_double(optarg, 0, CFPO_TOL_MAX, &o.tol) != 0)
-                cli_usage_error(prog, "--tol: '%s' is not a number in [0, %g]", optarg, CFPO_TOL_MAX);
-            given_tol = 1;
-            break;
-        case 'K': o.skip = 0; break;
-        case 1001: cli_stop_option(prog, "target-min", optarg, &o.stop); break;
-        case 1002: cli_stop_option(prog, "target-avg", optarg, &o.stop); break;
-        case 1003: cli_stop_option(prog, "time-limit", optarg, &o.stop); break;
-        case 'o': out = optarg; break;
-        case 'r': trace = optarg; break;
-        case 'q': quiet = 1; break;
-        case 'X': {
-            char *x = strchr(optarg, 'x');
-            int64_t a, b;
-            if (!x) cli_usage_error(prog, "--tiles: '%s' is not of the form AxB (e.g. 2x3)", optarg);
-            *x = '\0';
-            int bad = cli_parse_i64(optarg, 1, 1 << 20, &a) != 0 || cli_parse_i64(x + 1, 1, 1 << 20, &b) != 0;
-            *x = 'x';
-            if (bad) cli_usage_error(prog, "--tiles: '%s' is not of the form AxB (e.g. 2x3)", optarg);
-            cfg.px = (int)a;
-            cfg.py = (int)b;
-            break;
-        }
-        case 'C': cfg.check = 1; break;
-        case 'P': cfg.checkpoint = optarg; break;
-        case 'E':
-            if (cli_parse_i64(optarg, 1, 1000000000, &v) != 0)
-                cli_usage_error(prog, "--checkpoint-every: '%s' is not a whole number in 1..1e9", optarg);
-            every = (int)v;
-            break;
-        case 'R': cfg.resume = optarg; break;
-        case 'D': dry = 1; break;
-        case 'N':
-            if (cli_parse_i64(optarg, 1, 1 << 24, &v) != 0)
-                cli_usage_error(prog, "--ranks: '%s' is not a whole number in 1..16777216", optarg);
-            dry_ranks = v;
-            break;
-        case 'h': if (rank == 0) usage(); comm_finalize(); return 0;
-        case 'V': if (rank == 0) printf("cfpo %s\n", CFPO_VERSION); comm_finalize(); return 0;
+        case 'h': if (comm_rank() == 0) usage(); comm_finalize(); exit(0);
+        case 'V': if (comm_rank() == 0) printf("cfpo %s\n", CFPO_VERSION); comm_finalize(); exit(0);
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
         default:
             if (optopt) cli_usage_error(prog, "unknown option '-%c'", optopt);
@@ -275,162 +271,126 @@ int main(int argc, char **argv)
         }
     }
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
-    if (!given_tol) o.tol = cfpo_default_tol(o.variant);
-    if (every > 0 && !cfg.checkpoint) cli_usage_error(prog, "--checkpoint-every needs --checkpoint FILE");
-    if (cfg.checkpoint) cfg.checkpoint_every = every > 0 ? every : 100;
-    if (dry_ranks > 0 && !dry) cli_usage_error(prog, "--ranks is for --dry-run (under mpirun the rank count is mpirun's)");
-    if (cfg.resume && dry) cli_usage_error(prog, "--dry-run and --resume do not go together");
+}
+
+/* --resume: n, seed, variant and tol come from the checkpoint; options
+ * that say otherwise are a usage error. */
+static void take_from_checkpoint(cmdline *c)
+{
     char err[512];
-    if (cfg.resume) {
-        cfpo_checkpoint_info info;
-        if (cfpo_checkpoint_peek(cfg.resume, &info, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-        if ((n >= 0 && n != info.n) || (given_seed && o.seed != info.seed) ||
-            (given_variant && o.variant != info.variant) || (given_tol && o.tol != info.tol))
-            cli_usage_error(prog, "--resume %s: the checkpoint is for n=%lld seed=%llu variant=%s tol=%g; "
-                            "leave those options out or give the same values", cfg.resume,
-                            (long long)info.n, (unsigned long long)info.seed,
-                            cfpo_variant_name(info.variant), info.tol);
-        n = info.n;
-        o.seed = info.seed;
-        o.variant = info.variant;
-        o.tol = info.tol;
+    cfpo_checkpoint_info info;
+    if (cfpo_checkpoint_peek(c->cfg.resume, &info, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    if ((c->n >= 0 && c->n != info.n) || (c->given_seed && c->o.seed != info.seed) ||
+        (c->given_variant && c->o.variant != info.variant) || (c->given_tol && c->o.tol != info.tol))
+        cli_usage_error(prog, "--resume %s: the checkpoint is for n=%lld seed=%llu variant=%s tol=%g; "
+                        "leave those options out or give the same values", c->cfg.resume,
+                        (long long)info.n, (unsigned long long)info.seed,
+                        cfpo_variant_name(info.variant), info.tol);
+    c->n = info.n;
+    c->o.seed = info.seed;
+    c->o.variant = info.variant;
+    c->o.tol = info.tol;
+}
+
+/* Options that only make sense together, the defaults that depend on
+ * others, the checkpoint's run. */
+static void settle_options(cmdline *c)
+{
+    if (!c->given_tol) c->o.tol = cfpo_default_tol(c->o.variant);
+    if (c->every > 0 && !c->cfg.checkpoint) cli_usage_error(prog, "--checkpoint-every needs --checkpoint FILE");
+    if (c->cfg.checkpoint) c->cfg.checkpoint_every = c->every > 0 ? c->every : 100;
+    if (c->dry_ranks > 0 && !c->dry)
+        cli_usage_error(prog, "--ranks is for --dry-run (under mpirun the rank count is mpirun's)");
+    if (c->cfg.resume && c->dry) cli_usage_error(prog, "--dry-run and --resume do not go together");
+    if (c->cfg.resume) take_from_checkpoint(c);
+    if (c->n < 0) cli_usage_error(prog, "the number of points is required: -n N");
+}
+
+/* The run's files and this machine's room for it (not for --dry-run). */
+static void validate(const cmdline *c)
+{
+    char err[512];
+    if (cfpo_runfiles_check(c->out, c->cfg.checkpoint, comm_size(), err, sizeof err) != 0)
+        cli_usage_error(prog, "%s", err);
+    int vr = cfpo_plan_check(c->n, &c->o, c->cfg.px, c->cfg.py, err, sizeof err);
+    if (vr == -1) cli_usage_error(prog, "%s", err);
+    if (vr != 0) cli_fail(prog, "%s", err);
+}
+
+/* Runs the engine with progress and trace; writes the files. Returns the
+ * engine (for the report); exits on failure, leaving no file. */
+static cfpo_engine *run(cmdline *c, run_ctx *ctx, cfpo_result *res)
+{
+    char err[512];
+    cfpo_runfiles *files = cfpo_runfiles_open(c->out, c->trace, c->n, err, sizeof err);
+    if (!files) cli_fail(prog, "%s", err);
+    *ctx = (run_ctx){.n = c->n, .max_iter = c->o.max_iter, .stop = c->o.stop, .trace = cfpo_runfiles_trace(files)};
+    cli_progress_init(&ctx->prog, c->quiet || comm_rank() != 0);
+    c->o.progress = on_iteration;
+    c->o.user = ctx;
+    ctx->t0 = cli_now();
+    cfpo_engine *E = cfpo_engine_create_ex(c->n, &c->o, &c->cfg, err, sizeof err);
+    int rc = E ? cfpo_engine_run(E, res, err, sizeof err) : -1;
+    cli_progress_end(&ctx->prog);
+    ctx->seconds = cli_now() - ctx->t0;
+    if (rc != 0) {
+        cfpo_runfiles_abort(files);
+        cli_fail(prog, "%s", err);
     }
-    if (n < 0) cli_usage_error(prog, "the number of points is required: -n N");
-    if (dry) {
-        int rc = dry_run(n, &o, dry_ranks > 0 ? (int)dry_ranks : P, cfg.px, cfg.py);
+    if (cfpo_runfiles_commit(files, E, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    return E;
+}
+
+/* The SUMMARY line, and with several ranks the RANKS line (collective). */
+static void report(const cmdline *c, cfpo_engine *E, const cfpo_result *res, double seconds)
+{
+    uint64_t peak, peak_max;
+    cfpo_plan_peak_memory(&peak, &peak_max);
+    cfpo_engine_timing tm;
+    cfpo_engine_timing_get(E, &tm);
+    if (comm_rank() != 0) return;
+    const int P = comm_size();
+    cli_summary sm = {.method = "cfpo", .variant = cfpo_variant_name(c->o.variant), .n = c->n,
+                      .seed = c->o.seed, .threads = c->o.threads > 0 ? c->o.threads : omp_get_num_procs(),
+                      .ranks = P, .iterations = res->iterations, .seconds = seconds,
+                      .delta_min = res->delta_min, .delta_avg = res->delta_avg,
+                      .converged = res->converged, .peak_bytes = peak, .stop = cfpo_stop_name(res->stop)};
+    cli_print_summary(stdout, &sm);
+    if (P > 1) {
+        const cfpo_tiling *T = cfpo_engine_tiling(E);
+        const double ph = tm.phases > 0 ? (double)tm.phases : 1;
+        printf("RANKS ranks=%d tiles=%dx%d phases=%lld compute_s=%.3f/%.3f/%.3f migrate_s=%.3f/%.3f/%.3f "
+               "halo_s=%.3f/%.3f/%.3f halo_bytes_per_phase=%.0f/%.0f/%.0f "
+               "migrate_bytes_per_phase=%.0f/%.0f/%.0f peak_bytes_per_rank=%lld\n",
+               P, T->px, T->py, (long long)tm.phases, tm.compute[0], tm.compute[1], tm.compute[2],
+               tm.migrate[0], tm.migrate[1], tm.migrate[2], tm.halo[0], tm.halo[1], tm.halo[2],
+               tm.halo_bytes[0] / ph, tm.halo_bytes[1] / ph, tm.halo_bytes[2] / ph,
+               tm.migrate_bytes[0] / ph, tm.migrate_bytes[1] / ph, tm.migrate_bytes[2] / ph,
+               (long long)peak_max);
+    }
+    if (c->cfg.check)
+        fprintf(stderr, "cfpo: check: %lld migrations and %lld halo refreshes verified on rank 0\n",
+                (long long)tm.checked_migrations, (long long)tm.checked_halos);
+    fflush(stdout);
+}
+
+int main(int argc, char **argv)
+{
+    comm_init(&argc, &argv);
+    cli_set_exit(comm_rank() != 0, comm_finalize);
+    cmdline c = {0};
+    parse(argc, argv, &c);
+    settle_options(&c);
+    if (c.dry) {
+        int rc = dry_run(c.n, &c.o, c.dry_ranks > 0 ? (int)c.dry_ranks : comm_size(), c.cfg.px, c.cfg.py);
         comm_finalize();
         return rc;
     }
-    pf_format fmt = out ? pf_format_of(out) : PF_UNKNOWN;
-    if (out && fmt == PF_UNKNOWN)
-        cli_usage_error(prog, "%s: unknown output format (use %s)", out, PF_EXTENSIONS);
-    if (out && fmt == PF_TEXT && P > 1)
-        cli_usage_error(prog, "%s: text output needs one rank (no rank holds the whole set); use .npy or .bin", out);
-    if (cfg.checkpoint && out && strcmp(cfg.checkpoint, out) == 0)
-        cli_usage_error(prog, "--checkpoint and -o name the same file");
-
-    /* The grid, the cut into tiles and the memory of the largest tile. */
-    cfpo_grid G;
-    if (cfpo_grid_init(&G, n, o.variant, o.seed, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
-    cfpo_tiling T;
-    if (P == 1) {
-        int vr = cfpo_validate(n, &o, err, sizeof err);
-        if (vr == -1) cli_usage_error(prog, "%s", err);
-        if (vr != 0) cli_fail(prog, "%s", err);
-    }
-    if (cfpo_tiling_init(&T, G.g, P, cfg.px, cfg.py, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
-    if (P > 1) {
-        const int64_t wmax = cfpo_tile_len(G.g, T.px, 0), hmax = cfpo_tile_len(G.g, T.py, 0);
-        const int64_t pmax = (int64_t)((double)(wmax * hmax) * (double)n / (double)(G.g * G.g) * 1.05) + 64;
-        int vr = cfpo_validate_ranks(n, &o, pmax, wmax * hmax, cfpo_tile_ring(wmax, hmax), comm_local_size(),
-                                     err, sizeof err);
-        if (vr == -1) cli_usage_error(prog, "%s", err);
-        if (vr != 0) cli_fail(prog, "%s", err);
-    }
-
-    /* Open outputs first, so an unwritable path fails before the work. */
-    cli_guard_tmp(NULL);
-    pf_writer *w = NULL;
-    comm_file *cf = NULL;
-    if (out && fmt == PF_TEXT) {
-        w = pf_writer_open(out, (size_t)n, err, sizeof err);
-        if (!w) cli_fail(prog, "%s", err);
-        cli_guard_tmp(pf_writer_tmpname(w));
-    } else if (out) {
-        cf = comm_file_create(out, err, sizeof err);
-        if (!cf) cli_fail(prog, "%s", err);
-        if (rank == 0) cli_guard_tmp(comm_file_tmpname(cf));
-    }
-    cli_atomic tr = {0};
-    run_ctx ctx = {.n = n, .max_iter = o.max_iter, .stop = o.stop};
-    if (trace) {
-        int ok = rank != 0 || cli_atomic_open(&tr, trace, err, sizeof err) == 0;
-        if (!comm_all(ok)) {
-            pf_writer_abort(w);
-            if (cf) comm_file_commit(cf, 0, err, sizeof err);
-            cli_fail(prog, "%s", ok ? "cannot open the trace file" : err);
-        }
-        if (rank == 0) {
-            ctx.trace = tr.f;
-            fprintf(tr.f, "iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed\tmax_move\n");
-        }
-    }
-    cli_progress_init(&ctx.prog, quiet || rank != 0);
-    o.progress = on_iteration;
-    o.user = &ctx;
-
-    ctx.t0 = cli_now();
-    cfpo_engine *E = cfpo_engine_create_ex(n, &o, &cfg, err, sizeof err);
-    if (!E) {
-        pf_writer_abort(w);
-        if (cf) comm_file_commit(cf, 0, err + 256, sizeof err - 256);
-        if (rank == 0 && trace) cli_atomic_abort(&tr);
-        cli_fail(prog, "%s", err);
-    }
+    validate(&c);
+    run_ctx ctx;
     cfpo_result res;
-    int rr = cfpo_engine_run(E, &res, err, sizeof err);
-    cli_progress_end(&ctx.prog);
-    if (rr != 0) {
-        pf_writer_abort(w);
-        if (cf) comm_file_commit(cf, 0, err + 256, sizeof err - 256);
-        if (rank == 0 && trace) cli_atomic_abort(&tr);
-        cli_fail(prog, "%s", err);
-    }
-    double seconds = cli_now() - ctx.t0;
-
-    if (w) {
-        if (cfpo_engine_write(E, w, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-        const char *tmp = pf_writer_tmpname(w);
-        char tmpcopy[4096];
-        snprintf(tmpcopy, sizeof tmpcopy, "%s", tmp);
-        if (pf_writer_commit(w, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-        cli_unguard_tmp(tmpcopy);
-    }
-    if (cf) {
-        char tmpcopy[4096];
-        snprintf(tmpcopy, sizeof tmpcopy, "%s", comm_file_tmpname(cf));
-        unsigned char hdr[PF_HEADER_MAX];
-        size_t hl = pf_header(fmt, (size_t)n, hdr, sizeof hdr);
-        int ok = 1;
-        if (rank == 0 && hl) ok = comm_file_write_at(cf, 0, hdr, hl) == 0;
-        if (cfpo_engine_write_points(E, cf, hl, err, sizeof err) != 0) ok = 0;
-        if (comm_file_commit(cf, ok, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-        cli_unguard_tmp(tmpcopy);
-    }
-    if (trace && rank == 0 && cli_atomic_commit(&tr, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-
-    int64_t peak = (int64_t)cli_peak_rss(), peak_max = peak;
-    comm_sum_i64(&peak, 1);
-    comm_max_i64(&peak_max, 1);
-    cfpo_engine_timing tm;
-    cfpo_engine_timing_get(E, &tm);
-    if (rank == 0) {
-        cli_summary sm = {
-            .method = "cfpo",
-            .variant = cfpo_variant_name(o.variant),
-            .n = n, .seed = o.seed,
-            .threads = o.threads > 0 ? o.threads : omp_get_num_procs(),
-            .ranks = P, .iterations = res.iterations, .seconds = seconds,
-            .delta_min = res.delta_min, .delta_avg = res.delta_avg,
-            .converged = res.converged, .peak_bytes = (uint64_t)peak,
-            .stop = cfpo_stop_name(res.stop)};
-        cli_print_summary(stdout, &sm);
-        if (P > 1) {
-            const double ph = tm.phases > 0 ? (double)tm.phases : 1;
-            printf("RANKS ranks=%d tiles=%dx%d phases=%lld compute_s=%.3f/%.3f/%.3f migrate_s=%.3f/%.3f/%.3f "
-                   "halo_s=%.3f/%.3f/%.3f halo_bytes_per_phase=%.0f/%.0f/%.0f "
-                   "migrate_bytes_per_phase=%.0f/%.0f/%.0f peak_bytes_per_rank=%lld\n",
-                   P, T.px, T.py, (long long)tm.phases, tm.compute[0], tm.compute[1], tm.compute[2],
-                   tm.migrate[0], tm.migrate[1], tm.migrate[2], tm.halo[0], tm.halo[1], tm.halo[2],
-                   tm.halo_bytes[0] / ph, tm.halo_bytes[1] / ph, tm.halo_bytes[2] / ph,
-                   tm.migrate_bytes[0] / ph, tm.migrate_bytes[1] / ph, tm.migrate_bytes[2] / ph,
-                   (long long)peak_max);
-        }
-        if (cfg.check)
-            fprintf(stderr, "cfpo: check: %lld migrations and %lld halo refreshes verified on rank 0\n",
-                    (long long)tm.checked_migrations, (long long)tm.checked_halos);
-        fflush(stdout);
-    }
+    cfpo_engine *E = run(&c, &ctx, &res);
+    report(&c, E, &res, ctx.seconds);
     cfpo_engine_free(E);
     comm_finalize();
     return 0;

@@ -1,5 +1,6 @@
-/* omp_compat.h - one source for threaded and serial builds: without OpenMP
- * the calls below become their one-thread answers. */
+/* omp_compat.h - layer 0 (includes nothing of the project): one source
+ * for threaded and serial builds: without OpenMP the calls below become
+ * their one-thread answers. */
 #ifndef CFPO_OMP_COMPAT_H
 #define CFPO_OMP_COMPAT_H
 #ifdef _OPENMP

@@ -3,6 +3,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "pointfile.h"
 
+#include "atomic.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -73,14 +75,12 @@ static double swap_double(double v)
 /* ------------------------------------------------------------------ writer */
 
 struct pf_writer {
-    FILE *f;
-    char *path;
-    char *tmp;
+    atomic_file a;  /* the temporary and the final name */
     pf_format fmt;
     size_t n, written;
 };
 
-const char *pf_writer_tmpname(const pf_writer *w) { return w ? w->tmp : NULL; }
+const char *pf_writer_tmpname(const pf_writer *w) { return w ? w->a.tmp : NULL; }
 
 size_t pf_header(pf_format fmt, size_t n, unsigned char *buf, size_t cap)
 {
@@ -117,41 +117,15 @@ pf_writer *pf_writer_open(const char *path, size_t n, char *err, size_t errlen)
         set_err(err, errlen, "%s: unknown output format (use " PF_EXTENSIONS ")", path);
         return NULL;
     }
-    struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-        set_err(err, errlen, "%s: is a directory", path);
-        return NULL;
-    }
     pf_writer *w = calloc(1, sizeof *w);
     if (!w) { set_err(err, errlen, "%s: out of memory", path); return NULL; }
-    size_t len = strlen(path);
-    w->path = malloc(len + 1);
-    w->tmp = malloc(len + 16);
-    if (!w->path || !w->tmp) {
-        set_err(err, errlen, "%s: out of memory", path);
-        free(w->path); free(w->tmp); free(w);
-        return NULL;
-    }
-    memcpy(w->path, path, len + 1);
-    snprintf(w->tmp, len + 16, "%s.tmp.XXXXXX", path);
-    int fd = mkstemp(w->tmp);
-    if (fd < 0) {
-        set_err(err, errlen, "%s: cannot create output file: %s", path, strerror(errno));
-        free(w->path); free(w->tmp); free(w);
-        return NULL;
-    }
-    fchmod(fd, 0644);
-    w->f = fdopen(fd, "wb");
-    if (!w->f) {
-        set_err(err, errlen, "%s: cannot open output file: %s", path, strerror(errno));
-        close(fd);
-        unlink(w->tmp);
-        free(w->path); free(w->tmp); free(w);
+    if (atomic_open(&w->a, path, "wb", err, errlen) != 0) {
+        free(w);
         return NULL;
     }
     w->fmt = fmt;
     w->n = n;
-    if (fmt == PF_NPY && write_npy_header(w->f, n) != 0) {
+    if (fmt == PF_NPY && write_npy_header(w->a.f, n) != 0) {
         set_err(err, errlen, "%s: write failed: %s", path, strerror(errno));
         pf_writer_abort(w);
         return NULL;
@@ -162,23 +136,23 @@ pf_writer *pf_writer_open(const char *path, size_t n, char *err, size_t errlen)
 int pf_writer_put(pf_writer *w, const double *xy, size_t count, char *err, size_t errlen)
 {
     if (w->written + count > w->n) {
-        set_err(err, errlen, "%s: more points written than announced (%zu)", w->path, w->n);
+        set_err(err, errlen, "%s: more points written than announced (%zu)", w->a.path, w->n);
         return -1;
     }
     int ok = 1;
     if (w->fmt == PF_TEXT) {
         for (size_t i = 0; i < count && ok; i++)
-            ok = fprintf(w->f, "%.17g %.17g\n", xy[2 * i], xy[2 * i + 1]) > 0;
+            ok = fprintf(w->a.f, "%.17g %.17g\n", xy[2 * i], xy[2 * i + 1]) > 0;
     } else if (host_is_little_endian()) {
-        ok = fwrite(xy, sizeof(double), 2 * count, w->f) == 2 * count;
+        ok = fwrite(xy, sizeof(double), 2 * count, w->a.f) == 2 * count;
     } else {
         for (size_t i = 0; i < 2 * count && ok; i++) {
             double v = swap_double(xy[i]);
-            ok = fwrite(&v, sizeof v, 1, w->f) == 1;
+            ok = fwrite(&v, sizeof v, 1, w->a.f) == 1;
         }
     }
     if (!ok) {
-        set_err(err, errlen, "%s: write failed: %s", w->path, strerror(errno));
+        set_err(err, errlen, "%s: write failed: %s", w->a.path, strerror(errno));
         return -1;
     }
     w->written += count;
@@ -188,38 +162,20 @@ int pf_writer_put(pf_writer *w, const double *xy, size_t count, char *err, size_
 int pf_writer_commit(pf_writer *w, char *err, size_t errlen)
 {
     if (w->written != w->n) {
-        set_err(err, errlen, "%s: %zu points written, %zu announced", w->path, w->written, w->n);
+        set_err(err, errlen, "%s: %zu points written, %zu announced", w->a.path, w->written, w->n);
         pf_writer_abort(w);
         return -1;
     }
-    FILE *f = w->f;
-    w->f = NULL;
-    if (fflush(f) != 0 || ferror(f)) {
-        set_err(err, errlen, "%s: write failed: %s", w->path, strerror(errno));
-        fclose(f);
-        pf_writer_abort(w);
-        return -1;
-    }
-    if (fclose(f) != 0) {
-        set_err(err, errlen, "%s: write failed: %s", w->path, strerror(errno));
-        pf_writer_abort(w);
-        return -1;
-    }
-    if (rename(w->tmp, w->path) != 0) {
-        set_err(err, errlen, "%s: cannot rename output into place: %s", w->path, strerror(errno));
-        pf_writer_abort(w);
-        return -1;
-    }
-    free(w->path); free(w->tmp); free(w);
-    return 0;
+    const int rc = atomic_commit(&w->a, err, errlen);
+    free(w);
+    return rc;
 }
 
 void pf_writer_abort(pf_writer *w)
 {
     if (!w) return;
-    if (w->f) fclose(w->f);
-    unlink(w->tmp);
-    free(w->path); free(w->tmp); free(w);
+    atomic_abort(&w->a);
+    free(w);
 }
 
 int pf_write(const char *path, const double *xy, size_t n, char *err, size_t errlen)

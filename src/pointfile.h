@@ -1,4 +1,5 @@
-/* pointfile.h - the one module that reads and writes point files.
+/* pointfile.h - layer 2 (its code uses atomic.h, layer 0): the one module
+ * that reads and writes point files.
  *
  * Owns: the three formats (text "x y" lines with '#' comments, NumPy .npy
  * n x 2 float64, raw little-endian float64 pairs), the choice of format by

@@ -1,4 +1,5 @@
-/* rng.h - counter-based random numbers.
+/* rng.h - layer 0 (includes nothing of the project): counter-based random
+ * numbers.
  *
  * Every random number is a pure function of (seed, stream, counter): no
  * shared generator state, so the numbers a cell gets do not depend on how

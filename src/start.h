@@ -7,7 +7,7 @@
  * field (docs/method.md says why). Every coordinate is a pure function of
  * (seed, start cell), so any process makes any optimisation cell's points
  * without the others. Order inside a cell: by start cell, then by point.
- * May include: geom.h, rng.h, grid.h (the optimisation grid). */
+ * May include: geom.h, rng.h (layers 0-1), grid.h (the optimisation grid). */
 #ifndef CFPO_START_H
 #define CFPO_START_H
 

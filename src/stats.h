@@ -1,4 +1,5 @@
-/* stats.h - distance statistics of any point set on the unit torus.
+/* stats.h - layer 1 (may include layer 0 and geom.h): distance statistics
+ * of any point set on the unit torus.
  *
  * Owns: nearest-neighbour distances of an arbitrary set (x0 y0 x1 y1 ...,
  * coordinates in [0,1)), through a temporary uniform grid, in O(n), and

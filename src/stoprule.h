@@ -1,4 +1,4 @@
-/* stoprule.h - layer 3 helper: when an iterative run stops.
+/* stoprule.h - layer 2: when an iterative run stops.
  *
  * Owns: the one definition of the stop rules shared by CFPO (every rank
  * decides the same from the same reduced statistics) and the FPO
@@ -6,11 +6,11 @@
  * quality targets on delta_min / delta_avg, a wall-clock limit checked at
  * iteration boundaries, and the iteration cap; their names for the SUMMARY
  * line; the command-line options that set them.
- * May include: cfpo.h (the public types), cli.h. */
+ * May include: cfpo_types.h (layer 0), cli.h. */
 #ifndef CFPO_STOPRULE_H
 #define CFPO_STOPRULE_H
 
-#include "cfpo.h"
+#include "cfpo_types.h"
 
 enum {
     CFPO_STOP_NONE = 0,   /* go on */

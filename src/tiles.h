@@ -1,4 +1,5 @@
-/* tiles.h - layer 4, the arithmetic half: how the g x g cell grid is cut
+/* tiles.h - layer 2 (includes nothing of the project), the arithmetic
+ * half of the cut across ranks: how the g x g cell grid is cut
  * into px x py rectangular tiles, one per rank (rank = ty * px + tx).
  *
  * Owns: choosing px x py for P ranks (or taking a forced cut), the tile

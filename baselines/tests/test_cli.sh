@@ -84,6 +84,8 @@ done
 grep -q "method=lfpo" "$T/out" && ok || bad "cfpo-lfpo does not report method=lfpo"
 expect 0 "" "$B/cfpo-fpo" -n 300 -q --local --max-iter 1
 grep -q "method=lfpo" "$T/out" && ok || bad "cfpo-fpo --local is not LFPO"
+# FPO's own memory model (about 720 bytes a point), not cfpo's.
+expect 1 "^cfpo-fpo: n = 1073741824 is too large for memory: the triangulation needs about 773\.1 GB" "$B/cfpo-fpo" -n 2^30
 
 # Poisson-disk options.
 expect 2 "^cfpo-bs: --max-fails applies to cfpo-dart only" "$B/cfpo-bs" -n 100 --max-fails 5

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "engine.h"
+#include "cfpo.h"
 #include "fpo.h"
 #include "testutil.h"
 

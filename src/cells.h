@@ -1,19 +1,27 @@
-/* engine_impl.h - the engine's insides, shared by its files (not a public
- * header: only src/engine*.c include it). Layer 3, like engine.h; may
- * include engine.h and the layers below it.
+/* cells.h - layer 3, the bottom of the engine: its state (the tile of
+ * cells plus the halo ring around it, points stored cell by cell),
+ * addressing cells, growing the storage, change marks. Not a public
+ * header: only src/engine*.c, src/cells.c and src/backend*.c include it.
+ * May include engine.h and the layers below it.
  *
- * The engine is split by concept:
- *   engine.c        creation, solving a cell, the colour schedule and
- *                   phase, the grid shift, the run loop and output
- *   engine_move.c   points moving between cells, tiles and ranks
- *   engine_halo.c   the halo ring (who keeps which cell, the refresh after
- *                   every phase) and the --check verifications
- *   engine_init.c   the initial set of each variant
- *   engine_ckpt.c   checkpoints: reading, validating, writing
- *   engine_stats.c  delta_min and delta_avg of the set, exact and cached
- *                   per block of cells */
-#ifndef CFPO_ENGINE_IMPL_H
-#define CFPO_ENGINE_IMPL_H
+ * The engine is split by concept, each file on top of this one:
+ *   cells.c           storage growth, the memory model, change marks
+ *   engine.c          creation, getters, timing
+ *   engine_schedule.c the colour schedule: phase, grid shift, sweep,
+ *                     iteration and run loop (the host side of the seam)
+ *   backend.h         the seam: the per-phase work a compute backend does
+ *   backend_cpu.c     the OpenMP backend: solving the cells of a colour
+ *   engine_move.c     points moving between cells, tiles and ranks
+ *   engine_halo.c     the halo ring (who keeps which cell, the refresh
+ *                     after every phase)
+ *   engine_check.c    the --check verifications
+ *   engine_init.c     the initial set of each variant
+ *   engine_ckpt.c     checkpoints: reading, validating, writing
+ *   engine_stats.c    delta_min and delta_avg of the set, exact and cached
+ *                     per block of cells
+ *   engine_output.c   the points out, in id order */
+#ifndef CFPO_CELLS_H
+#define CFPO_CELLS_H
 
 #include <math.h>
 #include <stddef.h>
@@ -59,7 +67,10 @@ typedef struct {
     size_t hcap;
 } neighbour;
 
+struct cfpo_backend;
+
 struct cfpo_engine {
+    const struct cfpo_backend *be; /* who solves, marks and relocates (backend.h) */
     cfpo_grid G;
     cfpo_options o;
     cfpo_engine_config cfg;
@@ -199,6 +210,33 @@ static inline int64_t first_of(int64_t origin, int p, int64_t want)
     return ((want - origin) % p + p) % p;
 }
 
+/* The own cells of one colour: nxc x nyc cells, tile coordinates
+ * (bx + p i, by + p j). Colour k is the global cells (x, y) with
+ * x = k mod p and y = k div p (mod p). */
+typedef struct {
+    int colour, p;
+    int64_t bx, by, nxc, nyc;
+} eng_colour;
+
+static inline eng_colour eng_colour_of(const cfpo_engine *E, int colour)
+{
+    eng_colour C;
+    C.colour = colour;
+    C.p = E->G.period;
+    C.bx = first_of(E->x0, C.p, colour % C.p);
+    C.by = first_of(E->y0, C.p, colour / C.p);
+    C.nxc = C.bx < E->w ? (E->w - C.bx + C.p - 1) / C.p : 0;
+    C.nyc = C.by < E->h ? (E->h - C.by + C.p - 1) / C.p : 0;
+    return C;
+}
+
+/* The t-th cell of colour C (t < nxc nyc), in row-major order. */
+static inline void eng_colour_cell(const eng_colour *C, int64_t t, int64_t *lx, int64_t *ly)
+{
+    *ly = C->by + C->p * (t / C->nxc);
+    *lx = C->bx + C->p * (t % C->nxc);
+}
+
 /* Shared between the engine's files. */
 int eng_ensure_cap(cfpo_engine *E, size_t need);
 void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly);
@@ -210,9 +248,10 @@ void eng_check_migration(cfpo_engine *E);
 void eng_check_halo(cfpo_engine *E);
 int eng_ensure_scratch(cfpo_engine *E);
 int eng_relocate(cfpo_engine *E, int colour);
-int eng_pack_migrants(cfpo_engine *E, int64_t bx, int64_t by, int64_t nxc, int64_t nyc, int p);
+int eng_pack_migrants(cfpo_engine *E, const eng_colour *C);
 int eng_exchange_migrants(cfpo_engine *E);
 int eng_make_initial(cfpo_engine *E, char *err, size_t errlen);
+double eng_shift_of(const cfpo_grid *G, int k);
 int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen);
 int eng_write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err, size_t errlen);
 

@@ -1,0 +1,213 @@
+/* engine_schedule.c - the colour schedule: the phase (one colour, through
+ * the backend's steps and the host's migration and halo), the adaptive
+ * variant's margin and grid shift, the sweep (every colour once), the
+ * iteration with its statistics and the run loop with its stop rules.
+ * The one colour loop of the project: cfpo, the library and cfpo-bench
+ * all sweep through cfpo_engine_sweep.
+ *
+ * Why a phase is race-free (written once, here): cells of one colour are
+ * `period` cells apart in both directions, on the whole torus, whatever the
+ * tiles. A point of cell C may move only inside S(x), C grown by a margin
+ * below L (L - Delta(n) in the paper's variant, at most L - delta(X) in the
+ * adaptive one), so it stays in C's 3x3 block, and solving C reads only
+ * C's 3x3 block. With period 3 the blocks of two same-colour cells are
+ * disjoint, so no cell is written by one thread (or rank) and read by
+ * another (Parallelization Theorem). The simplified variant keeps points in
+ * their own cell, so period 2 suffices. Inside a cell, points are solved in
+ * id order, each seeing the moves of the ones before it.
+ *
+ * Between phases: points that crossed into another cell of this tile are
+ * moved there; points that crossed into a halo cell migrate to the rank
+ * that owns it; then every rank sends the cells next to its tile's border
+ * to the neighbours whose halo holds them. So the next phase sees exactly
+ * what one process would see, and the output is the same bytes for any
+ * number of ranks and threads.
+ *
+ * Skipping: a cell is solved again only if some cell of its 3x3 block
+ * changed (a point moved in it, left it or arrived; for halo cells: the
+ * refreshed copy differs) since its last solve. An unchanged block means
+ * the same inputs (same Y in the same order, same x), hence the same
+ * answer, which last time was "do not move", so the output is
+ * byte-identical to recomputing everything.
+ *
+ * Net displacement over an iteration is kept per point (two floats that
+ * travel with the point); a move there and back cancels exactly, so a
+ * point cycling between cells does not keep the run from converging. */
+#include "backend.h"
+#include "stoprule.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static void sync_host(cfpo_engine *E)
+{
+    if (E->be->sync_host) E->be->sync_host(E);
+}
+
+static void sync_device(cfpo_engine *E)
+{
+    if (E->be->sync_device) E->be->sync_device(E);
+}
+
+static void die(const cfpo_engine *E, const char *what)
+{
+    fprintf(stderr, "cfpo: rank %d: out of memory while %s\n", E->rank, what);
+    comm_abort(1);
+}
+
+/* After the cells of colour C changed (points moved, or the grid moved
+ * under them): mark the blocks that changed, send points that left the
+ * tile, move points that changed cell, clear the masks, refresh the halo.
+ * `moves`: whether any cell of the colour has mask bits. */
+static void settle(cfpo_engine *E, const eng_colour *C, int64_t moves)
+{
+    const double t1 = now();
+    const int crossed = moves ? E->be->mark(E, C) : 0;
+    if (crossed || E->nnb) sync_host(E);
+    int rc = 0;
+    if (crossed && eng_pack_migrants(E, C) != 0) rc = -1;
+    if (!crossed)
+        for (int k = 0; k < E->nnb; k++) E->nb[k].nout = 0;
+    if (rc == 0 && eng_exchange_migrants(E) != 0) rc = -1;
+    if (rc == 0 && (crossed || E->narr) && E->be->relocate(E, C->colour) != 0) rc = -1;
+    if (rc != 0) die(E, "moving points between cells");
+    if (moves) E->be->unmark(E, C);
+    for (size_t i = 0; i < E->narr; i++) E->mask[E->arr[i].cell] &= (uint16_t)~ARRIVE_BIT;
+    E->narr = 0;
+    E->t_migrate += now() - t1;
+    if (E->cfg.check && !E->shifting) eng_check_migration(E);
+    if (eng_refresh_halo(E) != 0) die(E, "refreshing the halo");
+    if (E->nnb) sync_device(E);
+    if (E->cfg.check && !E->shifting) eng_check_halo(E);
+}
+
+int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
+{
+    const eng_colour C = eng_colour_of(E, colour);
+    const double t0 = now();
+    *solved = 0;
+    const int64_t moves = E->be->solve(E, &C, solved);
+    E->t_compute += now() - t0;
+    E->phases++;
+    settle(E, &C, moves);
+    return moves;
+}
+
+/* The adaptive variant's grid offset in iteration k (0 before the first). */
+double eng_shift_of(const cfpo_grid *G, int k)
+{
+    if (G->variant != CFPO_VARIANT_ADAPTIVE || k <= 0) return 0;
+    k -= (k - 1) % SHIFT_EVERY; /* the shift of the group of iterations k belongs to */
+    return G->L * cfpo_rand01(G->seed ^ SHIFT_SALT, (uint64_t)k, 0);
+}
+
+/* Moves the grid under the points to offset `shift` (both axes): colour by
+ * colour, the points of each cell go to the cell that holds them now
+ * (the same or a neighbour, as |change| < L), through the same steps as a
+ * phase's moves. Then every cell is solved again and every statistics
+ * block recomputed (each cell's frame and constraint square moved). */
+static void move_grid(cfpo_engine *E, double shift)
+{
+    E->G.shift = shift;
+    E->shifting = 1;
+    for (int colour = 0; colour < E->G.period * E->G.period; colour++) {
+        const eng_colour C = eng_colour_of(E, colour);
+        E->be->regrid(E, &C);
+        settle(E, &C, 1);
+    }
+    E->shifting = 0;
+    for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    memset(E->bdirty, 1, (size_t)(E->nbx * E->nby));
+    if (E->cfg.check) {
+        eng_check_migration(E);
+        eng_check_halo(E);
+    }
+}
+
+/* The adaptive variant's margin for the coming iteration: S reaches
+ * L - max(delta(X), theta Delta(n)) past the cell, the most the
+ * convergence argument allows while delta(X) is large, and no more than
+ * L - theta Delta(n) early on (delta(X) taken a hair high, so rounding
+ * can only shrink S). */
+void cfpo_engine_begin(cfpo_engine *E)
+{
+    E->cur++;
+    if (E->G.variant != CFPO_VARIANT_ADAPTIVE) return;
+    const double d = fmax(E->dmin_now * (1 + 1e-9), ADAPTIVE_THETA) * E->G.delta;
+    E->G.margin = d < E->G.L ? E->G.L - d : 0;
+    const double sh = eng_shift_of(&E->G, E->cur);
+    if (sh != E->G.shift) move_grid(E, sh);
+}
+
+void cfpo_engine_sweep(cfpo_engine *E, int64_t *moved, int64_t *solved)
+{
+    cfpo_engine_begin(E);
+    E->be->begin(E);
+    *moved = *solved = 0;
+    for (int colour = 0; colour < E->G.period * E->G.period; colour++) {
+        int64_t sv = 0;
+        *moved += cfpo_engine_phase(E, colour, &sv);
+        *solved += sv;
+    }
+}
+
+void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
+{
+    const double t0 = now();
+    int64_t v[2];
+    cfpo_engine_sweep(E, &v[0], &v[1]);
+    /* Every rank looks: a point that moved may have migrated to a rank
+     * that moved none itself. */
+    double mx[2] = {E->be->max_disp2(E), E->max_move};
+    comm_sum_i64(v, 2);
+    comm_max_d(mx, 2);
+    s->moved = v[0];
+    s->solved = v[1];
+    s->max_disp = sqrt(mx[0]) / E->G.L;
+    s->max_move = sqrt(mx[1]) / E->G.L;
+    s->converged = cfpo_net_converged(v[0], s->max_disp, E->o.tol);
+    cfpo_engine_deltas(E, &s->delta_min, &s->delta_avg);
+    double el = now() - t0;
+    comm_max_d(&el, 1);
+    s->seconds = el;
+}
+
+/* Stop rule and progress callback after statistics s (elapsed: seconds
+ * since the engine was created, reduced over ranks, so every rank stops
+ * at the same iteration). */
+static int decide(const cfpo_engine *E, const cfpo_iter_stats *s, double elapsed)
+{
+    int why = cfpo_stop_check(&E->o.stop, s, elapsed, E->o.max_iter);
+    if (E->o.progress && E->o.progress(s, E->o.user) && !why) why = CFPO_STOP_CALLER;
+    return why;
+}
+
+int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen)
+{
+    const double t0 = now();
+    cfpo_iter_stats s = {0};
+    s.iteration = E->iter0;
+    s.converged = E->resumed_converged;
+    cfpo_engine_deltas(E, &s.delta_min, &s.delta_avg);
+    s.seconds = now() - t0;
+    double elapsed = now() - E->t_born;
+    comm_max_d(&elapsed, 1);
+    int why = decide(E, &s, elapsed);
+    int it = E->iter0, rc = 0;
+    while (!why) {
+        cfpo_engine_iterate(E, &s);
+        s.iteration = ++it;
+        elapsed += s.seconds;
+        why = decide(E, &s, elapsed);
+        if (E->cfg.checkpoint && E->cfg.checkpoint_every > 0 && it % E->cfg.checkpoint_every == 0 &&
+            eng_write_checkpoint(E, it, s.converged, err, errlen) != 0) {
+            rc = -1;
+            break;
+        }
+    }
+    E->iter0 = it;
+    *res = (cfpo_result){.iterations = it, .converged = s.converged, .stop = why, .seconds = now() - t0,
+                         .delta_min = s.delta_min, .delta_avg = s.delta_avg, .cells_per_side = E->G.g};
+    return rc;
+}

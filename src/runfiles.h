@@ -1,0 +1,40 @@
+/* runfiles.h - layer 4: the files of one cfpo run across ranks: the
+ * points (text through one rank's writer; .npy and raw written by every
+ * rank into one shared file) and the trace (rank 0). Each is written to a
+ * temporary beside its final name, registered with the signal clean-up,
+ * and renamed into place only at the end; a failed or interrupted run
+ * leaves no file behind.
+ * May include: cfpo_types.h, engine.h (layers 0-3). */
+#ifndef CFPO_RUNFILES_H
+#define CFPO_RUNFILES_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "engine.h"
+
+typedef struct cfpo_runfiles cfpo_runfiles;
+
+/* Checks, before anything is opened, that `out` has a known format that
+ * this many ranks can write and that the checkpoint is another file. 0, or
+ * -1 with a one-line message (a usage error). out and checkpoint may be
+ * NULL. */
+int cfpo_runfiles_check(const char *out, const char *checkpoint, int ranks, char *err, size_t errlen);
+
+/* Collective: opens the temporaries of `out` (n points) and `trace`
+ * (either may be NULL) and writes the trace's header. NULL with a message
+ * on every rank when one cannot be created (nothing left behind). */
+cfpo_runfiles *cfpo_runfiles_open(const char *out, const char *trace, int64_t n, char *err, size_t errlen);
+
+/* The trace stream on rank 0 (NULL elsewhere, or without a trace). */
+FILE *cfpo_runfiles_trace(const cfpo_runfiles *f);
+
+/* Collective: writes the engine's points and puts every file in place;
+ * frees f. 0, or -1 with a message (then no temporary is left). */
+int cfpo_runfiles_commit(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen);
+
+/* Collective: removes every temporary; frees f (NULL: nothing). */
+void cfpo_runfiles_abort(cfpo_runfiles *f);
+
+#endif
