@@ -63,13 +63,24 @@ int atomic_open(atomic_file *a, const char *path, const char *mode, char *err, s
     return 0;
 }
 
-int atomic_commit(atomic_file *a, char *err, size_t errlen)
+int atomic_finish(atomic_file *a, char *err, size_t errlen)
 {
+    errno = 0;
     int bad = fflush(a->f) != 0 || ferror(a->f);
     if (fclose(a->f) != 0) bad = 1;
     a->f = NULL;
-    if (bad || atomic_replace(a->tmp, a->path) != 0) {
+    if (bad) {
         snprintf(err, errlen, "%s: write failed: %s", a->path, strerror(errno ? errno : EIO));
+        atomic_abort(a);
+        return -1;
+    }
+    return 0;
+}
+
+int atomic_publish(atomic_file *a, char *err, size_t errlen)
+{
+    if (atomic_replace(a->tmp, a->path) != 0) {
+        snprintf(err, errlen, "%s: write failed: %s", a->path, strerror(errno));
         atomic_abort(a);
         return -1;
     }
@@ -77,6 +88,12 @@ int atomic_commit(atomic_file *a, char *err, size_t errlen)
     free(a->tmp);
     memset(a, 0, sizeof *a);
     return 0;
+}
+
+int atomic_commit(atomic_file *a, char *err, size_t errlen)
+{
+    if (atomic_finish(a, err, errlen) != 0) return -1;
+    return atomic_publish(a, err, errlen);
 }
 
 void atomic_abort(atomic_file *a)

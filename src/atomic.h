@@ -31,6 +31,12 @@ int atomic_open(atomic_file *a, const char *path, const char *mode, char *err, s
 /* Flushes, closes and renames into place. 0, or -1 with "PATH: write
  * failed: REASON" (the temporary is removed). */
 int atomic_commit(atomic_file *a, char *err, size_t errlen);
+/* The two halves of atomic_commit, for a run that writes several files
+ * and replaces none unless all were written whole: finish (flush and close;
+ * the temporary stays, the error as atomic_commit's), then publish (the
+ * rename). */
+int atomic_finish(atomic_file *a, char *err, size_t errlen);
+int atomic_publish(atomic_file *a, char *err, size_t errlen);
 /* Closes and removes the temporary (nothing when a holds none). */
 void atomic_abort(atomic_file *a);
 

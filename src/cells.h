@@ -16,6 +16,7 @@
  *                     after every phase)
  *   engine_check.c    the --check verifications
  *   engine_init.c     the initial set of each variant
+ *   engine_given.c    a start given by the caller (--init FILE)
  *   engine_ckpt.c     checkpoints: reading, validating, writing
  *   engine_stats.c    delta_min and delta_avg of the set, exact and cached
  *                     per block of cells
@@ -251,6 +252,12 @@ int eng_relocate(cfpo_engine *E, int colour);
 int eng_pack_migrants(cfpo_engine *E, const eng_colour *C);
 int eng_exchange_migrants(cfpo_engine *E);
 int eng_make_initial(cfpo_engine *E, char *err, size_t errlen);
+/* A given start (config.start_xy): more than this many points in one cell
+ * is refused (a cell's work grows with the cube of its count; a uniform
+ * random set of 10^9 points almost surely has fewer than 20 in every
+ * cell). */
+#define CFPO_GIVEN_CELL_MAX 64
+int eng_take_points(cfpo_engine *E, const double *xy, char *err, size_t errlen);
 double eng_shift_of(const cfpo_grid *G, int k);
 int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen);
 int eng_write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err, size_t errlen);

@@ -484,10 +484,9 @@ int comm_file_write_runs(comm_file *f, uint64_t base, size_t elem, const void *b
     return 0;
 }
 
-int comm_file_commit(comm_file *f, int ok, char *err, size_t errlen)
+int comm_file_finish(comm_file *f, int ok, char *err, size_t errlen)
 {
     int good = comm_all(ok && !f->failed);
-    int rc = 0;
 #ifdef CFPO_HAVE_MPI
     if (f->mpi) {
         if (good && MPI_File_sync(f->fh) != MPI_SUCCESS) good = 0;
@@ -500,21 +499,33 @@ int comm_file_commit(comm_file *f, int ok, char *err, size_t errlen)
         if (good && fsync(f->fd) != 0 && errno != EINVAL) good = 0;
         if (close(f->fd) != 0) good = 0;
     }
+    f->fd = -1;
+    if (good) return 0;
+    snprintf(err, errlen, "%s: write failed (disk full or file system error)", f->path);
+    comm_file_discard(f);
+    return -1;
+}
+
+int comm_file_publish(comm_file *f, char *err, size_t errlen)
+{
     int64_t e = 0;
-    if (rank == 0) {
-        if (!good) unlink(f->tmp);
-        else if (atomic_replace(f->tmp, f->path) != 0) e = errno;
-    }
+    if (rank == 0 && atomic_replace(f->tmp, f->path) != 0) e = errno;
     comm_bcast(&e, sizeof e, 0);
-    if (!good) {
-        snprintf(err, errlen, "%s: write failed (disk full or file system error)", f->path);
-        rc = -1;
-    } else if (e) {
-        snprintf(err, errlen, "%s: cannot rename into place: %s", f->path, strerror((int)e));
-        rc = -1;
-    }
+    if (e) snprintf(err, errlen, "%s: cannot rename into place: %s", f->path, strerror((int)e));
     free_file(f);
-    return rc;
+    return e ? -1 : 0;
+}
+
+void comm_file_discard(comm_file *f)
+{
+    if (rank == 0) unlink(f->tmp);
+    free_file(f);
+}
+
+int comm_file_commit(comm_file *f, int ok, char *err, size_t errlen)
+{
+    if (comm_file_finish(f, ok, err, errlen) != 0) return -1;
+    return comm_file_publish(f, err, errlen);
 }
 
 comm_file *comm_file_open_read(const char *path, uint64_t *size_out, char *err, size_t errlen)

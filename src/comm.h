@@ -78,6 +78,13 @@ int comm_file_write_runs(comm_file *f, uint64_t base, size_t elem, const void *b
 /* Collective: agrees on success (ok = this rank's verdict), then closes and
  * renames or removes. Returns 0 when every rank succeeded. */
 int comm_file_commit(comm_file *f, int ok, char *err, size_t errlen);
+/* comm_file_commit in two halves, for a run that replaces none of its
+ * files unless all were written whole: finish (agree, sync, close; on
+ * failure the temporary is removed and f freed), then either publish
+ * (rename into place) or discard (remove the temporary); both free f. */
+int comm_file_finish(comm_file *f, int ok, char *err, size_t errlen);
+int comm_file_publish(comm_file *f, char *err, size_t errlen);
+void comm_file_discard(comm_file *f);
 const char *comm_file_tmpname(const comm_file *f);
 
 /* Reading: opened by all ranks; reads are independent. */

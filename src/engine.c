@@ -109,6 +109,7 @@ static int alloc_cells(cfpo_engine *E)
 static int load_points(cfpo_engine *E, char *err, size_t errlen)
 {
     const char *path = E->cfg.resume;
+    if (!path && E->cfg.start_xy) return eng_take_points(E, E->cfg.start_xy, err, errlen);
     if (!path) return eng_make_initial(E, err, errlen);
     cfpo_checkpoint_info info;
     if (cfpo_checkpoint_peek(path, &info, err, errlen) != 0) return -1;

@@ -51,6 +51,9 @@ typedef struct {
     int check;               /* verify invariants after every migration and
                                 halo refresh (tests; slow) */
     const char *resume;      /* start from this checkpoint instead of anew */
+    const double *start_xy;  /* or from these n points (x0 y0 x1 y1 ..., in
+                                [0,1), point k gets id k) instead of the
+                                variant's start; every rank passes all n */
     const char *checkpoint;  /* write a checkpoint here ... */
     int checkpoint_every;    /* ... every this many iterations */
 } cfpo_engine_config;

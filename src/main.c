@@ -51,6 +51,9 @@ static void usage(void)
            "      --checkpoint-every K   ... every K iterations (default 100)\n"
            "      --resume F       continue from checkpoint F, on any number of ranks;\n"
            "                       n, seed, variant and tol come from it\n"
+           "      --init FILE      start from the points of FILE (any format above; n comes\n"
+           "                       from it) instead of the variant's start, to polish another\n"
+           "                       sampler's set (the README says what is then guaranteed)\n"
            "      --dry-run        print the tiling, memory per rank and bytes per phase\n"
            "                       for n on P ranks, then stop (allocates no points)\n"
            "      --ranks P        the rank count for --dry-run (default: this run's)\n"
@@ -167,7 +170,8 @@ typedef struct {
     cfpo_options o;
     cfpo_engine_config cfg;
     int64_t n, dry_ranks;
-    const char *out, *trace;
+    const char *out, *trace, *init;
+    double *init_xy; /* the points of --init */
     int quiet, dry, every;
     int given_seed, given_variant, given_tol;
 } cmdline;
@@ -231,11 +235,29 @@ static int run_option(cmdline *c, int ch, char *arg)
     case 'P': c->cfg.checkpoint = arg; break;
     case 'E': c->every = (int)whole("--checkpoint-every", arg, 1, 1000000000, "1..1e9"); break;
     case 'R': c->cfg.resume = arg; break;
+    case 'I': c->init = arg; break;
     case 'D': c->dry = 1; break;
     case 'N': c->dry_ranks = whole("--ranks", arg, 1, 1 << 24, "1..16777216"); break;
     default: return 0;
     }
     return 1;
+}
+
+/* The usage error for an option getopt refused: "--name=VALUE" of an
+ * option that takes none, an unknown long option, or an unknown short one
+ * (arg is the argument getopt stopped at). */
+static void bad_option(const struct option *longopts, const char *arg)
+{
+    if (strncmp(arg, "--", 2) == 0) {
+        const char *eq = strchr(arg, '=');
+        const size_t len = eq ? (size_t)(eq - arg - 2) : strlen(arg + 2);
+        for (const struct option *o = longopts; eq && o->name; o++)
+            if (o->has_arg == no_argument && strlen(o->name) == len && strncmp(o->name, arg + 2, len) == 0)
+                cli_usage_error(prog, "option '--%s' takes no value", o->name);
+        cli_usage_error(prog, "unknown option '%.*s'", (int)(len + 2), arg);
+    }
+    if (optopt) cli_usage_error(prog, "unknown option '-%c'", optopt);
+    cli_usage_error(prog, "unknown option '%s'", arg);
 }
 
 /* Parses argv into c; --help and --version answer and exit. */
@@ -253,7 +275,7 @@ static void parse(int argc, char **argv, cmdline *c)
         {"resume", required_argument, 0, 'R'}, {"dry-run", no_argument, 0, 'D'},
         {"ranks", required_argument, 0, 'N'}, {"target-min", required_argument, 0, 1001},
         {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003},
-        {0, 0, 0, 0}};
+        {"init", required_argument, 0, 'I'}, {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;
     c->every = -1;
@@ -265,9 +287,7 @@ static void parse(int argc, char **argv, cmdline *c)
         case 'h': if (comm_rank() == 0) usage(); comm_finalize(); exit(0);
         case 'V': if (comm_rank() == 0) printf("cfpo %s\n", CFPO_VERSION); comm_finalize(); exit(0);
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
-        default:
-            if (optopt) cli_usage_error(prog, "unknown option '-%c'", optopt);
-            cli_usage_error(prog, "unknown option '%s'", argv[optind - 1]);
+        default: bad_option(longopts, argv[optind - 1]);
         }
     }
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
@@ -292,6 +312,19 @@ static void take_from_checkpoint(cmdline *c)
     c->o.tol = info.tol;
 }
 
+/* --init: the points of the file, and n from them. */
+static void take_from_points(cmdline *c)
+{
+    char err[512];
+    size_t n;
+    if (pf_read(c->init, &c->init_xy, &n, err, sizeof err) != 0) cli_fail(prog, "--init %s", err);
+    if (c->n >= 0 && c->n != (int64_t)n)
+        cli_usage_error(prog, "--init %s: the file holds %zu points, -n says %lld; leave -n out or give the same",
+                        c->init, n, (long long)c->n);
+    c->n = (int64_t)n;
+    c->cfg.start_xy = c->init_xy;
+}
+
 /* Options that only make sense together, the defaults that depend on
  * others, the checkpoint's run. */
 static void settle_options(cmdline *c)
@@ -302,7 +335,10 @@ static void settle_options(cmdline *c)
     if (c->dry_ranks > 0 && !c->dry)
         cli_usage_error(prog, "--ranks is for --dry-run (under mpirun the rank count is mpirun's)");
     if (c->cfg.resume && c->dry) cli_usage_error(prog, "--dry-run and --resume do not go together");
+    if (c->init && (c->cfg.resume || c->dry))
+        cli_usage_error(prog, "--init does not go with %s", c->dry ? "--dry-run" : "--resume");
     if (c->cfg.resume) take_from_checkpoint(c);
+    if (c->init) take_from_points(c);
     if (c->n < 0) cli_usage_error(prog, "the number of points is required: -n N");
 }
 
@@ -310,7 +346,7 @@ static void settle_options(cmdline *c)
 static void validate(const cmdline *c)
 {
     char err[512];
-    if (cfpo_runfiles_check(c->out, c->cfg.checkpoint, comm_size(), err, sizeof err) != 0)
+    if (cfpo_runfiles_check(c->out, c->trace, c->cfg.checkpoint, comm_size(), err, sizeof err) != 0)
         cli_usage_error(prog, "%s", err);
     int vr = cfpo_plan_check(c->n, &c->o, c->cfg.px, c->cfg.py, err, sizeof err);
     if (vr == -1) cli_usage_error(prog, "%s", err);
@@ -322,7 +358,7 @@ static void validate(const cmdline *c)
 static cfpo_engine *run(cmdline *c, run_ctx *ctx, cfpo_result *res)
 {
     char err[512];
-    cfpo_runfiles *files = cfpo_runfiles_open(c->out, c->trace, c->n, err, sizeof err);
+    cfpo_runfiles *files = cfpo_runfiles_open(c->out, c->trace, c->cfg.checkpoint, c->n, err, sizeof err);
     if (!files) cli_fail(prog, "%s", err);
     *ctx = (run_ctx){.n = c->n, .max_iter = c->o.max_iter, .stop = c->o.stop, .trace = cfpo_runfiles_trace(files)};
     cli_progress_init(&ctx->prog, c->quiet || comm_rank() != 0);
@@ -392,6 +428,7 @@ int main(int argc, char **argv)
     cfpo_engine *E = run(&c, &ctx, &res);
     report(&c, E, &res, ctx.seconds);
     cfpo_engine_free(E);
+    free(c.init_xy);
     comm_finalize();
     return 0;
 }

@@ -159,16 +159,30 @@ int pf_writer_put(pf_writer *w, const double *xy, size_t count, char *err, size_
     return 0;
 }
 
-int pf_writer_commit(pf_writer *w, char *err, size_t errlen)
+int pf_writer_finish(pf_writer *w, char *err, size_t errlen)
 {
     if (w->written != w->n) {
         set_err(err, errlen, "%s: %zu points written, %zu announced", w->a.path, w->written, w->n);
+        atomic_abort(&w->a);
+        return -1;
+    }
+    return atomic_finish(&w->a, err, errlen);
+}
+
+int pf_writer_publish(pf_writer *w, char *err, size_t errlen)
+{
+    const int rc = w->a.tmp ? atomic_publish(&w->a, err, errlen) : -1;
+    free(w);
+    return rc;
+}
+
+int pf_writer_commit(pf_writer *w, char *err, size_t errlen)
+{
+    if (pf_writer_finish(w, err, errlen) != 0) {
         pf_writer_abort(w);
         return -1;
     }
-    const int rc = atomic_commit(&w->a, err, errlen);
-    free(w);
-    return rc;
+    return pf_writer_publish(w, err, errlen);
 }
 
 void pf_writer_abort(pf_writer *w)

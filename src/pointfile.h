@@ -35,6 +35,12 @@ int pf_writer_put(pf_writer *w, const double *xy, size_t count, char *err, size_
 /* Flushes, checks that exactly n points were written, renames into place,
  * frees w. On failure the temporary file is removed. */
 int pf_writer_commit(pf_writer *w, char *err, size_t errlen);
+/* pf_writer_commit in two halves, for a run that replaces none of its
+ * files unless all were written whole: finish (flush, check the count,
+ * close; on failure the temporary is removed and w must still go to
+ * pf_writer_abort), then publish (rename into place; frees w). */
+int pf_writer_finish(pf_writer *w, char *err, size_t errlen);
+int pf_writer_publish(pf_writer *w, char *err, size_t errlen);
 /* Removes the temporary file and frees w. Safe on NULL. */
 void pf_writer_abort(pf_writer *w);
 /* The temporary file's name (for a signal handler that must unlink it). */

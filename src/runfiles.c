@@ -3,6 +3,8 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli.h"
 #include "comm.h"
@@ -17,8 +19,38 @@ struct cfpo_runfiles {
     cli_atomic tr;  /* the trace, rank 0 */
 };
 
-int cfpo_runfiles_check(const char *out, const char *checkpoint, int ranks, char *err, size_t errlen)
+/* Do paths a and b name the same file? The same device and inode when
+ * both exist; else the same name in the same folder (folders compared by
+ * device and inode too). */
+static int same_file(const char *a, const char *b)
 {
+    struct stat sa, sb;
+    if (stat(a, &sa) == 0 && stat(b, &sb) == 0) return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    const char *ba = strrchr(a, '/'), *bb = strrchr(b, '/');
+    const char *na = ba ? ba + 1 : a, *nb = bb ? bb + 1 : b;
+    if (strcmp(na, nb) != 0) return 0;
+    char da[4096], db[4096];
+    snprintf(da, sizeof da, "%.*s", ba ? (int)(ba - a) + 1 : 1, ba ? a : ".");
+    snprintf(db, sizeof db, "%.*s", bb ? (int)(bb - b) + 1 : 1, bb ? b : ".");
+    if (stat(da, &sa) != 0 || stat(db, &sb) != 0) return strcmp(da, db) == 0;
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+int cfpo_runfiles_check(const char *out, const char *trace, const char *checkpoint, int ranks, char *err,
+                        size_t errlen)
+{
+    const char *name[3] = {out, trace, checkpoint}, *opt[3] = {"-o", "--trace", "--checkpoint"};
+    for (int i = 0; i < 3; i++) {
+        if (name[i] && !name[i][0]) {
+            snprintf(err, errlen, "%s: the file name is empty", opt[i]);
+            return -1;
+        }
+        for (int j = 0; j < i; j++)
+            if (name[i] && name[j] && same_file(name[i], name[j])) {
+                snprintf(err, errlen, "%s %s and %s %s are the same file", opt[j], name[j], opt[i], name[i]);
+                return -1;
+            }
+    }
     if (!out) return 0;
     const pf_format fmt = pf_format_of(out);
     if (fmt == PF_UNKNOWN) {
@@ -28,10 +60,6 @@ int cfpo_runfiles_check(const char *out, const char *checkpoint, int ranks, char
     if (fmt == PF_TEXT && ranks > 1) {
         snprintf(err, errlen, "%s: text output needs one rank (no rank holds the whole set); use .npy or .bin",
                  out);
-        return -1;
-    }
-    if (checkpoint && strcmp(checkpoint, out) == 0) {
-        snprintf(err, errlen, "--checkpoint and -o name the same file");
         return -1;
     }
     return 0;
@@ -55,7 +83,27 @@ static int open_points(cfpo_runfiles *f, const char *out, char *err, size_t errl
     return 0;
 }
 
-cfpo_runfiles *cfpo_runfiles_open(const char *out, const char *trace, int64_t n, char *err, size_t errlen)
+/* Rank 0 creates and removes a temporary beside the checkpoint's name. */
+static int probe_checkpoint(const char *path, char *err, size_t errlen)
+{
+    int ok = 1;
+    if (comm_rank() == 0) {
+        char *tmp = NULL;
+        const int fd = atomic_create(path, &tmp, err, errlen);
+        ok = fd >= 0;
+        if (ok) {
+            close(fd);
+            unlink(tmp);
+            free(tmp);
+        }
+    }
+    if (comm_all(ok)) return 0;
+    if (ok) snprintf(err, errlen, "%s: cannot create the checkpoint", path);
+    return -1;
+}
+
+cfpo_runfiles *cfpo_runfiles_open(const char *out, const char *trace, const char *checkpoint, int64_t n,
+                                  char *err, size_t errlen)
 {
     cfpo_runfiles *f = calloc(1, sizeof *f);
     if (!comm_all(f != NULL)) {
@@ -80,6 +128,10 @@ cfpo_runfiles *cfpo_runfiles_open(const char *out, const char *trace, int64_t n,
         if (comm_rank() == 0)
             fprintf(f->tr.f, "iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed\tmax_move\n");
     }
+    if (checkpoint && probe_checkpoint(checkpoint, err, errlen) != 0) {
+        cfpo_runfiles_abort(f);
+        return NULL;
+    }
     return f;
 }
 
@@ -98,25 +150,18 @@ void cfpo_runfiles_abort(cfpo_runfiles *f)
     free(f);
 }
 
-/* The points into the text writer (one rank). */
-static int commit_text(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen)
+/* The points into the text writer (one rank), finished but not in place. */
+static int finish_text(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen)
 {
-    char tmp[4096];
-    snprintf(tmp, sizeof tmp, "%s", pf_writer_tmpname(f->w));
     if (cfpo_engine_write(E, f->w, err, errlen) != 0) return -1;
-    pf_writer *w = f->w;
-    f->w = NULL;
-    if (pf_writer_commit(w, err, errlen) != 0) return -1;
-    cli_unguard_tmp(tmp);
+    if (pf_writer_finish(f->w, err, errlen) != 0) return -1;
     return 0;
 }
 
 /* The points into the shared file: rank 0 writes the header, every rank
- * its points (collective). */
-static int commit_shared(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen)
+ * its points (collective); finished but not in place. */
+static int finish_shared(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen)
 {
-    char tmp[4096];
-    snprintf(tmp, sizeof tmp, "%s", comm_file_tmpname(f->cf));
     unsigned char hdr[PF_HEADER_MAX];
     const size_t hl = pf_header(f->fmt, (size_t)f->n, hdr, sizeof hdr);
     int ok = 1;
@@ -124,24 +169,52 @@ static int commit_shared(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t err
     if (cfpo_engine_write_points(E, f->cf, hl, err, errlen) != 0) ok = 0;
     comm_file *cf = f->cf;
     f->cf = NULL;
-    if (comm_file_commit(cf, ok, err, errlen) != 0) return -1;
-    cli_unguard_tmp(tmp);
+    if (comm_file_finish(cf, ok, err, errlen) != 0) return -1; /* removed and freed */
+    f->cf = cf;
+    return 0;
+}
+
+/* Every file finished (written whole and closed), on every rank? */
+static int finish_all(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen)
+{
+    int rc = 0;
+    if (f->w) rc = finish_text(f, E, err, errlen);
+    else if (f->cf) rc = finish_shared(f, E, err, errlen);
+    if (rc == 0 && f->traced && comm_rank() == 0 && atomic_finish(&f->tr, err, errlen) != 0) {
+        f->traced = 0; /* removed */
+        rc = -1;
+    }
+    if (!comm_all(rc == 0)) {
+        if (rc == 0) snprintf(err, errlen, "another rank failed to write its files");
+        return -1;
+    }
     return 0;
 }
 
 int cfpo_runfiles_commit(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen)
 {
-    int rc = 0;
-    if (f->w) rc = commit_text(f, E, err, errlen);
-    else if (f->cf) rc = commit_shared(f, E, err, errlen);
-    if (rc == 0 && f->traced && comm_rank() == 0) {
-        f->traced = 0;
-        rc = cli_atomic_commit(&f->tr, err, errlen);
-    }
-    if (rc != 0) {
+    char ptmp[4096] = "";
+    if (f->w) snprintf(ptmp, sizeof ptmp, "%s", pf_writer_tmpname(f->w));
+    if (f->cf) snprintf(ptmp, sizeof ptmp, "%s", comm_file_tmpname(f->cf));
+    if (finish_all(f, E, err, errlen) != 0) {
+        if (f->cf) comm_file_discard(f->cf);
+        f->cf = NULL;
         cfpo_runfiles_abort(f);
         return -1;
     }
+    /* Every file is whole: now put them in place. */
+    int rc = 0;
+    if (f->w) rc = pf_writer_publish(f->w, err, errlen);
+    else if (f->cf) rc = comm_file_publish(f->cf, err, errlen);
+    f->w = NULL;
+    f->cf = NULL;
+    if (ptmp[0]) cli_unguard_tmp(ptmp);
+    if (f->traced && comm_rank() == 0) {
+        char ttmp[4096];
+        snprintf(ttmp, sizeof ttmp, "%s", f->tr.tmp);
+        if (atomic_publish(&f->tr, err, errlen) != 0) rc = -1;
+        cli_unguard_tmp(ttmp);
+    }
     free(f);
-    return 0;
+    return rc;
 }

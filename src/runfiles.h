@@ -16,22 +16,28 @@
 
 typedef struct cfpo_runfiles cfpo_runfiles;
 
-/* Checks, before anything is opened, that `out` has a known format that
- * this many ranks can write and that the checkpoint is another file. 0, or
- * -1 with a one-line message (a usage error). out and checkpoint may be
- * NULL. */
-int cfpo_runfiles_check(const char *out, const char *checkpoint, int ranks, char *err, size_t errlen);
+/* Checks, before anything is opened, that no name is empty, that the
+ * output, trace and checkpoint are three different files (the same file
+ * under another name counts as the same), and that `out` has a known
+ * format this many ranks can write. 0, or -1 with a one-line message (a
+ * usage error). Any name may be NULL. */
+int cfpo_runfiles_check(const char *out, const char *trace, const char *checkpoint, int ranks, char *err,
+                        size_t errlen);
 
 /* Collective: opens the temporaries of `out` (n points) and `trace`
- * (either may be NULL) and writes the trace's header. NULL with a message
- * on every rank when one cannot be created (nothing left behind). */
-cfpo_runfiles *cfpo_runfiles_open(const char *out, const char *trace, int64_t n, char *err, size_t errlen);
+ * (either may be NULL), writes the trace's header, and tries that a
+ * checkpoint can be created beside `checkpoint` (may be NULL), so a bad path
+ * fails before the work. NULL with a message on every rank when one cannot
+ * be created (nothing left behind). */
+cfpo_runfiles *cfpo_runfiles_open(const char *out, const char *trace, const char *checkpoint, int64_t n,
+                                  char *err, size_t errlen);
 
 /* The trace stream on rank 0 (NULL elsewhere, or without a trace). */
 FILE *cfpo_runfiles_trace(const cfpo_runfiles *f);
 
-/* Collective: writes the engine's points and puts every file in place;
- * frees f. 0, or -1 with a message (then no temporary is left). */
+/* Collective: writes the engine's points, finishes every file, and only
+ * when all were written whole puts them in place; frees f. 0, or -1 with a
+ * message (then no file was replaced and no temporary is left). */
 int cfpo_runfiles_commit(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen);
 
 /* Collective: removes every temporary; frees f (NULL: nothing). */

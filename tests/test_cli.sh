@@ -70,6 +70,42 @@ expect 1 "is a directory" -n 100 --trace adir.npy
 rmdir adir.npy
 expect 1 "too large for memory" -n 2^31
 
+# --- the run's files: distinct, named, creatable before the work, all or nothing
+expect 2 "^cfpo: -o: the file name is empty" -n 100 -o ''
+expect 2 "^cfpo: --trace: the file name is empty" -n 100 --trace ''
+expect 2 "^cfpo: -o f.tsv and --trace f.tsv are the same file" -n 100 --trace f.tsv -o f.tsv
+expect 2 "^cfpo: -o c.bin and --checkpoint ./c.bin are the same file" -n 100 --checkpoint ./c.bin -o c.bin
+mkdir sub && ln -s sub alias
+expect 2 "are the same file" -n 100 --trace sub/t.tsv -o p.npy --checkpoint alias/t.tsv
+rm -r alias sub
+expect 2 "^cfpo: option '--no-skip' takes no value" -n 100 --no-skip=1
+expect 1 "^cfpo: nodir/ck.bin: cannot create file" -n 100 --checkpoint nodir/ck.bin --max-iter 0
+# a trace that cannot be written whole (file size limit) replaces no output
+echo old >keep.npy
+(trap '' XFSZ; ulimit -f 8; "$CFPO" -n 300 -q -o keep.npy --trace big.tsv) >/dev/null 2>xf.err
+rc=$?
+[ $rc -eq 1 ] && grep -q "big.tsv: write failed" xf.err && ok || bad "trace over the size limit: exit $rc, $(cat xf.err)"
+[ "$(cat keep.npy)" = old ] && ok || bad "a failed trace replaced the output"
+[ -z "$(ls -A | grep -e '\.tmp\.' -e '^big.tsv$')" ] && ok || bad "temporaries left: $(ls -A)"
+rm -f keep.npy xf.err
+
+# --- --init FILE: a start from another sampler's points
+"$B/cfpo-dart" -n 1500 -q -o d.txt >/dev/null || bad "cfpo-dart failed"
+expect 2 "^cfpo: --init d.txt: the file holds 1500 points, -n says 1000" --init d.txt -n 1000
+expect 2 "^cfpo: --init does not go with --resume" --init d.txt --resume x.bin
+expect 1 "^cfpo: --init nofile.npy: " --init nofile.npy
+awk 'BEGIN { for (i = 0; i < 100; i++) printf "0.%04d 0.0005\n", 5 + i; for (i = 0; i < 400; i++) printf "%.6f %.6f\n", (i % 20 + 0.5) / 20, (int(i / 20) + 0.5) / 20 }' >clump.txt
+expect 1 "^cfpo: cell (0, 0) of the .* grid holds more than 64 points" --init clump.txt -o clumped.npy
+"$CFPO" --init d.txt -q -t 1 -o i1.npy --trace i1.tsv >i1.out 2>&1 && ok || bad "--init run failed: $(cat i1.out)"
+"$CFPO" --init d.txt -q -t 2 -o i2.npy >/dev/null 2>&1 && cmp -s i1.npy i2.npy && ok || bad "--init: 1 and 2 threads differ"
+grep -q " n=1500 " i1.out && ok || bad "--init: n does not come from the file: $(cat i1.out)"
+# the start is the file's set (delta_min of iteration 0 is the dart set's, not
+# cfpo's start), and delta_min never falls below it
+d0=$(awk 'NR == 2 { print $2 }' i1.tsv)
+awk -v d0="$d0" 'NR > 1 && $2 < d0 { bad = 1 } END { exit bad }' i1.tsv && ok || bad "--init: delta_min fell below the start's"
+awk -v d0="$d0" 'BEGIN { exit !(d0 > 0.7 && d0 < 0.8) }' && ok || bad "--init: iteration 0 is not the dart set (delta_min $d0)"
+rm -f d.txt clump.txt i1.npy i2.npy i1.tsv i1.out
+
 # --- help and version
 "$CFPO" --help >h.txt 2>&1 && grep -q "^Usage: cfpo" h.txt && grep -q -- "--trace" h.txt && ok || bad "--help"
 "$CFPO" --version | grep -q "^cfpo [0-9]" && ok || bad "--version"
