@@ -1,153 +1,17 @@
-/* geom.c - see geom.h.
- *
- * LocalCFPO by clipping: for each y_i, its Voronoi cell restricted to S is
- * S cut by the bisector half-planes {c : |c - y_i| <= |c - y_j|}. On that
- * convex polygon the objective equals |c - y_i|, a convex function, so its
- * maximum is at a vertex. The maximum over S is the largest of these vertex
- * values. Every vertex is a corner of S, a point where a bisector (a Voronoi
- * edge) meets the boundary of S, or where two bisectors meet (a Voronoi
- * vertex): exactly the candidates of the paper's section 3.4, with no
- * triangulation to maintain. m is about 10, so O(m^2) clips are cheap, and
- * two prunings cut most of them: a cell whose polygon is already no farther
- * than the best value found is abandoned, and points are visited nearest to
- * the hint first so a good value is found early. */
+/* geom.c - see geom.h. The solver's source is solver_impl.h, shared with
+ * the device build. */
 #include "geom.h"
+
+#include "solver_impl.h"
 
 double cfpo_min_dist2(double cx, double cy, const double *yx, const double *yy, int m, int skip)
 {
-    double best = INFINITY;
-    for (int j = 0; j < m; j++) {
-        if (j == skip) continue;
-        double dx = cx - yx[j], dy = cy - yy[j];
-        double d2 = dx * dx + dy * dy;
-        if (d2 < best) best = d2;
-    }
-    return best;
-}
-
-/* Copies Y (minus skip) into px/py ordered by distance to the hint; ties
- * keep the given order (insertion sort is stable). Returns the count. */
-static int order_by_hint(const double *yx, const double *yy, int m, int skip, double hx, double hy,
-                         double *px, double *py, double *key)
-{
-    int k = 0;
-    for (int j = 0; j < m; j++) {
-        if (j == skip) continue;
-        double dx = yx[j] - hx, dy = yy[j] - hy;
-        double d2 = dx * dx + dy * dy;
-        int t = k++;
-        while (t > 0 && key[t - 1] > d2) {
-            key[t] = key[t - 1];
-            px[t] = px[t - 1];
-            py[t] = py[t - 1];
-            t--;
-        }
-        key[t] = d2;
-        px[t] = yx[j];
-        py[t] = yy[j];
-    }
-    return k;
+    return cfpo_min_dist2_hd(cx, cy, yx, yy, m, skip);
 }
 
 double cfpo_local_solve(const double *yx, const double *yy, int m, int skip, cfpo_square S,
                         double hx, double hy, double floor2, double *cx, double *cy,
                         double *scratch)
 {
-    const size_t cap = 2 * ((size_t)m + 8);
-    double *px = scratch, *py = px + m, *key = py + m;
-    double *bufa = key + m + 8, *bufb = bufa + cap, *sd = bufb + cap;
-    int k = order_by_hint(yx, yy, m, skip, hx, hy, px, py, key);
-
-    *cx = 0.5 * (S.x0 + S.x1);
-    *cy = 0.5 * (S.y0 + S.y1);
-    if (k == 0) return INFINITY;
-
-    const double corner[4][2] = {{S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1}};
-    double best = floor2;
-    double bx = *cx, by = *cy;
-    int found = 0;
-
-    for (int i = 0; i < k; i++) {
-        const double ax = px[i], ay = py[i];
-        /* The farthest point of S from y_i is a corner: an upper bound. */
-        double ub = 0;
-        for (int c = 0; c < 4; c++) {
-            double dx = corner[c][0] - ax, dy = corner[c][1] - ay;
-            double d2 = dx * dx + dy * dy;
-            if (d2 > ub) ub = d2;
-        }
-        if (ub <= best) continue;
-
-        double *poly = bufa, *next = bufb;
-        int nv = 4;
-        for (int c = 0; c < 4; c++) {
-            poly[2 * c] = corner[c][0];
-            poly[2 * c + 1] = corner[c][1];
-        }
-        int alive = 1;
-        double far2 = ub;
-        for (int j = 0; j < k && alive; j++) {
-            if (j == i) continue;
-            const double nx = px[j] - ax, ny = py[j] - ay;
-            if (nx * nx + ny * ny >= 4 * far2) continue;
-            const double mx = 0.5 * (px[j] + ax), my = 0.5 * (py[j] + ay);
-            /* Signed side of each vertex: <= 0 keeps it (closer to y_i). */
-            double smax = -INFINITY, smin = INFINITY;
-            for (int v = 0; v < nv; v++) {
-                double s = (poly[2 * v] - mx) * nx + (poly[2 * v + 1] - my) * ny;
-                sd[v] = s;
-                if (s > smax) smax = s;
-                if (s < smin) smin = s;
-            }
-            if (smax <= 0) continue;      /* bisector misses the polygon */
-            if (smin > 0) { alive = 0; break; } /* polygon entirely closer to y_j */
-            int nn = 0;
-            far2 = 0;
-            for (int v = 0; v < nv; v++) {
-                int w = (v + 1 == nv) ? 0 : v + 1;
-                double s0 = sd[v], s1 = sd[w];
-                if (s0 <= 0) {
-                    next[2 * nn] = poly[2 * v];
-                    next[2 * nn + 1] = poly[2 * v + 1];
-                    nn++;
-                }
-                if ((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0)) {
-                    double t = s0 / (s0 - s1);
-                    next[2 * nn] = poly[2 * v] + t * (poly[2 * w] - poly[2 * v]);
-                    next[2 * nn + 1] = poly[2 * v + 1] + t * (poly[2 * w + 1] - poly[2 * v + 1]);
-                    nn++;
-                }
-            }
-            for (int v = 0; v < nn; v++) {
-                double dx = next[2 * v] - ax, dy = next[2 * v + 1] - ay;
-                double d2 = dx * dx + dy * dy;
-                if (d2 > far2) far2 = d2;
-            }
-            double *t = poly;
-            poly = next;
-            next = t;
-            nv = nn;
-            if (nv == 0 || far2 <= best) alive = 0;
-        }
-        if (!alive) continue;
-        for (int v = 0; v < nv; v++) {
-            double dx = poly[2 * v] - ax, dy = poly[2 * v + 1] - ay;
-            double d2 = dx * dx + dy * dy;
-            if (d2 > best) {
-                best = d2;
-                bx = poly[2 * v];
-                by = poly[2 * v + 1];
-                found = 1;
-            }
-        }
-    }
-    if (!found) return -1.0;
-    /* Clip rounding can leave a vertex a hair outside S: clamp. */
-    if (bx < S.x0) bx = S.x0;
-    if (bx > S.x1) bx = S.x1;
-    if (by < S.y0) by = S.y0;
-    if (by > S.y1) by = S.y1;
-    *cx = bx;
-    *cy = by;
-    return cfpo_min_dist2(bx, by, yx, yy, m, skip);
+    return cfpo_local_solve_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
 }
