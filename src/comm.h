@@ -78,6 +78,10 @@ int comm_file_write_runs(comm_file *f, uint64_t base, size_t elem, const void *b
  * renames or removes. Returns 0 when every rank succeeded. */
 int comm_file_commit(comm_file *f, int ok, char *err, size_t errlen);
 const char *comm_file_tmpname(const comm_file *f);
+/* Collective: everything written so far is on disk and visible to reads of
+ * the temporary file (comm_file_open_read of comm_file_tmpname) on every
+ * rank. 0 when every rank succeeded. */
+int comm_file_sync(comm_file *f);
 
 /* Reading: opened by all ranks; reads are independent. */
 comm_file *comm_file_open_read(const char *path, uint64_t *size, char *err, size_t errlen);
