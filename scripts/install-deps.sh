@@ -15,6 +15,7 @@ PKGS=(
   libcgal-dev       # CGAL (periodic Delaunay) for the FPO baseline
   libgmp-dev libmpfr-dev  # CGAL's exact number types
   gnuplot-nox       # figures
+  clang libclang-rt-dev  # libFuzzer and its sanitizers (make fuzz)
 )
 
 check_only=0

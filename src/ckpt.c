@@ -108,7 +108,7 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
     if (n < (uint64_t)nmin || n > (size - CKPT_HEADER) / 16) {
         if (n < (uint64_t)nmin)
             snprintf(err, errlen, "%s: corrupt checkpoint: field n = %llu is below the smallest n of variant %s (%lld)",
-                     path, (unsigned long long)n, cfpo_variant_name(c->variant), (long long)nmin);
+                     path, (unsigned long long)n, c->variant == CFPO_VARIANT_SIMPLIFIED ? "simplified" : c->variant == CFPO_VARIANT_PAPER ? "paper" : "adaptive", (long long)nmin);
         else
             snprintf(err, errlen, "%s: checkpoint field n = %llu needs %llu bytes or more, file has %llu (truncated?)",
                      path, (unsigned long long)n, (unsigned long long)n < UINT64_MAX / 16 - 4 ?

@@ -418,6 +418,27 @@ static int parse_npy(const char *path, const unsigned char *buf, size_t len, dou
     return 0;
 }
 
+static int parse_any(pf_format fmt, const char *path, unsigned char *buf, size_t len, double **xy, size_t *n,
+                     char *err, size_t errlen)
+{
+    if (fmt == PF_TEXT) return parse_text(path, buf, len, xy, n, err, errlen);
+    if (fmt == PF_RAW) return parse_raw(path, buf, len, xy, n, err, errlen);
+    if (fmt == PF_NPY) return parse_npy(path, buf, len, xy, n, err, errlen);
+    set_err(err, errlen, "%s: unknown point file format (use " PF_EXTENSIONS ")", path);
+    return -1;
+}
+
+int pf_read_buffer(pf_format fmt, const char *name, const unsigned char *buf, size_t len, double **xy,
+                   size_t *n, char *err, size_t errlen)
+{
+    unsigned char *copy = malloc(len + 1); /* the text reader ends lines in place */
+    if (!copy) { set_err(err, errlen, "%s: out of memory", name); return -1; }
+    if (len) memcpy(copy, buf, len);
+    int rc = parse_any(fmt, name, copy, len, xy, n, err, errlen);
+    free(copy);
+    return rc;
+}
+
 int pf_read(const char *path, double **xy, size_t *n, char *err, size_t errlen)
 {
     pf_format fmt = pf_format_of(path);
@@ -428,10 +449,7 @@ int pf_read(const char *path, double **xy, size_t *n, char *err, size_t errlen)
     unsigned char *buf;
     size_t len;
     if (read_all(path, &buf, &len, err, errlen) != 0) return -1;
-    int rc;
-    if (fmt == PF_TEXT) rc = parse_text(path, buf, len, xy, n, err, errlen);
-    else if (fmt == PF_RAW) rc = parse_raw(path, buf, len, xy, n, err, errlen);
-    else rc = parse_npy(path, buf, len, xy, n, err, errlen);
+    int rc = parse_any(fmt, path, buf, len, xy, n, err, errlen);
     free(buf);
     return rc;
 }
