@@ -5,9 +5,11 @@ NATIVE    ?= ON
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 PROFILE   ?= default
 RESULTS   ?=
+FUZZ_SECONDS ?= 60
+FUZZ_BUILD   ?= build-fuzz
 CMAKE_ARGS = -DCMAKE_BUILD_TYPE=$(TYPE) -DCFPO_NATIVE=$(NATIVE)
 
-.PHONY: all build test test-sanitize bench bench-core replot help clean deps
+.PHONY: all build test test-sanitize fuzz bench bench-core replot help clean deps
 
 all: build
 
@@ -29,6 +31,13 @@ test-sanitize: deps
 	cmake --build build-asan -j $(JOBS)
 	cd build-asan && ctest --output-on-failure -j $(JOBS) -L unit
 
+# libFuzzer harnesses (fuzz/) in their own clang build folder, each run
+# FUZZ_SECONDS (default 60); fails on any crash, sanitizer report or time-out.
+fuzz: deps
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCFPO_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+	scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
 # The method comparison and the paper's figures (scripts/bench.sh).
 bench: build
 	scripts/bench.sh $(BUILD) $(PROFILE)
@@ -46,6 +55,7 @@ help:
 	@echo "  make               optimised build into $(BUILD)/ (installs missing Debian packages first)"
 	@echo "  make test          build, then run every CTest test"
 	@echo "  make test-sanitize unit tests in an ASan+UBSan build (build-asan/)"
+	@echo "  make fuzz          libFuzzer harnesses, FUZZ_SECONDS each (default 60), in $(FUZZ_BUILD)/"
 	@echo "  make bench         method comparison and figures (PROFILE=smoke|default|paper); results/<date>-<host>/"
 	@echo "  make replot        redraw figures and summary.md of RESULTS=results/... (default: newest)"
 	@echo "  make bench-core    core CFPO benchmark, sweeps and convergence (PROFILE=smoke|default)"
@@ -57,4 +67,4 @@ help:
 	@echo "  compiler     $$(cc --version 2>/dev/null | head -n 1)"
 
 clean:
-	rm -rf $(BUILD) build-asan
+	rm -rf $(BUILD) build-asan $(FUZZ_BUILD)

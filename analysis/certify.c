@@ -4,19 +4,24 @@
  * d(x) = d(x, X \ {x}); every set below is taken with all periodic images,
  * so small n needs no special case):
  *
- * Farthest point test. Let S_x be the square of half-side s = rho (a hair
- * more) around x, or the whole torus when s reaches 1/2. The Voronoi cell
- * of x lies in the disk of radius rho, so inside S_x. Outside S_x the
- * nearest point of X is not x, hence d(p, X\{x}) = d(p, X) there. So
- *   max_p d(p, X\{x}) = max(T1, T2),
- *   T1 = max over S_x of d(p, X\{x}): LocalCFPO on S_x; the nearest point
- *        of X\{x} to any p in S_x is within rho + d(x) of p (through x's
- *        nearest neighbour when p is in x's cell, within rho otherwise),
- *        so the points within (Chebyshev) s + rho + d(x) of x suffice;
- *   T2 = max over the grid cells not inside S_x of the cell's own
- *        largest empty circle radius (max over the cell of d(p, X)). Those
- *        cells cover the outside of S_x, and the parts of them inside S_x
- *        add nothing above T1 since d(p, X) <= d(p, X\{x}).
+ * Farthest point test. R(x) = max_p d(p, X\{x}) over the torus. Outside
+ * the Voronoi cell V(x) of x, d(p, X\{x}) = d(p, X) <= rho; inside it,
+ * d(p, X\{x}) >= d(p, x) = d(p, X). So R(x) = max(rho, T), T = the largest
+ * d(p, X\{x}) over p in V(x). V(x) lies in the disk of radius rho around
+ * x, so in the square S_x of half-side s = rho (or the torus, s = 1/2),
+ * and is S_x clipped by the bisectors of x and every image within
+ * (Chebyshev) s + rho of x (a Voronoi neighbour y has a point c of V(x)
+ * with |c - y| = |c - x| <= rho). For p in V(x), let y be its nearest image
+ * of X\{x}: shrinking the disk around p through y towards y, the first copy
+ * of x met lies on its boundary with y, empty disk: y is a Voronoi neighbour
+ * of that copy, so a translate of y is one of x and its bisector touches
+ * V(x). So T is the maximum over V(x) of the distance to the images of the
+ * points whose bisector touches V(x) (every image of them within s + rho +
+ * d(x), where p's nearest lies): a handful of points even when V(x) is a
+ * strip across the torus (collinear points) or a wide wedge (a cluster),
+ * where one LocalCFPO over S_x with every image costs O(n^2). Coincident
+ * points count once (they give the same distances).
+ *
  * A cell's radius is LocalCFPO on the cell with the points of a square
  * around it, grown until the answer is no larger than the margin between
  * the cell and the square's edge (no point outside can then be nearer).
@@ -27,6 +32,7 @@
 #include "certify.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -54,7 +60,10 @@ typedef struct {
 /* Per-thread buffers: collected images (position, id), a subset, scratch. */
 typedef struct {
     double *x, *y, *sx, *sy, *scratch;
+    double *pa, *pb, *sd; /* polygons being clipped, signed distances */
+    double *key;          /* (distance^2, index) pairs */
     size_t *id;
+    uint8_t *mark;
     size_t m, cap;
 } work;
 
@@ -97,7 +106,15 @@ static int work_reserve(work *w, size_t m)
     if (id) w->id = id;
     double *sc = realloc(w->scratch, cfpo_solver_scratch(cap) * sizeof *sc);
     if (sc) w->scratch = sc;
-    if (!x || !y || !sx || !sy || !id || !sc) return -1;
+    double *pa = realloc(w->pa, 2 * (cap + 8) * sizeof *pa);
+    if (pa) w->pa = pa;
+    double *pb = realloc(w->pb, 2 * (cap + 8) * sizeof *pb);
+    if (pb) w->pb = pb;
+    double *sd = realloc(w->sd, 2 * (cap + 8) * sizeof *sd);
+    if (sd) w->sd = sd;
+    double *key = realloc(w->key, 2 * (cap + 8) * sizeof *key);
+    if (key) w->key = key;
+    if (!x || !y || !sx || !sy || !id || !sc || !pa || !pb || !sd || !key) return -1;
     w->cap = cap;
     return 0;
 }
@@ -105,6 +122,7 @@ static int work_reserve(work *w, size_t m)
 static void work_free(work *w)
 {
     free(w->x); free(w->y); free(w->sx); free(w->sy); free(w->id); free(w->scratch);
+    free(w->pa); free(w->pb); free(w->sd); free(w->mark); free(w->key);
 }
 
 static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
@@ -173,21 +191,128 @@ static int cell_radius(const ctx *C, size_t c, work *w, double *out, double *arg
     }
 }
 
-/* T2: the largest cell radius among cells not inside [x-s, x+s]^2; *cell
- * receives that cell. */
-static double outside_radius(const ctx *C, double x, double y, double s, size_t *cell)
+/* Clips polygon P (n vertices in p) to the side of the bisector of a and b
+ * nearer a, into q. Returns the new count. */
+static int clip(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by)
 {
-    const size_t g = C->G.g, cells = g * g;
-    const double L = C->G.L;
-    for (size_t t = 0; t < cells; t++) {
-        const size_t c = C->by_rho[t];
-        const double cx = ((double)(c % g) + 0.5) * L, cy = ((double)(c / g) + 0.5) * L;
-        int inside = fabs(cfpo_torus_diff(cx, x)) + 0.5 * L <= s && fabs(cfpo_torus_diff(cy, y)) + 0.5 * L <= s;
-        if (!inside) {
-            *cell = c;
-            return C->rho_cell[c];
+    const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
+    for (int v = 0; v < n; v++) sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
+    int k = 0;
+    for (int v = 0; v < n; v++) {
+        const int u = v + 1 == n ? 0 : v + 1;
+        if (sd[v] <= 0) { q[2 * k] = p[2 * v]; q[2 * k + 1] = p[2 * v + 1]; k++; }
+        if ((sd[v] < 0 && sd[u] > 0) || (sd[v] > 0 && sd[u] < 0)) {
+            const double t = sd[v] / (sd[v] - sd[u]);
+            q[2 * k] = p[2 * v] + t * (p[2 * u] - p[2 * v]);
+            q[2 * k + 1] = p[2 * v + 1] + t * (p[2 * u + 1] - p[2 * v + 1]);
+            k++;
         }
     }
+    return k;
+}
+
+static int by_xy(const void *a, const void *b)
+{
+    const double *p = a, *q = b;
+    if (p[0] != q[0]) return p[0] < q[0] ? -1 : 1;
+    return p[1] < q[1] ? -1 : (p[1] > q[1]);
+}
+
+/* Sorts the m positions (sx, sy) and drops repeats; returns the count. */
+static int unique_points(double *sx, double *sy, int m, double *tmp)
+{
+    for (int t = 0; t < m; t++) { tmp[2 * t] = sx[t]; tmp[2 * t + 1] = sy[t]; }
+    qsort(tmp, (size_t)m, 2 * sizeof *tmp, by_xy);
+    int k = 0;
+    for (int t = 0; t < m; t++)
+        if (k == 0 || tmp[2 * t] != sx[k - 1] || tmp[2 * t + 1] != sy[k - 1]) {
+            sx[k] = tmp[2 * t];
+            sy[k] = tmp[2 * t + 1];
+            k++;
+        }
+    return k;
+}
+
+/* T of the farthest point test (see the top): the collected images are
+ * those within H1 = s + rho + d(x) of x. *T = -1 when V(x) is empty (x
+ * coincides with another point: then T <= rho). */
+static int voronoi_max(const ctx *C, size_t i, work *w, double x, double y, double s, double *T, double *tx,
+                       double *ty)
+{
+    const double reach = (s + C->rho) * (1 + 1e-9) + 1e-12;
+    double *P = w->pa, *Q = w->pb;
+    int nv = 4;
+    const double sq[8] = {x - s, y - s, x + s, y - s, x + s, y + s, x - s, y + s};
+    memcpy(P, sq, sizeof sq);
+    /* Nearest first: the cell shrinks at once, and the images farther than
+     * twice its reach cannot cut it (a far row of images cut first would
+     * carve a polygon of O(n) vertices). */
+    size_t nk = 0;
+    for (size_t t = 0; t < w->m; t++) {
+        if (w->id[t] == i || fabs(w->x[t] - x) > reach || fabs(w->y[t] - y) > reach) continue;
+        if (w->x[t] == x && w->y[t] == y) continue; /* a coincident point: no bisector */
+        const double dx = w->x[t] - x, dy = w->y[t] - y;
+        w->key[2 * nk] = dx * dx + dy * dy;
+        w->key[2 * nk + 1] = (double)t;
+        nk++;
+    }
+    qsort(w->key, nk, 2 * sizeof *w->key, by_xy);
+    double far2 = 2 * s * s;
+    for (size_t r = 0; r < nk && nv > 0; r++) {
+        if (w->key[2 * r] >= 4 * far2 * (1 + 1e-9)) break;
+        const size_t t = (size_t)w->key[2 * r + 1];
+        nv = clip(P, nv, Q, w->sd, x, y, w->x[t], w->y[t]);
+        double *tmp = P; P = Q; Q = tmp;
+        far2 = 0;
+        for (int v = 0; v < nv; v++) {
+            const double dx = P[2 * v] - x, dy = P[2 * v + 1] - y;
+            far2 = fmax(far2, dx * dx + dy * dy);
+        }
+    }
+    *T = -1;
+    if (nv == 0) return 0;
+    /* Points whose bisector touches V(x) (within rounding), by id. */
+    double ext = 0;
+    for (int v = 0; v < nv; v++) ext = fmax(ext, fmax(fabs(P[2 * v] - x), fabs(P[2 * v + 1] - y)));
+    const double eps = 1e-9 * (ext + 1e-300);
+    if (!w->mark) { w->mark = calloc(C->n, 1); if (!w->mark) return -1; }
+    for (size_t t = 0; t < w->m; t++) {
+        if (w->id[t] == i || w->mark[w->id[t]] || fabs(w->x[t] - x) > reach || fabs(w->y[t] - y) > reach) continue;
+        const double nx = w->x[t] - x, ny = w->y[t] - y, mx = 0.5 * (w->x[t] + x), my = 0.5 * (w->y[t] + y);
+        const double scale = sqrt(nx * nx + ny * ny);
+        for (int v = 0; v < nv; v++)
+            if ((P[2 * v] - mx) * nx + (P[2 * v + 1] - my) * ny >= -eps * scale) { w->mark[w->id[t]] = 1; break; }
+    }
+    int k = 0;
+    for (size_t t = 0; t < w->m; t++)
+        if (w->mark[w->id[t]] && w->id[t] != i) { w->sx[k] = w->x[t]; w->sy[k] = w->y[t]; k++; }
+    for (size_t t = 0; t < w->m; t++) w->mark[w->id[t]] = 0;
+    k = unique_points(w->sx, w->sy, k, w->scratch);
+    /* The largest distance to those points over V(x): for each of them,
+     * V(x) clipped to its own cell among them, at a vertex. */
+    double best = -1, bx = x, by = y;
+    /* V(x) cut by k more bisectors: at most 4 + m + k <= 2 cap + 4 vertices. */
+    double *R = w->scratch, *U = w->scratch + 4 * (w->cap + 8);
+    for (int a = 0; a < k; a++) {
+        memcpy(R, P, 2 * (size_t)nv * sizeof *R);
+        int nr = nv;
+        for (int b = 0; b < k && nr > 0; b++) {
+            if (b == a) continue;
+            nr = clip(R, nr, U, w->sd, w->sx[a], w->sy[a], w->sx[b], w->sy[b]);
+            double *tmp = R; R = U; U = tmp;
+        }
+        for (int v = 0; v < nr; v++) {
+            const double dx = R[2 * v] - w->sx[a], dy = R[2 * v + 1] - w->sy[a], d2 = dx * dx + dy * dy;
+            if (d2 > best) { best = d2; bx = R[2 * v]; by = R[2 * v + 1]; }
+        }
+        R = w->scratch;
+        U = w->scratch + 4 * (w->cap + 8);
+    }
+    if (best < 0) return 0;
+    /* The value from the distances themselves, not the clipping. */
+    *T = sqrt(cfpo_min_dist2(bx, by, w->sx, w->sy, k, -1));
+    *tx = cfpo_wrap01(bx);
+    *ty = cfpo_wrap01(by);
     return 0;
 }
 
@@ -200,23 +325,22 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
 {
     const double x = C->xy[2 * i], y = C->xy[2 * i + 1], di = C->nn[i];
     double s = C->rho * (1 + 1e-9) + 1e-12;
-    const int whole = s >= 0.5;
-    if (whole) s = 0.5;
+    if (s >= 0.5) s = 0.5;
     const double H1 = (s + C->rho + di) * (1 + 1e-9) + 1e-12;
     const double h = fmax(fmax(3 * C->delta, C->delta + di), C->Dn) * (1 + 1e-9);
     if (collect(C, x, y, fmax(H1, h), w) != 0) return -1;
     double px, py;
 
-    /* Farthest point test. */
-    int m = subset(w, x, y, H1, i, w->sx, w->sy);
-    const cfpo_square Sx = {x - s, y - s, x + s, y + s};
-    double r2 = cfpo_local_solve(w->sx, w->sy, m, -1, Sx, x, y, -1, &px, &py, w->scratch);
-    if (r2 < 0) return -2;
-    size_t cell = 0;
-    double T2 = whole ? 0 : outside_radius(C, x, y, s, &cell);
-    res->fp = fmax(sqrt(r2), T2) - di;
-    res->tx = T2 > sqrt(r2) ? C->arg_cell[2 * cell] : cfpo_wrap01(px);
-    res->ty = T2 > sqrt(r2) ? C->arg_cell[2 * cell + 1] : cfpo_wrap01(py);
+    /* Farthest point test: R(x) = max(rho, T). */
+    (void)H1;
+    double T, tx = 0, ty = 0;
+    if (voronoi_max(C, i, w, x, y, s, &T, &tx, &ty) != 0) return -1;
+    const size_t top = C->by_rho[0];
+    res->fp = fmax(T, C->rho) - di;
+    res->tx = T >= C->rho ? tx : C->arg_cell[2 * top];
+    res->ty = T >= C->rho ? ty : C->arg_cell[2 * top + 1];
+    int m;
+    double r2;
 
     /* Local Characterization Theorem on D = [x-h, x+h]^2, S = D eroded. */
     const double e = h - C->delta;

@@ -264,7 +264,11 @@ static void write_outputs(const an_report *rep)
 #define WRITE(name, call)                                        \
     do {                                                         \
         if (!(p = an_outdir_file(&R.out, name))) fail("out of memory"); \
-        if ((call) != 0) { free(p); fail("%s", err); }           \
+        if ((call) != 0) {                                       \
+            free(p);                                             \
+            an_outdir_message(&R.out, err, sizeof err);          \
+            fail("%s", err);                                     \
+        }                                                        \
         free(p);                                                 \
     } while (0)
     WRITE("spectrum.txt", an_write_spectrum(p, R.Psum, R.K, err, sizeof err));

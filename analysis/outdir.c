@@ -117,6 +117,16 @@ char *an_outdir_file(const an_outdir *o, const char *name)
     return p;
 }
 
+void an_outdir_message(const an_outdir *o, char *msg, size_t cap)
+{
+    if (!o->tmp || !o->final) return;
+    char *at = strstr(msg, o->tmp);
+    if (!at) return;
+    char out[2048];
+    snprintf(out, sizeof out, "%.*s%s%s", (int)(at - msg), msg, o->final, at + strlen(o->tmp));
+    snprintf(msg, cap, "%s", out);
+}
+
 int an_outdir_commit(an_outdir *o, char *err, size_t errlen)
 {
     char old[PATHMAX + 32];

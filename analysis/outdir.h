@@ -29,6 +29,9 @@ int an_outdir_begin(an_outdir *o, const char *path, char *err, size_t errlen);
 /* Path of file `name` (one of the first AN_OUT_WRITTEN names) inside the temporary folder;
  * malloc'ed, or NULL when out of memory. */
 char *an_outdir_file(const an_outdir *o, const char *name);
+/* Rewrites a message about a file of the temporary folder to name the
+ * output folder instead (the temporary is an implementation detail). */
+void an_outdir_message(const an_outdir *o, char *msg, size_t cap);
 /* Renames the temporary folder into place. 0, or -1 with a message (the
  * temporary folder is then removed). */
 int an_outdir_commit(an_outdir *o, char *err, size_t errlen);

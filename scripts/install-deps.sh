@@ -11,9 +11,11 @@ PKGS=(
   libopenmpi-dev    # MPI headers and mpicc
   openmpi-bin       # mpirun
   libfftw3-dev      # FFTW3 for the spectra
+  zlib1g-dev        # crc32: checkpoint checksums
   libcgal-dev       # CGAL (periodic Delaunay) for the FPO baseline
   libgmp-dev libmpfr-dev  # CGAL's exact number types
   gnuplot-nox       # figures
+  clang libclang-rt-dev  # libFuzzer and its sanitizers (make fuzz)
 )
 
 check_only=0

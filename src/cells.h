@@ -41,8 +41,6 @@
 #define SHIFT_SALT 0x3c6ef372fe94f82aULL
 #define SHIFT_EVERY 4 /* the grid moves before iterations 1, 5, 9, ...; in between, skipping works */
 #define ADAPTIVE_THETA 0.7 /* the adaptive margin never reaches past L - 0.7 Delta(n) */
-#define CKPT_MAGIC "CFPOCKP1"
-#define CKPT_HEADER 64
 
 typedef struct { /* a point on the move between ranks */
     double x, y;

@@ -14,64 +14,124 @@
 
 /* ------------------------------------------------------------- numbers */
 
-static int parse_exact_real(const char *s, long double *out)
+/* The one grammar of every number on every command line (no sign, no
+ * spaces, no hexadecimal or octal; leading zeros are decimal: 010 is ten):
+ *   whole numbers  DIGITS | DIGITS '^' DIGITS | DIGITS ['.' DIGITS] (e|E) DIGITS
+ *                  (the last two only when the value is a whole number that
+ *                  fits, e.g. 2^20, 1e6, 2.5e3; never rounded)
+ *   reals          DIGITS ['.' [DIGITS]] | '.' DIGITS, then optionally
+ *                  (e|E) ['+'|'-'] DIGITS; finite and representable
+ *                  (subnormal values such as 1e-320 are; 1e-400 is not). */
+
+static int is_digit(char c) { return c >= '0' && c <= '9'; }
+
+/* DIGITS as an exact unsigned value; *p advanced past them. -1 when there
+ * are none or they overflow. */
+static int digits_u64(const char **p, uint64_t *out)
 {
-    if (!s || !*s) return -1;
-    const char *caret = strchr(s, '^');
-    char *end;
-    errno = 0;
-    if (caret) { /* a^b with integer a, b */
-        long long a = strtoll(s, &end, 10);
-        if (end != caret || errno) return -1;
-        long long b = strtoll(caret + 1, &end, 10);
-        if (*end || errno || caret[1] == '\0' || b < 0 || b > 200) return -1;
-        long double v = 1;
-        for (long long i = 0; i < b; i++) v *= (long double)a;
-        *out = v;
-        return 0;
-    }
-    long double v = strtold(s, &end);
-    if (end == s || *end || errno == ERANGE) return -1;
+    const char *s = *p;
+    uint64_t v = 0;
+    if (!is_digit(*s)) return -1;
+    for (; is_digit(*s); s++)
+        if (__builtin_mul_overflow(v, 10u, &v) || __builtin_add_overflow(v, (uint64_t)(*s - '0'), &v))
+            return -1;
+    *p = s;
     *out = v;
+    return 0;
+}
+
+static int pow_u64(uint64_t base, uint64_t e, uint64_t *out)
+{
+    uint64_t v = 1;
+    for (uint64_t i = 0; i < e; i++) {
+        if (__builtin_mul_overflow(v, base, &v)) return -1;
+        if (v <= 1 && i > 0) break; /* 0 and 1 stay put: no long loops */
+    }
+    *out = e == 0 ? 1 : v;
+    return 0;
+}
+
+/* A whole number in [0, 2^64) by the grammar above. */
+static int parse_whole(const char *s, uint64_t *out)
+{
+    if (!s) return -1;
+    const char *p = s;
+    uint64_t a;
+    if (digits_u64(&p, &a) != 0) return -1;
+    if (*p == '\0') { *out = a; return 0; }
+    if (*p == '^') {
+        p++;
+        uint64_t b;
+        if (digits_u64(&p, &b) != 0 || *p) return -1;
+        return pow_u64(a, b, out);
+    }
+    /* mantissa DIGITS ['.' DIGITS] then e DIGITS: digits d of the mantissa
+     * with f of them after the point, value d * 10^(e - f). */
+    uint64_t d = a;
+    uint64_t f = 0;
+    if (*p == '.') {
+        p++;
+        if (!is_digit(*p)) return -1;
+        for (; is_digit(*p); p++, f++)
+            if (__builtin_mul_overflow(d, 10u, &d) || __builtin_add_overflow(d, (uint64_t)(*p - '0'), &d))
+                return -1;
+    }
+    if (*p != 'e' && *p != 'E') return -1;
+    p++;
+    uint64_t e;
+    if (digits_u64(&p, &e) != 0 || *p) return -1;
+    while (f > e) { /* fewer places than the point moved: the dropped digits must be 0 */
+        if (d % 10 != 0) return -1;
+        d /= 10;
+        f--;
+    }
+    if (d == 0) { *out = 0; return 0; }
+    uint64_t scale;
+    if (pow_u64(10, e - f, &scale) != 0) return -1;
+    if (__builtin_mul_overflow(d, scale, out)) return -1;
     return 0;
 }
 
 int cli_parse_i64(const char *s, int64_t lo, int64_t hi, int64_t *out)
 {
-    if (!s || !*s) return -1;
-    char *end;
-    errno = 0;
-    long long v = strtoll(s, &end, 10);
-    if (*end || errno) {
-        long double r;
-        if (parse_exact_real(s, &r) != 0 || r != floorl(r) || r < (long double)INT64_MIN ||
-            r > (long double)INT64_MAX)
-            return -1;
-        v = (long long)r;
-    }
-    if (v < lo || v > hi) return -1;
-    *out = v;
+    uint64_t v;
+    if (parse_whole(s, &v) != 0 || v > (uint64_t)INT64_MAX) return -1;
+    if ((int64_t)v < lo || (int64_t)v > hi) return -1;
+    *out = (int64_t)v;
     return 0;
 }
 
 int cli_parse_u64(const char *s, uint64_t *out)
 {
-    if (!s || !*s || *s == '-' || *s == '+' || *s == ' ') return -1;
-    char *end;
-    errno = 0;
-    unsigned long long v = strtoull(s, &end, 0);
-    if (*end || errno) return -1;
-    *out = v;
-    return 0;
+    return parse_whole(s, out);
 }
 
 int cli_parse_double(const char *s, double lo, double hi, double *out)
 {
-    if (!s || !*s) return -1;
+    if (!s) return -1;
+    const char *p = s;
+    int nd = 0;
+    for (; is_digit(*p); p++) nd++;
+    if (*p == '.') {
+        p++;
+        for (; is_digit(*p); p++) nd++;
+    }
+    if (nd == 0) return -1;
+    if (*p == 'e' || *p == 'E') {
+        p++;
+        if (*p == '+' || *p == '-') p++;
+        if (!is_digit(*p)) return -1;
+        while (is_digit(*p)) p++;
+    }
+    if (*p) return -1;
     char *end;
     errno = 0;
     double v = strtod(s, &end);
-    if (end == s || *end || errno == ERANGE || !isfinite(v) || v < lo || v > hi) return -1;
+    if (*end || !isfinite(v)) return -1;
+    /* ERANGE on a finite non-zero result is a subnormal: exact enough, and
+     * representable. On a zero result the value underflowed: refused. */
+    if (errno == ERANGE && v == 0) return -1;
+    if (v < lo || v > hi) return -1;
     *out = v;
     return 0;
 }

@@ -18,8 +18,13 @@
 enum { CLI_OK = 0, CLI_FAIL = 1, CLI_USAGE = 2 };
 
 /* Strict parsers: the whole string must be a number within [lo, hi].
- * 0 on success, -1 otherwise (nothing printed). Integers accept a plain
- * decimal or a power form like 2^20 or 1e6 when exact. */
+ * 0 on success, -1 otherwise (nothing printed). Decimal only: no sign, no
+ * spaces, no hexadecimal, no octal (leading zeros are decimal: 010 is 10).
+ * Whole numbers (both integer parsers, seeds included): DIGITS, or the
+ * exact forms 2^20 (DIGITS^DIGITS) and 1e6 / 2.5e3 (DIGITS[.DIGITS]eDIGITS)
+ * when the value is a whole number that fits. Reals: DIGITS[.DIGITS] or
+ * .DIGITS with an optional exponent e[+-]DIGITS, finite, subnormals
+ * included (1e-320), no inf or nan. */
 int cli_parse_i64(const char *s, int64_t lo, int64_t hi, int64_t *out);
 int cli_parse_u64(const char *s, uint64_t *out);
 int cli_parse_double(const char *s, double lo, double hi, double *out);

@@ -484,6 +484,19 @@ int comm_file_write_runs(comm_file *f, uint64_t base, size_t elem, const void *b
     return 0;
 }
 
+int comm_file_sync(comm_file *f)
+{
+    int ok = !f->failed;
+#ifdef CFPO_HAVE_MPI
+    if (f->mpi) {
+        if (MPI_File_sync(f->fh) != MPI_SUCCESS) ok = 0;
+        comm_barrier(); /* sync, barrier: other ranks' writes are visible */
+        return comm_all(ok) ? 0 : -1;
+    }
+#endif
+    return comm_all(ok) ? 0 : -1; /* one rank: pwrite is visible to every reader at once */
+}
+
 int comm_file_finish(comm_file *f, int ok, char *err, size_t errlen)
 {
     int good = comm_all(ok && !f->failed);

@@ -86,6 +86,10 @@ int comm_file_finish(comm_file *f, int ok, char *err, size_t errlen);
 int comm_file_publish(comm_file *f, char *err, size_t errlen);
 void comm_file_discard(comm_file *f);
 const char *comm_file_tmpname(const comm_file *f);
+/* Collective: everything written so far is on disk and visible to reads of
+ * the temporary file (comm_file_open_read of comm_file_tmpname) on every
+ * rank. 0 when every rank succeeded. */
+int comm_file_sync(comm_file *f);
 
 /* Reading: opened by all ranks; reads are independent. */
 comm_file *comm_file_open_read(const char *path, uint64_t *size, char *err, size_t errlen);

@@ -2,6 +2,7 @@
  * significant digits, so every format round-trips doubles exactly. */
 #define _POSIX_C_SOURCE 200809L
 #include "pointfile.h"
+#include "npy.h"
 
 #include "atomic.h"
 
@@ -312,21 +313,33 @@ static int parse_text(const char *path, unsigned char *buf, size_t len, double *
     return 0;
 }
 
-static int decode_pairs(const char *path, const unsigned char *data, size_t n, int fortran,
-                        size_t offset, double **out, char *err, size_t errlen)
+/* n points from data: itemsize 8 (float64) or 4 (float32), big- or
+ * little-endian, row-major (x y x y ...) or column-major (all x, all y). */
+static int decode_pairs(const char *path, const unsigned char *data, size_t n, int itemsize, int big,
+                        int fortran, size_t offset, double **out, char *err, size_t errlen)
 {
     double *xy = malloc(n * 2 * sizeof *xy);
     if (!xy) { set_err(err, errlen, "%s: out of memory", path); return -1; }
-    int le = host_is_little_endian();
+    const int swap = big == host_is_little_endian();
     for (size_t i = 0; i < n; i++) {
         double v[2];
+        size_t at[2];
         for (int k = 0; k < 2; k++) {
             size_t idx = fortran ? (size_t)k * n + i : 2 * i + (size_t)k;
-            memcpy(&v[k], data + idx * 8, 8);
-            if (!le) v[k] = swap_double(v[k]);
+            at[k] = idx * (size_t)itemsize;
+            unsigned char b[8];
+            memcpy(b, data + at[k], (size_t)itemsize);
+            if (swap)
+                for (int j = 0; j < itemsize / 2; j++) {
+                    unsigned char t = b[j];
+                    b[j] = b[itemsize - 1 - j];
+                    b[itemsize - 1 - j] = t;
+                }
+            if (itemsize == 8) memcpy(&v[k], b, 8);
+            else { float f; memcpy(&f, b, 4); v[k] = (double)f; }
         }
         char where[48];
-        snprintf(where, sizeof where, "offset %zu", offset + (fortran ? i : 2 * i) * 8);
+        snprintf(where, sizeof where, "offset %zu", offset + at[0]);
         if (check_point(path, where, i, v[0], v[1], err, errlen) != 0) {
             free(xy);
             return -1;
@@ -351,115 +364,48 @@ static int parse_raw(const char *path, const unsigned char *buf, size_t len, dou
         return -1;
     }
     *nout = len / 16;
-    return decode_pairs(path, buf, len / 16, 0, 0, out, err, errlen);
-}
-
-/* Finds `'key':` in the header dict and returns a pointer just past it. */
-static const char *dict_value(const char *dict, const char *key)
-{
-    char pat[32];
-    snprintf(pat, sizeof pat, "'%s'", key);
-    const char *p = strstr(dict, pat);
-    if (!p) return NULL;
-    p += strlen(pat);
-    while (*p == ' ') p++;
-    if (*p != ':') return NULL;
-    p++;
-    while (*p == ' ') p++;
-    return p;
+    return decode_pairs(path, buf, len / 16, 8, 0, 0, 0, out, err, errlen);
 }
 
 static int parse_npy(const char *path, const unsigned char *buf, size_t len, double **out,
                      size_t *nout, char *err, size_t errlen)
 {
-    static const unsigned char magic[6] = {0x93, 'N', 'U', 'M', 'P', 'Y'};
-    if (len < 10 || memcmp(buf, magic, 6) != 0) {
-        set_err(err, errlen, "%s: not a NumPy .npy file (bad magic)", path);
-        return -1;
-    }
-    unsigned major = buf[6];
-    size_t hlen, hstart;
-    if (major == 1) {
-        hlen = (size_t)buf[8] | (size_t)buf[9] << 8;
-        hstart = 10;
-    } else if (major == 2 || major == 3) {
-        if (len < 12) { set_err(err, errlen, "%s: truncated .npy header", path); return -1; }
-        hlen = (size_t)buf[8] | (size_t)buf[9] << 8 | (size_t)buf[10] << 16 | (size_t)buf[11] << 24;
-        hstart = 12;
-    } else {
-        set_err(err, errlen, "%s: unsupported .npy version %u", path, major);
-        return -1;
-    }
-    if (hstart + hlen > len) {
-        set_err(err, errlen, "%s: truncated .npy header (%zu bytes announced, file has %zu)", path,
-                hlen, len);
-        return -1;
-    }
-    char *dict = malloc(hlen + 1);
-    if (!dict) { set_err(err, errlen, "%s: out of memory", path); return -1; }
-    memcpy(dict, buf + hstart, hlen);
-    dict[hlen] = '\0';
-    int rc = -1;
-    const char *d = dict_value(dict, "descr");
-    const char *fo = dict_value(dict, "fortran_order");
-    const char *sh = dict_value(dict, "shape");
-    if (!d || !fo || !sh) {
-        set_err(err, errlen, "%s: bad .npy header (needs descr, fortran_order, shape)", path);
-        goto done;
-    }
-    if (strncmp(d, "'<f8'", 5) != 0 && strncmp(d, "'f8'", 4) != 0) {
-        set_err(err, errlen, "%s: .npy dtype must be little-endian float64 '<f8'", path);
-        goto done;
-    }
-    int fortran;
-    if (strncmp(fo, "False", 5) == 0) fortran = 0;
-    else if (strncmp(fo, "True", 4) == 0) fortran = 1;
-    else { set_err(err, errlen, "%s: bad .npy header (fortran_order)", path); goto done; }
-    if (*sh != '(') { set_err(err, errlen, "%s: bad .npy header (shape)", path); goto done; }
-    /* Parse the shape tuple: exactly two dimensions, the second equal to 2. */
-    size_t dims[4];
-    int nd = 0;
-    const char *p = sh + 1;
-    for (;;) {
-        while (*p == ' ') p++;
-        if (*p == ')') break;
-        char *e;
-        errno = 0;
-        unsigned long long v = strtoull(p, &e, 10);
-        if (e == p || errno || nd == 4) {
-            set_err(err, errlen, "%s: bad .npy header (shape)", path);
-            goto done;
-        }
-        dims[nd++] = (size_t)v;
-        p = e;
-        while (*p == ' ') p++;
-        if (*p == ',') p++;
-    }
-    if (nd != 2 || dims[1] != 2) {
-        char shape[64] = "";
-        for (int i = 0; i < nd; i++) {
-            size_t l = strlen(shape);
-            snprintf(shape + l, sizeof shape - l, i ? ", %zu" : "%zu", dims[i]);
-        }
-        set_err(err, errlen, "%s: .npy shape (%s) is not (n, 2)", path, shape);
-        goto done;
-    }
-    size_t n = dims[0];
-    if (n == 0) { set_err(err, errlen, "%s: contains no points", path); goto done; }
-    size_t data = hstart + hlen;
-    if (n > (len - data) / 16 || len - data != n * 16) {
-        if (len - data < n * 16 || n > (len - data) / 16)
+    npy_info h;
+    if (npy_parse_header(path, buf, len, &h, err, errlen) != 0) return -1;
+    if (h.n == 0) { set_err(err, errlen, "%s: contains no points", path); return -1; }
+    const size_t have = len - h.data, item = 2 * (size_t)h.itemsize;
+    if (h.n > have / item || have != h.n * item) {
+        if (h.n > have / item)
             set_err(err, errlen, "%s: truncated: shape (%zu, 2) needs %zu data bytes, file has %zu "
-                    "after the header", path, n, n * 16, len - data);
+                    "after the header", path, h.n, h.n * item, have);
         else
-            set_err(err, errlen, "%s: %zu bytes of trailing garbage after the data", path,
-                    len - data - n * 16);
-        goto done;
+            set_err(err, errlen, "%s: %zu bytes of trailing garbage after the data", path, have - h.n * item);
+        return -1;
     }
-    rc = decode_pairs(path, buf + data, n, fortran, data, out, err, errlen);
-    if (rc == 0) *nout = n;
-done:
-    free(dict);
+    if (decode_pairs(path, buf + h.data, h.n, h.itemsize, h.big_endian, h.fortran, h.data, out, err, errlen) != 0)
+        return -1;
+    *nout = h.n;
+    return 0;
+}
+
+static int parse_any(pf_format fmt, const char *path, unsigned char *buf, size_t len, double **xy, size_t *n,
+                     char *err, size_t errlen)
+{
+    if (fmt == PF_TEXT) return parse_text(path, buf, len, xy, n, err, errlen);
+    if (fmt == PF_RAW) return parse_raw(path, buf, len, xy, n, err, errlen);
+    if (fmt == PF_NPY) return parse_npy(path, buf, len, xy, n, err, errlen);
+    set_err(err, errlen, "%s: unknown point file format (use " PF_EXTENSIONS ")", path);
+    return -1;
+}
+
+int pf_read_buffer(pf_format fmt, const char *name, const unsigned char *buf, size_t len, double **xy,
+                   size_t *n, char *err, size_t errlen)
+{
+    unsigned char *copy = malloc(len + 1); /* the text reader ends lines in place */
+    if (!copy) { set_err(err, errlen, "%s: out of memory", name); return -1; }
+    if (len) memcpy(copy, buf, len);
+    int rc = parse_any(fmt, name, copy, len, xy, n, err, errlen);
+    free(copy);
     return rc;
 }
 
@@ -473,10 +419,7 @@ int pf_read(const char *path, double **xy, size_t *n, char *err, size_t errlen)
     unsigned char *buf;
     size_t len;
     if (read_all(path, &buf, &len, err, errlen) != 0) return -1;
-    int rc;
-    if (fmt == PF_TEXT) rc = parse_text(path, buf, len, xy, n, err, errlen);
-    else if (fmt == PF_RAW) rc = parse_raw(path, buf, len, xy, n, err, errlen);
-    else rc = parse_npy(path, buf, len, xy, n, err, errlen);
+    int rc = parse_any(fmt, path, buf, len, xy, n, err, errlen);
     free(buf);
     return rc;
 }

@@ -2,7 +2,8 @@
  * that reads and writes point files.
  *
  * Owns: the three formats (text "x y" lines with '#' comments, NumPy .npy
- * n x 2 float64, raw little-endian float64 pairs), the choice of format by
+ * n x 2 float64 (read also: float32 and big-endian, versions 1.0-3.0, the
+ * header read strictly by npy.c), raw little-endian float64 pairs), the choice of format by
  * file extension, atomic writing (temporary file in the same folder, renamed
  * on success, removed on failure) and strict validation on reading.
  * Does not own: what the points mean, or how tools report errors (every
@@ -60,5 +61,10 @@ int pf_write(const char *path, const double *xy, size_t n, char *err, size_t err
  * truncated or corrupt data, bad .npy headers, wrong shapes, NaN/inf and
  * coordinates outside [0,1). */
 int pf_read(const char *path, double **xy, size_t *n, char *err, size_t errlen);
+
+/* The same checks on bytes already in memory (buf is not changed); name
+ * stands for the file in messages. For tests and the fuzzing harnesses. */
+int pf_read_buffer(pf_format fmt, const char *name, const unsigned char *buf, size_t len, double **xy,
+                   size_t *n, char *err, size_t errlen);
 
 #endif

@@ -62,6 +62,28 @@ expect 2 "unknown output format" -n 100 -o points.png
 expect 2 "unknown output format" -n 100 -o points
 expect 2 "unexpected argument" -n 100 extra
 expect 2 "too large for one process" -n 2^33
+# --- one number grammar: decimal only, no sign, no spaces, no hex/octal
+expect 2 "'0x100'" -n 0x100
+expect 2 "' 100'" -n ' 100'
+expect 2 "'100 '" -n '100 '
+expect 2 "'-2^4'" -n -2^4
+expect 2 "'+100'" -n +100
+expect 2 "'2^64'" -n 2^64
+expect 2 "--seed" -n 100 --seed 0x10
+expect 2 "--seed" -n 100 --seed ' 1'
+expect 2 "--tol" -n 100 --tol ' 1e-4'
+expect 2 "--tol" -n 100 --tol 0x1p-14
+expect 2 "--tol" -n 100 --tol 1e-400
+"$CFPO" -n 2.5e3 --dry-run 2>&1 | grep -q "n=2500 " && ok || bad "-n 2.5e3 is not 2500"
+"$CFPO" -n 2^12 --dry-run 2>&1 | grep -q "n=4096 " && ok || bad "-n 2^12 is not 4096"
+# seeds are decimal: 010 is ten (not octal eight), 08 is eight
+"$CFPO" -n 100 -q --seed 010 -o s010.bin >/dev/null && "$CFPO" -n 100 -q --seed 10 -o s10.bin >/dev/null &&
+  cmp -s s010.bin s10.bin && ok || bad "--seed 010 differs from --seed 10"
+"$CFPO" -n 100 -q --seed 08 -o s08.bin >/dev/null && "$CFPO" -n 100 -q --seed 8 -o s8.bin >/dev/null &&
+  cmp -s s08.bin s8.bin && ok || bad "--seed 08 differs from --seed 8"
+rm -f s010.bin s10.bin s08.bin s8.bin
+"$CFPO" -n 100 -q --tol 1e-320 --max-iter 2 >/dev/null 2>tol.log && ok || bad "--tol 1e-320 refused: $(cat tol.log)"
+rm -f tol.log
 # --- runtime failures: exit 1
 expect 1 "No such file or directory" -n 100 -o nodir/x.npy
 mkdir adir.npy

@@ -63,6 +63,14 @@ check "paste chk/raps.txt ex/raps.txt | awk '!/^#/ { d = \$3 - \$8; if (d < 0) d
 out=$("$A" set.npy -q -K 32)
 check '[ $? -eq 0 ] && [ "$(field "$out" K)" = 32 ]' "rerun into an existing output folder failed"
 check '[ -z "$(ls -d set.analysis.* 2>/dev/null)" ]' "temporary folders left behind"
+# a full disk (here a file size limit, SIGXFSZ ignored so the write fails
+# with EFBIG): one line naming the output folder, not its temporary, exit 1,
+# nothing left behind
+(trap '' XFSZ; ulimit -f 1; exec "$A" set.npy -q -o full.analysis) >/dev/null 2>err.txt
+rc=$?
+check '[ $rc -eq 1 ] && [ "$(wc -l <err.txt)" -eq 1 ]' "disk full: exit $rc, $(cat err.txt)"
+check 'grep -q "full.analysis/" err.txt && ! grep -q "\.tmp\." err.txt' "disk-full message names the temporary: $(cat err.txt)"
+check '[ -z "$(ls -d full.analysis* 2>/dev/null)" ]' "disk full left $(ls -d full.analysis* 2>/dev/null)"
 # a foreign folder is never replaced
 mkdir mine && touch mine/notes
 "$A" set.npy -q -o mine >/dev/null 2>err.txt

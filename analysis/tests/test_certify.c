@@ -11,13 +11,16 @@
  * farther from X \ {x} than the certificate's radius, and its target point
  * reaches that radius. The two tests (farthest point, Local Characterization
  * Theorem) must reach the same verdict. */
+#define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "certify.h"
 #include "cfpo.h"
+#include "rng.h"
 #include "testsets.h"
 #include "testutil.h"
 
@@ -135,8 +138,42 @@ static void polished(void)
     free(xy); free(viol); free(target);
 }
 
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* Degenerate sets: exact (brute force agrees), and the certificate of
+ * 1,000 collinear points costs seconds at most (it took 18 s when one
+ * LocalCFPO over the whole torus took every point; a random set: 0.04 s). */
+static void degenerate(void)
+{
+    const size_t n = 200;
+    double *xy = malloc(2 * 1000 * sizeof *xy);
+    for (size_t i = 0; i < n; i++) { xy[2 * i] = (double)i / n; xy[2 * i + 1] = 0.5; }
+    expect("collinear", xy, n, 0, 0.0);
+    for (size_t i = 0; i < n; i++) {
+        xy[2 * i] = 0.5 + 1e-3 * cfpo_rand01(7, i, 0);
+        xy[2 * i + 1] = 0.5 + 1e-3 * cfpo_rand01(7, i, 1);
+    }
+    expect("clustered", xy, n, 0, 0.0);
+    for (size_t i = 0; i < n; i++) { xy[2 * i] = i % 2 ? 0.7 : 0.1; xy[2 * i + 1] = 0.3; }
+    expect("duplicated", xy, n, 0, 0.0);
+    for (size_t i = 0; i < 1000; i++) { xy[2 * i] = (double)i / 1000; xy[2 * i + 1] = 0.5; }
+    an_certificate c;
+    double t0 = now();
+    CHECK(cert(xy, 1000, &c, NULL, NULL) == 0 && !c.fpd && c.fp_pass == 0, "1,000 collinear points");
+    double t = now() - t0;
+    printf("1,000 collinear points: certificate in %.2f s\n", t);
+    CHECK(t < 10, "1,000 collinear points took %.1f s to certify", t);
+    free(xy);
+}
+
 int main(void)
 {
+    degenerate();
     lattices();
     random_sets();
     polished();

@@ -1,0 +1,45 @@
+/* fuzz_ckpt.c - libFuzzer harness: the checkpoint reader (ckpt.h). The
+ * input is a checkpoint file; it is checked as it is, then once more with
+ * its checksum made right, so the fuzzer gets past the checksum to the
+ * header fields and the points. Every answer must be 0 with a header
+ * whose fields are in range and points in [0,1)^2, or -1 with one line
+ * naming the file. */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cfpo.h"
+#include "ckpt.h"
+
+static void check(const uint8_t *data, size_t size)
+{
+    ckpt_header c;
+    char err[512] = "";
+    int rc = ckpt_check_buffer("fuzz.ck", data, size, &c, err, sizeof err);
+    if (rc == 0) {
+        if (c.n < 1 || (uint64_t)c.n != (size - CKPT_HEADER) / 16 || c.converged < 0 || c.converged > 1 ||
+            !(c.tol >= 0 && c.tol <= CFPO_TOL_MAX) || c.iteration < 0 || c.iteration > CKPT_ITER_MAX ||
+            (c.variant != CFPO_VARIANT_PAPER && c.variant != CFPO_VARIANT_SIMPLIFIED &&
+             c.variant != CFPO_VARIANT_ADAPTIVE))
+            abort();
+    } else if (rc != -1 || strncmp(err, "fuzz.ck: ", 9) != 0 || strchr(err, '\n')) {
+        abort();
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    check(data, size);
+    if (size >= CKPT_HEADER) {
+        uint8_t *fixed = malloc(size);
+        if (!fixed) return 0;
+        memcpy(fixed, data, size);
+        uint32_t crc = ckpt_crc_more(ckpt_crc_header(fixed), fixed + CKPT_HEADER, size - CKPT_HEADER);
+        for (int i = 0; i < 4; i++) fixed[60 + i] = (uint8_t)(crc >> (8 * i));
+        check(fixed, size);
+        free(fixed);
+    }
+    (void)ckpt_cell_bound(1.0 / 3, size ? data[0] / 256.0 : 0);
+    return 0;
+}

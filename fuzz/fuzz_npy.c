@@ -1,0 +1,5 @@
+/* fuzz_npy.c - libFuzzer harness: the npy point-file reader (fuzz_points.h). */
+#include "fuzz_points.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) { return fuzz_points(PF_NPY, data, size); }

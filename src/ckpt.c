@@ -1,0 +1,204 @@
+/* ckpt.c - see ckpt.h. */
+#include "ckpt.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <zlib.h>
+
+#include "cfpo.h"
+#include "grid.h"
+
+#define MAGIC_V2 "CFPOCKPT"
+#define MAGIC_V1 "CFPOCKP1"
+
+static void put32(unsigned char *b, uint32_t v) { for (int i = 0; i < 4; i++) b[i] = (unsigned char)(v >> (8 * i)); }
+static void put64(unsigned char *b, uint64_t v) { for (int i = 0; i < 8; i++) b[i] = (unsigned char)(v >> (8 * i)); }
+static uint32_t get32(const unsigned char *b)
+{
+    uint32_t v = 0;
+    for (int i = 3; i >= 0; i--) v = v << 8 | b[i];
+    return v;
+}
+static uint64_t get64(const unsigned char *b)
+{
+    uint64_t v = 0;
+    for (int i = 7; i >= 0; i--) v = v << 8 | b[i];
+    return v;
+}
+
+static int known_variant(uint64_t v)
+{
+    return v == CFPO_VARIANT_PAPER || v == CFPO_VARIANT_SIMPLIFIED || v == CFPO_VARIANT_ADAPTIVE;
+}
+
+int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_header *c, char *err,
+                size_t errlen)
+{
+    memset(c, 0, sizeof *c);
+    if (size < CKPT_HEADER) {
+        snprintf(err, errlen, "%s: not a cfpo checkpoint (%llu bytes, shorter than its 64-byte header)", path,
+                 (unsigned long long)size);
+        return -1;
+    }
+    uint64_t variant, converged, n;
+    if (memcmp(h, MAGIC_V2, 8) == 0) {
+        c->version = (int)get32(h + 8);
+        if (get32(h + 8) != CKPT_VERSION) {
+            snprintf(err, errlen, "%s: checkpoint version %lu is not one this cfpo reads (1 or 2)", path,
+                     (unsigned long)get32(h + 8));
+            return -1;
+        }
+        if (get32(h + 12) != CKPT_HEADER) {
+            snprintf(err, errlen, "%s: corrupt checkpoint: header size field %lu, expected 64", path,
+                     (unsigned long)get32(h + 12));
+            return -1;
+        }
+        n = get64(h + 16);
+        c->seed = get64(h + 24);
+        variant = get32(h + 32);
+        converged = get32(h + 36);
+        uint64_t tb = get64(h + 40);
+        memcpy(&c->tol, &tb, 8);
+        c->iteration = (int64_t)(get64(h + 48) > CKPT_ITER_MAX ? -1 : (int64_t)get64(h + 48));
+        if (get32(h + 56) != 0) {
+            snprintf(err, errlen, "%s: corrupt checkpoint: reserved field is not zero", path);
+            return -1;
+        }
+        c->crc = get32(h + 60);
+    } else if (memcmp(h, MAGIC_V1, 8) == 0) {
+        c->version = 1;
+        n = get64(h + 8);
+        c->seed = get64(h + 16);
+        variant = get64(h + 24);
+        uint64_t tb = get64(h + 32);
+        memcpy(&c->tol, &tb, 8);
+        c->iteration = (int64_t)(get64(h + 40) > CKPT_ITER_MAX ? -1 : (int64_t)get64(h + 40));
+        converged = get64(h + 48);
+        if (get64(h + 56) != 0) {
+            snprintf(err, errlen, "%s: corrupt version-1 checkpoint: reserved field is not zero", path);
+            return -1;
+        }
+    } else {
+        snprintf(err, errlen, "%s: not a cfpo checkpoint (bad magic)", path);
+        return -1;
+    }
+    if (!known_variant(variant)) {
+        snprintf(err, errlen, "%s: corrupt checkpoint: field variant = %llu is not 0, 1 or 2", path,
+                 (unsigned long long)variant);
+        return -1;
+    }
+    c->variant = (int)variant;
+    if (converged > 1) {
+        snprintf(err, errlen, "%s: corrupt checkpoint: field converged = %llu is not 0 or 1", path,
+                 (unsigned long long)converged);
+        return -1;
+    }
+    c->converged = (int)converged;
+    if (!(c->tol >= 0 && c->tol <= CFPO_TOL_MAX)) {
+        snprintf(err, errlen, "%s: corrupt checkpoint: field tol = %g is outside [0, %g]", path, c->tol,
+                 CFPO_TOL_MAX);
+        return -1;
+    }
+    if (c->iteration < 0) {
+        snprintf(err, errlen, "%s: corrupt checkpoint: field iteration is outside [0, 1e9]", path);
+        return -1;
+    }
+    const int64_t nmin = cfpo_grid_min_n(c->variant);
+    if (n < (uint64_t)nmin || n > (size - CKPT_HEADER) / 16) {
+        if (n < (uint64_t)nmin)
+            snprintf(err, errlen, "%s: corrupt checkpoint: field n = %llu is below the smallest n of variant %s (%lld)",
+                     path, (unsigned long long)n, c->variant == CFPO_VARIANT_SIMPLIFIED ? "simplified" : c->variant == CFPO_VARIANT_PAPER ? "paper" : "adaptive", (long long)nmin);
+        else
+            snprintf(err, errlen, "%s: checkpoint field n = %llu needs %llu bytes or more, file has %llu (truncated?)",
+                     path, (unsigned long long)n, (unsigned long long)n < UINT64_MAX / 16 - 4 ?
+                     (unsigned long long)(CKPT_HEADER + 16 * n) : (unsigned long long)UINT64_MAX,
+                     (unsigned long long)size);
+        return -1;
+    }
+    c->n = (int64_t)n;
+    if (size != CKPT_HEADER + 16 * n) {
+        snprintf(err, errlen, "%s: checkpoint of %llu points should be %llu bytes, file has %llu (trailing data)",
+                 path, (unsigned long long)n, (unsigned long long)(CKPT_HEADER + 16 * n), (unsigned long long)size);
+        return -1;
+    }
+    return 0;
+}
+
+void ckpt_encode(const ckpt_header *c, unsigned char *h)
+{
+    memset(h, 0, CKPT_HEADER);
+    memcpy(h, MAGIC_V2, 8);
+    put32(h + 8, CKPT_VERSION);
+    put32(h + 12, CKPT_HEADER);
+    put64(h + 16, (uint64_t)c->n);
+    put64(h + 24, c->seed);
+    put32(h + 32, (uint32_t)c->variant);
+    put32(h + 36, (uint32_t)c->converged);
+    uint64_t tb;
+    memcpy(&tb, &c->tol, 8);
+    put64(h + 40, tb);
+    put64(h + 48, (uint64_t)c->iteration);
+    put32(h + 60, c->crc);
+}
+
+uint32_t ckpt_crc_header(const unsigned char *h)
+{
+    unsigned char z[CKPT_HEADER];
+    memcpy(z, h, CKPT_HEADER);
+    put32(z + 60, 0);
+    return (uint32_t)crc32(crc32(0L, Z_NULL, 0), z, CKPT_HEADER);
+}
+
+uint32_t ckpt_crc_more(uint32_t crc, const void *buf, size_t bytes)
+{
+    const unsigned char *p = buf;
+    while (bytes) { /* zlib takes at most UINT_MAX bytes at once */
+        uInt k = bytes > (1u << 30) ? (1u << 30) : (uInt)bytes;
+        crc = (uint32_t)crc32(crc, p, k);
+        p += k;
+        bytes -= k;
+    }
+    return crc;
+}
+
+uint32_t ckpt_crc_join(uint32_t a, uint32_t b, uint64_t bbytes)
+{
+    return (uint32_t)crc32_combine(a, b, (z_off_t)bbytes);
+}
+
+int ckpt_check_buffer(const char *path, const unsigned char *buf, size_t len, ckpt_header *c, char *err,
+                      size_t errlen)
+{
+    if (len < CKPT_HEADER) return ckpt_decode(path, buf, len, c, err, errlen);
+    if (ckpt_decode(path, buf, len, c, err, errlen) != 0) return -1;
+    if (c->version >= 2) {
+        uint32_t crc = ckpt_crc_more(ckpt_crc_header(buf), buf + CKPT_HEADER, len - CKPT_HEADER);
+        if (crc != c->crc) {
+            snprintf(err, errlen, "%s: corrupt checkpoint: checksum 0x%08lx does not match the contents (0x%08lx)",
+                     path, (unsigned long)c->crc, (unsigned long)crc);
+            return -1;
+        }
+    }
+    for (int64_t i = 0; i < c->n; i++) {
+        double v[2];
+        for (int k = 0; k < 2; k++) {
+            uint64_t u = get64(buf + CKPT_HEADER + 16 * i + 8 * k);
+            memcpy(&v[k], &u, 8);
+        }
+        if (!(v[0] >= 0 && v[0] < 1 && v[1] >= 0 && v[1] < 1)) {
+            snprintf(err, errlen, "%s: corrupt checkpoint: point %lld at offset %llu is not in [0,1)^2", path,
+                     (long long)i, (unsigned long long)(CKPT_HEADER + 16 * (uint64_t)i));
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int64_t ckpt_cell_bound(double L, double d)
+{
+    if (!(d > 0)) return INT64_MAX;
+    double k = ceil(L * sqrt(2.0) / d) + 1;
+    if (!(k < 3e9)) return INT64_MAX;
+    return (int64_t)(k * k);
+}

@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# test_checkpoint.sh BUILD_DIR - checkpoints are checked, not trusted: a
+# version-2 header with a checksum over header and points (one flipped bit
+# anywhere is refused), every header field validated with a one-line error
+# naming the file and the field, version-1 files still read, states no run
+# of cfpo can reach refused before any work, and no temporary left behind
+# by a signal that arrives while a checkpoint is being written.
+set -u
+B=$(cd "$1" && pwd)
+CFPO="$B/cfpo"
+T=$(mktemp -d /tmp/cfpo-ckpt-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 1
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
+
+# refused FILE PATTERN: --resume FILE exits 1 within 30 s with one line on
+# stderr naming the file and matching PATTERN, and writes no output.
+refused() {
+  local f=$1 pat=$2
+  rm -f out.bin
+  timeout 30 "$CFPO" -q --max-iter 2 --resume "$f" -o out.bin >o.log 2>e.log
+  local rc=$?
+  if [ $rc -ne 1 ]; then bad "$f: exit $rc, expected 1 ($(head -c 300 e.log))"; return; fi
+  if [ "$(wc -l <e.log)" -ne 1 ]; then bad "$f: $(wc -l <e.log) lines on stderr"; return; fi
+  grep -q -- "$f" e.log || { bad "$f: message does not name the file: $(cat e.log)"; return; }
+  grep -q -- "$pat" e.log || { bad "$f: message '$(cat e.log)' lacks '$pat'"; return; }
+  [ -e out.bin ] && { bad "$f: output written"; return; }
+  ls -A | grep -q 'tmp\.' && { bad "$f: temporary left: $(ls -A | grep tmp)"; return; }
+  ok
+}
+# le BYTES VALUE: VALUE (decimal, < 2^63) as BYTES little-endian bytes.
+le() {
+  local n=$1 v=$2 i s=""
+  for ((i = 0; i < n; i++)); do s+=$(printf '\\x%02x' $(((v >> (8 * i)) & 255))); done
+  printf "$s"
+}
+# patch FILE OFFSET BYTES...: overwrite bytes (given as \xHH text) at OFFSET.
+patch() { local f=$1 off=$2; shift 2; printf "$*" | dd of="$f" bs=1 seek="$off" conv=notrunc status=none; }
+# flip FILE OFFSET: flip the lowest bit of the byte at OFFSET.
+flip() {
+  local b; b=$(od -An -tu1 -j "$2" -N1 "$1" | tr -d ' ')
+  patch "$1" "$2" "$(printf '\\x%02x' $((b ^ 1)))"
+}
+
+N=4096
+"$CFPO" -q -n $N --max-iter 20 -o ref.bin >/dev/null || bad "reference run"
+"$CFPO" -q -n $N --max-iter 10 --checkpoint ck.bin --checkpoint-every 10 >/dev/null || bad "checkpointed run"
+[ "$(head -c 8 ck.bin)" = CFPOCKPT ] && [ "$(od -An -tu4 -j8 -N4 ck.bin | tr -d ' ')" = 2 ] && ok ||
+  bad "checkpoint is not version 2 ($(head -c 8 ck.bin | od -c | head -1))"
+"$CFPO" -q --max-iter 20 --resume ck.bin -o res.bin >/dev/null && cmp -s res.bin ref.bin && ok ||
+  bad "resume from a version-2 checkpoint differs from the uninterrupted run"
+
+# One flipped bit anywhere is refused: a point, the seed, the iteration,
+# the checksum itself.
+for off in $((64 + 16 * 100 + 3)) $((64 + 16 * N - 1)) 24 48 60; do
+  cp ck.bin flip$off.ck; flip flip$off.ck $off
+  refused flip$off.ck "checkpoint"
+done
+grep -q checksum e.log && ok || bad "a flipped bit is not reported as a checksum mismatch: $(cat e.log)"
+
+# Version-1 files (no checksum): still read, same result; fields validated.
+v1() { # v1 FILE N VARIANT TOL_BITS_HEX ITER CONVERGED [RESERVED]: header + ck.bin's points
+  { printf CFPOCKP1; le 8 "$2"; le 8 1; le 8 "$3"
+    printf "$4"; le 8 "$5"; le 8 "$6"; le 8 "${7:-0}"; tail -c +65 ck.bin; } >"$1"
+}
+TOL=$(od -An -tx1 -j40 -N8 ck.bin | tr -d ' \n' | sed 's/../\\x&/g') # this run's tol, as bytes
+v1 good.v1 $N 2 "$TOL" 10 0
+"$CFPO" -q --max-iter 20 --resume good.v1 -o res1.bin >/dev/null 2>e.log && cmp -s res1.bin ref.bin && ok ||
+  bad "version-1 checkpoint not read as before: $(cat e.log)"
+v1 var.v1 $N $((2 + (1 << 32))) "$TOL" 10 0;  refused var.v1 "variant"
+v1 conv.v1 $N 2 "$TOL" 10 7;                   refused conv.v1 "converged"
+v1 tol.v1 $N 2 "$(printf '\\xa9\\x13\\xd0\\x44\\xd8\\xf0\\xdf\\x3f')" 10 0; refused tol.v1 "tol" # 0.4999
+v1 iter.v1 $N 2 "$TOL" $((1 << 40)) 0;         refused iter.v1 "iteration"
+v1 res.v1 $N 2 "$TOL" 10 0 1;                  refused res.v1 "reserved"
+v1 small.v1 5 2 "$TOL" 10 0;                   refused small.v1 "n = 5"
+v1 big.v1 $((N + 1)) 2 "$TOL" 10 0;            refused big.v1 "truncated"
+v1 long.v1 $((N - 1)) 2 "$TOL" 10 0;           refused long.v1 "trailing"
+# Version 2 fields: a version this cfpo does not know, converged = 7.
+cp ck.bin ver.ck; patch ver.ck 8 '\x03';        refused ver.ck "version 3"
+cp ck.bin conv.ck; patch conv.ck 36 '\x07';     refused conv.ck "converged"
+cp ck.bin var.ck; patch var.ck 32 '\x02\x00\x00\x01'; refused var.ck "variant"
+printf 'CFPOCKPT' >short.ck;                    refused short.ck "not a cfpo checkpoint"
+
+# A state no run can reach: 2000 points on one spot (a run never brings
+# points closer than its start's minimum distance). Refused at once, not
+# after minutes of solving one crowded cell.
+{ for i in $(seq 2000); do tail -c +$((64 + 16 * 7 + 1)) ck.bin | head -c 16; done; tail -c +$((64 + 16 * 2000 + 1)) ck.bin; } >pts.raw
+{ printf CFPOCKP1; le 8 $N; le 8 1; le 8 2; printf "$TOL"; le 8 10; le 8 0; le 8 0; cat pts.raw; } >crowd.v1
+refused crowd.v1 "closer than"
+
+# A signal while a checkpoint is written leaves no temporary behind: the
+# first fsync (the first checkpoint's commit) raises SIGTERM.
+if [ -f "$B/tests/libsigterm_fsync.so" ]; then
+  LD_PRELOAD="$B/tests/libsigterm_fsync.so" "$CFPO" -q -n $N --max-iter 5 --checkpoint sig.ck \
+    --checkpoint-every 1 -o sig.bin >/dev/null 2>&1
+  rc=$?
+  [ $rc -eq 143 ] && ok || bad "SIGTERM during a checkpoint: exit $rc, expected 143"
+  ls -A | grep -q '^sig\.' && bad "SIGTERM during a checkpoint left: $(ls -A | grep '^sig\.')" || ok
+else
+  bad "tests/libsigterm_fsync.so not built"
+fi
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]
