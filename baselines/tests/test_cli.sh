@@ -24,7 +24,9 @@ expect() {
   ok
 }
 
-for c in cfpo-dart cfpo-bs cfpo-bridson cfpo-fpo cfpo-lfpo; do
+# the baseline commands: scripts/methods.tsv, kinds pd and iter
+. "$(cd "$(dirname "$0")/../../scripts" && pwd)/methods.sh"
+for c in $(methods_binaries pd iter); do
   X="$B/$c"
   [ -x "$X" ] || { bad "$X missing"; continue; }
   expect 0 "" "$X" --help
