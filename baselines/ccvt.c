@@ -16,6 +16,7 @@
 /* Random streams: the points' coordinates, the Hilbert curve's offset. */
 #define CCVT_POINT_STREAM 0x4343565450544eULL  /* "CCVTPTN" */
 #define CCVT_OFFSET_STREAM 0x434356544f4653ULL /* "CCVTOFS" */
+#define CCVT_SITE_STREAM 0x43435654534954ULL   /* "CCVTSIT" */
 #define CCVT_MAX_POINTS (1LL << 31)
 
 struct ccvt_engine {
@@ -157,6 +158,14 @@ static uint32_t hilbert(uint32_t x, uint32_t y)
     return d;
 }
 
+/* The curve's index of (x, y) shifted by (ox, oy) on the torus. */
+static uint32_t hilbert_key(double x, double y, double ox, double oy)
+{
+    uint32_t hx = (uint32_t)(cfpo_wrap01(x + ox) * 65536.0) & 0xffff;
+    uint32_t hy = (uint32_t)(cfpo_wrap01(y + oy) * 65536.0) & 0xffff;
+    return hilbert(hx, hy);
+}
+
 static int cmp_u64(const void *a, const void *b)
 {
     uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
@@ -171,7 +180,7 @@ ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t err
     ccvt_engine *E = alloc_engine(n, m, G.L, o->tol, err, errlen);
     if (!E) return NULL;
     const int64_t N = n * m;
-    uint64_t *key = malloc((size_t)N * sizeof *key);
+    uint64_t *key = malloc((size_t)(N > n ? N : n) * sizeof *key);
     if (!key) {
         ccvt_free(E);
         snprintf(err, errlen, "out of memory for the start of %lld points", (long long)N);
@@ -179,12 +188,23 @@ ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t err
     }
     const double ox = cfpo_rand01(o->seed, CCVT_OFFSET_STREAM, 0);
     const double oy = cfpo_rand01(o->seed, CCVT_OFFSET_STREAM, 1);
+    /* the sites: uniform random, in the order of the curve */
+    for (int64_t i = 0; i < n; i++) {
+        double x = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * (uint64_t)i);
+        double y = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * (uint64_t)i + 1);
+        key[i] = (uint64_t)hilbert_key(x, y, ox, oy) << 32 | (uint64_t)i;
+    }
+    qsort(key, (size_t)n, sizeof *key, cmp_u64);
+    for (int64_t r = 0; r < n; r++) {
+        uint64_t i = key[r] & 0xffffffffu;
+        E->site[2 * r] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * i);
+        E->site[2 * r + 1] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * i + 1);
+    }
+    /* the points, in the order of the curve: run r of m goes to site r */
     for (int64_t k = 0; k < N; k++) {
         double x = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k);
         double y = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k + 1);
-        uint32_t hx = (uint32_t)(cfpo_wrap01(x + ox) * 65536.0) & 0xffff;
-        uint32_t hy = (uint32_t)(cfpo_wrap01(y + oy) * 65536.0) & 0xffff;
-        key[k] = (uint64_t)hilbert(hx, hy) << 32 | (uint64_t)k;
+        key[k] = (uint64_t)hilbert_key(x, y, ox, oy) << 32 | (uint64_t)k;
     }
     qsort(key, (size_t)N, sizeof *key, cmp_u64);
     for (int64_t s = 0; s < N; s++) {
@@ -193,7 +213,7 @@ ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t err
         E->pts[2 * s + 1] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * k + 1);
     }
     free(key);
-    init_sites(E);
+    for (int64_t i = 0; i < n; i++) E->r[i] = radius(E, i);
     return E;
 }
 

@@ -20,10 +20,14 @@
  * its points (pairs from a hash grid of the sites); and a pair whose two
  * sites are unchanged since it last made no swap cannot swap now (skipped).
  *
- * Start (a choice of this implementation; the paper assigns at random and
- * compares all pairs, O(n^2 m) per iteration): the points sorted along a
- * Hilbert curve laid at a random offset on the torus, cut into n runs of m
- * consecutive points, each run a site's; sites at their runs' centroids.
+ * Start: n uniform random sites (the paper's). Their assignment is a
+ * choice of this implementation (the paper assigns at random, which makes
+ * every pair a candidate, O(n^2 m) per iteration): sites and points sorted
+ * along one Hilbert curve laid at a random offset on the torus, the points
+ * cut into n runs of m consecutive ones, run r to the r-th site along the
+ * curve, so each site starts with points near it. (Sites at the runs'
+ * centroids instead would start on the curve's nearly square blocks, a
+ * lattice the swaps do not undo.)
  *
  * Memory: 16 n m bytes for the points, 8 n m more while the start is
  * sorted, O(n + m) besides. Default m (ccvt_default_m): 1024 up to
