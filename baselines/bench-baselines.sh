@@ -15,16 +15,22 @@
 # The load average before and after is printed: on a shared 2-core machine,
 # quote it with the numbers. Raw rows go to OUT_DIR/baselines-bench.tsv
 # (default results/). Environment: REPS, SIZES, PD_SIZES (empty: skip), SEED, and
-# METHODS (default "cfpo-t1 cfpo-t2 fpo lfpo"), PD_METHODS ("dart bs bridson")
+# METHODS (default "cfpo-t1 cfpo-t2" and the iterative baselines of
+# scripts/methods.tsv), PD_METHODS (its Poisson-disk samplers)
 # to run a part of the plan.
 # bench-baselines.sh --table RAW... prints the table from raw files (e.g.
 # several partial runs) without running anything.
 # Example (quick): REPS=1 SIZES=4096 PD_SIZES=65536 baselines/bench-baselines.sh build
 set -euo pipefail
+# the methods: scripts/methods.tsv (kinds iter and pd), plus cfpo on 1 and 2 threads
+# shellcheck source=../scripts/methods.sh
+. "$(cd "$(dirname "$0")/../scripts" && pwd)/methods.sh"
+ITER_KEYS=$(methods_keys iter)
+PD_KEYS=$(methods_keys pd)
 
 # print_table RAW...: medians and ratios of the rows in the raw files.
 print_table() {
-awk -F'\t' '
+awk -F'\t' -v iters="$ITER_KEYS cfpo-t1 cfpo-t2" -v pds="$PD_KEYS" '
 function median(key,   k, m, i, j, t, a) {
   m = cnt[key]; if (m == 0) return -1
   for (i = 1; i <= m; i++) a[i] = val[key, i]
@@ -45,11 +51,11 @@ FNR == 1 { next }
   if ($5 == "-") pdsizes = addsize(pdsizes, $2); else sizes = addsize(sizes, $2)
 }
 END {
-  split("fpo lfpo cfpo-t1 cfpo-t2", ms, " ")
+  nms = split(iters, ms, " ")
   printf "\nIterative methods (medians; the same stopping rule and tolerance):\n"
   printf "%-8s %-8s %5s %10s %6s %11s %9s %9s  %s\n", "n", "method", "runs", "seconds", "iters", "s/iter", "dmin", "davg", "converged"
   ns = sortsizes(sizes, N)
-  for (i = 1; i <= ns; i++) for (j = 1; j <= 4; j++) {
+  for (i = 1; i <= ns; i++) for (j = 1; j <= nms; j++) {
     k = ms[j] SUBSEP N[i]
     if (!cnt[k SUBSEP "s"]) continue
     printf "%-8s %-8s %5d %10.3f %6d %11.5f %9.4f %9.4f  %s\n", N[i], ms[j], cnt[k SUBSEP "s"], median(k SUBSEP "s"),
@@ -57,23 +63,28 @@ END {
   }
   printf "\nRatios (time of the first / time of the second; > 1: the second is faster):\n"
   printf "%-8s %-22s %11s %11s\n", "n", "ratio", "to converge", "per iter"
-  split("fpo/cfpo-t1 fpo/cfpo-t2 lfpo/cfpo-t1 lfpo/cfpo-t2 lfpo/fpo cfpo-t1/cfpo-t2", rs, " ")
-  for (i = 1; i <= ns; i++) for (j = 1; j <= 6; j++) {
+  # every baseline against cfpo on 1 and 2 threads, the later baselines
+  # against the first, cfpo on 1 against 2 threads
+  nb = nms - 2; rl = ""
+  for (j = 1; j <= nb; j++) rl = rl " " ms[j] "/cfpo-t1 " ms[j] "/cfpo-t2"
+  for (j = 2; j <= nb; j++) rl = rl " " ms[j] "/" ms[1]
+  nrs = split(rl " cfpo-t1/cfpo-t2", rs, " ")
+  for (i = 1; i <= ns; i++) for (j = 1; j <= nrs; j++) {
     split(rs[j], ab, "/")
     a = ab[1] SUBSEP N[i]; b = ab[2] SUBSEP N[i]
     if (!cnt[a SUBSEP "s"] || !cnt[b SUBSEP "s"]) continue
     printf "%-8s %-22s %s %s\n", N[i], ab[1] " / " ab[2], ratio(median(a SUBSEP "s"), median(b SUBSEP "s")),
       ratio(median(a SUBSEP "spi"), median(b SUBSEP "spi"))
   }
-  np = sortsizes(pdsizes, P); split("dart bs bridson", pm, " ")
+  np = sortsizes(pdsizes, P); npm = split(pds, pm, " ")
   if (np) {
     printf "\nPoisson-disk samplers (medians):\n"
-    printf "%-9s %-8s %5s %10s %10s %14s %9s %9s %10s\n", "n", "method", "runs", "points", "seconds", "points/s", "dmin", "davg", "vs dart"
+    printf "%-9s %-8s %5s %10s %10s %14s %9s %9s %10s\n", "n", "method", "runs", "points", "seconds", "points/s", "dmin", "davg", "vs " pm[1]
   }
-  for (i = 1; i <= np; i++) for (j = 1; j <= 3; j++) {
+  for (i = 1; i <= np; i++) for (j = 1; j <= npm; j++) {
     k = pm[j] SUBSEP P[i]
     if (!cnt[k SUBSEP "s"]) continue
-    pts = median(k SUBSEP "pts"); base = median("dart" SUBSEP P[i] SUBSEP "pts")
+    pts = median(k SUBSEP "pts"); base = median(pm[1] SUBSEP P[i] SUBSEP "pts")
     printf "%-9s %-8s %5d %10d %10.3f %14.0f %9.4f %9.4f %s\n", P[i], pm[j], cnt[k SUBSEP "s"], median(k SUBSEP "np"),
       median(k SUBSEP "s"), pts, median(k SUBSEP "dmin"), median(k SUBSEP "davg"), ratio(pts, base)
   }
@@ -91,9 +102,9 @@ REPS=${REPS:-3}
 SIZES=${SIZES-"4096 16384 65536"}
 PD_SIZES=${PD_SIZES-"65536 1048576"}
 SEED=${SEED:-1}
-METHODS=${METHODS:-"cfpo-t1 cfpo-t2 fpo lfpo"}
-PD_METHODS=${PD_METHODS:-"dart bs bridson"}
-for c in cfpo cfpo-fpo cfpo-lfpo cfpo-dart cfpo-bs cfpo-bridson; do
+METHODS=${METHODS:-"cfpo-t1 cfpo-t2 $ITER_KEYS"}
+PD_METHODS=${PD_METHODS:-"$PD_KEYS"}
+for c in cfpo $(methods_binaries iter pd); do
   [ -x "$B/$c" ] || { echo "bench-baselines: $B/$c not found (build first)" >&2; exit 1; }
 done
 mkdir -p "$OUT"
@@ -127,12 +138,10 @@ cmd_for() {
   case $1 in
     cfpo-t1) echo "$B/cfpo -n $2 -s $SEED -t 1" ;;
     cfpo-t2) echo "$B/cfpo -n $2 -s $SEED -t 2" ;;
-    fpo) echo "$B/cfpo-fpo -n $2 -s $SEED" ;;
-    lfpo) echo "$B/cfpo-lfpo -n $2 -s $SEED" ;;
-    dart) echo "$B/cfpo-dart -n $2 -s $SEED" ;;
-    bs) echo "$B/cfpo-bs -n $2 -s $SEED" ;;
-    bridson) echo "$B/cfpo-bridson -n $2 -s $SEED" ;;
-    *) echo "bench-baselines: unknown method $1" >&2; exit 2 ;;
+    *) local c
+       c=$(method_get "$1" command)
+       [ -n "$c" ] || { echo "bench-baselines: unknown method $1" >&2; exit 2; }
+       echo "$B/$c -n $2 -s $SEED" ;;
   esac
 }
 for n in $SIZES; do

@@ -53,7 +53,7 @@ bench_profile() {
     smoke)
       SETS=2; COMP_N=1024; RT_REPS=1
       RT_SIZES_cfpo="256 512"; RT_SIZES_simplified="256"
-      RT_SIZES_fpo="256"; RT_SIZES_lfpo="256"
+      RT_SIZES_fpo="256"; RT_SIZES_lfpo="256"; RT_SIZES_ccvt="256"; RT_SIZES_ccdt="256"
       RT_SIZES_dart="4096"; RT_SIZES_bs="4096"; RT_SIZES_bridson="4096"
       TTQ_SIZES="1024"; TTQ_SEEDS=1; TTQ_MAXITER=80
       ;;
@@ -61,6 +61,7 @@ bench_profile() {
       SETS=10; COMP_N=4096; RT_REPS=1
       RT_SIZES_cfpo="1024 4096 16384 65536"; RT_SIZES_simplified="1024 4096 16384"
       RT_SIZES_fpo="1024 16384"; RT_SIZES_lfpo="1024 16384"
+      RT_SIZES_ccvt="1024 16384"; RT_SIZES_ccdt="1024 16384"
       RT_SIZES_dart="1024 4096 16384 65536 262144"
       RT_SIZES_bs="1024 4096 16384 65536 262144"
       RT_SIZES_bridson="1024 4096 16384 65536 262144"
@@ -70,6 +71,7 @@ bench_profile() {
       RT_SIZES_cfpo="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_simplified="1024 4096 16384 65536 262144"
       RT_SIZES_fpo="1024 4096 16384 65536 262144"; RT_SIZES_lfpo="1024 4096 16384 65536"
+      RT_SIZES_ccvt="1024 4096 16384 65536"; RT_SIZES_ccdt="1024 4096 16384 65536"
       RT_SIZES_dart="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_bs="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_bridson="1024 4096 16384 65536 262144 1048576"
@@ -94,6 +96,8 @@ bench_estimate() {
     a["simplified"] = 654; b["simplified"] = 0.35; cap["simplified"] = 1550; c["simplified"] = 0.75e-6
     a["fpo"] = 166; b["fpo"] = 0.33; cap["fpo"] = 5000; c["fpo"] = 2.5e-6
     a["lfpo"] = 239; b["lfpo"] = 0.55; cap["lfpo"] = 5000; c["lfpo"] = 2.5e-6
+    a["ccvt"] = 260; b["ccvt"] = 0; cap["ccvt"] = 5000; c["ccvt"] = 2e-5
+    a["ccdt"] = 275; b["ccdt"] = 0.29; cap["ccdt"] = 5000; c["ccdt"] = 1.3e-5
     it = a[k] * (n / 1024) ^ b[k]; if (it > cap[k]) it = cap[k]
     if (m != "-" && m + 0 < it) it = m + 0
     s = c[k] * n * it

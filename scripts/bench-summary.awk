@@ -1,5 +1,6 @@
 # bench-summary.awk - summary.md of a results folder (run by replot.sh):
-#   awk -F, -v convkeys="fpo lfpo ..." -v tmin=0.925 -v tavg=0.929 -f bench-summary.awk \
+#   awk -F, -v convkeys="fpo lfpo ..." -v tmin=0.925 -v tavg=0.929 -v methods=methods.tsv \
+#       -f methods.awk -f bench-summary.awk \
 #       runs.csv spectra.csv plotdata/runtime.tsv plotdata/speedup.tsv plotdata/ttq-runs.tsv
 # Every number is computed here from those files, and every table names the
 # rows of runs.csv (column `run`) and spectra.csv (column `group`) it comes
@@ -7,10 +8,8 @@
 # (replot.sh), ttq-runs.tsv one line per time-to-quality run read from its
 # trace and quality.csv (bench-ttq.awk), all listed in the tables.
 function key(m, v) { return (m != "cfpo") ? m : (v == "paper" || v == "cfpo") ? "cfpo" : v }
-function label(k) {
-  return k == "dart" ? "DT" : k == "bs" ? "BS" : k == "bridson" ? "Bridson" : k == "fpo" ? "FPO" : \
-    k == "lfpo" ? "LFPO" : k == "cfpo" ? "CFPO" : k == "simplified" ? "simplified CFPO" : k
-}
+# labels from the one list of methods (methods.tsv, through methods.awk)
+function label(k) { return mlabel(k) }
 # "3 4 5 9" -> "3-5, 9"
 function ranges(s,   a, k, i, j, t, out, st, pv) {
   k = split(s, a, " ")
@@ -48,7 +47,7 @@ function reached(s,   a, k, i, c) { k = split(s, a, " "); c = 0; for (i = 1; i <
 function tcell(s,   m, k, c) { m = med(s); k = split(s, tmp2, " "); c = reached(s)
   return (m == "never" ? "never" : secs(m)) (c < k && c > 0 ? " (" c " of " k ")" : "") }
 function spk(g) { return (g in sg) && sspm[g] != "" ? sprintf("%.1f / %.1f", sspm[g], sspk[g]) : "-" }
-function ttqlabel(k) { return k == "adaptive" ? "CFPO (adaptive)" : k == "paper" ? "CFPO (paper)" : label(k) }
+function ttqlabel(k) { return mlabel(k) }
 function ttqrank(k, t) { return (k == "adaptive" ? 1 : k == "paper" ? 3 : k == "fpo" ? 4 : k == "lfpo" ? 5 : 6) * 1000 + t }
 function nice_n(n) { return n >= 1048576 && n % 1048576 == 0 ? n / 1048576 "M" : n >= 1024 && n % 1024 == 0 ? n / 1024 "k" : n }
 
@@ -172,7 +171,7 @@ END {
   print ""
   print "| method | threads | ranks | n | runs | seconds (median) | seconds per iteration | iterations | runs.csv rows |"
   print "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
-  nkeys = split("dart bs bridson fpo lfpo cfpo simplified", korder, " ")
+  nkeys = split(mkeys("pd iter cfpo"), korder, " ")
   for (j = 1; j <= nkeys; j++) for (i = 1; i <= nrt; i++) {
     split(rt[i], a, "\t")
     if (a[1] != korder[j]) continue

@@ -1,7 +1,7 @@
 # bench-ttq.awk - the time-to-quality experiment of a results folder (run by
 # replot.sh):
 #   awk -F, -v dir=RESULTS -v pdir=PLOTDATA -v tmin=0.925 -v tavg=0.929 \
-#       -f bench-ttq.awk RESULTS/runs.csv RESULTS/quality.csv > PLOTDATA/ttq-runs.tsv
+#       -v methods=methods.tsv -f methods.awk -f bench-ttq.awk RESULTS/runs.csv RESULTS/quality.csv > PLOTDATA/ttq-runs.tsv
 # Reads the rows of experiment `ttq` of runs.csv, their traces (columns
 # iteration, delta_min, delta_avg, ..., elapsed = column 8) and quality.csv
 # (certificate and spike ratio of each final set). Prints one line per run:
@@ -16,11 +16,9 @@
 function key(m, v) { return (m == "cfpo") ? v : m }
 # configuration order in tables and figures; threads break ties
 function rank(k, t) { return (k == "adaptive" ? 1 : k == "paper" ? 3 : k == "fpo" ? 4 : k == "lfpo" ? 5 : 6) * 1000 + t }
-function label(k, t) {
-  return (k == "adaptive" ? "CFPO (adaptive)" : k == "paper" ? "CFPO (paper)" : k == "fpo" ? "FPO" : k == "lfpo" ? "LFPO" : k) \
-    ", " t " thread" (t > 1 ? "s" : "")
-}
-function colour(k) { return k == "adaptive" ? "#d62728" : k == "paper" ? "#e377c2" : k == "fpo" ? "#1f77b4" : k == "lfpo" ? "#17becf" : "#000000" }
+# labels and colours from the one list of methods (methods.tsv, through methods.awk)
+function label(k, t) { return mlabel(k) ", " t " thread" (t > 1 ? "s" : "") }
+function colour(k) { return mcolour(k) }
 function inf(x) { return x == "never" ? 1e300 : x + 0 }
 FILENAME ~ /runs\.csv$/ {
   if ($0 ~ /^#/ || $1 == "run" || $2 != "ttq") next

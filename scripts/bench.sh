@@ -2,9 +2,8 @@
 # bench.sh BUILD_DIR [PROFILE] [--plan] - `make bench`: CFPO against its baselines,
 # with the paper's figures (Chen & Gotsman, figures 5-8).
 #
-# Runs every method of the suite (DT, BS, Bridson, FPO, LFPO, CFPO,
-# simplified CFPO) as the plan of PROFILE (scripts/bench-profiles.sh: smoke,
-# default, paper) says, then analyses the point sets with cfpo-analyze and
+# Runs every method of the suite (the list: scripts/methods.tsv) as the plan
+# of PROFILE (scripts/bench-profiles.sh: smoke, default, paper) says, then analyses the point sets with cfpo-analyze and
 # draws the figures with scripts/replot.sh. Four experiments:
 #   evolution   CFPO stopped after EVO_ITERS iterations, SETS seeds
 #   comparison  every method, SETS seeds of COMP_N points (traces kept: they
@@ -26,6 +25,8 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 # shellcheck source=bench-profiles.sh
 . "$here/bench-profiles.sh"
+# shellcheck source=methods.sh
+. "$here/methods.sh"
 
 die() { echo "bench: $*" >&2; exit 1; }
 B=${1:-build}
@@ -34,7 +35,7 @@ PLAN_ONLY=0
 [ "${3:-}" = --plan ] && PLAN_ONLY=1
 ROOT=${CFPO_RESULTS:-results}
 bench_profile "$PROFILE" || { echo "bench: unknown PROFILE '$PROFILE' (smoke, default, paper)" >&2; exit 2; }
-for c in cfpo cfpo-analyze cfpo-fpo cfpo-lfpo cfpo-dart cfpo-bs cfpo-bridson; do
+for c in $(methods_binaries) cfpo-analyze; do
   [ -x "$B/$c" ] || die "$B/$c not built (run make)"
 done
 command -v gnuplot >/dev/null 2>&1 || die "gnuplot not found (run scripts/install-deps.sh)"
@@ -74,13 +75,16 @@ add() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t-\t-\n' "$1" "$2" "$3" "$4" "$5"
 for it in $EVO_ITERS; do
   for s in $(seq 1 "$SETS"); do add evolution cfpo "$COMP_N" "$s" "$cores" "$it" "sets/evolution-it$it-s$s.txt"; done
 done
-COMP_KEYS="dart bs bridson fpo lfpo cfpo simplified"
-is_cfpo() { [ "$1" = cfpo ] || [ "$1" = simplified ]; }
+COMP_KEYS=$(methods_keys pd iter cfpo)
+CFPO_KEYS=" $(methods_keys cfpo) "
+PD_KEYS=" $(methods_keys pd) "
+is_cfpo() { [[ $CFPO_KEYS == *" $1 "* ]]; }
+is_pd() { [[ $PD_KEYS == *" $1 "* ]]; }
 for k in $COMP_KEYS; do
   t=1; is_cfpo "$k" && t=$COMP_THREADS
   for s in $(seq 1 "$SETS"); do add comparison "$k" "$COMP_N" "$s" "$t" - "sets/comparison-$k-s$s.txt"; done
 done
-for k in cfpo simplified fpo lfpo dart bs bridson; do
+for k in $(methods_keys cfpo) $(methods_keys iter) $(methods_keys pd); do
   var="RT_SIZES_$k"
   for n in ${!var}; do
     threads=1; is_cfpo "$k" && threads=$RT_THREADS
@@ -213,6 +217,12 @@ fi
 # Plan lines in order; the lines of one batch start together and are waited
 # for together, every other line runs alone.
 mapfile -t PLAN <"$plan"
+# each key's command, kind, SUMMARY method and variant (scripts/methods.tsv)
+declare -A MCMD MKIND MMETHOD MVARIANT
+for k in $(methods_keys); do
+  MCMD[$k]=$(method_get "$k" command); MKIND[$k]=$(method_get "$k" kind)
+  MMETHOD[$k]=$(method_get "$k" method); MVARIANT[$k]=$(method_get "$k" variant)
+done
 declare -a R_LABEL R_PID R_T1 R_T2 R_RC
 # launch I SLOT: starts plan line I (0-based; run I+1) in the background,
 # one-thread ttq runs pinned to the SLOT-th allowed CPU
@@ -224,20 +234,18 @@ launch() {
   if [ "$exp" = ttq ] && [ "$t" = 1 ] && [ -n "$TASKSET" ]; then
     cmd=("$TASKSET" -c "${CPUS[$((slot % ${#CPUS[@]}))]}")
   fi
-  case $key in
-    cfpo|paper) cmd+=("$B/cfpo" --variant paper -t "$t") ;;
-    adaptive|simplified) cmd+=("$B/cfpo" --variant "$key" -t "$t") ;;
-    cfpo-mpi) cmd+=("$MPIRUN" --oversubscribe -np "$cores" "$B/cfpo" --variant paper -t "$t") ;;
-    fpo) cmd+=("$B/cfpo-fpo") ;;
-    lfpo) cmd+=("$B/cfpo-lfpo") ;;
-    dart) cmd+=("$B/cfpo-dart") ;;
-    bs) cmd+=("$B/cfpo-bs") ;;
-    bridson) cmd+=("$B/cfpo-bridson") ;;
-  esac
+  if [ "$key" = cfpo-mpi ]; then
+    cmd+=("$MPIRUN" --oversubscribe -np "$cores" "$B/cfpo" --variant paper -t "$t")
+  else
+    local words
+    read -r -a words <<<"${MCMD[$key]}"
+    cmd+=("$B/${words[0]}" "${words[@]:1}")
+    case ${MKIND[$key]} in cfpo|ttq) cmd+=(-t "$t") ;; esac
+  fi
   cmd+=(-n "$n" -s "$seed" -q)
   [ "$maxit" != - ] && cmd+=(--max-iter "$maxit")
   [ "$exp" = ttq ] && cmd+=(--target-min "$TTQ_TARGET_MIN" --target-avg "$TTQ_TARGET_AVG" --time-limit "$lim")
-  case $key in dart|bs|bridson) ;; *) cmd+=(--trace "$work/data/traces/run-$id.tsv") ;; esac
+  is_pd "$key" || cmd+=(--trace "$work/data/traces/run-$id.tsv")
   [ "$out" != - ] && cmd+=(-o "$work/$out")
   R_T1[i]=$(now)
   "${cmd[@]}" </dev/null >"$work/tmp/run-$id.out" 2>"$work/tmp/run-$id.err" &
@@ -275,7 +283,7 @@ record() {
     [ -n "$ticker" ] && printf '\n' >&2
     die "run $((i + 1)) (${R_LABEL[i]}) failed (exit ${R_RC[i]}): $(tail -n 1 "$work/tmp/run-$id.err")"
   fi
-  case $key in dart|bs|bridson) ;; *) trace="data/traces/run-$id.tsv" ;; esac
+  is_pd "$key" || trace="data/traces/run-$id.tsv"
   it=$(field iterations "$line"); secs=$(field seconds "$line")
   spi=$(awk -v s="$secs" -v i="$it" 'BEGIN { if (i == "-" || i + 0 == 0) print "-"; else printf "%.6g", s / i }')
   wall=$(awk -v a="${R_T2[i]}" -v b="${R_T1[i]}" 'BEGIN { printf "%.3f", a - b }')
@@ -366,9 +374,7 @@ while IFS=$'\t' read -r grp exp key it; do
   dst="$work/data/analysis/$grp"
   mkdir -p "$dst"
   nvals=$(for f in "${files[@]}"; do grep -vc '^#' "$f"; done | sort -u | wc -l)
-  variant=-; mname=$key
-  [ "$key" = cfpo ] && variant=paper
-  [ "$key" = simplified ] && { variant=simplified; mname=cfpo; }
+  variant=${MVARIANT[$key]}; mname=${MMETHOD[$key]}
   if [ "$nvals" -eq 1 ]; then
     a="$work/tmp/an-$grp"
     sum=$("$B/cfpo-analyze" -q -K "$K" -o "$a" "${files[@]}") || die "cfpo-analyze failed on $grp"

@@ -13,6 +13,8 @@
 # and renamed, so a failure leaves the earlier version.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=methods.sh
+. "$here/methods.sh"
 die() { echo "replot: $*" >&2; exit 1; }
 R=${1:-}
 if [ -z "$R" ]; then
@@ -35,13 +37,15 @@ planv() { sed -n "s/.*$1=\([^ ;]*\).*/\1/p" <<<"$plan"; }
 SETS=$(planv SETS); N=$(planv COMP_N)
 [ -n "$SETS" ] && [ -n "$N" ] || die "$R/runs.csv: no '# plan:' header line"
 
-# method key -> label, colour, point type (the same in every figure)
-MKEYS="dart bs bridson fpo lfpo cfpo simplified"
-label() { case $1 in dart) echo DT ;; bs) echo BS ;; bridson) echo Bridson ;; fpo) echo FPO ;; lfpo) echo LFPO ;;
-  cfpo) echo CFPO ;; simplified) echo "simplified CFPO" ;; *) echo "$1" ;; esac; }
-colour() { case $1 in dart) echo "#7f7f7f" ;; bs) echo "#8c564b" ;; bridson) echo "#9467bd" ;; fpo) echo "#1f77b4" ;;
-  lfpo) echo "#17becf" ;; cfpo) echo "#d62728" ;; simplified) echo "#ff7f0e" ;; *) echo "#000000" ;; esac; }
-ptype() { case $1 in dart) echo 1 ;; bs) echo 2 ;; bridson) echo 3 ;; fpo) echo 4 ;; lfpo) echo 6 ;; cfpo) echo 7 ;; simplified) echo 5 ;; *) echo 8 ;; esac; }
+# method key -> label, colour, point type (the same in every figure), from
+# the one list of methods (scripts/methods.tsv)
+MKEYS=$(methods_keys pd iter cfpo)
+CFPO_KEYS=$(methods_keys cfpo)
+mget() { local v; v=$(method_get "$1" "$2"); echo "${v:-$3}"; }
+label() { mget "$1" label "$1"; }
+colour() { mget "$1" colour "#000000"; }
+ptype() { mget "$1" pt 8; }
+kind() { mget "$1" kind ""; }
 
 plural() { if [ "$1" -gt 1 ]; then echo s; fi; }
 ranks_note() { if [ "$1" -gt 1 ]; then echo ", $1 ranks"; fi; }
@@ -84,7 +88,7 @@ cols_vars comparison "${comp[@]}"
 
 # ---- convergence: mean and range over the comparison's traces ---------------
 conv_keys=""
-for k in fpo lfpo cfpo simplified; do
+for k in $(methods_keys iter cfpo); do
   traces=$(rows | awk -F, -v k="$k" "$KEYCOL"' $2 == "comparison" && key($3, $4) == k && $19 != "-" { print $19 }')
   [ -n "$traces" ] || continue
   conv_keys="$conv_keys $k"
@@ -149,9 +153,9 @@ mv "$P/runtime.dat.tmp.$$" "$P/runtime.dat"
   i=0
   for b in $blocks; do
     i=$((i + 1)); IFS=/ read -r k t r <<<"$b"
-    l=$(label "$k"); [ "$k" = cfpo ] || [ "$k" = simplified ] && l="$l, $t thread$(plural "$t")"
+    l=$(label "$k"); [ "$(kind "$k")" = cfpo ] && l="$l, $t thread$(plural "$t")"
     l="$l$(ranks_note "$r")"
-    it=1; case $k in dart|bs|bridson) it=0 ;; esac
+    it=1; [ "$(kind "$k")" = pd ] && it=0
     echo "LBL[$i] = '$l'; COL[$i] = '$(colour "$k")'; PT[$i] = $(ptype "$k"); DT[$i] = $(( (t > 1 || r > 1) ? 2 : 1 )); ITER[$i] = $it"
   done
 } >"$P/fig-runtime.vars.gp"
@@ -159,8 +163,8 @@ mv "$P/runtime.dat.tmp.$$" "$P/runtime.dat"
 # ---- speedup: time on 1 thread, 1 rank / time on (threads, ranks) ------------
 # same method, n and seeds: the ratio of the medians over the seeds that ran
 # both configurations (uncapped comparison and runtime runs)
-rows | awk -F, "$KEYCOL $MEDIAN"'
-  ($2 == "comparison" || $2 == "runtime") && $10 == "-" && (key($3, $4) == "cfpo" || key($3, $4) == "simplified") {
+rows | awk -F, -v ck=" $CFPO_KEYS " "$KEYCOL $MEDIAN"'
+  ($2 == "comparison" || $2 == "runtime") && $10 == "-" && index(ck, " " key($3, $4) " ") {
     k = key($3, $4); T[k, $6, $8, $9, $7] = $12; id[k, $6, $8, $9, $7] = $1; conf[k SUBSEP $6 SUBSEP $8 SUBSEP $9] = 1
   }
   END {
@@ -224,7 +228,8 @@ if rows | awk -F, '$2 == "ttq" { f = 1 } END { exit !f }'; then
   [ -f "$R/quality.csv" ] || die "$R/quality.csv missing (the folder has time-to-quality runs)"
   tmin=$(planv TTQ_TARGET_MIN); tavg=$(planv TTQ_TARGET_AVG)
   [ -n "$tmin" ] && [ -n "$tavg" ] || die "$R/runs.csv: no TTQ_TARGET_MIN/TTQ_TARGET_AVG in the '# plan:' line"
-  awk -F, -v dir="$R" -v pdir="$P" -v tmin="$tmin" -v tavg="$tavg" -f "$here/bench-ttq.awk" "$R/runs.csv" "$R/quality.csv" \
+  awk -F, -v dir="$R" -v pdir="$P" -v tmin="$tmin" -v tavg="$tavg" -v methods="$METHODS_TSV" \
+    -f "$here/methods.awk" -f "$here/bench-ttq.awk" "$R/runs.csv" "$R/quality.csv" \
     >"$P/ttq-runs.tsv.tmp.$$" || die "reading the time-to-quality traces failed"
   mv "$P/ttq-runs.tsv.tmp.$$" "$P/ttq-runs.tsv"
   FIGS="$FIGS time-to-quality"
@@ -244,7 +249,8 @@ for fig in $FIGS; do
 done
 
 # ---- summary.md --------------------------------------------------------------------
-awk -F, -v convkeys="$conv_keys" -v tmin="$tmin" -v tavg="$tavg" -f "$here/bench-summary.awk" "$R/runs.csv" "$R/spectra.csv" \
+awk -F, -v convkeys="$conv_keys" -v tmin="$tmin" -v tavg="$tavg" -v methods="$METHODS_TSV" \
+  -f "$here/methods.awk" -f "$here/bench-summary.awk" "$R/runs.csv" "$R/spectra.csv" \
   "$P/runtime.tsv" "$P/speedup.tsv" "$P/ttq-runs.tsv" \
   >"$R/.summary.md.tmp.$$" || die "writing summary.md failed"
 mv "$R/.summary.md.tmp.$$" "$R/summary.md"

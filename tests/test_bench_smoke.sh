@@ -21,6 +21,14 @@ ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 check() { local what=$1; shift; if "$@"; then ok; else bad "$what"; fi; }
 cd "$SRC" || exit 1
+# the methods (scripts/methods.tsv): SUMMARY method names as regular
+# expressions, all / not iterative / iterative, and the comparison's keys
+# as runs.csv shows them (cfpo's variant for cfpo's rows)
+. scripts/methods.sh
+mre() { local k; for k in $(methods_keys "$@"); do method_get "$k" method; done | sort -u | paste -sd'|'; }
+M_ALL=$(mre); M_PD=$(mre pd); M_IT=$(mre iter cfpo ttq)
+COMP_SEEN=$(for k in $(methods_keys pd iter cfpo); do m=$(method_get "$k" method); [ "$m" = cfpo ] && m=$(method_get "$k" variant); echo "$m"; done | sort -u | tr '\n' ' ')
+N_COMP=$(methods_keys pd iter cfpo | wc -w)
 
 # ---- the smoke run ----------------------------------------------------------
 export CFPO_RESULTS="$T/res"
@@ -44,34 +52,45 @@ done
 planned=$(sed -n 's/^# plan: .*; \([0-9]*\) runs$/\1/p' "$csv")
 rows=$(grep -v '^#' "$csv" | tail -n +2 | wc -l)
 check "one row per planned run ($rows rows, $planned planned)" [ -n "$planned" ] && [ "$rows" -eq "$planned" ] && [ "$rows" -gt 0 ]
-bad_rows=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, '
+bad_rows=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, -v mall="^($M_ALL)\$" -v mpd="^($M_PD)\$" -v mit="^($M_IT)\$" '
   function num(x) { return x ~ /^[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?$/ }
   function int_(x) { return x ~ /^[0-9]+$/ }
   { e = "" }
   NF != 22 { e = e " fields=" NF }
   $1 != NR { e = e " run" }
   $2 !~ /^(evolution|comparison|runtime|ttq)$/ { e = e " experiment" }
-  $3 !~ /^(cfpo|fpo|lfpo|dart|bs|bridson)$/ { e = e " method" }
+  $3 !~ mall { e = e " method" }
   ($3 == "cfpo") != ($4 ~ /^(paper|adaptive|simplified)$/) || ($3 != "cfpo" && $4 != "-") { e = e " variant" }
   $2 != "ttq" && $4 == "adaptive" { e = e " variant (the other experiments run the paper variant)" }
   !int_($5) || !int_($6) || !int_($7) || !int_($8) || !int_($9) || ($9 != 1 && !($3 == "cfpo" && $8 == 1 && $2 == "runtime")) { e = e " n/seed/threads/ranks" }
   $10 != "-" && !int_($10) { e = e " max_iter" }
   !num($12) || !num($16) || $16 == 0 || !num($18) { e = e " seconds/peak/wall" }
   !num($14) || !num($15) || $14 > 1.2 || $15 > 1.2 || $14 > $15 + 1e-9 { e = e " delta" }
-  $3 ~ /^(dart|bs|bridson)$/ && ($11 != "-" || $13 != "-" || $17 != "-" || $19 != "-" || $21 != "-") { e = e " non-iterative" }
-  $3 ~ /^(cfpo|fpo|lfpo)$/ && (!int_($11) || $17 !~ /^(yes|no)$/ || $19 == "-") { e = e " iterative" }
-  $3 ~ /^(cfpo|fpo|lfpo)$/ && $11 > 0 && ($13 - $12 / $11 > 1e-5 * $13 + 1e-9 || $12 / $11 - $13 > 1e-5 * $13 + 1e-9) { e = e " s/iter" }
-  $3 ~ /^(cfpo|fpo|lfpo)$/ && $21 !~ /^(converged|target|time|max-iter)$/ { e = e " stop" }
+  $3 ~ mpd && ($11 != "-" || $13 != "-" || $17 != "-" || $19 != "-" || $21 != "-") { e = e " non-iterative" }
+  $3 ~ mit && (!int_($11) || $17 !~ /^(yes|no)$/ || $19 == "-") { e = e " iterative" }
+  $3 ~ mit && $11 > 0 && ($13 - $12 / $11 > 1e-5 * $13 + 1e-9 || $12 / $11 - $13 > 1e-5 * $13 + 1e-9) { e = e " s/iter" }
+  $3 ~ mit && $21 !~ /^(converged|target|time|max-iter)$/ { e = e " stop" }
   ($21 == "converged") != ($17 == "yes") || ($21 == "max-iter" && $11 != $10) { e = e " stop/converged/cap" }
   $2 != "ttq" && ($20 != "-" || $22 != "-" || $21 == "target" || $21 == "time") { e = e " ttq fields outside ttq" }
-  $2 == "ttq" && (!num($20) || !int_($22) || $3 == "dart" || $3 == "bs" || $3 == "bridson") { e = e " ttq fields" }
+  $2 == "ttq" && (!num($20) || !int_($22) || $3 ~ mpd) { e = e " ttq fields" }
   $10 != "-" && $2 != "ttq" && ($11 != $10 || $17 != "no") { e = e " capped" }
-  $2 == "comparison" && $3 ~ /^(cfpo|fpo|lfpo)$/ && $17 != "yes" { e = e " not converged" }
+  $2 == "comparison" && $3 ~ mit && $17 != "yes" { e = e " not converged" }
   e != "" { print $1 ":" e }')
 check "every row well formed${bad_rows:+ (bad: $bad_rows)}" [ -z "$bad_rows" ]
 keys=$(grep -v '^#' "$csv" | awk -F, '$2 == "comparison" { print ($3 == "cfpo" ? $4 : $3) }' | sort -u | tr '\n' ' ')
-check "comparison has all 7 methods (found: $keys)" [ "$keys" = "bridson bs dart fpo lfpo paper simplified " ]
+check "comparison has all $N_COMP methods of scripts/methods.tsv (found: $keys; want: $COMP_SEEN)" [ "$keys" = "$COMP_SEEN" ]
 for e in evolution comparison runtime ttq; do check "experiment $e present" grep -q "^[0-9]*,$e," "$csv"; done
+# every iterative baseline of the list (CCVT and CCDT among them) in the
+# comparison, runtime and convergence experiments and in summary.md
+for k in $(methods_keys iter); do
+  m=$(method_get "$k" method); l=$(method_get "$k" label)
+  check "$l in the comparison and runtime experiments" \
+    [ "$(grep -v '^#' "$csv" | awk -F, -v m="$m" '$3 == m && ($2 == "comparison" || $2 == "runtime") { print $2 }' | sort -u | wc -l)" -eq 2 ]
+  check "$l in the convergence figure's data" grep -q "'$k'" "$R/plotdata/fig-convergence.vars.gp"
+  check "$l in the runtime figure's data" grep -q "LBL\[[0-9]*\] = '$l'" "$R/plotdata/fig-runtime.vars.gp"
+  check "summary.md: a $l row in the comparison table" grep -q "^| $l | " "$R/summary.md"
+done
+for g in comparison-ccvt comparison-ccdt; do check "spectra.csv has the group $g" grep -q "^$g," "$R/spectra.csv"; done
 threads=$(grep -v '^#' "$csv" | awk -F, '$2 == "runtime" && $3 == "cfpo" { print $8 }' | sort -un | tr '\n' ' ')
 want=$(. scripts/bench-profiles.sh && bench_threads_list | tr ' ' '\n' | sort -un | tr '\n' ' ')
 check "runtime has CFPO on $want threads (found: $threads)" [ "$threads" = "$want" ]
@@ -167,7 +186,8 @@ check "--plan: the total" grep -Eq "^bench: profile smoke: $rows runs, about [0-
 # ---- spectra.csv ------------------------------------------------------------------
 groups=$(tail -n +2 "$R/spectra.csv" | cut -d, -f1 | tr '\n' ' ')
 ng=$(tail -n +2 "$R/spectra.csv" | wc -l)
-check "spectra.csv: 5 evolution + 7 comparison groups (found $ng: $groups)" [ "$ng" -eq 12 ]
+n_evo=$(prof EVO_ITERS | wc -w)
+check "spectra.csv: $n_evo evolution + $N_COMP comparison groups (found $ng: $groups)" [ "$ng" -eq $((n_evo + N_COMP)) ]
 for g in $groups; do
   check "analysis of $g (spectrum, raps)" [ -s "$R/data/analysis/$g/spectrum.txt" ] && [ -s "$R/data/analysis/$g/raps.txt" ]
   check "seed-1 point set of $g" [ -s "$R/data/points/$g.txt" ]

@@ -24,8 +24,13 @@ expect() {
   ok
 }
 
-for c in cfpo-dart cfpo-bs cfpo-bridson cfpo-fpo cfpo-lfpo; do
+# the baseline commands: scripts/methods.tsv, kinds pd and iter
+. "$(cd "$(dirname "$0")/../../scripts" && pwd)/methods.sh"
+ITER_BIN=" $(methods_binaries iter) "
+for c in $(methods_binaries pd iter); do
   X="$B/$c"
+  # iterative methods: capped, so the format and determinism runs stay short
+  cap=(); [[ $ITER_BIN == *" $c "* ]] && cap=(--max-iter 30)
   [ -x "$X" ] || { bad "$X missing"; continue; }
   expect 0 "" "$X" --help
   grep -q "^Usage: $c" "$T/out" && ok || bad "$c --help: no usage line"
@@ -46,19 +51,19 @@ for c in cfpo-dart cfpo-bs cfpo-bridson cfpo-fpo cfpo-lfpo; do
   expect 1 "^$c: .*" "$X" -n 200 -q --trace "$T/no/such/dir/t.tsv"
   # Every format, the same bytes for the same seed, a SUMMARY line.
   for ext in txt npy bin; do
-    expect 0 "" "$X" -n 300 -q -s 7 -o "$T/a.$ext" --trace "$T/a.tsv"
+    expect 0 "" "$X" -n 300 -q -s 7 "${cap[@]}" -o "$T/a.$ext" --trace "$T/a.tsv"
     grep -q "^SUMMARY method=" "$T/out" && ok || bad "$c: no SUMMARY line"
     [ "$(grep -c . "$T/out")" = 1 ] && ok || bad "$c: stdout has more than the SUMMARY line"
     [ -s "$T/a.$ext" ] && ok || bad "$c: no $ext output"
-    expect 0 "" "$X" -n 300 -q -s 7 -o "$T/b.$ext"
+    expect 0 "" "$X" -n 300 -q -s 7 "${cap[@]}" -o "$T/b.$ext"
     cmp -s "$T/a.$ext" "$T/b.$ext" && ok || bad "$c: seed 7 twice gives different .$ext bytes"
   done
-  expect 0 "" "$X" -n 300 -q -s 7 -o "$T/a.txt"
+  expect 0 "" "$X" -n 300 -q -s 7 "${cap[@]}" -o "$T/a.txt"
   n=$(grep -vc '^#' "$T/a.txt")
   npts=$(sed -n 's/.* n=\([0-9]*\) .*/\1/p' "$T/out")
   [ "$n" = "$npts" ] && ok || bad "$c: text file has $n points, SUMMARY says $npts"
   [ "$(stat -c %s "$T/a.bin")" = $((16 * n)) ] && ok || bad "$c: .bin is not 16 n bytes"
-  expect 0 "" "$X" -n 300 -q -s 8 -o "$T/c.txt"
+  expect 0 "" "$X" -n 300 -q -s 8 "${cap[@]}" -o "$T/c.txt"
   cmp -s "$T/a.txt" "$T/c.txt" && bad "$c: seeds 7 and 8 give the same points" || ok
   head -c 6 "$T/a.npy" | grep -q NUMPY && ok || bad "$c: .npy header"
   [ "$(head -n 1 "$T/a.tsv" | cut -f1)" != "" ] && [ "$(wc -l <"$T/a.tsv")" -ge 2 ] && ok \
@@ -86,6 +91,34 @@ expect 0 "" "$B/cfpo-fpo" -n 300 -q --local --max-iter 1
 grep -q "method=lfpo" "$T/out" && ok || bad "cfpo-fpo --local is not LFPO"
 # FPO's own memory model (about 720 bytes a point), not cfpo's.
 expect 1 "^cfpo-fpo: n = 1073741824 is too large for memory: the triangulation needs about 773\.1 GB" "$B/cfpo-fpo" -n 2^30
+
+# CCVT and CCDT (iter_main.c): cfpo's trace columns then their own, one row
+# per iteration plus row 0, the stop rules, bad values.
+for c in cfpo-ccvt cfpo-ccdt; do
+  X="$B/$c"
+  extra=$([ "$c" = cfpo-ccvt ] && printf '\tswaps' || printf '\trejected\tarea_cv')
+  expect 0 "" "$X" -n 300 -q --max-iter 4 --trace "$T/f.tsv"
+  [ "$(head -n 1 "$T/f.tsv")" = "$(printf 'iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed')$extra" ] \
+    && ok || bad "$c: trace header $(head -n 1 "$T/f.tsv")"
+  [ "$(wc -l <"$T/f.tsv")" = 6 ] && ok || bad "$c: trace has $(wc -l <"$T/f.tsv") lines, want 6"
+  [ "$(awk -F'\t' 'NR > 1 && $1 != NR - 2' "$T/f.tsv" | wc -l)" = 0 ] && ok || bad "$c: trace rows not numbered 0..4"
+  grep -q "^SUMMARY method=${c#cfpo-} .*iterations=4 .*converged=no .*stop=max-iter" "$T/out" && ok || bad "$c: summary $(cat "$T/out")"
+  expect 0 "" "$X" -n 300 -q --target-min 0.3 --trace "$T/g.tsv"
+  last=$(tail -n 1 "$T/g.tsv" | cut -f1)
+  grep -q "iterations=$last .*stop=target" "$T/out" && ok || bad "$c: --target-min 0.3: $(cat "$T/out")"
+  expect 2 "^$c: --tol: '0.7' is not a number in \[0, 0.49\]" "$X" -n 300 --tol 0.7
+  expect 2 "^$c: --max-iter: 'x' is not" "$X" -n 300 --max-iter x
+  expect 2 "^$c: --target-min: " "$X" -n 300 --target-min abc
+  expect 2 "^$c: n = 5 is too small" "$X" -n 5
+  expect 0 "" "$X" -n 300 -q --max-iter 0
+  grep -q "iterations=0 " "$T/out" && ok || bad "$c: --max-iter 0"
+done
+expect 2 "^cfpo-ccvt: --points-per-site: '0' is not a whole number" "$B/cfpo-ccvt" -n 300 --points-per-site 0
+expect 2 "^cfpo-ccvt: --points-per-site: 'x' is not" "$B/cfpo-ccvt" -n 300 --points-per-site x
+expect 2 "^cfpo-ccdt: unknown option '--points-per-site'" "$B/cfpo-ccdt" -n 300 --points-per-site 8
+expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 8 -o "$T/m8.txt"
+expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 9 -o "$T/m9.txt"
+cmp -s "$T/m8.txt" "$T/m9.txt" && bad "cfpo-ccvt: --points-per-site has no effect" || ok
 
 # Poisson-disk options.
 expect 2 "^cfpo-bs: --max-fails applies to cfpo-dart only" "$B/cfpo-bs" -n 100 --max-fails 5

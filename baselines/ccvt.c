@@ -1,0 +1,445 @@
+/* ccvt.c - see ccvt.h. */
+#include "ccvt.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "geom.h"
+#include "grid.h"
+#include "rng.h"
+#include "stats.h"
+#include "stoprule.h"
+
+/* Random streams: the points' coordinates, the Hilbert curve's offset. */
+#define CCVT_POINT_STREAM 0x4343565450544eULL  /* "CCVTPTN" */
+#define CCVT_OFFSET_STREAM 0x434356544f4653ULL /* "CCVTOFS" */
+#define CCVT_SITE_STREAM 0x43435654534954ULL   /* "CCVTSIT" */
+#define CCVT_MAX_POINTS (1LL << 31)
+
+struct ccvt_engine {
+    int64_t n, m;
+    double L, tol;
+    double *pts;        /* 2 n m: slot k of site i at 2 (i m + k) */
+    double *site;       /* 2 n */
+    double *r;          /* largest distance of each site to its points */
+    unsigned char *dirty_prev, *dirty_cur;
+    double *gi, *gj;    /* per-pair scratch: gains */
+    int32_t *ci, *cj;   /* per-pair scratch: candidate slots */
+    int64_t *pairs;     /* pair list: i * n + j, i < j */
+    size_t npairs, cap_pairs;
+    int32_t *cell_start, *cell_sites;
+    double *nn;
+    int64_t swaps;
+    double energy_swapped;
+    int check;          /* compute energy_swapped every iteration */
+};
+
+void ccvt_options_init(ccvt_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->seed = 1;
+    o->tol = CFPO_DEFAULT_TOL;
+}
+
+int64_t ccvt_default_m(int64_t n)
+{
+    int64_t m = n > 0 ? ((int64_t)1 << 24) / n : 1024;
+    if (m > 1024) m = 1024;
+    if (m < 16) m = 16;
+    return m;
+}
+
+static double d2(const double *p, const double *s)
+{
+    return cfpo_torus_dist2(p[0], p[1], s[0], s[1]);
+}
+
+/* Site i's centroid: its position plus the mean of the periodic
+ * differences of its points (all within half a period of it). */
+static void centroid(const ccvt_engine *E, int64_t i, const double *ref, double *c)
+{
+    const double *p = E->pts + 2 * i * E->m;
+    double sx = 0, sy = 0;
+    for (int64_t k = 0; k < E->m; k++) {
+        sx += cfpo_torus_diff(p[2 * k], ref[0]);
+        sy += cfpo_torus_diff(p[2 * k + 1], ref[1]);
+    }
+    c[0] = cfpo_wrap01(ref[0] + sx / (double)E->m);
+    c[1] = cfpo_wrap01(ref[1] + sy / (double)E->m);
+}
+
+static double radius(const ccvt_engine *E, int64_t i)
+{
+    const double *p = E->pts + 2 * i * E->m, *s = E->site + 2 * i;
+    double r2 = 0;
+    for (int64_t k = 0; k < E->m; k++) {
+        double v = d2(p + 2 * k, s);
+        if (v > r2) r2 = v;
+    }
+    return sqrt(r2);
+}
+
+static ccvt_engine *alloc_engine(int64_t n, int64_t m, double L, double tol, char *err, size_t errlen)
+{
+    if (n < 2 || m < 1 || n * m > CCVT_MAX_POINTS) {
+        snprintf(err, errlen, "n = %lld sites of m = %lld points: need n >= 2, m >= 1, n m <= 2^31",
+                 (long long)n, (long long)m);
+        return NULL;
+    }
+    ccvt_engine *E = calloc(1, sizeof *E);
+    if (!E) goto oom;
+    E->n = n;
+    E->m = m;
+    E->L = L;
+    E->tol = tol;
+    E->pts = malloc((size_t)(2 * n * m) * sizeof *E->pts);
+    E->site = malloc((size_t)(2 * n) * sizeof *E->site);
+    E->r = malloc((size_t)n * sizeof *E->r);
+    E->dirty_prev = malloc((size_t)n);
+    E->dirty_cur = calloc((size_t)n, 1);
+    E->gi = malloc((size_t)m * sizeof *E->gi);
+    E->gj = malloc((size_t)m * sizeof *E->gj);
+    E->ci = malloc((size_t)m * sizeof *E->ci);
+    E->cj = malloc((size_t)m * sizeof *E->cj);
+    E->nn = malloc((size_t)n * sizeof *E->nn);
+    if (!E->pts || !E->site || !E->r || !E->dirty_prev || !E->dirty_cur || !E->gi || !E->gj ||
+        !E->ci || !E->cj || !E->nn)
+        goto oom;
+    memset(E->dirty_prev, 1, (size_t)n);
+    return E;
+oom:
+    ccvt_free(E);
+    snprintf(err, errlen, "out of memory for %lld sites of %lld points (%.0f MiB of points)",
+             (long long)n, (long long)m, 16.0 * (double)n * (double)m / 1048576.0);
+    return NULL;
+}
+
+/* Sites at the centroids of their points, the first point as reference. */
+static void init_sites(ccvt_engine *E)
+{
+    for (int64_t i = 0; i < E->n; i++) {
+        centroid(E, i, E->pts + 2 * i * E->m, E->site + 2 * i);
+        E->r[i] = radius(E, i);
+    }
+}
+
+ccvt_engine *ccvt_create_from(int64_t n, int64_t m, const double *pts, double L, double tol,
+                              char *err, size_t errlen)
+{
+    ccvt_engine *E = alloc_engine(n, m, L, tol, err, errlen);
+    if (!E) return NULL;
+    memcpy(E->pts, pts, (size_t)(2 * n * m) * sizeof *pts);
+    init_sites(E);
+    return E;
+}
+
+/* Index of (x, y) in [0, 2^16)^2 along the Hilbert curve of order 16. */
+static uint32_t hilbert(uint32_t x, uint32_t y)
+{
+    uint32_t d = 0;
+    for (uint32_t s = 1u << 15; s > 0; s >>= 1) {
+        uint32_t rx = (x & s) > 0, ry = (y & s) > 0;
+        d += s * s * ((3 * rx) ^ ry);
+        if (ry == 0) { /* rotate the quadrant */
+            if (rx == 1) {
+                x = (s - 1) - (x & (s - 1));
+                y = (s - 1) - (y & (s - 1));
+            }
+            uint32_t t = x;
+            x = y;
+            y = t;
+        }
+        x &= s - 1;
+        y &= s - 1;
+    }
+    return d;
+}
+
+/* The curve's index of (x, y) shifted by (ox, oy) on the torus. */
+static uint32_t hilbert_key(double x, double y, double ox, double oy)
+{
+    uint32_t hx = (uint32_t)(cfpo_wrap01(x + ox) * 65536.0) & 0xffff;
+    uint32_t hy = (uint32_t)(cfpo_wrap01(y + oy) * 65536.0) & 0xffff;
+    return hilbert(hx, hy);
+}
+
+static int cmp_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return (x > y) - (x < y);
+}
+
+ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t errlen)
+{
+    cfpo_grid G;
+    if (cfpo_grid_init(&G, n, CFPO_VARIANT_PAPER, o->seed, err, errlen) != 0) return NULL;
+    int64_t m = o->m > 0 ? o->m : ccvt_default_m(n);
+    ccvt_engine *E = alloc_engine(n, m, G.L, o->tol, err, errlen);
+    if (!E) return NULL;
+    const int64_t N = n * m;
+    uint64_t *key = malloc((size_t)(N > n ? N : n) * sizeof *key);
+    if (!key) {
+        ccvt_free(E);
+        snprintf(err, errlen, "out of memory for the start of %lld points", (long long)N);
+        return NULL;
+    }
+    const double ox = cfpo_rand01(o->seed, CCVT_OFFSET_STREAM, 0);
+    const double oy = cfpo_rand01(o->seed, CCVT_OFFSET_STREAM, 1);
+    /* the sites: uniform random, in the order of the curve */
+    for (int64_t i = 0; i < n; i++) {
+        double x = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * (uint64_t)i);
+        double y = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * (uint64_t)i + 1);
+        key[i] = (uint64_t)hilbert_key(x, y, ox, oy) << 32 | (uint64_t)i;
+    }
+    qsort(key, (size_t)n, sizeof *key, cmp_u64);
+    for (int64_t r = 0; r < n; r++) {
+        uint64_t i = key[r] & 0xffffffffu;
+        E->site[2 * r] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * i);
+        E->site[2 * r + 1] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * i + 1);
+    }
+    /* the points, in the order of the curve: run r of m goes to site r */
+    for (int64_t k = 0; k < N; k++) {
+        double x = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k);
+        double y = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k + 1);
+        key[k] = (uint64_t)hilbert_key(x, y, ox, oy) << 32 | (uint64_t)k;
+    }
+    qsort(key, (size_t)N, sizeof *key, cmp_u64);
+    for (int64_t s = 0; s < N; s++) {
+        uint64_t k = key[s] & 0xffffffffu;
+        E->pts[2 * s] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * k);
+        E->pts[2 * s + 1] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * k + 1);
+    }
+    free(key);
+    for (int64_t i = 0; i < n; i++) E->r[i] = radius(E, i);
+    return E;
+}
+
+void ccvt_free(ccvt_engine *E)
+{
+    if (!E) return;
+    free(E->pts);
+    free(E->site);
+    free(E->r);
+    free(E->dirty_prev);
+    free(E->dirty_cur);
+    free(E->gi);
+    free(E->gj);
+    free(E->ci);
+    free(E->cj);
+    free(E->pairs);
+    free(E->cell_start);
+    free(E->cell_sites);
+    free(E->nn);
+    free(E);
+}
+
+/* ---- the pairs that can swap -------------------------------------------- */
+
+static int push_pair(ccvt_engine *E, int64_t i, int64_t j)
+{
+    if (E->npairs == E->cap_pairs) {
+        size_t c = E->cap_pairs ? 2 * E->cap_pairs : 1024;
+        int64_t *p = realloc(E->pairs, c * sizeof *p);
+        if (!p) return -1;
+        E->pairs = p;
+        E->cap_pairs = c;
+    }
+    E->pairs[E->npairs++] = i < j ? i * E->n + j : j * E->n + i;
+    return 0;
+}
+
+static int near_enough(const ccvt_engine *E, int64_t i, int64_t j)
+{
+    double rr = 2 * (E->r[i] > E->r[j] ? E->r[i] : E->r[j]);
+    return d2(E->site + 2 * i, E->site + 2 * j) < rr * rr * (1 + 1e-12) + 1e-300;
+}
+
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* Every pair i < j with |s_i - s_j| < 2 max(r_i, r_j), in increasing
+ * (i, j) order: a hash grid of cells at least 2 max r wide, 3x3 blocks. */
+static int build_pairs(ccvt_engine *E)
+{
+    const int64_t n = E->n;
+    double rmax = 0;
+    for (int64_t i = 0; i < n; i++)
+        if (E->r[i] > rmax) rmax = E->r[i];
+    E->npairs = 0;
+    int64_t g = (int64_t)floor(1.0 / (2 * rmax * (1 + 1e-9) + 1e-300));
+    if (g > 4096) g = 4096;
+    if (g < 3) { /* wide regions (tiny n or an early start): all pairs */
+        for (int64_t i = 0; i < n; i++)
+            for (int64_t j = i + 1; j < n; j++)
+                if (near_enough(E, i, j) && push_pair(E, i, j) != 0) return -1;
+        return 0;
+    }
+    free(E->cell_start);
+    free(E->cell_sites);
+    E->cell_start = calloc((size_t)(g * g + 1), sizeof *E->cell_start);
+    E->cell_sites = malloc((size_t)n * sizeof *E->cell_sites);
+    if (!E->cell_start || !E->cell_sites) return -1;
+#define CELL_OF(i) (((int64_t)(E->site[2 * (i) + 1] * g) % g) * g + ((int64_t)(E->site[2 * (i)] * g) % g))
+    for (int64_t i = 0; i < n; i++) E->cell_start[CELL_OF(i) + 1]++;
+    for (int64_t c = 0; c < g * g; c++) E->cell_start[c + 1] += E->cell_start[c];
+    for (int64_t i = 0; i < n; i++) E->cell_sites[E->cell_start[CELL_OF(i)]++] = (int32_t)i;
+    for (int64_t c = g * g; c > 0; c--) E->cell_start[c] = E->cell_start[c - 1];
+    E->cell_start[0] = 0;
+    for (int64_t i = 0; i < n; i++) {
+        int64_t c = CELL_OF(i), cx = c % g, cy = c / g;
+        for (int64_t dy = -1; dy <= 1; dy++)
+            for (int64_t dx = -1; dx <= 1; dx++) {
+                int64_t nc = ((cy + dy + g) % g) * g + (cx + dx + g) % g;
+                for (int32_t t = E->cell_start[nc]; t < E->cell_start[nc + 1]; t++) {
+                    int64_t j = E->cell_sites[t];
+                    if (j > i && near_enough(E, i, j) && push_pair(E, i, j) != 0) return -1;
+                }
+            }
+    }
+#undef CELL_OF
+    qsort(E->pairs, E->npairs, sizeof *E->pairs, cmp_i64);
+    /* g == 3: a neighbour can be found from two cells; keep it once */
+    size_t w = 0;
+    for (size_t k = 0; k < E->npairs; k++)
+        if (w == 0 || E->pairs[k] != E->pairs[w - 1]) E->pairs[w++] = E->pairs[k];
+    E->npairs = w;
+    return 0;
+}
+
+/* ---- the swap step of one pair ---------------------------------------------- */
+
+static const double *g_sort_gain;
+static int cmp_gain_desc(const void *a, const void *b)
+{
+    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    double gx = g_sort_gain[x], gy = g_sort_gain[y];
+    if (gx != gy) return gx < gy ? 1 : -1;
+    return (x > y) - (x < y);
+}
+
+/* Gains of site a's points for moving to site b; their maximum. */
+static double gains(const ccvt_engine *E, int64_t a, int64_t b, double *g)
+{
+    const double *p = E->pts + 2 * a * E->m, *sa = E->site + 2 * a, *sb = E->site + 2 * b;
+    double best = -INFINITY;
+    for (int64_t k = 0; k < E->m; k++) {
+        g[k] = d2(p + 2 * k, sa) - d2(p + 2 * k, sb);
+        if (g[k] > best) best = g[k];
+    }
+    return best;
+}
+
+static int64_t candidates(const ccvt_engine *E, const double *g, double above, int32_t *c)
+{
+    int64_t k = 0;
+    for (int64_t t = 0; t < E->m; t++)
+        if (g[t] > above) c[k++] = (int32_t)t;
+    g_sort_gain = g;
+    qsort(c, (size_t)k, sizeof *c, cmp_gain_desc);
+    return k;
+}
+
+/* Swaps while the best remaining point of i and of j gain together; returns
+ * the swaps made and adds their total gain to *gain. */
+static int64_t swap_pair(ccvt_engine *E, int64_t i, int64_t j, double *gain)
+{
+    double mi = gains(E, i, j, E->gi), mj = gains(E, j, i, E->gj);
+    if (!(mi + mj > 0)) return 0;
+    int64_t ki = candidates(E, E->gi, -mj, E->ci), kj = candidates(E, E->gj, -mi, E->cj);
+    int64_t k = ki < kj ? ki : kj, s = 0;
+    double *pi = E->pts + 2 * i * E->m, *pj = E->pts + 2 * j * E->m;
+    for (; s < k; s++) {
+        double g = E->gi[E->ci[s]] + E->gj[E->cj[s]];
+        if (!(g > 0)) break;
+        *gain += g;
+        double *a = pi + 2 * E->ci[s], *b = pj + 2 * E->cj[s], t0 = a[0], t1 = a[1];
+        a[0] = b[0];
+        a[1] = b[1];
+        b[0] = t0;
+        b[1] = t1;
+    }
+    return s;
+}
+
+/* ---- one iteration ----------------------------------------------------------- */
+
+void ccvt_iterate(ccvt_engine *E, cfpo_iter_stats *s)
+{
+    const double t0 = cli_now();
+    const int64_t n = E->n;
+    int iteration = s->iteration;
+    memset(s, 0, sizeof *s);
+    s->iteration = iteration;
+    /* radii of the sites that changed in the last iteration (the others
+     * are as they were) */
+    for (int64_t i = 0; i < n; i++)
+        if (E->dirty_prev[i]) E->r[i] = radius(E, i);
+    if (build_pairs(E) != 0) {
+        /* out of memory for the pair list: compare every pair in turn */
+        E->npairs = 0;
+    }
+    double gain = 0;
+    E->swaps = 0;
+    memset(E->dirty_cur, 0, (size_t)n);
+    for (size_t k = 0; k < E->npairs; k++) {
+        int64_t i = E->pairs[k] / n, j = E->pairs[k] % n;
+        if (!(E->dirty_prev[i] || E->dirty_prev[j] || E->dirty_cur[i] || E->dirty_cur[j])) continue;
+        s->solved++;
+        int64_t w = swap_pair(E, i, j, &gain);
+        if (w) {
+            E->swaps += w;
+            E->dirty_cur[i] = E->dirty_cur[j] = 1;
+        }
+    }
+    E->energy_swapped = E->check ? ccvt_energy(E) : NAN;
+    /* the sites that swapped move to their centroids */
+    double maxd2 = 0;
+    for (int64_t i = 0; i < n; i++) {
+        if (!E->dirty_cur[i]) continue;
+        double c[2];
+        centroid(E, i, E->site + 2 * i, c);
+        double dd = d2(c, E->site + 2 * i);
+        if (dd > maxd2) maxd2 = dd;
+        E->site[2 * i] = c[0];
+        E->site[2 * i + 1] = c[1];
+        s->moved++;
+    }
+    unsigned char *t = E->dirty_prev;
+    E->dirty_prev = E->dirty_cur;
+    E->dirty_cur = t;
+    s->max_disp = sqrt(maxd2) / E->L;
+    s->max_move = s->max_disp;
+    s->converged = cfpo_net_converged(E->swaps, s->max_disp, E->tol);
+    ccvt_deltas(E, &s->delta_min, &s->delta_avg);
+    s->seconds = cli_now() - t0;
+}
+
+int64_t ccvt_swaps(const ccvt_engine *E) { return E->swaps; }
+void ccvt_set_check(ccvt_engine *E, int on) { E->check = on; }
+double ccvt_energy_after_swaps(const ccvt_engine *E) { return E->energy_swapped; }
+
+double ccvt_energy(const ccvt_engine *E)
+{
+    double e = 0;
+    for (int64_t i = 0; i < E->n; i++) {
+        const double *p = E->pts + 2 * i * E->m, *si = E->site + 2 * i;
+        for (int64_t k = 0; k < E->m; k++) e += d2(p + 2 * k, si);
+    }
+    return e;
+}
+
+void ccvt_deltas(ccvt_engine *E, double *dmin, double *davg)
+{
+    if (cfpo_nn_stats(E->site, (size_t)E->n, E->nn, dmin, davg) != 0) *dmin = *davg = NAN;
+}
+
+const double *ccvt_sites(const ccvt_engine *E) { return E->site; }
+const double *ccvt_points(const ccvt_engine *E) { return E->pts; }
+int64_t ccvt_m(const ccvt_engine *E) { return E->m; }
+double ccvt_scale(const ccvt_engine *E) { return E->L; }

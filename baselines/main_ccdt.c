@@ -1,0 +1,44 @@
+/* main_ccdt.c - the `cfpo-ccdt` command: capacity-constrained Delaunay
+ * triangulation (ccdt.h) with the iterative baselines' command line
+ * (iter_main.h). */
+#include <stdio.h>
+
+#include "ccdt.h"
+#include "iter_main.h"
+
+static void *create(void *ctx, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
+{
+    (void)ctx;
+    return ccdt_create(n, seed, tol, err, errlen);
+}
+
+static void iterate(void *E, cfpo_iter_stats *s) { ccdt_iterate(E, s); }
+static void deltas(void *E, double *a, double *b) { ccdt_deltas(E, a, b); }
+static const double *points(void *E) { return ccdt_points(E); }
+static void destroy(void *E) { ccdt_free(E); }
+static void trace_values(void *E, char *buf, size_t len)
+{
+    snprintf(buf, len, "\t%lld\t%.6g", (long long)ccdt_rejected(E), ccdt_area_cv(E));
+}
+
+int main(int argc, char **argv)
+{
+    const it_method m = {
+        .prog = "cfpo-ccdt",
+        .method = "ccdt",
+        .about = "Capacity-constrained Delaunay triangulation (Xu, Liu, Gotsman, Guo 2011) on the\n"
+                 "unit torus, on CGAL's periodic Delaunay triangulation: every point in turn moves\n"
+                 "to the least-squares position that equalises the areas of its Delaunay\n"
+                 "triangles, kept when the area variance drops. Prints one SUMMARY line on stdout.",
+        .options_help = "",
+        .extra_opt = NULL,
+        .trace_extra = "\trejected\tarea_cv",
+        .create = create,
+        .iterate = iterate,
+        .deltas = deltas,
+        .trace_values = trace_values,
+        .points = points,
+        .destroy = destroy,
+    };
+    return it_main(argc, argv, &m, NULL);
+}
