@@ -90,105 +90,149 @@ typedef struct {
 
 /* Every rank reads a contiguous share of ids, sends each point to the rank
  * owning its cell, then builds its buckets. */
-int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
+/* Buffers of the scatter: this rank's share of the file, read in pieces,
+ * each point sent to the rank that owns its cell. */
+typedef struct {
+    int P;
+    double *buf;
+    void **send, **recv;
+    size_t *sb, *scap, *rb;
+} scatter;
+
+static int scatter_init(scatter *s, int P, size_t piece)
 {
-    const char *path = E->cfg.resume;
-    ckpt_header hd;
-    if (!comm_all(read_header(path, &hd, err, errlen) == 0)) return -1;
-    int64_t bound;
-    double d0;
-    if (start_cell_bound(E, &bound, &d0, err, errlen) != 0) return -1;
-    uint64_t size;
-    comm_file *f = comm_file_open_read(path, &size, err, errlen);
-    if (!f) return -1;
-    unsigned char h[CKPT_HEADER];
-    int bad = comm_file_read_at(f, 0, h, CKPT_HEADER) != 0;
-    const int P = E->nranks;
-    const int64_t lo = E->n * E->rank / P, hi = E->n * (E->rank + 1) / P;
+    memset(s, 0, sizeof *s);
+    s->P = P;
+    s->buf = malloc(piece * 16);
+    s->send = calloc((size_t)P, sizeof *s->send);
+    s->recv = calloc((size_t)P, sizeof *s->recv);
+    s->sb = calloc((size_t)P, sizeof *s->sb);
+    s->scap = calloc((size_t)P, sizeof *s->scap);
+    s->rb = calloc((size_t)P, sizeof *s->rb);
+    return s->buf && s->send && s->recv && s->sb && s->scap && s->rb ? 0 : -1;
+}
+
+static void scatter_free(scatter *s)
+{
+    for (int q = 0; s->send && q < s->P; q++) free(s->send[q]);
+    free(s->send); free(s->recv); free(s->sb); free(s->scap); free(s->rb); free(s->buf);
+}
+
+/* Adds point i at (x, y) to the message for rank q. */
+static int scatter_add(scatter *s, int q, double x, double y, int64_t i)
+{
+    if (s->sb[q] + sizeof(ck_rec) > s->scap[q]) {
+        const size_t c = (s->sb[q] + sizeof(ck_rec)) * 2;
+        void *p = realloc(s->send[q], c);
+        if (!p) return -1;
+        s->send[q] = p;
+        s->scap[q] = c;
+    }
+    const ck_rec rec = {x, y, (uint64_t)i};
+    memcpy((char *)s->send[q] + s->sb[q], &rec, sizeof rec);
+    s->sb[q] += sizeof rec;
+    return 0;
+}
+
+/* Points [a, b) of the file into the messages; the checksum grows over
+ * them. 0; -1 (read failure or out of memory); *badpos gets the first
+ * point outside [0,1)^2. */
+static int read_piece(cfpo_engine *E, comm_file *f, scatter *s, int64_t a, int64_t b, uint32_t *crc,
+                      int64_t *badpos)
+{
+    for (int q = 0; q < s->P; q++) s->sb[q] = 0;
+    if (b > a && comm_file_read_at(f, CKPT_HEADER + 16 * (uint64_t)a, s->buf, (size_t)(b - a) * 16) != 0) return -1;
+    *crc = ckpt_crc_more(*crc, s->buf, (size_t)(b - a) * 16);
+    for (int64_t i = a; i < b; i++) {
+        const double x = s->buf[2 * (i - a)], y = s->buf[2 * (i - a) + 1];
+        if (!(x >= 0 && x < 1 && y >= 0 && y < 1)) {
+            *badpos = i;
+            return -1;
+        }
+        const int q = cfpo_tiling_owner(&E->T, cfpo_grid_coord(&E->G, x), cfpo_grid_coord(&E->G, y));
+        if (scatter_add(s, q, x, y, i) != 0) return -1;
+    }
+    return 0;
+}
+
+/* The received points of one piece into tx/ty/tid from slot *have on. */
+static int take_piece(cfpo_engine *E, scatter *s, size_t *have)
+{
+    size_t add = 0;
+    for (int q = 0; q < s->P; q++) add += s->rb[q] / sizeof(ck_rec);
+    const int bad = eng_ensure_cap(E, *have + add) != 0;
+    for (int q = 0; q < s->P; q++) {
+        const ck_rec *rr = s->recv[q];
+        for (size_t i = 0; !bad && i < s->rb[q] / sizeof(ck_rec); i++, (*have)++) {
+            E->tx[*have] = rr[i].x;
+            E->ty[*have] = rr[i].y;
+            E->tid[*have] = rr[i].id;
+        }
+        free(s->recv[q]);
+        s->recv[q] = NULL;
+    }
+    return bad ? -1 : 0;
+}
+
+/* Collective: every rank reads its share of the points (n P-th parts, in
+ * pieces of 2^20) and sends each to its cell's owner; this rank's points
+ * land in tx/ty/tid (*have of them), *crc is the checksum of its share.
+ * 0, or -1 with a message. */
+static int read_points(cfpo_engine *E, comm_file *f, const char *path, size_t *have, uint32_t *crc, char *err,
+                       size_t errlen)
+{
+    const int64_t lo = E->n * E->rank / E->nranks, hi = E->n * (E->rank + 1) / E->nranks;
     const int64_t CH = (int64_t)1 << 20;
     int64_t rounds = (hi - lo + CH - 1) / CH;
     comm_max_i64(&rounds, 1);
-    double *buf = malloc((size_t)CH * 16);
-    void **send = calloc((size_t)P, sizeof *send);
-    size_t *sb = calloc((size_t)P, sizeof *sb), *scap = calloc((size_t)P, sizeof *scap);
-    void **recv = calloc((size_t)P, sizeof *recv);
-    size_t *rb = calloc((size_t)P, sizeof *rb);
-    bad |= !buf || !send || !sb || !scap || !recv || !rb;
+    scatter s;
+    int bad = scatter_init(&s, E->nranks, (size_t)CH) != 0;
     int64_t badpos = -1;
-    size_t have = 0;
-    uint32_t crc = 0;
-    /* received points land in tx/ty/tid */
+    *have = 0;
+    *crc = 0;
     for (int64_t r = 0; r < rounds; r++) {
         int64_t a = lo + r * CH, b = a + CH < hi ? a + CH : hi;
         if (a > b) a = b;
-        for (int q = 0; q < P; q++) sb[q] = 0;
-        if (!bad && b > a && comm_file_read_at(f, CKPT_HEADER + 16 * (uint64_t)a, buf, (size_t)(b - a) * 16) != 0)
-            bad = 1;
-        if (!bad) crc = ckpt_crc_more(crc, buf, (size_t)(b - a) * 16);
-        for (int64_t i = a; !bad && i < b; i++) {
-            double x = buf[2 * (i - a)], y = buf[2 * (i - a) + 1];
-            if (!(x >= 0 && x < 1 && y >= 0 && y < 1)) {
-                badpos = i;
-                bad = 1;
-                break;
-            }
-            int q = cfpo_tiling_owner(&E->T, cfpo_grid_coord(&E->G, x), cfpo_grid_coord(&E->G, y));
-            if (sb[q] + sizeof(ck_rec) > scap[q]) {
-                size_t c = (sb[q] + sizeof(ck_rec)) * 2;
-                void *p = realloc(send[q], c);
-                if (!p) { bad = 1; break; }
-                send[q] = p;
-                scap[q] = c;
-            }
-            ck_rec rec = {x, y, (uint64_t)i};
-            memcpy((char *)send[q] + sb[q], &rec, sizeof rec);
-            sb[q] += sizeof rec;
-        }
+        if (!bad && read_piece(E, f, &s, a, b, crc, &badpos) != 0) bad = 1;
         if (!comm_all(!bad)) break;
-        if (comm_alltoallv(send, sb, recv, rb) != 0) { bad = 1; break; }
-        size_t add = 0;
-        for (int q = 0; q < P; q++) add += rb[q] / sizeof(ck_rec);
-        if (eng_ensure_cap(E, have + add) != 0) bad = 1;
-        for (int q = 0; q < P; q++) {
-            const ck_rec *rr = recv[q];
-            for (size_t i = 0; !bad && i < rb[q] / sizeof(ck_rec); i++, have++) {
-                E->tx[have] = rr[i].x;
-                E->ty[have] = rr[i].y;
-                E->tid[have] = rr[i].id;
-            }
-            free(recv[q]);
-            recv[q] = NULL;
-        }
+        if (comm_alltoallv(s.send, s.sb, s.recv, s.rb) != 0 || take_piece(E, &s, have) != 0) bad = 1;
         if (!comm_all(!bad)) break;
     }
-    comm_file_close(f);
-    for (int q = 0; send && q < P; q++) free(send[q]);
-    free(send); free(sb); free(scap); free(recv); free(rb); free(buf);
-    int64_t bp = badpos;
-    comm_max_i64(&bp, 1);
-    if (!comm_all(!bad)) {
-        if (bp >= 0)
-            snprintf(err, errlen, "%s: corrupt checkpoint: point %lld at offset %llu is not in [0,1)^2",
-                     path, (long long)bp, (unsigned long long)(CKPT_HEADER + 16 * (uint64_t)bp));
-        else snprintf(err, errlen, "%s: cannot read the checkpoint (or out of memory)", path);
+    scatter_free(&s);
+    comm_max_i64(&badpos, 1);
+    if (comm_all(!bad)) return 0;
+    if (badpos >= 0)
+        snprintf(err, errlen, "%s: corrupt checkpoint: point %lld at offset %llu is not in [0,1)^2", path,
+                 (long long)badpos, (unsigned long long)(CKPT_HEADER + 16 * (uint64_t)badpos));
+    else snprintf(err, errlen, "%s: cannot read the checkpoint (or out of memory)", path);
+    return -1;
+}
+
+/* Version 2: the checksum of the header and every rank's share, joined in
+ * rank order, against the header's. */
+static int check_crc(cfpo_engine *E, const char *path, const ckpt_header *hd, const unsigned char *h, uint32_t crc,
+                     char *err, size_t errlen)
+{
+    if (hd->version < 2) return 0;
+    int oom = 0;
+    const uint32_t all = join_shares(E, ckpt_crc_header(h), crc, &oom);
+    if (!comm_all(!oom)) {
+        snprintf(err, errlen, "out of memory");
         return -1;
     }
-    if (hd.version >= 2) {
-        int oom = 0;
-        uint32_t all = join_shares(E, ckpt_crc_header(h), crc, &oom);
-        if (!comm_all(!oom)) { snprintf(err, errlen, "out of memory"); return -1; }
-        if (all != hd.crc) {
-            snprintf(err, errlen, "%s: corrupt checkpoint: checksum 0x%08lx does not match the contents (0x%08lx)",
-                     path, (unsigned long)hd.crc, (unsigned long)all);
-            return -1;
-        }
-    }
-    /* Counting sort into cells, then id order inside each cell. */
+    if (all == hd->crc) return 0;
+    snprintf(err, errlen, "%s: corrupt checkpoint: checksum 0x%08lx does not match the contents (0x%08lx)", path,
+             (unsigned long)hd->crc, (unsigned long)all);
+    return -1;
+}
+
+/* The have points of tx/ty/tid into their cells, id order inside each;
+ * refuses a cell fuller than bound (the message says d0). */
+static int bucket_points(cfpo_engine *E, const char *path, size_t have, int64_t bound, double d0, char *err,
+                         size_t errlen)
+{
     memset(E->start, 0, ((size_t)E->cells + 1) * sizeof(uint32_t));
-    for (size_t i = 0; i < have; i++) {
-        int64_t c = own_cell_of(E, E->tx[i], E->ty[i]);
-        E->start[c + 1]++;
-    }
+    for (size_t i = 0; i < have; i++) E->start[own_cell_of(E, E->tx[i], E->ty[i]) + 1]++;
     int64_t worst[2] = {0, 0}; /* most points in a cell, its global index */
     for (int64_t c = 0; c < E->cells; c++) {
         if ((int64_t)E->start[c + 1] > worst[0]) {
@@ -209,8 +253,7 @@ int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
     }
     memcpy(E->start2, E->start, ((size_t)E->cells + 1) * sizeof(uint32_t));
     for (size_t i = 0; i < have; i++) {
-        int64_t c = own_cell_of(E, E->tx[i], E->ty[i]);
-        uint32_t k = E->start2[c]++;
+        const uint32_t k = E->start2[own_cell_of(E, E->tx[i], E->ty[i])]++;
         E->px[k] = E->tx[i];
         E->py[k] = E->ty[i];
         E->pid[k] = E->tid[i];
@@ -218,14 +261,13 @@ int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
     for (int64_t c = 0; c < E->cells; c++) eng_sort3(E->pid, E->px, E->py, E->start[c], E->start[c + 1]);
     E->nloc = (int64_t)have;
     E->maxcell = (int)worst[0];
-    int64_t tot = E->nloc;
-    comm_sum_i64(&tot, 1);
-    if (tot != E->n) {
-        snprintf(err, errlen, "%s: corrupt checkpoint (point count)", path);
-        return -1;
-    }
-    /* The invariant itself: the state's minimum distance is at least the
-     * start's. */
+    return 0;
+}
+
+/* The invariant itself: the state's minimum distance is at least the
+ * start's d0. */
+static int check_distance(cfpo_engine *E, const char *path, double d0, char *err, size_t errlen)
+{
     if (!comm_all(eng_refresh_halo(E) == 0)) {
         snprintf(err, errlen, "out of memory");
         return -1;
@@ -233,12 +275,42 @@ int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
     double dmin, davg;
     cfpo_engine_deltas(E, &dmin, &davg);
     memset(E->bdirty, 1, (size_t)(E->nbx * E->nby));
-    if (dmin * E->G.delta < d0) {
-        snprintf(err, errlen, "%s: checkpoint has points %.3g apart; no run of cfpo brings points closer than its "
-                 "start's minimum distance %.3g", path, dmin * E->G.delta, d0);
+    if (dmin * E->G.delta >= d0) return 0;
+    snprintf(err, errlen, "%s: checkpoint has points %.3g apart; no run of cfpo brings points closer than its "
+             "start's minimum distance %.3g", path, dmin * E->G.delta, d0);
+    return -1;
+}
+
+int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
+{
+    const char *path = E->cfg.resume;
+    ckpt_header hd;
+    if (!comm_all(read_header(path, &hd, err, errlen) == 0)) return -1;
+    int64_t bound;
+    double d0;
+    if (start_cell_bound(E, &bound, &d0, err, errlen) != 0) return -1;
+    uint64_t size;
+    comm_file *f = comm_file_open_read(path, &size, err, errlen);
+    if (!f) return -1;
+    unsigned char h[CKPT_HEADER];
+    if (!comm_all(comm_file_read_at(f, 0, h, CKPT_HEADER) == 0)) {
+        comm_file_close(f);
+        snprintf(err, errlen, "%s: cannot read the checkpoint (or out of memory)", path);
         return -1;
     }
-    return 0;
+    size_t have;
+    uint32_t crc;
+    const int rc = read_points(E, f, path, &have, &crc, err, errlen);
+    comm_file_close(f);
+    if (rc != 0 || check_crc(E, path, &hd, h, crc, err, errlen) != 0) return -1;
+    if (bucket_points(E, path, have, bound, d0, err, errlen) != 0) return -1;
+    int64_t tot = E->nloc;
+    comm_sum_i64(&tot, 1);
+    if (tot != E->n) {
+        snprintf(err, errlen, "%s: corrupt checkpoint (point count)", path);
+        return -1;
+    }
+    return check_distance(E, path, d0, err, errlen);
 }
 
 /* The checksum of what was written: every rank reads its share of the
