@@ -63,11 +63,13 @@ static int senders(const cfpo_engine *E, int64_t lx, int64_t ly, int a, int b, i
 }
 
 /* How many points own cell c holds after the moves of colour (a_, b_)
- * and the arrivals. */
-static uint32_t count_cell(const cfpo_engine *E, int64_t c, int a_, int b_)
+ * and the arrivals. (st, mask, w: E's, loaded once by the caller; inlined
+ * by force: otherwise the pass costs 4% more instructions.) */
+static inline __attribute__((always_inline)) uint32_t count_cell(const cfpo_engine *E, const uint32_t *st,
+                                                                  const uint16_t *mask, int64_t w, int64_t c, int a_,
+                                                                  int b_)
 {
-    const int64_t lx = c % E->w, ly = c / E->w;
-    const uint32_t *st = E->start;
+    const int64_t lx = c % w, ly = c / w;
     uint32_t cnt = 0;
     int off[9][2];
     const int no = senders(E, lx, ly, a_, b_, off);
@@ -75,13 +77,13 @@ static uint32_t count_cell(const cfpo_engine *E, int64_t c, int a_, int b_)
         const int dx = off[o][0], dy = off[o][1];
         const int64_t e = locate(E, lx + dx, ly + dy);
         if (e < 0) continue;
-        const unsigned mk = E->mask[e] & 0x1ffu;
+        const unsigned mk = mask[e] & 0x1ffu;
         if (dx == 0 && dy == 0) {
             if (!(mk & ~CENTRE_BIT)) { cnt += st[c + 1] - st[c]; continue; }
         } else if (!sends_to(mk, -dx, -dy)) continue;
         for (uint32_t k = st[e]; k < st[e + 1]; k++) cnt += in_cell(E, E->px[k], E->py[k], lx, ly);
     }
-    if (E->mask[c] & ARRIVE_BIT)
+    if (mask[c] & ARRIVE_BIT)
         for (size_t a = first_arrival(E, c); a < E->narr && E->arr[a].cell == c; a++) cnt++;
     return cnt;
 }
@@ -187,8 +189,11 @@ int eng_relocate(cfpo_engine *E, int colour)
     const int64_t cells = E->cells;
     uint32_t *ns = E->start2;
     if (eng_ensure_cap(E, (size_t)E->nloc + E->narr) != 0) return -1;
+    const uint32_t *st = E->start;
+    const uint16_t *mask = E->mask;
+    const int64_t w = E->w;
 #pragma omp parallel for schedule(static) num_threads(E->nthreads)
-    for (int64_t c = 0; c < cells; c++) ns[c + 1] = count_cell(E, c, a_, b_);
+    for (int64_t c = 0; c < cells; c++) ns[c + 1] = count_cell(E, st, mask, w, c, a_, b_);
     ns[0] = 0;
     for (int64_t c = 0; c < cells; c++) ns[c + 1] += ns[c];
     int maxcell = 0;

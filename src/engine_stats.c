@@ -104,7 +104,9 @@ static void add_unsure(unsure_list *u, nn_query q)
 
 /* Recomputes one marked block: its sum and minimum of the distances that
  * are sure inside it; the others go to u. Returns whether any was not. */
-static int block_pass(cfpo_engine *E, int64_t bi, double inv, unsure_list *u)
+/* (Inlined by force: as a call, the pass costs 2.6% more instructions.) */
+static inline __attribute__((always_inline)) int block_pass(cfpo_engine *E, int64_t bi, double inv,
+                                                            unsure_list *u)
 {
     const int64_t bx0 = (bi % E->nbx) * SB, by0 = (bi / E->nbx) * SB;
     const int64_t bx1 = bx0 + SB < E->w ? bx0 + SB : E->w, by1 = by0 + SB < E->h ? by0 + SB : E->h;
