@@ -1,5 +1,5 @@
 /* ccdt.h - capacity-constrained Delaunay triangulation (Xu, Liu, Gotsman,
- * Guo 2011) on CGAL's periodic Delaunay triangulation of the unit torus.
+ * Gortler 2011) on CGAL's periodic Delaunay triangulation of the unit torus.
  *
  * Owns: the dynamic triangulation of the n points, the energy (the sum of
  * the squared triangle areas; on the torus there are always 2n triangles

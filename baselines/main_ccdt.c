@@ -26,7 +26,7 @@ int main(int argc, char **argv)
     const it_method m = {
         .prog = "cfpo-ccdt",
         .method = "ccdt",
-        .about = "Capacity-constrained Delaunay triangulation (Xu, Liu, Gotsman, Guo 2011) on the\n"
+        .about = "Capacity-constrained Delaunay triangulation (Xu, Liu, Gotsman, Gortler 2011) on the\n"
                  "unit torus, on CGAL's periodic Delaunay triangulation: every point in turn moves\n"
                  "to the least-squares position that equalises the areas of its Delaunay\n"
                  "triangles, kept when the area variance drops. Prints one SUMMARY line on stdout.",
