@@ -104,7 +104,7 @@ static void parse(int argc, char **argv, options *o)
         case 'h': usage(); exit(0);
         case 'V': printf("cfpo-analyze %s\n", CFPO_VERSION); exit(0);
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
-        default: cli_usage_error(prog, "unknown option '%s'", argv[optind - 1]);
+        default: cli_bad_option(prog, longs, argv[optind - 1]);
         }
     }
     o->files = argv + optind;

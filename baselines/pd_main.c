@@ -149,9 +149,7 @@ int pd_main(int argc, char **argv, int kind)
         case 'h': usage(kind); return 0;
         case 'V': printf("%s %s\n", prog, CFPO_VERSION); return 0;
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
-        default:
-            if (optopt) cli_usage_error(prog, "unknown option '-%c'", optopt);
-            cli_usage_error(prog, "unknown option '%s'", argv[optind - 1]);
+        default: cli_bad_option(prog, longopts, argv[optind - 1]);
         }
     }
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);

@@ -3,6 +3,7 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <getopt.h>
 #include <math.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -256,6 +257,20 @@ double cli_now(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void cli_bad_option(const char *prog, const struct option *longopts, const char *arg)
+{
+    if (strncmp(arg, "--", 2) == 0) {
+        const char *eq = strchr(arg, '=');
+        const size_t len = eq ? (size_t)(eq - arg - 2) : strlen(arg + 2);
+        for (const struct option *o = longopts; eq && o->name; o++)
+            if (o->has_arg == no_argument && strlen(o->name) == len && strncmp(o->name, arg + 2, len) == 0)
+                cli_usage_error(prog, "option '--%s' takes no value", o->name);
+        cli_usage_error(prog, "unknown option '%.*s'", (int)(len + 2), arg);
+    }
+    if (optopt) cli_usage_error(prog, "unknown option '-%c'", optopt);
+    cli_usage_error(prog, "unknown option '%s'", arg);
 }
 
 double cli_physical_memory(void)

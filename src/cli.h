@@ -38,6 +38,12 @@ uint64_t cli_arg_seed(const char *prog, const char *s);
 /* One line "prog: message" on stderr, then exit 2 (the line ends with a
  * pointer to --help) or 1.
  * Temporary files registered with cli_guard_tmp are removed first. */
+struct option;
+/* The usage error for an option getopt_long refused (arg: the argument it
+ * stopped at, argv[optind - 1]): "--name=VALUE" of an option that takes
+ * none, an unknown long option, or an unknown short one. Never returns. */
+void cli_bad_option(const char *prog, const struct option *longopts, const char *arg) __attribute__((noreturn));
+
 void cli_usage_error(const char *prog, const char *fmt, ...)
     __attribute__((noreturn, format(printf, 2, 3)));
 void cli_fail(const char *prog, const char *fmt, ...)

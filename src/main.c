@@ -243,23 +243,6 @@ static int run_option(cmdline *c, int ch, char *arg)
     return 1;
 }
 
-/* The usage error for an option getopt refused: "--name=VALUE" of an
- * option that takes none, an unknown long option, or an unknown short one
- * (arg is the argument getopt stopped at). */
-static void bad_option(const struct option *longopts, const char *arg)
-{
-    if (strncmp(arg, "--", 2) == 0) {
-        const char *eq = strchr(arg, '=');
-        const size_t len = eq ? (size_t)(eq - arg - 2) : strlen(arg + 2);
-        for (const struct option *o = longopts; eq && o->name; o++)
-            if (o->has_arg == no_argument && strlen(o->name) == len && strncmp(o->name, arg + 2, len) == 0)
-                cli_usage_error(prog, "option '--%s' takes no value", o->name);
-        cli_usage_error(prog, "unknown option '%.*s'", (int)(len + 2), arg);
-    }
-    if (optopt) cli_usage_error(prog, "unknown option '-%c'", optopt);
-    cli_usage_error(prog, "unknown option '%s'", arg);
-}
-
 /* Parses argv into c; --help and --version answer and exit. */
 static void parse(int argc, char **argv, cmdline *c)
 {
@@ -287,7 +270,7 @@ static void parse(int argc, char **argv, cmdline *c)
         case 'h': if (comm_rank() == 0) usage(); comm_finalize(); exit(0);
         case 'V': if (comm_rank() == 0) printf("cfpo %s\n", CFPO_VERSION); comm_finalize(); exit(0);
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
-        default: bad_option(longopts, argv[optind - 1]);
+        default: cli_bad_option(prog, longopts, argv[optind - 1]);
         }
     }
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);

@@ -70,6 +70,7 @@ expect 2 "K not a number" -K abc good.txt
 expect 2 "K too large" -K 100000 good.txt
 expect 2 "bad tolerance" --cert-tol 2 good.txt
 expect 2 "unknown option" --bogus good.txt
+expect 2 "^cfpo-analyze: option '--quiet' takes no value" --quiet=1 good.txt
 expect 2 "missing value" good.txt -K
 # interrupted runs leave nothing (a long exact spectrum, stopped early)
 "$B/cfpo" -n 4096 -t 1 -q -o big.npy >/dev/null

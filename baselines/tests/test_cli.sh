@@ -43,6 +43,7 @@ for c in $(methods_binaries pd iter); do
   expect 2 "^$c: --seed: 'x1' is not" "$X" -n 100 --seed x1
   expect 2 "^$c: unknown option '--bogus'" "$X" -n 100 --bogus
   expect 2 "^$c: unknown option '-Z'" "$X" -n 100 -Z
+  expect 2 "^$c: option '--quiet' takes no value" "$X" -n 100 --quiet=1
   expect 2 "^$c: option '-n' needs a value" "$X" -n
   expect 2 "^$c: unexpected argument 'extra'" "$X" -n 100 extra
   expect 2 "^$c: $T/p.xyz: unknown output format" "$X" -n 100 -o "$T/p.xyz"
