@@ -107,13 +107,18 @@ int it_main(int argc, char **argv, const it_method *m, void *ctx)
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
     if (n < 0) cli_usage_error(prog, "the number of points is required: -n N");
     bl_check_output_name(prog, out);
-    { /* n too small or too large: the same check and message as cfpo */
+    { /* n too small (the same minimum as cfpo, whose cell side scales tol) or
+       * too large for the method's own memory model */
         cfpo_options co;
         cfpo_options_init(&co);
         co.tol = tol;
+        co.threads = 1;
         int vr = cfpo_validate(n, &co, err, sizeof err);
         if (vr == -1) cli_usage_error(prog, "%s", err);
-        if (vr != 0) cli_fail(prog, "%s", err);
+        const double need = (double)m->bytes(ctx, n), have = cli_physical_memory();
+        if (need > 0.9 * have)
+            cli_fail(prog, "n = %lld is too large for memory: %s needs about %.1f GB, this machine has %.1f GB",
+                     (long long)n, m->method, need / 1e9, have / 1e9);
     }
     char header[512];
     snprintf(header, sizeof header, "iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed%s",

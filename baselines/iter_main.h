@@ -24,6 +24,8 @@ typedef struct {
     const char *trace_extra; /* extra trace columns, "\tname..." ("" if none) */
     /* parses the value of extra_opt into ctx; 0 ok, -1 bad (usage error) */
     int (*parse_extra)(void *ctx, const char *arg, char *err, size_t errlen);
+    /* bytes the method needs for n points (its own memory model) */
+    uint64_t (*bytes)(void *ctx, int64_t n);
     /* the engine for n points, seed and tol; NULL with a message */
     void *(*create)(void *ctx, int64_t n, uint64_t seed, double tol, char *err, size_t errlen);
     void (*iterate)(void *E, cfpo_iter_stats *s);

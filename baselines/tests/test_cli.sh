@@ -90,6 +90,9 @@ done
 grep -q "method=lfpo" "$T/out" && ok || bad "cfpo-lfpo does not report method=lfpo"
 expect 0 "" "$B/cfpo-fpo" -n 300 -q --local --max-iter 1
 grep -q "method=lfpo" "$T/out" && ok || bad "cfpo-fpo --local is not LFPO"
+# CCVT's and CCDT's own memory models, not cfpo's.
+expect 1 "^cfpo-ccvt: n = 16777216 is too large for memory: ccvt needs about 178\.2 GB" "$B/cfpo-ccvt" -n 2^24
+expect 1 "^cfpo-ccdt: n = 1073741824 is too large for memory: ccdt needs about 773\.1 GB" "$B/cfpo-ccdt" -n 2^30
 # FPO's own memory model (about 720 bytes a point), not cfpo's.
 expect 1 "^cfpo-fpo: n = 1073741824 is too large for memory: the triangulation needs about 773\.1 GB" "$B/cfpo-fpo" -n 2^30
 
