@@ -221,20 +221,7 @@ static int step(ccdt_engine *E, uint32_t id, double tolL)
 static int build(ccdt_engine *E, char *err, size_t errlen)
 {
     const int64_t n = E->n;
-    std::vector<std::pair<Point, uint32_t>> pts;
-    pts.reserve((size_t)n);
-    for (int64_t i = 0; i < n; i++) pts.emplace_back(Point(E->xy[2 * i], E->xy[2 * i + 1]), (uint32_t)i);
-    E->T.insert(pts.begin(), pts.end(), true);
-    if ((int64_t)E->T.number_of_vertices() != n) {
-        snprintf(err, errlen, "the start has %lld distinct points, not %lld (duplicates)",
-                 (long long)E->T.number_of_vertices(), (long long)n);
-        return -1;
-    }
-    E->vh.assign((size_t)n, Vertex_handle());
-    for (auto v = E->T.vertices_begin(); v != E->T.vertices_end(); ++v) {
-        Vertex_handle h = v;
-        if (!E->T.is_virtual(h)) E->vh[h->info()] = h;
-    }
+    if (build_indexed(E->T, E->xy, n, E->vh, err, errlen) != 0) return -1;
     E->vmark.assign((size_t)n, 0);
     E->mean = 0.5 / (double)n;
     E->energy = energy_all(E->T);

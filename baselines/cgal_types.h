@@ -1,5 +1,6 @@
 /* cgal_types.h - the one typedef block for CGAL's periodic Delaunay
- * triangulation on the unit torus, shared by fpo.cpp and coverage.cpp.
+ * triangulation on the unit torus, shared by fpo.cpp, ccdt.cpp and
+ * coverage.cpp, and the build of a triangulation of indexed points.
  *
  * Vertex info: the point's id. Face info: a registration stamp (0 = not
  * registered, i.e. new or changed since it was last looked at) and the
@@ -10,6 +11,9 @@
 #define CFPO_BASELINES_CGAL_TYPES_H
 
 #include <cstdint>
+#include <cstdio>
+#include <utility>
+#include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
@@ -49,6 +53,29 @@ inline void circumcircle(const PDT &T, Face_handle f, double *cx, double *cy, do
     *cx = p0.x() + ux;
     *cy = p0.y() + uy;
     *r2 = ux * ux + uy * uy;
+}
+
+/* Triangulates the n points of xy (x0 y0 x1 y1 ...), point i with info i,
+ * and fills vh[i] with its vertex. 0, or -1 with a message when points
+ * coincide (CGAL keeps one of them). */
+inline int build_indexed(PDT &T, const std::vector<double> &xy, std::int64_t n, std::vector<Vertex_handle> &vh,
+                         char *err, std::size_t errlen)
+{
+    std::vector<std::pair<Point, std::uint32_t>> pts;
+    pts.reserve((std::size_t)n);
+    for (std::int64_t i = 0; i < n; i++) pts.emplace_back(Point(xy[2 * i], xy[2 * i + 1]), (std::uint32_t)i);
+    T.insert(pts.begin(), pts.end(), true);
+    if ((std::int64_t)T.number_of_vertices() != n) {
+        std::snprintf(err, errlen, "the start has %lld distinct points, not %lld (duplicates)",
+                      (long long)T.number_of_vertices(), (long long)n);
+        return -1;
+    }
+    vh.assign((std::size_t)n, Vertex_handle());
+    for (auto v = T.vertices_begin(); v != T.vertices_end(); ++v) {
+        Vertex_handle h = v;
+        if (!T.is_virtual(h)) vh[h->info()] = h;
+    }
+    return 0;
 }
 
 } // namespace bl

@@ -6,14 +6,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-/* Own cell of global cell (cx, cy), or -1. */
-static int64_t own_index(const cfpo_engine *E, int64_t cx, int64_t cy)
-{
-    const int64_t lx = cx - E->x0, ly = cy - E->y0;
-    if (lx < 0 || lx >= E->w || ly < 0 || ly >= E->h) return -1;
-    return ly * E->w + lx;
-}
-
 int eng_take_points(cfpo_engine *E, const double *xy, char *err, size_t errlen)
 {
     const int64_t g = E->G.g, n = E->n;
@@ -24,16 +16,16 @@ int eng_take_points(cfpo_engine *E, const double *xy, char *err, size_t errlen)
     }
     int64_t nloc = 0, full = -1;
     for (int64_t k = 0; k < n; k++) {
-        const int64_t cx = cfpo_grid_coord(&E->G, xy[2 * k]), cy = cfpo_grid_coord(&E->G, xy[2 * k + 1]);
-        const int64_t c = own_index(E, cx, cy);
+        const int64_t c = own_cell_of(E, xy[2 * k], xy[2 * k + 1]);
         if (c < 0) continue;
-        if (++cnt[c] > CFPO_GIVEN_CELL_MAX && full < 0) full = cy * g + cx;
+        if (++cnt[c] > CFPO_GIVEN_CELL_MAX && full < 0) full = c;
         nloc++;
     }
     if (full >= 0) {
         snprintf(err, errlen, "cell (%lld, %lld) of the %lld x %lld grid holds more than %d points; "
                  "such a clump would make one cell's work grow with the cube of its count",
-                 (long long)(full % g), (long long)(full / g), (long long)g, (long long)g, CFPO_GIVEN_CELL_MAX);
+                 (long long)(E->x0 + full % E->w), (long long)(E->y0 + full / E->w), (long long)g, (long long)g,
+                 CFPO_GIVEN_CELL_MAX);
         free(cnt);
         return -1;
     }
@@ -50,7 +42,7 @@ int eng_take_points(cfpo_engine *E, const double *xy, char *err, size_t errlen)
         cnt[c] = E->start[c]; /* now the next free slot */
     }
     for (int64_t k = 0; k < n; k++) { /* ids ascending inside every cell */
-        const int64_t c = own_index(E, cfpo_grid_coord(&E->G, xy[2 * k]), cfpo_grid_coord(&E->G, xy[2 * k + 1]));
+        const int64_t c = own_cell_of(E, xy[2 * k], xy[2 * k + 1]);
         if (c < 0) continue;
         const uint32_t s = cnt[c]++;
         E->px[s] = xy[2 * k];
