@@ -37,6 +37,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "farthest.h"
 #include "geom.h"
 #include "stats.h"
 
@@ -65,6 +66,7 @@ typedef struct {
     size_t *id;
     uint8_t *mark;
     size_t m, cap;
+    an_far_ws far;        /* the farthest-point solver's buffers */
 } work;
 
 static size_t coord(double v, size_t g)
@@ -123,6 +125,7 @@ static void work_free(work *w)
 {
     free(w->x); free(w->y); free(w->sx); free(w->sy); free(w->id); free(w->scratch);
     free(w->pa); free(w->pb); free(w->sd); free(w->mark); free(w->key);
+    an_far_free(&w->far);
 }
 
 static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
@@ -180,7 +183,7 @@ static int cell_radius(const ctx *C, size_t c, work *w, double *out, double *arg
         if (collect(C, cx, cy, H, w) != 0) return -1;
         if (w->m == 0) continue;
         double px, py;
-        double r2 = cfpo_local_solve(w->x, w->y, (int)w->m, -1, S, cx, cy, -1, &px, &py, w->scratch);
+        double r2 = an_farthest(w->x, w->y, w->m, S, cx, cy, &px, &py, &w->far);
         if (r2 < 0) return -2;
         if (sqrt(r2) <= H - 0.5 * L) {
             *out = sqrt(r2);
@@ -216,6 +219,23 @@ static int by_xy(const void *a, const void *b)
     const double *p = a, *q = b;
     if (p[0] != q[0]) return p[0] < q[0] ? -1 : 1;
     return p[1] < q[1] ? -1 : (p[1] > q[1]);
+}
+
+/* Restores the min-heap of (key, index) pairs h[0..n) below node r. */
+static void sift_down(double *h, size_t n, size_t r)
+{
+    for (;;) {
+        size_t c = 2 * r + 1;
+        if (c >= n) return;
+        if (c + 1 < n && by_xy(h + 2 * (c + 1), h + 2 * c) < 0) c++;
+        if (by_xy(h + 2 * c, h + 2 * r) >= 0) return;
+        const double k0 = h[2 * r], k1 = h[2 * r + 1];
+        h[2 * r] = h[2 * c];
+        h[2 * r + 1] = h[2 * c + 1];
+        h[2 * c] = k0;
+        h[2 * c + 1] = k1;
+        r = c;
+    }
 }
 
 /* Sorts the m positions (sx, sy) and drops repeats; returns the count. */
@@ -256,11 +276,18 @@ static int voronoi_max(const ctx *C, size_t i, work *w, double x, double y, doub
         w->key[2 * nk + 1] = (double)t;
         nk++;
     }
-    qsort(w->key, nk, 2 * sizeof *w->key, by_xy);
+    /* A heap, popped in (distance, index) order: the clipping usually ends
+     * after the first few, so sorting all of them (n log n a point on a
+     * cluster) would be wasted. */
+    for (size_t r = nk / 2; r-- > 0;) sift_down(w->key, nk, r);
     double far2 = 2 * s * s;
-    for (size_t r = 0; r < nk && nv > 0; r++) {
-        if (w->key[2 * r] >= 4 * far2 * (1 + 1e-9)) break;
-        const size_t t = (size_t)w->key[2 * r + 1];
+    for (size_t left = nk; left > 0 && nv > 0;) {
+        if (w->key[0] >= 4 * far2 * (1 + 1e-9)) break;
+        const size_t t = (size_t)w->key[1];
+        left--;
+        w->key[0] = w->key[2 * left];
+        w->key[1] = w->key[2 * left + 1];
+        sift_down(w->key, left, 0);
         nv = clip(P, nv, Q, w->sd, x, y, w->x[t], w->y[t]);
         double *tmp = P; P = Q; Q = tmp;
         far2 = 0;
@@ -346,12 +373,12 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     const double e = h - C->delta;
     const cfpo_square S = {x - e, y - e, x + e, y + e};
     m = subset(w, x, y, h, C->n, w->sx, w->sy);
-    r2 = cfpo_local_solve(w->sx, w->sy, m, -1, S, x, y, -1, &px, &py, w->scratch);
+    r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
     if (r2 < 0) return -2;
     res->p1 = sqrt(r2) - C->delta;
     m = subset(w, x, y, h, i, w->sx, w->sy);
     double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
-    r2 = cfpo_local_solve(w->sx, w->sy, m, -1, S, x, y, -1, &px, &py, w->scratch);
+    r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
     if (r2 < 0) return -2;
     res->p2 = sqrt(r2) - sqrt(dY2);
     return 0;

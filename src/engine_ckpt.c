@@ -227,7 +227,8 @@ static int check_crc(cfpo_engine *E, const char *path, const ckpt_header *hd, co
 }
 
 /* The have points of tx/ty/tid into their cells, id order inside each;
- * refuses a cell fuller than bound (the message says d0). */
+ * refuses a cell fuller than bound (the message says d0) or than
+ * CFPO_CELL_MAX. */
 static int bucket_points(cfpo_engine *E, const char *path, size_t have, int64_t bound, double d0, char *err,
                          size_t errlen)
 {
@@ -243,12 +244,18 @@ static int bucket_points(cfpo_engine *E, const char *path, size_t have, int64_t 
     }
     int64_t most = worst[0];
     comm_max_i64(&most, 1);
-    if (most > bound) {
+    if (most > bound || most > CFPO_CELL_MAX) {
         int64_t where = worst[0] == most ? worst[1] : -1;
         comm_max_i64(&where, 1);
-        snprintf(err, errlen, "%s: checkpoint puts %lld points in cell (%lld, %lld); no run of cfpo puts more than "
-                 "%lld in a cell (its start keeps points %.3g apart, and that distance never decreases)", path,
-                 (long long)most, (long long)(where % E->G.g), (long long)(where / E->G.g), (long long)bound, d0);
+        const long long cx = (long long)(where % E->G.g), cy = (long long)(where / E->G.g);
+        if (most > bound)
+            snprintf(err, errlen, "%s: checkpoint puts %lld points in cell (%lld, %lld); no run of cfpo puts more "
+                     "than %lld in a cell (its start keeps points %.3g apart, and that distance never decreases)",
+                     path, (long long)most, cx, cy, (long long)bound, d0);
+        else
+            snprintf(err, errlen, "%s: checkpoint puts %lld points in cell (%lld, %lld); more than %d is refused "
+                     "(a cell's work grows with the cube of its count; cfpo's runs hold about 10 at most)",
+                     path, (long long)most, cx, cy, CFPO_CELL_MAX);
         return -1;
     }
     memcpy(E->start2, E->start, ((size_t)E->cells + 1) * sizeof(uint32_t));

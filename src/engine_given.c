@@ -18,14 +18,14 @@ int eng_take_points(cfpo_engine *E, const double *xy, char *err, size_t errlen)
     for (int64_t k = 0; k < n; k++) {
         const int64_t c = own_cell_of(E, xy[2 * k], xy[2 * k + 1]);
         if (c < 0) continue;
-        if (++cnt[c] > CFPO_GIVEN_CELL_MAX && full < 0) full = c;
+        if (++cnt[c] > CFPO_CELL_MAX && full < 0) full = c;
         nloc++;
     }
     if (full >= 0) {
         snprintf(err, errlen, "cell (%lld, %lld) of the %lld x %lld grid holds more than %d points; "
                  "such a clump would make one cell's work grow with the cube of its count",
                  (long long)(E->x0 + full % E->w), (long long)(E->y0 + full / E->w), (long long)g, (long long)g,
-                 CFPO_GIVEN_CELL_MAX);
+                 CFPO_CELL_MAX);
         free(cnt);
         return -1;
     }

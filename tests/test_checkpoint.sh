@@ -88,7 +88,26 @@ printf 'CFPOCKPT' >short.ck;                    refused short.ck "not a cfpo che
 # after minutes of solving one crowded cell.
 { for i in $(seq 2000); do tail -c +$((64 + 16 * 7 + 1)) ck.bin | head -c 16; done; tail -c +$((64 + 16 * 2000 + 1)) ck.bin; } >pts.raw
 { printf CFPOCKP1; le 8 $N; le 8 1; le 8 2; printf "$TOL"; le 8 10; le 8 0; le 8 0; cat pts.raw; } >crowd.v1
-refused crowd.v1 "closer than"
+refused crowd.v1 "puts 2000 points in cell"
+# Two points on one spot, nothing crowded: the distance itself is refused.
+{ tail -c +$((64 + 16 * 7 + 1)) ck.bin | head -c 16; tail -c +$((64 + 16 + 1)) ck.bin; } >pts2.raw
+{ printf CFPOCKP1; le 8 $N; le 8 1; le 8 2; printf "$TOL"; le 8 10; le 8 0; le 8 0; cat pts2.raw; } >twin.v1
+refused twin.v1 "closer than"
+# A clump spaced wider than the start's minimum distance but far fuller
+# than any run makes: 306 points in a square of half a cell side (n = 4096:
+# a 57 x 57 grid), so one cell holds at least 76 whatever the grid's shift.
+python3 - ck.bin clump.v1 <<'PY'
+import struct, sys
+d = open(sys.argv[1], 'rb').read()
+N, L = 4096, 1 / 57
+pts = [struct.unpack_from('<dd', d, 64 + 16 * i) for i in range(N)]
+sp = L / 2 / 18
+lat = [(0.5 + sp * (i + 0.5), 0.5 + sp * (j + 0.5)) for i in range(18) for j in range(17)]
+rest = [p for p in pts if not (0.49 < p[0] < 0.51 + L / 2 and 0.49 < p[1] < 0.51 + L / 2)]
+hdr = b'CFPOCKP1' + struct.pack('<QQQdQQQ', N, 1, 2, 0.0, 10, 0, 0)
+open(sys.argv[2], 'wb').write(hdr + b''.join(struct.pack('<dd', *p) for p in lat + rest[:N - len(lat)]))
+PY
+refused clump.v1 "more than 64 is refused"
 
 # A signal while a checkpoint is written leaves no temporary behind: the
 # first fsync (the first checkpoint's commit) raises SIGTERM.

@@ -16,7 +16,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "certify.h"
 #include "cfpo.h"
@@ -138,16 +137,10 @@ static void polished(void)
     free(xy); free(viol); free(target);
 }
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* Degenerate sets: exact (brute force agrees), and the certificate of
- * 1,000 collinear points costs seconds at most (it took 18 s when one
- * LocalCFPO over the whole torus took every point; a random set: 0.04 s). */
+/* Degenerate sets: exact (brute force agrees). The clustered set and the
+ * one of 150 copies of each of two positions put more than AN_FAR_SMALL
+ * points in a neighbourhood, so they check the certificate's own solver
+ * path (analysis/farthest.c); 1,000 collinear points are refused. */
 static void degenerate(void)
 {
     const size_t n = 200;
@@ -161,13 +154,11 @@ static void degenerate(void)
     expect("clustered", xy, n, 0, 0.0);
     for (size_t i = 0; i < n; i++) { xy[2 * i] = i % 2 ? 0.7 : 0.1; xy[2 * i + 1] = 0.3; }
     expect("duplicated", xy, n, 0, 0.0);
+    for (size_t i = 0; i < 300; i++) { xy[2 * i] = i % 2 ? 0.7 : 0.1; xy[2 * i + 1] = 0.3; }
+    expect("150 copies of two positions", xy, 300, 0, 0.0);
     for (size_t i = 0; i < 1000; i++) { xy[2 * i] = (double)i / 1000; xy[2 * i + 1] = 0.5; }
     an_certificate c;
-    double t0 = now();
     CHECK(cert(xy, 1000, &c, NULL, NULL) == 0 && !c.fpd && c.fp_pass == 0, "1,000 collinear points");
-    double t = now() - t0;
-    printf("1,000 collinear points: certificate in %.2f s\n", t);
-    CHECK(t < 10, "1,000 collinear points took %.1f s to certify", t);
     free(xy);
 }
 
