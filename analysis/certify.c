@@ -271,6 +271,7 @@ static int voronoi_max(const ctx *C, size_t i, work *w, double x, double y, doub
     for (size_t t = 0; t < w->m; t++) {
         if (w->id[t] == i || fabs(w->x[t] - x) > reach || fabs(w->y[t] - y) > reach) continue;
         if (w->x[t] == x && w->y[t] == y) continue; /* a coincident point: no bisector */
+        if (t > 0 && w->x[t] == w->x[t - 1] && w->y[t] == w->y[t - 1]) continue; /* the same bisector again */
         const double dx = w->x[t] - x, dy = w->y[t] - y;
         w->key[2 * nk] = dx * dx + dy * dy;
         w->key[2 * nk + 1] = (double)t;
@@ -281,6 +282,7 @@ static int voronoi_max(const ctx *C, size_t i, work *w, double x, double y, doub
      * cluster) would be wasted. */
     for (size_t r = nk / 2; r-- > 0;) sift_down(w->key, nk, r);
     double far2 = 2 * s * s;
+    double lastx = NAN, lasty = NAN;
     for (size_t left = nk; left > 0 && nv > 0;) {
         if (w->key[0] >= 4 * far2 * (1 + 1e-9)) break;
         const size_t t = (size_t)w->key[1];
@@ -288,6 +290,10 @@ static int voronoi_max(const ctx *C, size_t i, work *w, double x, double y, doub
         w->key[0] = w->key[2 * left];
         w->key[1] = w->key[2 * left + 1];
         sift_down(w->key, left, 0);
+        /* A repeat of the position just clipped by: the same bisector. */
+        if (w->x[t] == lastx && w->y[t] == lasty) continue;
+        lastx = w->x[t];
+        lasty = w->y[t];
         nv = clip(P, nv, Q, w->sd, x, y, w->x[t], w->y[t]);
         double *tmp = P; P = Q; Q = tmp;
         far2 = 0;
@@ -303,12 +309,19 @@ static int voronoi_max(const ctx *C, size_t i, work *w, double x, double y, doub
     for (int v = 0; v < nv; v++) ext = fmax(ext, fmax(fabs(P[2 * v] - x), fabs(P[2 * v + 1] - y)));
     const double eps = 1e-9 * (ext + 1e-300);
     if (!w->mark) { w->mark = calloc(C->n, 1); if (!w->mark) return -1; }
+    int covered = 0; /* the point collected before t is marked or a copy of one */
     for (size_t t = 0; t < w->m; t++) {
-        if (w->id[t] == i || w->mark[w->id[t]] || fabs(w->x[t] - x) > reach || fabs(w->y[t] - y) > reach) continue;
+        /* A copy of such a point: all its images coincide with that
+         * point's, so it adds no position. */
+        const int copy = covered && t > 0 && w->x[t] == w->x[t - 1] && w->y[t] == w->y[t - 1];
+        covered = copy || (w->mark[w->id[t]] && w->id[t] != i);
+        if (copy || w->id[t] == i || w->mark[w->id[t]] || fabs(w->x[t] - x) > reach || fabs(w->y[t] - y) > reach)
+            continue;
         const double nx = w->x[t] - x, ny = w->y[t] - y, mx = 0.5 * (w->x[t] + x), my = 0.5 * (w->y[t] + y);
         const double scale = sqrt(nx * nx + ny * ny);
         for (int v = 0; v < nv; v++)
             if ((P[2 * v] - mx) * nx + (P[2 * v + 1] - my) * ny >= -eps * scale) { w->mark[w->id[t]] = 1; break; }
+        covered = w->mark[w->id[t]];
     }
     int k = 0;
     for (size_t t = 0; t < w->m; t++)

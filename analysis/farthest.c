@@ -13,34 +13,38 @@
         (p) = q_;                                                                                                      \
     } while (0)
 
+/* A node of the 2-d tree: the bounding box of its points, their range in
+ * x/y, and its children (left < 0: a leaf). */
+typedef struct an_kd_node {
+    double x0, y0, x1, y1;
+    size_t lo, hi;
+    long left, right;
+} kd_node;
+
+#define KD_LEAF 8
+#define KD_DEPTH 120 /* midpoint splits: enough for any double-precision spread */
+
 static int reserve(an_far_ws *ws, size_t m)
 {
     if (m <= ws->cap) return 0;
     size_t cap = ws->cap ? ws->cap : 256;
     while (cap < m) cap *= 2;
-    GROW(ws->ux, cap);
-    GROW(ws->uy, cap);
+    GROW(ws->x, cap);
+    GROW(ws->y, cap);
     GROW(ws->key, 2 * cap);
     GROW(ws->pa, 2 * (cap + 8));
     GROW(ws->pb, 2 * (cap + 8));
     GROW(ws->sd, cap + 8);
     GROW(ws->scratch, cfpo_solver_scratch(cap));
+    GROW(ws->nodes, 2 * cap + 1);
     ws->cap = cap;
-    return 0;
-}
-
-static int reserve_cells(an_far_ws *ws, size_t cells)
-{
-    if (cells <= ws->cells_cap) return 0;
-    GROW(ws->cell_start, cells + 1);
-    ws->cells_cap = cells;
     return 0;
 }
 
 void an_far_free(an_far_ws *ws)
 {
-    free(ws->ux); free(ws->uy); free(ws->key);
-    free(ws->pa); free(ws->pb); free(ws->sd); free(ws->scratch); free(ws->cell_start);
+    free(ws->x); free(ws->y); free(ws->key); free(ws->pa); free(ws->pb); free(ws->sd); free(ws->scratch);
+    free(ws->nodes);
     memset(ws, 0, sizeof *ws);
 }
 
@@ -51,106 +55,85 @@ static int by_pair(const void *a, const void *b)
     return p[1] < q[1] ? -1 : (p[1] > q[1]);
 }
 
-/* The grid over the points' bounding box: G x G cells of side c from
- * (x0, y0). */
-typedef struct {
-    size_t G;
-    double x0, y0, c;
-} far_grid;
-
-static size_t grid_coord(double v, double v0, double c, size_t G)
-{
-    const double t = (v - v0) / c;
-    if (!(t > 0)) return 0;
-    const size_t i = (size_t)t;
-    return i >= G ? G - 1 : i;
-}
-
-static size_t cell_of(const far_grid *g, double x, double y)
-{
-    return grid_coord(y, g->y0, g->c, g->G) * g->G + grid_coord(x, g->x0, g->c, g->G);
-}
-
-static int before(double ax, double ay, double bx, double by) { return ax < bx || (ax == bx && ay < by); }
-
-/* Sorts the points [lo, hi) of ux/uy by (x, y) and drops repeats; returns
- * the new end. Insertion sort: cells hold a few points, or many copies of
- * a few (already in order); qsort for a crowded cell of distinct points. */
+/* Sorts the points [lo, hi) by (x, y), drops repeats; returns the new end. */
 static size_t sort_unique(an_far_ws *ws, size_t lo, size_t hi)
 {
-    double *x = ws->ux, *y = ws->uy;
-    if (hi - lo > 32) {
-        for (size_t t = lo; t < hi; t++) { ws->key[2 * t] = x[t]; ws->key[2 * t + 1] = y[t]; }
-        qsort(ws->key + 2 * lo, hi - lo, 2 * sizeof *ws->key, by_pair);
-        for (size_t t = lo; t < hi; t++) { x[t] = ws->key[2 * t]; y[t] = ws->key[2 * t + 1]; }
-    } else {
-        for (size_t t = lo + 1; t < hi; t++) {
-            const double vx = x[t], vy = y[t];
-            size_t u = t;
-            while (u > lo && before(vx, vy, x[u - 1], y[u - 1])) { x[u] = x[u - 1]; y[u] = y[u - 1]; u--; }
-            x[u] = vx;
-            y[u] = vy;
-        }
-    }
+    double *x = ws->x, *y = ws->y, *key = ws->key;
+    for (size_t t = lo; t < hi; t++) { key[2 * t] = x[t]; key[2 * t + 1] = y[t]; }
+    qsort(key + 2 * lo, hi - lo, 2 * sizeof *key, by_pair);
     size_t k = lo;
     for (size_t t = lo; t < hi; t++)
-        if (k == lo || x[t] != x[k - 1] || y[t] != y[k - 1]) { x[k] = x[t]; y[k] = y[t]; k++; }
+        if (k == lo || key[2 * t] != x[k - 1] || key[2 * t + 1] != y[k - 1]) { x[k] = key[2 * t]; y[k] = key[2 * t + 1]; k++; }
     return k;
 }
 
-/* Buckets Y on the grid over its bounding box and keeps each distinct
- * position once (the distance to a set does not depend on how often a
- * position occurs): ux/uy cell by cell, cell_start the ranges. Returns
- * the count of distinct positions, or -1 (out of memory). */
-static long grid_build(const double *yx, const double *yy, size_t m, an_far_ws *ws, far_grid *g)
+/* The tree over x/y[lo, hi): split at the middle of the wider side of the
+ * bounding box (so a cluster gets depth where it needs it). A leaf keeps
+ * each position once (the distance to a set does not depend on how often
+ * a position occurs); equal positions always fall on the same side. */
+static long kd_build(an_far_ws *ws, size_t lo, size_t hi, int depth)
 {
-    double x0 = yx[0], x1 = x0, y0 = yy[0], y1 = y0;
-    for (size_t t = 1; t < m; t++) {
-        if (yx[t] < x0) x0 = yx[t];
-        if (yx[t] > x1) x1 = yx[t];
-        if (yy[t] < y0) y0 = yy[t];
-        if (yy[t] > y1) y1 = yy[t];
+    double *x = ws->x, *y = ws->y;
+    const long id = (long)ws->nodes_used++;
+    kd_node nd = {x[lo], y[lo], x[lo], y[lo], lo, hi, -1, -1};
+    for (size_t t = lo + 1; t < hi; t++) {
+        if (x[t] < nd.x0) nd.x0 = x[t];
+        if (x[t] > nd.x1) nd.x1 = x[t];
+        if (y[t] < nd.y0) nd.y0 = y[t];
+        if (y[t] > nd.y1) nd.y1 = y[t];
     }
-    const double ext = x1 - x0 > y1 - y0 ? x1 - x0 : y1 - y0;
-    size_t G = (size_t)sqrt((double)m / 2.0);
-    if (G < 1 || !(ext > 0)) G = 1;
-    g->G = G;
-    g->x0 = x0;
-    g->y0 = y0;
-    g->c = ext > 0 ? ext / (double)G : 1;
-    if (reserve_cells(ws, G * G) != 0) return -1;
-    size_t *st = ws->cell_start;
-    memset(st, 0, (G * G + 1) * sizeof *st);
-    for (size_t t = 0; t < m; t++) st[cell_of(g, yx[t], yy[t]) + 1]++;
-    for (size_t c = 0; c < G * G; c++) st[c + 1] += st[c];
-    for (size_t t = 0; t < m; t++) {
-        const size_t q = st[cell_of(g, yx[t], yy[t])]++;
-        ws->ux[q] = yx[t];
-        ws->uy[q] = yy[t];
+    if (nd.x0 == nd.x1 && nd.y0 == nd.y1) { /* one position, perhaps repeated */
+        nd.hi = lo + 1;
+        ws->nodes[id] = nd;
+        return id;
     }
-    /* st[c] is now the end of cell c: sort and squeeze each cell. */
-    size_t k = 0, lo = 0;
-    for (size_t c = 0; c < G * G; c++) {
-        const size_t hi = st[c];
-        const size_t first = k;
-        for (size_t t = lo; t < hi; t++) { ws->ux[k + t - lo] = ws->ux[t]; ws->uy[k + t - lo] = ws->uy[t]; }
-        k = sort_unique(ws, first, first + (hi - lo));
-        st[c] = first;
-        lo = hi;
+    size_t split = lo;
+    if (hi - lo > KD_LEAF && depth < KD_DEPTH) {
+        const int ax = nd.x1 - nd.x0 >= nd.y1 - nd.y0;
+        double *v = ax ? x : y;
+        const double mid = ax ? nd.x0 + 0.5 * (nd.x1 - nd.x0) : nd.y0 + 0.5 * (nd.y1 - nd.y0);
+        size_t a = lo, b = hi;
+        while (a < b) {
+            if (v[a] < mid) { a++; continue; }
+            b--;
+            const double tx = x[a], ty = y[a];
+            x[a] = x[b]; y[a] = y[b];
+            x[b] = tx; y[b] = ty;
+        }
+        split = a;
     }
-    st[G * G] = k;
-    return (long)k;
+    if (split == lo || split == hi) {
+        nd.hi = sort_unique(ws, lo, hi);
+        ws->nodes[id] = nd;
+        return id;
+    }
+    ws->nodes[id] = nd;
+    const long left = kd_build(ws, lo, split, depth + 1);
+    const long right = kd_build(ws, split, hi, depth + 1);
+    ws->nodes[id].left = left;
+    ws->nodes[id].right = right;
+    return id;
 }
 
-/* Region of point i: the polygon in P (nv vertices), clipped by the other
- * points of the grid ring by ring. Returns the new count (0: nothing left
- * or abandoned), with *far2 its largest squared distance from point i. */
+/* Squared distance from (ax, ay) to a node's box, rounded down a little
+ * (the box's sides are its points' own coordinates). */
+static double box_d2(const kd_node *n, double ax, double ay)
+{
+    const double dx = ax < n->x0 ? n->x0 - ax : ax > n->x1 ? ax - n->x1 : 0;
+    const double dy = ay < n->y0 ? n->y0 - ay : ay > n->y1 ? ay - n->y1 : 0;
+    return (dx * dx + dy * dy) * (1 - 1e-12);
+}
+
+/* Point i's region: a convex polygon P of nv vertices, far2 its largest
+ * squared distance from point i. */
 typedef struct {
     double *P, *Q, *sd;
     int nv;
     double far2;
 } region;
 
+/* Clips the region by the bisector of (ax, ay) and (bx, by), keeping the
+ * side of a: 0 when nothing is left. */
 static int clip_by(region *R, double ax, double ay, double bx, double by)
 {
     const double nx = bx - ax, ny = by - ay;
@@ -187,30 +170,36 @@ static int clip_by(region *R, double ax, double ay, double bx, double by)
     R->nv = nn;
     R->far2 = 0;
     for (int v = 0; v < nn; v++) {
-        const double dx = R->P[2 * v] - ax, dy = R->P[2 * v + 1] - ay;
-        const double d2 = dx * dx + dy * dy;
+        const double dx = R->P[2 * v] - ax, dy = R->P[2 * v + 1] - ay, d2 = dx * dx + dy * dy;
         if (d2 > R->far2) R->far2 = d2;
     }
     return nn > 0;
 }
 
-/* Clips point i's region by the points of the cells at Chebyshev ring r
- * around (ci, cj); 0 once it is empty or no farther than best. */
-static int clip_ring(const an_far_ws *ws, const far_grid *g, size_t i, long ci, long cj, long r, region *R,
-                     double best)
+/* Pushes the children of node n, the nearer to (ax, ay) on top. */
+static void push_children(const kd_node *N, const kd_node *n, double ax, double ay, long *stack, int *sp)
 {
-    const long G = (long)g->G;
-    for (long cy = cj - r; cy <= cj + r; cy++) {
-        if (cy < 0 || cy >= G) continue;
-        const int edge = cy == cj - r || cy == cj + r;
-        for (long cx = ci - r; cx <= ci + r; cx += edge || r == 0 ? 1 : 2 * r) {
-            if (cx >= 0 && cx < G) {
-                const size_t c = (size_t)(cy * G + cx);
-                for (size_t j = ws->cell_start[c]; j < ws->cell_start[c + 1]; j++) {
-                    if (j == i) continue;
-                    if (!clip_by(R, ws->ux[i], ws->uy[i], ws->ux[j], ws->uy[j]) || R->far2 <= best) return 0;
-                }
-            }
+    const double dl = box_d2(&N[n->left], ax, ay), dr = box_d2(&N[n->right], ax, ay);
+    stack[(*sp)++] = dl <= dr ? n->right : n->left;
+    stack[(*sp)++] = dl <= dr ? n->left : n->right;
+}
+
+/* Clips point i's region by every other point near enough to cut it,
+ * nearest boxes first; 0 once it is empty or no farther than best. */
+static int clip_region(const an_far_ws *ws, size_t i, region *R, double best)
+{
+    const kd_node *N = ws->nodes;
+    const double ax = ws->x[i], ay = ws->y[i];
+    long stack[2 * KD_DEPTH + 4];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const kd_node *n = &N[stack[--sp]];
+        if (box_d2(n, ax, ay) >= 4 * R->far2) continue;
+        if (n->left >= 0) { push_children(N, n, ax, ay, stack, &sp); continue; }
+        for (size_t j = n->lo; j < n->hi; j++) {
+            if (j == i) continue;
+            if (!clip_by(R, ax, ay, ws->x[j], ws->y[j]) || R->far2 <= best) return 0;
         }
     }
     return 1;
@@ -220,60 +209,130 @@ typedef struct {
     cfpo_square S;
     double best, bx, by;
     int found;
+    double oct[16]; /* a convex polygon inside the points' hull, CCW */
+    int noct;
+    double edge[24]; /* its edges' inward unit normals and offsets */
+    double w2;      /* the squared diameter of the points' box */
 } far_state;
 
-/* Point i's region: S clipped by the other points, nearest rings first,
- * stopped when the next ring is too far to cut; its farthest vertex from
- * point i may raise the best. */
-static void visit(const an_far_ws *ws, const far_grid *g, size_t i, far_state *F)
+/* The octagon's edges as inward unit normals (nx, ny) and offsets c: the
+ * distance of a point inside from an edge's line is nx x + ny y - c. */
+static void octagon_edges(far_state *F)
+{
+    for (int e = 0; e < F->noct; e++) {
+        const int f = e + 1 == F->noct ? 0 : e + 1;
+        const double ex = F->oct[2 * f] - F->oct[2 * e], ey = F->oct[2 * f + 1] - F->oct[2 * e + 1];
+        const double len = sqrt(ex * ex + ey * ey);
+        F->edge[3 * e] = -ey / len;
+        F->edge[3 * e + 1] = ex / len;
+        F->edge[3 * e + 2] = F->edge[3 * e] * F->oct[2 * e] + F->edge[3 * e + 1] * F->oct[2 * e + 1];
+    }
+}
+
+/* The points extreme in the eight directions of 45-degree steps, in
+ * counter-clockwise order (repeats dropped): a convex polygon inside the
+ * convex hull of the points. */
+static void octagon(const double *yx, const double *yy, size_t m, far_state *F)
+{
+    static const double dir[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+    double x0 = yx[0], x1 = x0, y0 = yy[0], y1 = y0;
+    size_t arg[8] = {0};
+    double top[8];
+    for (int d = 0; d < 8; d++) top[d] = dir[d][0] * yx[0] + dir[d][1] * yy[0];
+    for (size_t t = 1; t < m; t++) {
+        if (yx[t] < x0) x0 = yx[t];
+        if (yx[t] > x1) x1 = yx[t];
+        if (yy[t] < y0) y0 = yy[t];
+        if (yy[t] > y1) y1 = yy[t];
+        for (int d = 0; d < 8; d++) {
+            const double v = dir[d][0] * yx[t] + dir[d][1] * yy[t];
+            if (v > top[d]) { top[d] = v; arg[d] = t; }
+        }
+    }
+    F->w2 = (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0);
+    F->noct = 0;
+    for (int d = 0; d < 8; d++) {
+        const double px = yx[arg[d]], py = yy[arg[d]];
+        if (F->noct > 0 && px == F->oct[2 * F->noct - 2] && py == F->oct[2 * F->noct - 1]) continue;
+        if (F->noct > 0 && px == F->oct[0] && py == F->oct[1]) continue;
+        F->oct[2 * F->noct] = px;
+        F->oct[2 * F->noct + 1] = py;
+        F->noct++;
+    }
+    octagon_edges(F);
+}
+
+/* How deep (ax, ay) lies inside the octagon: its least distance to an
+ * edge's line, negative outside; -1 for a polygon of fewer than 3. */
+static double depth(const far_state *F, double ax, double ay)
+{
+    if (F->noct < 3) return -1;
+    double dmin = INFINITY;
+    for (int e = 0; e < F->noct; e++) {
+        const double d = F->edge[3 * e] * ax + F->edge[3 * e + 1] * ay - F->edge[3 * e + 2];
+        if (d < dmin) dmin = d;
+    }
+    return dmin;
+}
+
+/* 1 when point (ax, ay)'s region cannot reach sqrt(best). If a point p
+ * of the region lies at t > rho = sqrt(best) from it, the open disk of
+ * radius t around p holds no point, so with u = (p - a) / t every point j
+ * has (j - a).u <= |j - a|^2 / (2 t) < W^2 / (2 rho) = sigma (W the
+ * points' diameter): the whole hull lies below that line, and a is less
+ * than sigma deep inside it. A point deeper than sigma inside the octagon
+ * (inside the hull) is deeper in the hull: its region stays within rho. */
+static int deep_inside(const far_state *F, double ax, double ay)
+{
+    if (!(F->best > 0)) return 0;
+    const double sigma = F->w2 / (2 * sqrt(F->best));
+    return depth(F, ax, ay) > sigma * (1 + 1e-9) + 1e-12 * sqrt(F->w2);
+}
+
+/* Point i's region clipped to S; its farthest vertex may raise the best. */
+static void visit(const an_far_ws *ws, size_t i, far_state *F)
 {
     const cfpo_square S = F->S;
     const double corner[4][2] = {{S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1}};
-    const double ax = ws->ux[i], ay = ws->uy[i];
+    const double ax = ws->x[i], ay = ws->y[i];
     double ub = 0;
     for (int c = 0; c < 4; c++) {
         const double dx = corner[c][0] - ax, dy = corner[c][1] - ay, d2 = dx * dx + dy * dy;
         if (d2 > ub) ub = d2;
     }
     if (ub <= F->best) return;
+    if (deep_inside(F, ax, ay)) return;
     region R = {ws->pa, ws->pb, ws->sd, 4, ub};
     for (int c = 0; c < 4; c++) { R.P[2 * c] = corner[c][0]; R.P[2 * c + 1] = corner[c][1]; }
-    const long ci = (long)grid_coord(ax, g->x0, g->c, g->G), cj = (long)grid_coord(ay, g->y0, g->c, g->G);
-    for (long r = 0; r <= (long)g->G; r++) {
-        /* Every point of ring r >= 2 is at least (r - 1) c away (a cell of
-         * slack for rounding): if that is twice the reach, none cuts. */
-        if (r >= 2) {
-            const double dr = (double)(r - 2) * g->c;
-            if (dr * dr >= 4 * R.far2) break;
-        }
-        if (!clip_ring(ws, g, i, ci, cj, r, &R, F->best)) return;
-    }
+    if (!clip_region(ws, i, &R, F->best)) return;
     for (int v = 0; v < R.nv; v++) {
         const double dx = R.P[2 * v] - ax, dy = R.P[2 * v + 1] - ay, d2 = dx * dx + dy * dy;
         if (d2 > F->best) { F->best = d2; F->bx = R.P[2 * v]; F->by = R.P[2 * v + 1]; F->found = 1; }
     }
 }
 
-static double farthest_grid(const double *yx, const double *yy, size_t m, cfpo_square S, double hx, double hy,
-                            double *cx, double *cy, an_far_ws *ws)
+static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_square S, double *cx, double *cy,
+                            an_far_ws *ws)
 {
-    far_grid g;
-    if (grid_build(yx, yy, m, ws, &g) < 0) return -1;
-    far_state F = {S, -1, 0.5 * (S.x0 + S.x1), 0.5 * (S.y0 + S.y1), 0};
-    /* Points by rings of cells around the hint's cell: near the hint first,
-     * so a good value is found early and prunes the rest. */
-    const long G = (long)g.G;
-    const long hi = (long)grid_coord(hx, g.x0, g.c, g.G), hj = (long)grid_coord(hy, g.y0, g.c, g.G);
-    for (long r = 0; r <= G; r++)
-        for (long cyy = hj - r; cyy <= hj + r; cyy++) {
-            if (cyy < 0 || cyy >= G) continue;
-            const int edge = cyy == hj - r || cyy == hj + r;
-            for (long cxx = hi - r; cxx <= hi + r; cxx += edge || r == 0 ? 1 : 2 * r) {
-                if (cxx < 0 || cxx >= G) continue;
-                const size_t c = (size_t)(cyy * G + cxx);
-                for (size_t i = ws->cell_start[c]; i < ws->cell_start[c + 1]; i++) visit(ws, &g, i, &F);
-            }
-        }
+    memcpy(ws->x, yx, m * sizeof *yx);
+    memcpy(ws->y, yy, m * sizeof *yy);
+    ws->nodes_used = 0;
+    kd_build(ws, 0, m, 0);
+    far_state F = {S, -1, 0.5 * (S.x0 + S.x1), 0.5 * (S.y0 + S.y1), 0, {0}, 0, {0}, 0};
+    octagon(yx, yy, m, &F);
+    /* The corners of S are in S: the farthest of them from the points is a
+     * value the answer reaches, known before any region is clipped (it
+     * lets most points of a cluster be passed over at once). */
+    const double corner[4][2] = {{S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1}};
+    for (int c = 0; c < 4; c++) {
+        const double d2 = cfpo_min_dist2(corner[c][0], corner[c][1], yx, yy, (int)m, -1);
+        if (d2 > F.best) { F.best = d2; F.bx = corner[c][0]; F.by = corner[c][1]; F.found = 1; }
+    }
+    for (size_t t = 0; t < ws->nodes_used; t++) {
+        const kd_node *n = &ws->nodes[t];
+        if (n->left < 0)
+            for (size_t i = n->lo; i < n->hi; i++) visit(ws, i, &F);
+    }
     if (!F.found) return -1;
     *cx = F.bx < S.x0 ? S.x0 : F.bx > S.x1 ? S.x1 : F.bx;
     *cy = F.by < S.y0 ? S.y0 : F.by > S.y1 ? S.y1 : F.by;
@@ -290,5 +349,5 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
     }
     if (m > (size_t)INT32_MAX / 4 || reserve(ws, m) != 0) return -1;
     if (m <= AN_FAR_SMALL) return cfpo_local_solve(yx, yy, (int)m, -1, S, hx, hy, -1, cx, cy, ws->scratch);
-    return farthest_grid(yx, yy, m, S, hx, hy, cx, cy, ws);
+    return farthest_tree(yx, yy, m, S, cx, cy, ws);
 }

@@ -7,16 +7,19 @@
  * exact method (the largest vertex distance over each point's Voronoi
  * region clipped to the square) runs in another order, so that degenerate
  * sets (clusters, lines, repeated points) cost about n log n instead of
- * n^3:
- *  - repeated positions are merged (the distance to a set does not depend
- *    on how often a position occurs);
- *  - each point's region is clipped by the other points ring by ring on a
- *    grid over their bounding box, nearest rings first, and the rings stop
- *    as soon as every point left is at least twice the region's reach away
- *    (such a bisector cannot cut it);
- *  - the pruning of the core solver is kept (a region no farther than the
- *    best value found is abandoned; points are visited near the hint first,
- *    by rings of cells around it).
+ * n^2 or n^3:
+ *  - the points go into a 2-d tree split at the middle of the wider side
+ *    of each box (deep where the points are dense), and repeated positions
+ *    are merged (the distance to a set does not depend on how often a
+ *    position occurs);
+ *  - each point's region is clipped by the other points box by box,
+ *    nearest first, skipping every box at least twice the region's reach
+ *    away (no bisector of its points can cut the region);
+ *  - the best value starts at the farthest corner of the square, and a
+ *    point with a neighbour in each of the eight 45-degree sectors around
+ *    it closer than sqrt(2) times that value is passed over: its region
+ *    cannot reach farther (farthest.c says why); a region no farther than
+ *    the best value found is abandoned, as in the core solver.
  * Both give the exact maximum up to the rounding of the clipping; the
  * value returned is recomputed from the distances themselves. */
 #ifndef AN_FARTHEST_H
@@ -29,10 +32,11 @@
 #define AN_FAR_SMALL 128
 
 /* Grows on demand; zero-initialise, an_far_free at the end. */
+struct an_kd_node;
 typedef struct {
-    double *ux, *uy, *key, *pa, *pb, *sd, *scratch;
-    size_t *cell_start;
-    size_t cap, cells_cap;
+    double *x, *y, *key, *pa, *pb, *sd, *scratch;
+    struct an_kd_node *nodes;
+    size_t cap, nodes_used;
 } an_far_ws;
 
 /* The point (*cx, *cy) of S farthest from the m points (yx, yy): returns
