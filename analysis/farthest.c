@@ -55,10 +55,20 @@ static int by_pair(const void *a, const void *b)
     return p[1] < q[1] ? -1 : (p[1] > q[1]);
 }
 
-/* Sorts the points [lo, hi) by (x, y), drops repeats; returns the new end. */
+/* Drops repeated positions from [lo, hi), keeping the first of each;
+ * returns the new end. Sorts first unless the range is small. */
 static size_t sort_unique(an_far_ws *ws, size_t lo, size_t hi)
 {
     double *x = ws->x, *y = ws->y, *key = ws->key;
+    if (hi - lo <= 2 * KD_LEAF) {
+        size_t k = lo;
+        for (size_t t = lo; t < hi; t++) {
+            size_t u = lo;
+            while (u < k && (x[u] != x[t] || y[u] != y[t])) u++;
+            if (u == k) { x[k] = x[t]; y[k] = y[t]; k++; }
+        }
+        return k;
+    }
     for (size_t t = lo; t < hi; t++) { key[2 * t] = x[t]; key[2 * t + 1] = y[t]; }
     qsort(key + 2 * lo, hi - lo, 2 * sizeof *key, by_pair);
     size_t k = lo;
@@ -328,10 +338,23 @@ static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_s
         const double d2 = cfpo_min_dist2(corner[c][0], corner[c][1], yx, yy, (int)m, -1);
         if (d2 > F.best) { F.best = d2; F.bx = corner[c][0]; F.by = corner[c][1]; F.found = 1; }
     }
-    for (size_t t = 0; t < ws->nodes_used; t++) {
-        const kd_node *n = &ws->nodes[t];
-        if (n->left < 0)
+    /* The leaves in tree order; a box whose four corners are deep inside
+     * the hull holds only such points (depth is a minimum of linear
+     * functions, least at a corner of a box): it is passed over whole. */
+    long stack[2 * KD_DEPTH + 4];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const kd_node *n = &ws->nodes[stack[--sp]];
+        if (deep_inside(&F, n->x0, n->y0) && deep_inside(&F, n->x1, n->y0) && deep_inside(&F, n->x0, n->y1) &&
+            deep_inside(&F, n->x1, n->y1))
+            continue;
+        if (n->left < 0) {
             for (size_t i = n->lo; i < n->hi; i++) visit(ws, i, &F);
+            continue;
+        }
+        stack[sp++] = n->right;
+        stack[sp++] = n->left;
     }
     if (!F.found) return -1;
     *cx = F.bx < S.x0 ? S.x0 : F.bx > S.x1 ? S.x1 : F.bx;
