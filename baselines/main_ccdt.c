@@ -26,7 +26,8 @@ static const double *points(void *E) { return ccdt_points(E); }
 static void destroy(void *E) { ccdt_free(E); }
 static void trace_values(void *E, char *buf, size_t len)
 {
-    snprintf(buf, len, "\t%lld\t%.6g", (long long)ccdt_rejected(E), ccdt_area_cv(E));
+    snprintf(buf, len, "\t%d\t%.6g\t%lld\t%.6g", ccdt_sweeps(E), ccdt_step(E), (long long)ccdt_new_edges(E),
+             ccdt_area_cv(E));
 }
 
 int main(int argc, char **argv)
@@ -35,12 +36,13 @@ int main(int argc, char **argv)
         .prog = "cfpo-ccdt",
         .method = "ccdt",
         .about = "Capacity-constrained Delaunay triangulation (Xu, Liu, Gotsman, Gortler 2011) on the\n"
-                 "unit torus, on CGAL's periodic Delaunay triangulation: every point in turn moves\n"
-                 "to the least-squares position that equalises the areas of its Delaunay\n"
-                 "triangles, kept when the area variance drops. Prints one SUMMARY line on stdout.",
+                 "unit torus, on CGAL's periodic Delaunay triangulation. Each iteration alternates\n"
+                 "a geometry phase (connectivity fixed: Gauss-Seidel sweeps move every point to the\n"
+                 "least-squares position that equalises its triangles' areas) with a Delaunay\n"
+                 "phase (re-triangulation). Prints one SUMMARY line on stdout.",
         .options_help = "",
         .extra_opt = NULL,
-        .trace_extra = "\trejected\tarea_cv",
+        .trace_extra = "\tsweeps\tstep\tnew_edges\tarea_cv",
         .bytes = bytes,
         .create = create,
         .iterate = iterate,
