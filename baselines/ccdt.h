@@ -27,11 +27,19 @@
  *  2. Delaunay phase: the points are re-triangulated (CGAL builds the
  *     Delaunay triangulation of the new positions; the result is the one a
  *     sequence of Lawson flips reaches) and the new connectivity copied.
+ * Damping: taken literally the alternation cycles (the geometry phase
+ * pushes edges past the flip boundary, the flips push the points back) and
+ * never meets tol. So an iteration applies the fraction `step` of the
+ * geometry phase's moves (start + step (result - start)) before the
+ * Delaunay phase; the next step is half of it when the energy of the new
+ * Delaunay triangulation is higher than that of the previous one, else
+ * 1.25 times it, at most 1 (the first step is 1).
  * Converged when no point's net move over an iteration reaches tol * L.
- * What the paper leaves open and we chose: the number of sweeps per
- * Delaunay phase (up to 8), the step limit against inversion (0.9 of the
- * step to the first degenerate triangle), re-triangulation instead of
- * flips (same triangulation), and the start (uniform random points).
+ * What the paper's text (not at hand: only its abstract and description)
+ * leaves open and we chose: the number of sweeps per Delaunay phase (up to
+ * 8), the step limit against inversion (0.9 of the step to the first
+ * degenerate triangle), the damping, re-triangulation instead of flips
+ * (same triangulation), and the start (uniform random points).
  *
  * Monotonicity (what holds exactly, up to rounding): each vertex update
  * does not increase the energy of the fixed connectivity (the local sum is
