@@ -1,22 +1,21 @@
 /* ccdt.cpp - see ccdt.h. CCDT on CGAL's Periodic_2_Delaunay_triangulation_2
  * (the typedef block of cgal_types.h; the face info is not used here).
  *
- * The step for point x (vertex v), with a = 1/(2n) the mean area:
- *   1. For each incident triangle (v, p, q) (counter-clockwise), its area
- *      as a function of v's displacement u is A0 + g.u with
- *      g = ((p - q).y, -(p - q).x) / 2. Minimise sum (A0 + g.u - a)^2:
- *      (sum g g^T) u = -sum g (A0 - a). No move if the system is singular
- *      or |u| <= tol * L.
- *   2. S = v, its neighbours and theirs (the 2-ring). before = sum of the
- *      squared areas of the triangles incident to S. Remove v, insert
- *      x + u. If a new neighbour falls outside S, put the point back, add
- *      the new neighbours to S and start 2 again.
- *   3. after = the same sum; keep the move when after < before (the energy
- *      of the triangulation dropped by before - after), else put the point
- *      back. A Delaunay triangulation is unique (CGAL breaks ties
- *      symbolically), so putting back restores the triangulation.
- * Outside CGAL's 1-sheeted cover (a handful of points only) the sums run
- * over every triangle. */
+ * The connectivity of the geometry phase is a copy of the last Delaunay
+ * triangulation in flat arrays: per triangle its three vertex ids
+ * counter-clockwise and each corner's lattice offset (a corner's position
+ * is xy[id] + offset; xy is not wrapped during the phase), stored in a
+ * canonical order (smallest id first, triangles sorted) so that nothing
+ * depends on the order in which CGAL stores its faces; and per vertex the
+ * list of its corners (CSR).
+ *
+ * The update of vertex v, with a = 1/(2n) the mean area: each incident
+ * triangle (v, p, q) has the area A0 + g.u after v moves by u, with
+ * g = ((p - q).y, (q - p).x) / 2. Minimise sum (A0 + g.u - a)^2:
+ * (sum g g^T) u = -sum g (A0 - a). Along the segment s u, s in [0, 1], the
+ * sum is a convex quadratic that is smallest at s = 1, so every s <= 1
+ * lowers it; s = min(1, 0.9 s0) where s0 is where the first incident area
+ * would reach 0 (the binding triangle keeps a tenth of its area). */
 #include "cgal_types.h"
 
 #include <algorithm>
@@ -40,7 +39,17 @@ using namespace bl;
 
 namespace {
 const uint64_t START_STREAM = 0x4343445453545254ULL; /* "CCDTSTRT" */
-}
+const int MAX_SWEEPS = 8;                             /* geometry sweeps per iteration */
+const double KEEP = 0.9;                              /* fraction of the step to the first zero area */
+const double SHRINK = 0.5, GROW = 1.25;               /* the step after the energy rose / fell */
+
+struct Conn {
+    std::vector<uint32_t> tri;     /* 3 ids per triangle, counter-clockwise */
+    std::vector<int8_t> off;       /* 6 per triangle: x and y offset of each corner */
+    std::vector<uint32_t> first;   /* n + 1: CSR of corners by vertex */
+    std::vector<uint32_t> corner;  /* 3 * triangles: t * 3 + k */
+};
+} // namespace
 
 struct ccdt_engine {
     int64_t n = 0;
@@ -48,184 +57,166 @@ struct ccdt_engine {
     PDT T;
     std::vector<Vertex_handle> vh; /* by id */
     std::vector<double> xy, start;
-    std::vector<uint32_t> vmark;   /* by id: == stamp when in S */
-    uint32_t stamp = 0;
-    std::vector<uint32_t> S;
-    std::vector<Face_handle> faces;
-    double energy = 0;
-    int64_t rejected = 0;
+    std::vector<int8_t> shift;     /* by id: x, y lattice shift of the last wrap */
+    Conn C, old;
+    double lambda = 1, step = 0;
+    bool in_sync = false;          /* C is T's triangulation of xy (wrapped) */
+    int sweeps = 0;
+    int64_t new_edges = 0;
 };
 
-static double area(const PDT &T, Face_handle f)
+static inline double tri_area(const ccdt_engine *E, size_t t)
 {
-    const Point p0 = T.point(f, 0), p1 = T.point(f, 1), p2 = T.point(f, 2);
-    return 0.5 * ((p1.x() - p0.x()) * (p2.y() - p0.y()) - (p1.y() - p0.y()) * (p2.x() - p0.x()));
+    const uint32_t *id = &E->C.tri[3 * t];
+    const int8_t *o = &E->C.off[6 * t];
+    const double *X = E->xy.data();
+    const double x0 = X[2 * id[0]] + o[0], y0 = X[2 * id[0] + 1] + o[1];
+    const double x1 = X[2 * id[1]] + o[2], y1 = X[2 * id[1] + 1] + o[3];
+    const double x2 = X[2 * id[2]] + o[4], y2 = X[2 * id[2] + 1] + o[5];
+    return 0.5 * ((x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0));
 }
 
-static double energy_all(const PDT &T)
+/* Copies T's triangulation into E->C (canonical order, CSR). */
+static void extract(ccdt_engine *E)
 {
-    double e = 0;
-    for (auto it = T.periodic_triangles_begin(PDT::UNIQUE); it != T.periodic_triangles_end(PDT::UNIQUE); ++it) {
-        const auto t = T.triangle(*it);
-        const double a = CGAL::to_double(t.area());
-        e += a * a;
-    }
-    return e;
-}
-
-static void add_to_S(ccdt_engine *E, uint32_t id)
-{
-    if (E->vmark[id] == E->stamp) return;
-    E->vmark[id] = E->stamp;
-    E->S.push_back(id);
-}
-
-/* Sum of the squared areas of the faces incident to S (each once). */
-static double energy_S(ccdt_engine *E)
-{
-    if (!E->T.is_1_cover()) return energy_all(E->T);
-    E->faces.clear();
-    for (uint32_t id : E->S) {
-        auto fc = E->T.incident_faces(E->vh[id]), done = fc;
-        do {
-            E->faces.push_back(fc);
-        } while (++fc != done);
-    }
-    std::sort(E->faces.begin(), E->faces.end());
-    E->faces.erase(std::unique(E->faces.begin(), E->faces.end()), E->faces.end());
-    double e = 0;
-    for (Face_handle f : E->faces) {
-        const double a = area(E->T, f);
-        e += a * a;
-    }
-    return e;
-}
-
-/* Moves point id to (x, y) in the triangulation (remove, insert). */
-static void place(ccdt_engine *E, uint32_t id, double x, double y)
-{
-    Vertex_handle v = E->vh[id];
-    Face_handle hint;
-    {
-        auto vc = E->T.adjacent_vertices(v);
-        Vertex_handle u = vc;
-        hint = u->face();
-    }
-    E->T.remove(v);
-    if (!E->T.tds().faces().is_used(hint)) hint = Face_handle();
-    Vertex_handle w = E->T.insert(Point(x, y), hint);
-    w->info() = id;
-    E->vh[id] = w;
-}
-
-/* New neighbours of id outside S: added to S; returns how many. */
-static int grow_S(ccdt_engine *E, uint32_t id)
-{
-    int added = 0;
-    auto vc = E->T.adjacent_vertices(E->vh[id]), done = vc;
-    do {
-        Vertex_handle u = vc;
-        if (E->vmark[u->info()] != E->stamp) {
-            add_to_S(E, u->info());
-            added++;
+    struct Tri {
+        uint32_t id[3];
+        int8_t off[6];
+    };
+    std::vector<Tri> ts;
+    ts.reserve(2 * (size_t)E->n);
+    for (auto it = E->T.periodic_triangles_begin(PDT::UNIQUE); it != E->T.periodic_triangles_end(PDT::UNIQUE); ++it) {
+        Face_handle f = it.get_face();
+        Tri t;
+        for (int k = 0; k < 3; k++) {
+            const uint32_t id = E->T.get_original_vertex(f->vertex(k))->info();
+            const Point p = E->T.point(f, k);
+            t.id[k] = id;
+            t.off[2 * k] = (int8_t)std::lround(p.x() - E->xy[2 * id]);
+            t.off[2 * k + 1] = (int8_t)std::lround(p.y() - E->xy[2 * id + 1]);
         }
-    } while (++vc != done);
-    return added;
-}
-
-/* The least-squares displacement of id; 0 when singular. */
-static int optimum(const ccdt_engine *E, uint32_t id, double *ux, double *uy)
-{
-    Vertex_handle v = E->vh[id];
-    double m00 = 0, m01 = 0, m11 = 0, b0 = 0, b1 = 0;
-    auto fc = E->T.incident_faces(v), done = fc;
-    do {
-        Face_handle f = fc;
-        const int i = f->index(v);
-        const Point pv = E->T.point(f, i), p = E->T.point(f, PDT::ccw(i)), q = E->T.point(f, PDT::cw(i));
-        const double a0 = 0.5 * ((p.x() - pv.x()) * (q.y() - pv.y()) - (p.y() - pv.y()) * (q.x() - pv.x()));
-        const double gx = 0.5 * (p.y() - q.y()), gy = -0.5 * (p.x() - q.x());
-        m00 += gx * gx;
-        m01 += gx * gy;
-        m11 += gy * gy;
-        b0 -= gx * (a0 - E->mean);
-        b1 -= gy * (a0 - E->mean);
-    } while (++fc != done);
-    const double det = m00 * m11 - m01 * m01;
-    if (!(det > 1e-12 * (m00 * m11 + 1e-300))) return 0;
-    *ux = (m11 * b0 - m01 * b1) / det;
-    *uy = (m00 * b1 - m01 * b0) / det;
-    return 1;
-}
-
-/* Tries moving id by (ux, uy); keeps the move when the energy drops.
- * Returns 1 when kept, 0 when undone, -1 when nothing was tried. */
-static int try_move(ccdt_engine *E, uint32_t id, double ux, double uy)
-{
-    const double x = E->xy[2 * id], y = E->xy[2 * id + 1];
-    const double nx = cfpo_wrap01(x + ux), ny = cfpo_wrap01(y + uy);
-    if (nx == x && ny == y) return -1;
-    E->stamp++;
-    E->S.clear();
-    add_to_S(E, id);
-    {
-        std::vector<uint32_t> ring;
-        auto vc = E->T.adjacent_vertices(E->vh[id]), done = vc;
-        do {
-            Vertex_handle u = vc;
-            ring.push_back(u->info());
-        } while (++vc != done);
-        for (uint32_t r : ring) {
-            add_to_S(E, r);
-            auto wc = E->T.adjacent_vertices(E->vh[r]), wdone = wc;
-            do {
-                Vertex_handle u = wc;
-                add_to_S(E, u->info());
-            } while (++wc != wdone);
+        int m = 0; /* rotate: smallest id first, its offset (0, 0) */
+        for (int k = 1; k < 3; k++)
+            if (t.id[k] < t.id[m]) m = k;
+        Tri r;
+        for (int k = 0; k < 3; k++) {
+            const int j = (m + k) % 3;
+            r.id[k] = t.id[j];
+            r.off[2 * k] = (int8_t)(t.off[2 * j] - t.off[2 * m]);
+            r.off[2 * k + 1] = (int8_t)(t.off[2 * j + 1] - t.off[2 * m + 1]);
         }
+        ts.push_back(r);
     }
-    const int64_t nv = (int64_t)E->T.number_of_vertices();
-    double before, after;
-    for (;;) {
-        before = energy_S(E);
-        place(E, id, nx, ny);
-        if ((int64_t)E->T.number_of_vertices() != nv) { /* landed on a point: undo */
-            E->vh[id] = E->T.insert(Point(x, y));
-            E->vh[id]->info() = id;
-            return -1;
-        }
-        if (!E->T.is_1_cover() || grow_S(E, id) == 0) break;
-        place(E, id, x, y);
+    std::sort(ts.begin(), ts.end(), [](const Tri &a, const Tri &b) {
+        for (int k = 0; k < 3; k++)
+            if (a.id[k] != b.id[k]) return a.id[k] < b.id[k];
+        return std::lexicographical_compare(a.off, a.off + 6, b.off, b.off + 6);
+    });
+    Conn &C = E->C;
+    const size_t nt = ts.size(), n = (size_t)E->n;
+    C.tri.resize(3 * nt);
+    C.off.resize(6 * nt);
+    for (size_t t = 0; t < nt; t++) {
+        std::memcpy(&C.tri[3 * t], ts[t].id, sizeof ts[t].id);
+        std::memcpy(&C.off[6 * t], ts[t].off, sizeof ts[t].off);
     }
-    after = energy_S(E);
-    if (after < before) {
-        E->energy += after - before;
-        E->xy[2 * id] = nx;
-        E->xy[2 * id + 1] = ny;
-        return 1;
-    }
-    place(E, id, x, y);
-    return 0;
+    C.first.assign(n + 1, 0);
+    for (uint32_t id : C.tri) C.first[id + 1]++;
+    for (size_t i = 0; i < n; i++) C.first[i + 1] += C.first[i];
+    C.corner.resize(3 * nt);
+    std::vector<uint32_t> fill(C.first.begin(), C.first.end() - 1);
+    for (size_t c = 0; c < 3 * nt; c++) C.corner[fill[C.tri[c]]++] = (uint32_t)c;
 }
 
-/* The step for one point; returns 1 when it moved. */
-static int step(ccdt_engine *E, uint32_t id, double tolL)
+/* Half-edges of C (a -> b, offset of b relative to a) that O lacks, / 2;
+ * O's offsets move by the shifts sh of the wrap. */
+static int64_t count_new_edges(const Conn &C, const Conn &O, const std::vector<int8_t> &sh)
 {
-    double ux, uy;
-    if (!optimum(E, id, &ux, &uy) || ux * ux + uy * uy <= tolL * tolL) return 0;
-    int r = try_move(E, id, ux, uy);
-    if (r == 0) E->rejected++;
-    return r == 1;
+    int64_t h = 0;
+    const size_t nc = C.tri.size();
+    for (size_t c = 0; c < nc; c++) {
+        const size_t t = c / 3, k = c % 3, j = 3 * t + (k + 1) % 3;
+        const uint32_t a = C.tri[c], b = C.tri[j];
+        const int dx = C.off[2 * j] - C.off[2 * c] + sh[2 * a] - sh[2 * b];
+        const int dy = C.off[2 * j + 1] - C.off[2 * c + 1] + sh[2 * a + 1] - sh[2 * b + 1];
+        bool found = false;
+        for (uint32_t e = O.first[a]; e < O.first[a + 1] && !found; e++) {
+            const size_t oc = O.corner[e], ot = oc / 3, oj = 3 * ot + (oc % 3 + 1) % 3;
+            found = O.tri[oj] == b && O.off[2 * oj] - O.off[2 * oc] == dx && O.off[2 * oj + 1] - O.off[2 * oc + 1] == dy;
+        }
+        h += !found;
+    }
+    return h / 2;
 }
 
-static int build(ccdt_engine *E, char *err, size_t errlen)
+/* The Delaunay phase: wrap the points, re-triangulate, copy the new
+ * connectivity; counts the edges not in the previous connectivity (moved to
+ * E->old when keep is 0; kept there when 1, for a retry). */
+static int delaunay(ccdt_engine *E, int keep, char *err, size_t errlen)
 {
     const int64_t n = E->n;
+    if (!keep) std::swap(E->C, E->old);
+    E->shift.resize(2 * (size_t)n);
+    for (size_t i = 0; i < 2 * (size_t)n; i++) {
+        const double w = cfpo_wrap01(E->xy[i]);
+        E->shift[i] = (int8_t)std::lround(E->xy[i] - w);
+        E->xy[i] = w;
+    }
+    E->T.clear();
     if (build_indexed(E->T, E->xy, n, E->vh, err, errlen) != 0) return -1;
-    E->vmark.assign((size_t)n, 0);
-    E->mean = 0.5 / (double)n;
-    E->energy = energy_all(E->T);
+    extract(E);
+    E->new_edges = E->old.tri.empty() ? 0 : count_new_edges(E->C, E->old, E->shift);
+    E->in_sync = true;
     return 0;
+}
+
+/* One Gauss-Seidel sweep over the vertices in id order; returns the
+ * largest move. */
+static double sweep(ccdt_engine *E)
+{
+    const Conn &C = E->C;
+    double *X = E->xy.data();
+    double maxd2 = 0;
+    double A0[64], G[64][2];
+    for (int64_t v = 0; v < E->n; v++) {
+        double m00 = 0, m01 = 0, m11 = 0, b0 = 0, b1 = 0;
+        int deg = 0;
+        for (uint32_t e = C.first[v]; e < C.first[v + 1]; e++) {
+            const size_t c = C.corner[e], t = c / 3, k = c % 3;
+            const size_t cp = 3 * t + (k + 1) % 3, cq = 3 * t + (k + 2) % 3;
+            const double ox = C.off[2 * c], oy = C.off[2 * c + 1];
+            const double vx = X[2 * v], vy = X[2 * v + 1];
+            const double px = X[2 * C.tri[cp]] + C.off[2 * cp] - ox, py = X[2 * C.tri[cp] + 1] + C.off[2 * cp + 1] - oy;
+            const double qx = X[2 * C.tri[cq]] + C.off[2 * cq] - ox, qy = X[2 * C.tri[cq] + 1] + C.off[2 * cq + 1] - oy;
+            const double a0 = 0.5 * ((px - vx) * (qy - vy) - (py - vy) * (qx - vx));
+            const double gx = 0.5 * (py - qy), gy = 0.5 * (qx - px);
+            m00 += gx * gx;
+            m01 += gx * gy;
+            m11 += gy * gy;
+            b0 -= gx * (a0 - E->mean);
+            b1 -= gy * (a0 - E->mean);
+            if (deg < 64) {
+                A0[deg] = a0;
+                G[deg][0] = gx;
+                G[deg][1] = gy;
+            }
+            deg++;
+        }
+        const double det = m00 * m11 - m01 * m01;
+        if (deg > 64 || !(det > 1e-12 * (m00 * m11 + 1e-300))) continue;
+        const double ux = (m11 * b0 - m01 * b1) / det, uy = (m00 * b1 - m01 * b0) / det;
+        double s = 1;
+        for (int i = 0; i < deg; i++) { /* area A0 + s d: first zero at s = A0 / -d */
+            const double d = G[i][0] * ux + G[i][1] * uy;
+            if (d < 0) s = std::min(s, KEEP * A0[i] / -d);
+        }
+        if (!(s > 0)) continue;
+        X[2 * v] += s * ux;
+        X[2 * v + 1] += s * uy;
+        maxd2 = std::max(maxd2, s * s * (ux * ux + uy * uy));
+    }
+    E->in_sync = false;
+    return std::sqrt(maxd2);
 }
 
 static ccdt_engine *make(int64_t n, const double *xy, uint64_t seed, double L, double tol, char *err,
@@ -240,10 +231,11 @@ static ccdt_engine *make(int64_t n, const double *xy, uint64_t seed, double L, d
         E->n = n;
         E->L = L;
         E->tol = tol;
+        E->mean = 0.5 / (double)n;
         E->xy.resize(2 * (size_t)n);
         for (int64_t i = 0; i < 2 * n; i++)
             E->xy[(size_t)i] = xy ? xy[i] : cfpo_rand01(seed, START_STREAM, (uint64_t)i);
-        if (build(E, err, errlen) != 0) {
+        if (delaunay(E, 0, err, errlen) != 0) {
             delete E;
             return nullptr;
         }
@@ -259,8 +251,9 @@ extern "C" {
 
 ccdt_engine *ccdt_create(int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
 {
-    if (n >= (int64_t)UINT32_MAX) {
-        snprintf(err, errlen, "n = %lld is too large (ids are 32-bit)", (long long)n);
+    if (n > CCDT_MAX_N) {
+        snprintf(err, errlen, "n = %lld is too large (at most %lld: 32-bit corner ids)", (long long)n,
+                 (long long)CCDT_MAX_N);
         return nullptr;
     }
     cfpo_grid G;
@@ -270,25 +263,56 @@ ccdt_engine *ccdt_create(int64_t n, uint64_t seed, double tol, char *err, size_t
 
 ccdt_engine *ccdt_create_from(int64_t n, const double *xy, double L, double tol, char *err, size_t errlen)
 {
+    if (n > CCDT_MAX_N) {
+        snprintf(err, errlen, "n = %lld is too large", (long long)n);
+        return nullptr;
+    }
     return make(n, xy, 0, L, tol, err, errlen);
 }
 
 void ccdt_free(ccdt_engine *E) { delete E; }
 
+double ccdt_sweep(ccdt_engine *E) { return sweep(E) / E->L; }
+
+int64_t ccdt_delaunay(ccdt_engine *E)
+{
+    char err[256];
+    if (delaunay(E, 0, err, sizeof err) != 0) return -1;
+    return E->new_edges;
+}
+
 void ccdt_iterate(ccdt_engine *E, cfpo_iter_stats *s)
 {
     const double t0 = cli_now();
     const double tolL = E->tol * E->L;
+    const int64_t n = E->n;
     E->start = E->xy;
-    E->rejected = 0;
+    const double e0 = ccdt_energy(E);
+    E->sweeps = 0;
+    while (E->sweeps < MAX_SWEEPS) {
+        E->sweeps++;
+        if (sweep(E) < tolL) break;
+    }
+    char err[256];
+    const double lam = E->lambda; /* the step: lam of the way to the phase's result */
+    if (lam < 1)
+        for (size_t i = 0; i < 2 * (size_t)n; i++) E->xy[i] = E->start[i] + lam * (E->xy[i] - E->start[i]);
+    E->step = lam;
+    if (delaunay(E, 0, err, sizeof err) != 0) { /* points met (the step rule prevents it): stay */
+        E->xy = E->start;
+        delaunay(E, 1, err, sizeof err);
+        E->step = 0;
+    }
+    E->lambda = ccdt_energy(E) > e0 ? SHRINK * lam : std::min(1.0, GROW * lam);
     int64_t moved = 0;
-    for (int64_t id = 0; id < E->n; id++) moved += step(E, (uint32_t)id, tolL);
     double maxd2 = 0;
-    for (int64_t i = 0; i < E->n; i++)
-        maxd2 = std::max(maxd2, cfpo_torus_dist2(E->start[2 * i], E->start[2 * i + 1], E->xy[2 * i],
-                                                 E->xy[2 * i + 1]));
+    for (int64_t i = 0; i < n; i++) {
+        const double d2 = cfpo_torus_dist2(E->start[2 * i], E->start[2 * i + 1], E->xy[2 * i], E->xy[2 * i + 1]);
+        maxd2 = std::max(maxd2, d2);
+        moved += d2 > tolL * tolL;
+    }
     s->moved = moved;
-    s->solved = E->n;
+    s->solved = n * E->sweeps;
     s->max_disp = std::sqrt(maxd2) / E->L;
     s->max_move = s->max_disp;
     s->converged = cfpo_net_converged(moved, s->max_disp, E->tol);
@@ -296,22 +320,59 @@ void ccdt_iterate(ccdt_engine *E, cfpo_iter_stats *s)
     s->seconds = cli_now() - t0;
 }
 
-int64_t ccdt_rejected(const ccdt_engine *E) { return E->rejected; }
-double ccdt_energy(const ccdt_engine *E) { return E->energy; }
-double ccdt_energy_recomputed(const ccdt_engine *E) { return energy_all(E->T); }
+double ccdt_step(const ccdt_engine *E) { return E->step; }
+int ccdt_sweeps(const ccdt_engine *E) { return E->sweeps; }
+int64_t ccdt_new_edges(const ccdt_engine *E) { return E->new_edges; }
+
+double ccdt_energy(const ccdt_engine *E)
+{
+    double e = 0;
+    const size_t nt = E->C.tri.size() / 3;
+    for (size_t t = 0; t < nt; t++) {
+        const double a = tri_area(E, t);
+        e += a * a;
+    }
+    return e;
+}
+
+double ccdt_energy_recomputed(const ccdt_engine *E)
+{
+    double e = 0;
+    for (auto it = E->T.periodic_triangles_begin(PDT::UNIQUE); it != E->T.periodic_triangles_end(PDT::UNIQUE); ++it) {
+        const double a = CGAL::to_double(E->T.triangle(*it).area());
+        e += a * a;
+    }
+    return e;
+}
 
 double ccdt_area_cv(const ccdt_engine *E)
 {
-    const double var = E->energy / (2.0 * (double)E->n) - E->mean * E->mean;
+    const double var = ccdt_energy(E) / (double)(E->C.tri.size() / 3) - E->mean * E->mean;
     return std::sqrt(std::max(var, 0.0)) / E->mean;
 }
 
 double ccdt_area_maxdev(const ccdt_engine *E)
 {
     double m = 0;
-    for (auto it = E->T.periodic_triangles_begin(PDT::UNIQUE); it != E->T.periodic_triangles_end(PDT::UNIQUE); ++it)
-        m = std::max(m, std::fabs(CGAL::to_double(E->T.triangle(*it).area()) - E->mean));
+    const size_t nt = E->C.tri.size() / 3;
+    for (size_t t = 0; t < nt; t++) m = std::max(m, std::fabs(tri_area(E, t) - E->mean));
     return m / E->mean;
+}
+
+double ccdt_area_min(const ccdt_engine *E)
+{
+    double m = INFINITY;
+    const size_t nt = E->C.tri.size() / 3;
+    for (size_t t = 0; t < nt; t++) m = std::min(m, tri_area(E, t));
+    return m / E->mean;
+}
+
+double ccdt_area_sum(const ccdt_engine *E)
+{
+    double a = 0;
+    const size_t nt = E->C.tri.size() / 3;
+    for (size_t t = 0; t < nt; t++) a += tri_area(E, t);
+    return a;
 }
 
 void ccdt_deltas(ccdt_engine *E, double *dmin, double *davg)
@@ -323,7 +384,7 @@ const double *ccdt_points(const ccdt_engine *E) { return E->xy.data(); }
 
 int ccdt_check(const ccdt_engine *E)
 {
-    if (!E->T.is_valid()) return 0;
+    if (!E->in_sync || !E->T.is_valid()) return 0;
     if ((int64_t)E->T.number_of_vertices() != E->n) return 0;
     for (int64_t i = 0; i < E->n; i++) {
         const Point &p = E->vh[(size_t)i]->point();
@@ -332,7 +393,11 @@ int ccdt_check(const ccdt_engine *E)
     }
     int64_t nt = 0;
     for (auto it = E->T.periodic_triangles_begin(PDT::UNIQUE); it != E->T.periodic_triangles_end(PDT::UNIQUE); ++it) nt++;
-    return nt == 2 * E->n;
+    if (nt != 2 * E->n || (int64_t)E->C.tri.size() != 3 * nt) return 0;
+    /* the copy: every vertex in 6 corners on average, every area positive */
+    for (int64_t i = 0; i < E->n; i++)
+        if (E->C.first[i + 1] - E->C.first[i] < 3) return 0;
+    return ccdt_area_min(E) > 0;
 }
 
 } // extern "C"

@@ -6,8 +6,10 @@
 #include "ccdt.h"
 #include "iter_main.h"
 
-/* CGAL's periodic triangulation, as for FPO (peak resident set measured:
- * 373 bytes a point at n = 65,536); 720 bytes a point with room. */
+/* CGAL's periodic triangulation (rebuilt each iteration) and two flat
+ * copies of its connectivity. Peak resident set measured (/usr/bin/time -v):
+ * 37.2 MB at n = 65,536, 131.3 MB at n = 262,144, i.e. about 480 bytes a
+ * point + 6 MB; 720 bytes a point + 8 MiB keeps 1.5 times room. */
 static uint64_t bytes(void *ctx, int64_t n)
 {
     (void)ctx;
@@ -26,7 +28,8 @@ static const double *points(void *E) { return ccdt_points(E); }
 static void destroy(void *E) { ccdt_free(E); }
 static void trace_values(void *E, char *buf, size_t len)
 {
-    snprintf(buf, len, "\t%lld\t%.6g", (long long)ccdt_rejected(E), ccdt_area_cv(E));
+    snprintf(buf, len, "\t%d\t%.6g\t%lld\t%.6g", ccdt_sweeps(E), ccdt_step(E), (long long)ccdt_new_edges(E),
+             ccdt_area_cv(E));
 }
 
 int main(int argc, char **argv)
@@ -35,12 +38,13 @@ int main(int argc, char **argv)
         .prog = "cfpo-ccdt",
         .method = "ccdt",
         .about = "Capacity-constrained Delaunay triangulation (Xu, Liu, Gotsman, Gortler 2011) on the\n"
-                 "unit torus, on CGAL's periodic Delaunay triangulation: every point in turn moves\n"
-                 "to the least-squares position that equalises the areas of its Delaunay\n"
-                 "triangles, kept when the area variance drops. Prints one SUMMARY line on stdout.",
+                 "unit torus, on CGAL's periodic Delaunay triangulation. Each iteration alternates\n"
+                 "a geometry phase (connectivity fixed: Gauss-Seidel sweeps move every point to the\n"
+                 "least-squares position that equalises its triangles' areas) with a Delaunay\n"
+                 "phase (re-triangulation). Prints one SUMMARY line on stdout.",
         .options_help = "",
         .extra_opt = NULL,
-        .trace_extra = "\trejected\tarea_cv",
+        .trace_extra = "\tsweeps\tstep\tnew_edges\tarea_cv",
         .bytes = bytes,
         .create = create,
         .iterate = iterate,
