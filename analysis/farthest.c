@@ -321,23 +321,11 @@ static void visit(const an_far_ws *ws, size_t i, far_state *F)
     }
 }
 
-static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_square S, double *cx, double *cy,
-                            an_far_ws *ws)
+/* The regions of the k points in x/y (copied in), on a tree, raising F. */
+static void solve_on(an_far_ws *ws, size_t k, far_state *F)
 {
-    memcpy(ws->x, yx, m * sizeof *yx);
-    memcpy(ws->y, yy, m * sizeof *yy);
     ws->nodes_used = 0;
-    kd_build(ws, 0, m, 0);
-    far_state F = {S, -1, 0.5 * (S.x0 + S.x1), 0.5 * (S.y0 + S.y1), 0, {0}, 0, {0}, 0};
-    octagon(yx, yy, m, &F);
-    /* The corners of S are in S: the farthest of them from the points is a
-     * value the answer reaches, known before any region is clipped (it
-     * lets most points of a cluster be passed over at once). */
-    const double corner[4][2] = {{S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1}};
-    for (int c = 0; c < 4; c++) {
-        const double d2 = cfpo_min_dist2(corner[c][0], corner[c][1], yx, yy, (int)m, -1);
-        if (d2 > F.best) { F.best = d2; F.bx = corner[c][0]; F.by = corner[c][1]; F.found = 1; }
-    }
+    kd_build(ws, 0, k, 0);
     /* The leaves in tree order; a box whose four corners are deep inside
      * the hull holds only such points (depth is a minimum of linear
      * functions, least at a corner of a box): it is passed over whole. */
@@ -346,19 +334,64 @@ static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_s
     stack[sp++] = 0;
     while (sp > 0) {
         const kd_node *n = &ws->nodes[stack[--sp]];
-        if (deep_inside(&F, n->x0, n->y0) && deep_inside(&F, n->x1, n->y0) && deep_inside(&F, n->x0, n->y1) &&
-            deep_inside(&F, n->x1, n->y1))
+        if (deep_inside(F, n->x0, n->y0) && deep_inside(F, n->x1, n->y0) && deep_inside(F, n->x0, n->y1) &&
+            deep_inside(F, n->x1, n->y1))
             continue;
         if (n->left < 0) {
-            for (size_t i = n->lo; i < n->hi; i++) visit(ws, i, &F);
+            for (size_t i = n->lo; i < n->hi; i++) visit(ws, i, F);
             continue;
         }
         stack[sp++] = n->right;
         stack[sp++] = n->left;
     }
+}
+
+static void clamp_to(const cfpo_square *S, const far_state *F, double *cx, double *cy)
+{
+    *cx = F->bx < S->x0 ? S->x0 : F->bx > S->x1 ? S->x1 : F->bx;
+    *cy = F->by < S->y0 ? S->y0 : F->by > S->y1 ? S->y1 : F->by;
+}
+
+/* First on the points that are not deep inside the hull (the band R): no
+ * deep point owns a region reaching past the best corner, so the answer
+ * U over R bounds the answer over all points from above (fewer points,
+ * larger distances), and if no deep point is nearer to U's point than R
+ * is, U is reached over all points too: it is the answer. Otherwise (a
+ * hole left where the deep points were) the whole set is solved. */
+static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_square S, double *cx, double *cy,
+                            an_far_ws *ws)
+{
+    far_state F = {S, -1, 0.5 * (S.x0 + S.x1), 0.5 * (S.y0 + S.y1), 0, {0}, 0, {0}, 0};
+    octagon(yx, yy, m, &F);
+    /* The corners of S are in S: the farthest of them from the points is a
+     * value the answer reaches, known before any region is clipped. */
+    const double corner[4][2] = {{S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1}};
+    for (int c = 0; c < 4; c++) {
+        const double d2 = cfpo_min_dist2(corner[c][0], corner[c][1], yx, yy, (int)m, -1);
+        if (d2 > F.best) { F.best = d2; F.bx = corner[c][0]; F.by = corner[c][1]; F.found = 1; }
+    }
+    const far_state F0 = F;
+    size_t k = 0;
+    for (size_t t = 0; t < m; t++)
+        if (!deep_inside(&F0, yx[t], yy[t])) { ws->x[k] = yx[t]; ws->y[k] = yy[t]; k++; }
+    if (k < m) {
+        if (k > 0) solve_on(ws, k, &F);
+        if (!F.found) return -1;
+        clamp_to(&S, &F, cx, cy);
+        double d_all = INFINITY, d_band = INFINITY;
+        for (size_t t = 0; t < m; t++) {
+            const double dx = *cx - yx[t], dy = *cy - yy[t], d2 = dx * dx + dy * dy;
+            if (d2 < d_all) d_all = d2;
+            if (d2 < d_band && !deep_inside(&F0, yx[t], yy[t])) d_band = d2;
+        }
+        if (k == 0 || d_band == d_all) return d_all; /* k = 0: every region is within the corner's value */
+        F = F0;
+    }
+    memcpy(ws->x, yx, m * sizeof *yx);
+    memcpy(ws->y, yy, m * sizeof *yy);
+    solve_on(ws, m, &F);
     if (!F.found) return -1;
-    *cx = F.bx < S.x0 ? S.x0 : F.bx > S.x1 ? S.x1 : F.bx;
-    *cy = F.by < S.y0 ? S.y0 : F.by > S.y1 ? S.y1 : F.by;
+    clamp_to(&S, &F, cx, cy);
     return cfpo_min_dist2(*cx, *cy, yx, yy, (int)m, -1);
 }
 

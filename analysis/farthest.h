@@ -19,7 +19,10 @@
  *    point with a neighbour in each of the eight 45-degree sectors around
  *    it closer than sqrt(2) times that value is passed over: its region
  *    cannot reach farther (farthest.c says why); a region no farther than
- *    the best value found is abandoned, as in the core solver.
+ *    the best value found is abandoned, as in the core solver;
+ *  - the square is first solved against the points not passed over only:
+ *    that answer bounds the true one from above, and is kept when no
+ *    passed-over point is nearer to its point (then it is reached).
  * Both give the exact maximum up to the rounding of the clipping; the
  * value returned is recomputed from the distances themselves. */
 #ifndef AN_FARTHEST_H
