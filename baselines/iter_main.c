@@ -1,6 +1,6 @@
-/* iter_main.c - see iter_main.h. The loop is main_fpo.c's: the start is
- * trace row 0, the stop rules are checked after it and after every
- * iteration, in the order converged, targets, time, max-iter. */
+/* iter_main.c - see iter_main.h. The start is trace row 0; the stop rules
+ * are checked after it and after every iteration, in the order converged,
+ * targets, time, max-iter. */
 #include "iter_main.h"
 
 #include <getopt.h>
@@ -20,8 +20,9 @@ static void usage(const it_method *m)
            "  -s, --seed S         random seed (default 1)\n"
            "%s"
            "      --max-iter K     stop after K iterations (default %d)\n"
-           "      --tol T          converged when no point's net move over an iteration\n"
-           "                       reaches T * L, L = cfpo's cell side (default %g)\n"
+           "      --tol T          a move must gain more than T * L, L = cfpo's cell side;\n"
+           "                       converged when no point's net move over an iteration\n"
+           "                       reaches it (default %g)\n"
            "      --target-min D   stop as soon as delta_min >= D (and every other target holds)\n"
            "      --target-avg D   stop as soon as delta_avg >= D (and every other target holds)\n"
            "      --time-limit S   stop at the first iteration boundary past S seconds\n"
@@ -57,15 +58,20 @@ static double trace_row(bl_run *r, const it_method *m, void *E, const cfpo_iter_
 int it_main(int argc, char **argv, const it_method *m, void *ctx)
 {
     const char *prog = m->prog;
-    struct option longopts[] = {
+    enum { FIXED = 12, OWN = 2000 };
+    struct option longopts[FIXED + IT_MAX_OPTIONS + 1] = {
         {"points", required_argument, 0, 'n'}, {"seed", required_argument, 0, 's'},
         {"max-iter", required_argument, 0, 'm'}, {"tol", required_argument, 0, 'T'},
         {"output", required_argument, 0, 'o'}, {"trace", required_argument, 0, 'r'},
         {"quiet", no_argument, 0, 'q'}, {"help", no_argument, 0, 'h'},
         {"version", no_argument, 0, 'V'}, {"target-min", required_argument, 0, 1001},
-        {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003},
-        {m->extra_opt ? m->extra_opt : "", required_argument, 0, 1004}, {0, 0, 0, 0}};
-    if (!m->extra_opt) longopts[12] = longopts[13];
+        {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003}};
+    int own = 0;
+    for (; m->options && m->options[own].name && own < IT_MAX_OPTIONS; own++)
+        longopts[FIXED + own] = (struct option){m->options[own].name,
+                                                m->options[own].has_arg ? required_argument : no_argument, 0,
+                                                OWN + own};
+    longopts[FIXED + own] = (struct option){0, 0, 0, 0};
     cfpo_stop_rules rules;
     cfpo_stop_rules_init(&rules);
     int64_t n = -1, max_iter = CFPO_DEFAULT_MAX_ITER;
@@ -92,23 +98,27 @@ int it_main(int argc, char **argv, const it_method *m, void *ctx)
         case 1001: cli_stop_option(prog, "target-min", optarg, &rules); break;
         case 1002: cli_stop_option(prog, "target-avg", optarg, &rules); break;
         case 1003: cli_stop_option(prog, "time-limit", optarg, &rules); break;
-        case 1004:
-            if (m->parse_extra(ctx, optarg, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
-            break;
+
         case 'o': out = optarg; break;
         case 'r': trace = optarg; break;
         case 'q': quiet = 1; break;
         case 'h': usage(m); return 0;
         case 'V': printf("%s %s\n", prog, CFPO_VERSION); return 0;
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
-        default: cli_bad_option(prog, longopts, argv[optind - 1]);
+        default:
+            if (ch < OWN || ch >= OWN + own) cli_bad_option(prog, longopts, argv[optind - 1]);
+            if (m->parse_option(ctx, ch - OWN, optarg, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
         }
     }
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
     if (n < 0) cli_usage_error(prog, "the number of points is required: -n N");
     bl_check_output_name(prog, out);
-    { /* n too small (the same minimum as cfpo, whose cell side scales tol) or
-       * too large for the method's own memory model */
+    if (m->validate) {
+        const int vr = m->validate(ctx, n, tol, err, sizeof err);
+        if (vr == -1) cli_usage_error(prog, "%s", err);
+        if (vr != 0) cli_fail(prog, "%s", err);
+    } else { /* n too small (the same minimum as cfpo, whose cell side scales
+              * tol) or too large for the method's own memory model */
         cfpo_options co;
         cfpo_options_init(&co);
         co.tol = tol;
@@ -144,7 +154,7 @@ int it_main(int argc, char **argv, const it_method *m, void *ctx)
     }
     double seconds = cli_now() - run.t0;
     bl_run_finish(&run, m->points(E), (size_t)n);
-    cli_summary sm = {.method = m->method, .variant = "-", .n = n, .seed = seed, .threads = 1,
+    cli_summary sm = {.method = m->method_name ? m->method_name(ctx) : m->method, .variant = "-", .n = n, .seed = seed, .threads = 1,
                       .ranks = 1, .iterations = it, .seconds = seconds,
                       .delta_min = s.delta_min, .delta_avg = s.delta_avg,
                       .converged = s.converged, .peak_bytes = cli_peak_rss(),

@@ -43,7 +43,6 @@ int main(int argc, char **argv)
                  "least-squares position that equalises its triangles' areas) with a Delaunay\n"
                  "phase (re-triangulation). Prints one SUMMARY line on stdout.",
         .options_help = "",
-        .extra_opt = NULL,
         .trace_extra = "\tsweeps\tstep\tnew_edges\tarea_cv",
         .bytes = bytes,
         .create = create,

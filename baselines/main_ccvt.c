@@ -11,8 +11,9 @@ typedef struct {
     int64_t m;
 } ccvt_ctx;
 
-static int parse_m(void *ctx, const char *arg, char *err, size_t errlen)
+static int parse_m(void *ctx, int which, const char *arg, char *err, size_t errlen)
 {
+    (void)which; /* the one option: --points-per-site */
     int64_t v;
     if (cli_parse_i64(arg, 1, 1 << 20, &v) != 0) {
         snprintf(err, errlen, "--points-per-site: '%s' is not a whole number in 1..2^20", arg);
@@ -63,9 +64,9 @@ int main(int argc, char **argv)
         .options_help =
             "      --points-per-site M  discrete points per site (default 1024 up to\n"
             "                       n = 16384, then 2^24 / n, at least 16); memory 16 n M bytes\n",
-        .extra_opt = "points-per-site",
+        .options = (const it_option[]){{"points-per-site", 1}, {NULL, 0}},
         .trace_extra = "\tswaps",
-        .parse_extra = parse_m,
+        .parse_option = parse_m,
         .bytes = bytes,
         .create = create,
         .iterate = iterate,
