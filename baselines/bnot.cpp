@@ -9,8 +9,8 @@
  * and the second moment about the site (signed, so also right when the
  * site lies outside its own cell); the Hessian row of the site from its
  * edges; the margin check. A failed check doubles the margin and builds
- * again. Weights are normalised to mean 0 (the diagram only sees their
- * differences). */
+ * again. The weights keep mean 0 (they start at 0 and every Newton
+ * direction is centred; the diagram only sees their differences). */
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Regular_triangulation_2.h>
 #include <CGAL/Regular_triangulation_face_base_2.h>

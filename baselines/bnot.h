@@ -12,7 +12,8 @@
  * its power cell); the transport energy and the iteration statistics.
  * Does not own: the stopping loop, files or the command line (main_bnot.c).
  *
- * The algorithm (the paper's alternation, section 4):
+ * The algorithm (the paper's alternation of a capacity solve and a Lloyd
+ * step):
  *   capacity solve: damped Newton on the weights w. The area A_i(w) of
  *     power cell i has dA_i/dw_j = -|e_ij| / (2 |p_i - p_j|) for each
  *     power-diagram edge e_ij between cells i and j (summed over copies),
