@@ -99,6 +99,7 @@ static void converge(int64_t n)
  * least power distance; areas and centroids against the engine's. */
 static void brute_force(int64_t n, int iters, int g)
 {
+    if (n < 2 || n > 100000) return;
     char err[256];
     bnot_engine *E = random_engine(n, 11, 1e-4, BNOT_CAP_TOL, err, sizeof err);
     CHECK(E != NULL, "create: %s", err);
