@@ -54,6 +54,7 @@ bench_profile() {
       SETS=2; COMP_N=1024; RT_REPS=1
       RT_SIZES_cfpo="256 512"; RT_SIZES_simplified="256"
       RT_SIZES_fpo="256"; RT_SIZES_lfpo="256"; RT_SIZES_ccvt="256"; RT_SIZES_ccdt="256"
+      RT_SIZES_bnot="256"
       RT_SIZES_dart="4096"; RT_SIZES_bs="4096"; RT_SIZES_bridson="4096"
       TTQ_SIZES="1024"; TTQ_SEEDS=1; TTQ_MAXITER=80
       ;;
@@ -62,6 +63,7 @@ bench_profile() {
       RT_SIZES_cfpo="1024 4096 16384 65536"; RT_SIZES_simplified="1024 4096 16384"
       RT_SIZES_fpo="1024 16384"; RT_SIZES_lfpo="1024 16384"
       RT_SIZES_ccvt="1024 16384"; RT_SIZES_ccdt="1024 16384"
+      RT_SIZES_bnot="1024 4096"
       RT_SIZES_dart="1024 4096 16384 65536 262144"
       RT_SIZES_bs="1024 4096 16384 65536 262144"
       RT_SIZES_bridson="1024 4096 16384 65536 262144"
@@ -72,6 +74,7 @@ bench_profile() {
       RT_SIZES_simplified="1024 4096 16384 65536 262144"
       RT_SIZES_fpo="1024 4096 16384 65536 262144"; RT_SIZES_lfpo="1024 4096 16384 65536"
       RT_SIZES_ccvt="1024 4096 16384 65536"; RT_SIZES_ccdt="1024 4096 16384 65536"
+      RT_SIZES_bnot="1024 4096"
       RT_SIZES_dart="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_bs="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_bridson="1024 4096 16384 65536 262144 1048576"
@@ -98,6 +101,7 @@ bench_estimate() {
     a["lfpo"] = 239; b["lfpo"] = 0.55; cap["lfpo"] = 5000; c["lfpo"] = 2.5e-6
     a["ccvt"] = 260; b["ccvt"] = 0; cap["ccvt"] = 5000; c["ccvt"] = 2e-5
     a["ccdt"] = 130; b["ccdt"] = 0; cap["ccdt"] = 5000; c["ccdt"] = 3e-5
+    a["bnot"] = 1700; b["bnot"] = 0.8; cap["bnot"] = 10000; c["bnot"] = 8.5e-6
     it = a[k] * (n / 1024) ^ b[k]; if (it > cap[k]) it = cap[k]
     if (m != "-" && m + 0 < it) it = m + 0
     s = c[k] * n * it

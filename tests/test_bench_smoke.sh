@@ -80,7 +80,7 @@ check "every row well formed${bad_rows:+ (bad: $bad_rows)}" [ -z "$bad_rows" ]
 keys=$(grep -v '^#' "$csv" | awk -F, '$2 == "comparison" { print ($3 == "cfpo" ? $4 : $3) }' | sort -u | tr '\n' ' ')
 check "comparison has all $N_COMP methods of scripts/methods.tsv (found: $keys; want: $COMP_SEEN)" [ "$keys" = "$COMP_SEEN" ]
 for e in evolution comparison runtime ttq; do check "experiment $e present" grep -q "^[0-9]*,$e," "$csv"; done
-# every iterative baseline of the list (CCVT and CCDT among them) in the
+# every iterative baseline of the list (CCVT, CCDT and BNOT among them) in the
 # comparison, runtime and convergence experiments and in summary.md
 for k in $(methods_keys iter); do
   m=$(method_get "$k" method); l=$(method_get "$k" label)
@@ -90,7 +90,7 @@ for k in $(methods_keys iter); do
   check "$l in the runtime figure's data" grep -q "LBL\[[0-9]*\] = '$l'" "$R/plotdata/fig-runtime.vars.gp"
   check "summary.md: a $l row in the comparison table" grep -q "^| $l | " "$R/summary.md"
 done
-for g in comparison-ccvt comparison-ccdt; do check "spectra.csv has the group $g" grep -q "^$g," "$R/spectra.csv"; done
+for g in comparison-ccvt comparison-ccdt comparison-bnot; do check "spectra.csv has the group $g" grep -q "^$g," "$R/spectra.csv"; done
 threads=$(grep -v '^#' "$csv" | awk -F, '$2 == "runtime" && $3 == "cfpo" { print $8 }' | sort -un | tr '\n' ' ')
 want=$(. scripts/bench-profiles.sh && bench_threads_list | tr ' ' '\n' | sort -un | tr '\n' ' ')
 check "runtime has CFPO on $want threads (found: $threads)" [ "$threads" = "$want" ]

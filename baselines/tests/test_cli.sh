@@ -90,17 +90,26 @@ done
 grep -q "method=lfpo" "$T/out" && ok || bad "cfpo-lfpo does not report method=lfpo"
 expect 0 "" "$B/cfpo-fpo" -n 300 -q --local --max-iter 1
 grep -q "method=lfpo" "$T/out" && ok || bad "cfpo-fpo --local is not LFPO"
-# CCVT's and CCDT's own memory models, not cfpo's.
+# CCVT's, CCDT's and BNOT's own memory models, not cfpo's.
 expect 1 "^cfpo-ccvt: n = 16777216 is too large for memory: ccvt needs about 178\.2 GB" "$B/cfpo-ccvt" -n 2^24
 expect 1 "^cfpo-ccdt: n = 1073741824 is too large for memory: ccdt needs about 773\.1 GB" "$B/cfpo-ccdt" -n 2^30
+expect 1 "^cfpo-bnot: n = 1073741824 is too large for memory: bnot needs about 1073\.8 GB" "$B/cfpo-bnot" -n 2^30
 # FPO's own memory model (about 720 bytes a point), not cfpo's.
 expect 1 "^cfpo-fpo: n = 1073741824 is too large for memory: the triangulation needs about 773\.1 GB" "$B/cfpo-fpo" -n 2^30
 
-# CCVT and CCDT (iter_main.c): cfpo's trace columns then their own, one row
-# per iteration plus row 0, the stop rules, bad values.
-for c in cfpo-ccvt cfpo-ccdt; do
+# CCVT, CCDT and BNOT (iter_main.c): cfpo's trace columns then their own,
+# one row per iteration plus row 0, the stop rules, bad values.
+for c in cfpo-ccvt cfpo-ccdt cfpo-bnot; do
   X="$B/$c"
+<<<<<<< HEAD
   extra=$([ "$c" = cfpo-ccvt ] && printf '\tswaps' || printf '\tsweeps\tstep\tnew_edges\tarea_cv')
+=======
+  case $c in
+    cfpo-ccvt) extra=$(printf '\tswaps') ;;
+    cfpo-ccdt) extra=$(printf '\trejected\tarea_cv') ;;
+    *) extra=$(printf '\tnewton\tcg\tcap_err\tenergy') ;;
+  esac
+>>>>>>> bnot
   expect 0 "" "$X" -n 300 -q --max-iter 4 --trace "$T/f.tsv"
   [ "$(head -n 1 "$T/f.tsv")" = "$(printf 'iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed')$extra" ] \
     && ok || bad "$c: trace header $(head -n 1 "$T/f.tsv")"
@@ -120,6 +129,13 @@ done
 expect 2 "^cfpo-ccvt: --points-per-site: '0' is not a whole number" "$B/cfpo-ccvt" -n 300 --points-per-site 0
 expect 2 "^cfpo-ccvt: --points-per-site: 'x' is not" "$B/cfpo-ccvt" -n 300 --points-per-site x
 expect 2 "^cfpo-ccdt: unknown option '--points-per-site'" "$B/cfpo-ccdt" -n 300 --points-per-site 8
+expect 2 "^cfpo-bnot: unknown option '--points-per-site'" "$B/cfpo-bnot" -n 300 --points-per-site 8
+# BNOT's trace: every row's capacity error within 1e-6 (the solver aims at
+# 1e-8), the energy (normalised second moment) never rising after row 1.
+expect 0 "" "$B/cfpo-bnot" -n 300 -q --max-iter 40 --trace "$T/b.tsv"
+[ "$(awk -F'\t' 'NR > 1 && $11 + 0 > 1e-6' "$T/b.tsv" | wc -l)" = 0 ] && ok || bad "cfpo-bnot: a trace row with cap_err > 1e-6"
+[ "$(awk -F'\t' 'NR > 2 && $12 > e * (1 + 1e-7) { print } { e = $12 }' "$T/b.tsv" | wc -l)" = 0 ] && ok \
+  || bad "cfpo-bnot: the energy column rises"
 expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 8 -o "$T/m8.txt"
 expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 9 -o "$T/m9.txt"
 cmp -s "$T/m8.txt" "$T/m9.txt" && bad "cfpo-ccvt: --points-per-site has no effect" || ok

@@ -1,0 +1,117 @@
+/* bnot.h - blue noise through optimal transport (de Goes, Breeden,
+ * Ostromoukhov, Desbrun, "Blue Noise through Optimal Transport", ACM
+ * Transactions on Graphics 31(6), SIGGRAPH Asia 2012) on the unit torus,
+ * on CGAL's Regular_triangulation_2 with periodic copies.
+ *
+ * Owns: the n sites and their weights; the power diagram of the sites on
+ * the torus (CGAL has no periodic regular triangulation: the sites and
+ * their copies shifted by the 8 unit offsets that lie within a margin m of
+ * the unit square are triangulated, and the power cells of the original
+ * sites are the torus's); the capacity solve (the weights that give every
+ * power cell the area 1/n); the Lloyd step (every site to the centroid of
+ * its power cell); the transport energy and the iteration statistics.
+ * Does not own: the stopping loop, files or the command line (main_bnot.c).
+ *
+ * The algorithm (the paper's alternation of a capacity solve and a Lloyd
+ * step):
+ *   capacity solve: damped Newton on the weights w. The area A_i(w) of
+ *     power cell i has dA_i/dw_j = -|e_ij| / (2 |p_i - p_j|) for each
+ *     power-diagram edge e_ij between cells i and j (summed over copies),
+ *     and dA_i/dw_i = -sum_j of those: a weighted graph Laplacian H. Solve
+ *     H d = 1/n - A by Jacobi-preconditioned conjugate gradients (the
+ *     system is singular, constant in its kernel, consistent: the right
+ *     side sums to 0), relative residual 1e-3; step w + a d, a = 1, 1/2,
+ *     ... until every cell keeps at least half of min(1/n, the smallest
+ *     area before the step) and |A - 1/n| (2-norm) fell by a factor
+ *     (1 - a/2) (Kitagawa, Merigot, Thibert's damped Newton, which
+ *     converges from any start with non-empty cells). Done when every
+ *     |A_i n - 1| <= cap_tol (1e-8 by default).
+ *   Lloyd step: every site moves to the centroid of its power cell (all at
+ *     once); the weights are kept as the start of the next solve (reset to
+ *     0, the Voronoi diagram, if a cell is then empty).
+ * The transport energy E = sum_i integral over cell i of |x - p_i|^2 with
+ * the capacities solved: the Lloyd step lowers it on fixed cells (by
+ * sum A_i |c_i - p_i|^2), and the solve then finds the optimal partition
+ * with those capacities for the new sites, no costlier than the old cells,
+ * so E does not increase from one iteration to the next (up to the
+ * capacity tolerance).
+ *
+ * Choices: start uniform random (src/rng.h); margin m = 3 / sqrt(n) at
+ * first, doubled (up to every copy) whenever a cell vertex of an original
+ * site could lie in the power cell of a copy left out (checked exactly:
+ * at every vertex x of every original cell, its power |x - p|^2 - w must
+ * not exceed dist(x, outside the margin box)^2 - max w); points are
+ * inserted one by one in a serpentine order of a grid of bins, each with
+ * the previous vertex as hint, so the triangulation and every sum are the
+ * same for the same input (CGAL's spatial sort shuffles with a global
+ * random state). Converged when no site's Lloyd move reaches tol * L, L =
+ * cfpo's cell side (as CCDT and FPO), or nothing moved.
+ * A C interface over a C++ implementation. */
+#ifndef CFPO_BASELINES_BNOT_H
+#define CFPO_BASELINES_BNOT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cfpo.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct bnot_engine bnot_engine;
+
+#define BNOT_CAP_TOL 1e-8
+
+/* Uniform random start; the capacities are solved before it returns.
+ * NULL with a message. */
+bnot_engine *bnot_create(int64_t n, uint64_t seed, double tol, char *err, size_t errlen);
+/* A given start (n distinct points in [0,1)^2, xy interleaved), scale L,
+ * capacity tolerance cap_tol (relative). For tests. */
+bnot_engine *bnot_create_from(int64_t n, const double *xy, double L, double tol, double cap_tol,
+                              char *err, size_t errlen);
+void bnot_free(bnot_engine *E);
+
+/* One Lloyd step then the capacity solve. s->moved: sites that moved more
+ * than tol * L; s->solved: n; s->max_disp: largest move / L. */
+void bnot_iterate(bnot_engine *E, cfpo_iter_stats *s);
+
+/* The transport energy (capacities as solved), and that of the cells
+ * before the last Lloyd step with the sites at their centroids (the
+ * energy the last solve started from; equal to bnot_energy before any
+ * iteration). */
+double bnot_energy(const bnot_engine *E);
+double bnot_energy_moved(const bnot_engine *E);
+/* n E / 2: the cells' mean normalised second moment about their sites
+ * when every area is 1/n (0.0802 for a hexagonal lattice, 0.0833 for a
+ * square one); the trace's `energy`. */
+double bnot_energy_nsm(const bnot_engine *E);
+/* Largest |A_i n - 1| (the capacity error), Newton steps of the last
+ * solve, and whether it met cap_tol. */
+double bnot_cap_err(const bnot_engine *E);
+int bnot_newton_steps(const bnot_engine *E);
+/* Conjugate-gradient iterations of the last solve, all Newton steps. */
+int64_t bnot_cg_iterations(const bnot_engine *E);
+int bnot_solve_ok(const bnot_engine *E);
+
+/* The areas and centroids (absolute, unwrapped: may lie outside [0,1)) of
+ * the power cells, and the weights, by site. */
+const double *bnot_areas(const bnot_engine *E);
+const double *bnot_centroids(const bnot_engine *E);
+const double *bnot_weights(const bnot_engine *E);
+
+void bnot_deltas(bnot_engine *E, double *dmin, double *davg);
+const double *bnot_points(const bnot_engine *E);
+
+typedef struct {
+    int valid;         /* CGAL's is_valid() */
+    int64_t empty;     /* original sites hidden or with area <= 0 */
+    double area_sum;   /* sum of the areas of the original cells */
+    double margin;     /* the margin m of the last triangulation */
+} bnot_check_info;
+void bnot_check(const bnot_engine *E, bnot_check_info *c);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
