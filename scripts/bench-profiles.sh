@@ -101,7 +101,7 @@ bench_estimate() {
     a["lfpo"] = 239; b["lfpo"] = 0.55; cap["lfpo"] = 5000; c["lfpo"] = 2.5e-6
     a["ccvt"] = 260; b["ccvt"] = 0; cap["ccvt"] = 5000; c["ccvt"] = 2e-5
     a["ccdt"] = 130; b["ccdt"] = 0; cap["ccdt"] = 5000; c["ccdt"] = 3e-5
-    a["bnot"] = 1700; b["bnot"] = 0.8; cap["bnot"] = 10000; c["bnot"] = 8.5e-6
+    a["bnot"] = 1000; b["bnot"] = 0.5; cap["bnot"] = 10000; c["bnot"] = 7e-6
     it = a[k] * (n / 1024) ^ b[k]; if (it > cap[k]) it = cap[k]
     if (m != "-" && m + 0 < it) it = m + 0
     s = c[k] * n * it

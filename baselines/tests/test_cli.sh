@@ -101,15 +101,11 @@ expect 1 "^cfpo-fpo: n = 1073741824 is too large for memory: the triangulation n
 # one row per iteration plus row 0, the stop rules, bad values.
 for c in cfpo-ccvt cfpo-ccdt cfpo-bnot; do
   X="$B/$c"
-<<<<<<< HEAD
-  extra=$([ "$c" = cfpo-ccvt ] && printf '\tswaps' || printf '\tsweeps\tstep\tnew_edges\tarea_cv')
-=======
   case $c in
     cfpo-ccvt) extra=$(printf '\tswaps') ;;
-    cfpo-ccdt) extra=$(printf '\trejected\tarea_cv') ;;
+    cfpo-ccdt) extra=$(printf '\tsweeps\tstep\tnew_edges\tarea_cv') ;;
     *) extra=$(printf '\tnewton\tcg\tcap_err\tenergy') ;;
   esac
->>>>>>> bnot
   expect 0 "" "$X" -n 300 -q --max-iter 4 --trace "$T/f.tsv"
   [ "$(head -n 1 "$T/f.tsv")" = "$(printf 'iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed')$extra" ] \
     && ok || bad "$c: trace header $(head -n 1 "$T/f.tsv")"
