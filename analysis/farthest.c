@@ -352,12 +352,15 @@ static void clamp_to(const cfpo_square *S, const far_state *F, double *cx, doubl
     *cy = F->by < S->y0 ? S->y0 : F->by > S->y1 ? S->y1 : F->by;
 }
 
-/* First on the points that are not deep inside the hull (the band R): no
- * deep point owns a region reaching past the best corner, so the answer
- * U over R bounds the answer over all points from above (fewer points,
- * larger distances), and if no deep point is nearer to U's point than R
- * is, U is reached over all points too: it is the answer. Otherwise (a
- * hole left where the deep points were) the whole set is solved. */
+/* First on the points that are not deep inside the hull (the band R, the
+ * hull's vertices among them): the answer U over R bounds the answer over
+ * all points from above (fewer points, larger distances), and if no deep
+ * point is nearer to U's point than R is, U is reached over all points
+ * too: it is the answer. In exact arithmetic a deep point never is (deep
+ * points exist only when the diameter W < rho; a disk of radius >= rho
+ * free of the hull's vertices holds none of the hull deeper than
+ * W^2 / (2 rho), the sagitta of a chord of length W), so the whole set is
+ * solved again only as a guard against rounding. */
 static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_square S, double *cx, double *cy,
                             an_far_ws *ws)
 {
