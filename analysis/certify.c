@@ -200,25 +200,7 @@ static int clip(const double *p, int n, double *q, double *sd, double ax, double
 {
     const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
     for (int v = 0; v < n; v++) sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
-    int k = 0;
-    for (int v = 0; v < n; v++) {
-        const int u = v + 1 == n ? 0 : v + 1;
-        if (sd[v] <= 0) { q[2 * k] = p[2 * v]; q[2 * k + 1] = p[2 * v + 1]; k++; }
-        if ((sd[v] < 0 && sd[u] > 0) || (sd[v] > 0 && sd[u] < 0)) {
-            const double t = sd[v] / (sd[v] - sd[u]);
-            q[2 * k] = p[2 * v] + t * (p[2 * u] - p[2 * v]);
-            q[2 * k + 1] = p[2 * v + 1] + t * (p[2 * u + 1] - p[2 * v + 1]);
-            k++;
-        }
-    }
-    return k;
-}
-
-static int by_xy(const void *a, const void *b)
-{
-    const double *p = a, *q = b;
-    if (p[0] != q[0]) return p[0] < q[0] ? -1 : 1;
-    return p[1] < q[1] ? -1 : (p[1] > q[1]);
+    return an_clip_sd(p, n, q, sd);
 }
 
 /* Restores the min-heap of (key, index) pairs h[0..n) below node r. */
@@ -227,8 +209,8 @@ static void sift_down(double *h, size_t n, size_t r)
     for (;;) {
         size_t c = 2 * r + 1;
         if (c >= n) return;
-        if (c + 1 < n && by_xy(h + 2 * (c + 1), h + 2 * c) < 0) c++;
-        if (by_xy(h + 2 * c, h + 2 * r) >= 0) return;
+        if (c + 1 < n && an_cmp_pair(h + 2 * (c + 1), h + 2 * c) < 0) c++;
+        if (an_cmp_pair(h + 2 * c, h + 2 * r) >= 0) return;
         const double k0 = h[2 * r], k1 = h[2 * r + 1];
         h[2 * r] = h[2 * c];
         h[2 * r + 1] = h[2 * c + 1];
@@ -242,7 +224,7 @@ static void sift_down(double *h, size_t n, size_t r)
 static int unique_points(double *sx, double *sy, int m, double *tmp)
 {
     for (int t = 0; t < m; t++) { tmp[2 * t] = sx[t]; tmp[2 * t + 1] = sy[t]; }
-    qsort(tmp, (size_t)m, 2 * sizeof *tmp, by_xy);
+    qsort(tmp, (size_t)m, 2 * sizeof *tmp, an_cmp_pair);
     int k = 0;
     for (int t = 0; t < m; t++)
         if (k == 0 || tmp[2 * t] != sx[k - 1] || tmp[2 * t + 1] != sy[k - 1]) {

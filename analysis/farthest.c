@@ -48,11 +48,27 @@ void an_far_free(an_far_ws *ws)
     memset(ws, 0, sizeof *ws);
 }
 
-static int by_pair(const void *a, const void *b)
+int an_cmp_pair(const void *a, const void *b)
 {
     const double *p = a, *q = b;
     if (p[0] != q[0]) return p[0] < q[0] ? -1 : 1;
     return p[1] < q[1] ? -1 : (p[1] > q[1]);
+}
+
+int an_clip_sd(const double *p, int n, double *q, const double *sd)
+{
+    int k = 0;
+    for (int v = 0; v < n; v++) {
+        const int u = v + 1 == n ? 0 : v + 1;
+        if (sd[v] <= 0) { q[2 * k] = p[2 * v]; q[2 * k + 1] = p[2 * v + 1]; k++; }
+        if ((sd[v] < 0 && sd[u] > 0) || (sd[v] > 0 && sd[u] < 0)) {
+            const double t = sd[v] / (sd[v] - sd[u]);
+            q[2 * k] = p[2 * v] + t * (p[2 * u] - p[2 * v]);
+            q[2 * k + 1] = p[2 * v + 1] + t * (p[2 * u + 1] - p[2 * v + 1]);
+            k++;
+        }
+    }
+    return k;
 }
 
 /* Drops repeated positions from [lo, hi), keeping the first of each;
@@ -70,7 +86,7 @@ static size_t sort_unique(an_far_ws *ws, size_t lo, size_t hi)
         return k;
     }
     for (size_t t = lo; t < hi; t++) { key[2 * t] = x[t]; key[2 * t + 1] = y[t]; }
-    qsort(key + 2 * lo, hi - lo, 2 * sizeof *key, by_pair);
+    qsort(key + 2 * lo, hi - lo, 2 * sizeof *key, an_cmp_pair);
     size_t k = lo;
     for (size_t t = lo; t < hi; t++)
         if (k == lo || key[2 * t] != x[k - 1] || key[2 * t + 1] != y[k - 1]) { x[k] = key[2 * t]; y[k] = key[2 * t + 1]; k++; }
@@ -158,22 +174,7 @@ static int clip_by(region *R, double ax, double ay, double bx, double by)
     }
     if (smax <= 0) return 1;
     if (smin > 0) { R->nv = 0; return 0; }
-    int nn = 0;
-    for (int v = 0; v < R->nv; v++) {
-        const int w = v + 1 == R->nv ? 0 : v + 1;
-        const double s0 = R->sd[v], s1 = R->sd[w];
-        if (s0 <= 0) {
-            R->Q[2 * nn] = R->P[2 * v];
-            R->Q[2 * nn + 1] = R->P[2 * v + 1];
-            nn++;
-        }
-        if ((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0)) {
-            const double t = s0 / (s0 - s1);
-            R->Q[2 * nn] = R->P[2 * v] + t * (R->P[2 * w] - R->P[2 * v]);
-            R->Q[2 * nn + 1] = R->P[2 * v + 1] + t * (R->P[2 * w + 1] - R->P[2 * v + 1]);
-            nn++;
-        }
-    }
+    const int nn = an_clip_sd(R->P, R->nv, R->Q, R->sd);
     double *t = R->P;
     R->P = R->Q;
     R->Q = t;
@@ -381,12 +382,10 @@ static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_s
         if (k > 0) solve_on(ws, k, &F);
         if (!F.found) return -1;
         clamp_to(&S, &F, cx, cy);
-        double d_all = INFINITY, d_band = INFINITY;
-        for (size_t t = 0; t < m; t++) {
-            const double dx = *cx - yx[t], dy = *cy - yy[t], d2 = dx * dx + dy * dy;
-            if (d2 < d_all) d_all = d2;
-            if (d2 < d_band && !deep_inside(&F0, yx[t], yy[t])) d_band = d2;
-        }
+        /* x/y[0, k) still hold only band points (the tree reorders them
+         * and its leaves drop repeats, leaving copies of band points). */
+        const double d_all = cfpo_min_dist2(*cx, *cy, yx, yy, (int)m, -1);
+        const double d_band = k > 0 ? cfpo_min_dist2(*cx, *cy, ws->x, ws->y, (int)k, -1) : INFINITY;
         if (k == 0 || d_band == d_all) return d_all; /* k = 0: every region is within the corner's value */
         F = F0;
     }

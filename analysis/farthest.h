@@ -49,4 +49,11 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
                    double *cy, an_far_ws *ws);
 void an_far_free(an_far_ws *ws);
 
+/* The polygon p of n vertices cut to the side where the signed distances
+ * sd[v] of its vertices are <= 0 (a half-plane), into q; the new count
+ * (at most n + 1). Shared with the certificate's own clipping. */
+int an_clip_sd(const double *p, int n, double *q, const double *sd);
+/* qsort's order of (x, y) pairs of doubles: by x, then by y. */
+int an_cmp_pair(const void *a, const void *b);
+
 #endif

@@ -67,7 +67,7 @@ int it_main(int argc, char **argv, const it_method *m, void *ctx)
         {"version", no_argument, 0, 'V'}, {"target-min", required_argument, 0, 1001},
         {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003}};
     int own = 0;
-    for (; m->options && m->options[own].name && own < IT_MAX_OPTIONS; own++)
+    for (; own < IT_MAX_OPTIONS && m->options && m->options[own].name; own++)
         longopts[FIXED + own] = (struct option){m->options[own].name,
                                                 m->options[own].has_arg ? required_argument : no_argument, 0,
                                                 OWN + own};
