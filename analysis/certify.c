@@ -37,37 +37,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "certify_int.h"
 #include "farthest.h"
 #include "geom.h"
+#include "ptree.h"
 #include "stats.h"
 
-typedef struct {
-    size_t g;
-    double L;
-    size_t *start, *idx;
-} grid;
-
-typedef struct {
-    const double *xy;
-    size_t n;
-    grid G;
-    const double *nn;
-    double delta, rho, Dn;
-    const double *rho_cell;
-    double *arg_cell;       /* 2 per cell: where the cell's radius is reached */
-    const size_t *by_rho;   /* cells by decreasing radius */
-} ctx;
-
-/* Per-thread buffers: collected images (position, id), a subset, scratch. */
-typedef struct {
-    double *x, *y, *sx, *sy, *scratch;
-    double *pa, *pb, *sd; /* polygons being clipped, signed distances */
-    double *key;          /* (distance^2, index) pairs */
-    size_t *id;
-    uint8_t *mark;
-    size_t m, cap;
-    an_far_ws far;        /* the farthest-point solver's buffers */
-} work;
+typedef an_grid grid;
+typedef an_cert_ctx ctx;
+typedef an_cert_work work;
 
 static size_t coord(double v, size_t g)
 {
@@ -91,7 +69,7 @@ static int grid_build(const double *xy, size_t n, grid *G)
     return 0;
 }
 
-static int work_reserve(work *w, size_t m)
+int an_cert_reserve(work *w, size_t m)
 {
     if (m <= w->cap) return 0;
     size_t cap = w->cap ? w->cap : 64;
@@ -114,9 +92,7 @@ static int work_reserve(work *w, size_t m)
     if (pb) w->pb = pb;
     double *sd = realloc(w->sd, 2 * (cap + 8) * sizeof *sd);
     if (sd) w->sd = sd;
-    double *key = realloc(w->key, 2 * (cap + 8) * sizeof *key);
-    if (key) w->key = key;
-    if (!x || !y || !sx || !sy || !id || !sc || !pa || !pb || !sd || !key) return -1;
+    if (!x || !y || !sx || !sy || !id || !sc || !pa || !pb || !sd) return -1;
     w->cap = cap;
     return 0;
 }
@@ -124,8 +100,9 @@ static int work_reserve(work *w, size_t m)
 static void work_free(work *w)
 {
     free(w->x); free(w->y); free(w->sx); free(w->sy); free(w->id); free(w->scratch);
-    free(w->pa); free(w->pb); free(w->sd); free(w->mark); free(w->key);
+    free(w->pa); free(w->pb); free(w->sd); free(w->mark); free(w->marked);
     an_far_free(&w->far);
+    an_pwalk_free(&w->walk);
 }
 
 static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
@@ -147,7 +124,7 @@ static int collect(const ctx *C, double cx, double cy, double H, work *w)
                 const size_t j = C->G.idx[q];
                 const double X = C->xy[2 * j] + (double)ox, Y = C->xy[2 * j + 1] + (double)oy;
                 if (fabs(X - cx) > H || fabs(Y - cy) > H) continue;
-                if (work_reserve(w, w->m + 1) != 0) return -1;
+                if (an_cert_reserve(w, w->m + 1) != 0) return -1;
                 w->x[w->m] = X;
                 w->y[w->m] = Y;
                 w->id[w->m] = j;
@@ -172,169 +149,32 @@ static int subset(const work *w, double cx, double cy, double H, size_t skip, do
     return m;
 }
 
-/* Largest empty circle radius of X restricted to centres in cell c. */
+/* Largest empty circle radius of X restricted to centres in cell c. For
+ * p in the cell, d(p, X) <= d(centre, X) + |p - centre| <= ub (the bound
+ * the caller computed), so p's nearest point lies within ub + the cell's
+ * half-diagonal of the centre: only those points are needed. */
 static int cell_radius(const ctx *C, size_t c, work *w, double *out, double *arg)
 {
     const size_t g = C->G.g;
     const double L = C->G.L, x0 = (double)(c % g) * L, y0 = (double)(c / g) * L;
     const cfpo_square S = {x0, y0, x0 + L, y0 + L};
     const double cx = x0 + 0.5 * L, cy = y0 + 0.5 * L;
-    for (double H = 1.5 * L;; H *= 2) {
-        if (collect(C, cx, cy, H, w) != 0) return -1;
-        if (w->m == 0) continue;
-        double px, py;
-        double r2 = an_farthest(w->x, w->y, w->m, S, cx, cy, &px, &py, &w->far);
-        if (r2 < 0) return -2;
-        if (sqrt(r2) <= H - 0.5 * L) {
-            *out = sqrt(r2);
-            arg[0] = cfpo_wrap01(px);
-            arg[1] = cfpo_wrap01(py);
-            return 0;
-        }
-    }
-}
-
-/* Clips polygon P (n vertices in p) to the side of the bisector of a and b
- * nearer a, into q. Returns the new count. */
-static int clip(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by)
-{
-    const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
-    for (int v = 0; v < n; v++) sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
-    return an_clip_sd(p, n, q, sd);
-}
-
-/* Restores the min-heap of (key, index) pairs h[0..n) below node r. */
-static void sift_down(double *h, size_t n, size_t r)
-{
-    for (;;) {
-        size_t c = 2 * r + 1;
-        if (c >= n) return;
-        if (c + 1 < n && an_cmp_pair(h + 2 * (c + 1), h + 2 * c) < 0) c++;
-        if (an_cmp_pair(h + 2 * c, h + 2 * r) >= 0) return;
-        const double k0 = h[2 * r], k1 = h[2 * r + 1];
-        h[2 * r] = h[2 * c];
-        h[2 * r + 1] = h[2 * c + 1];
-        h[2 * c] = k0;
-        h[2 * c + 1] = k1;
-        r = c;
-    }
-}
-
-/* Sorts the m positions (sx, sy) and drops repeats; returns the count. */
-static int unique_points(double *sx, double *sy, int m, double *tmp)
-{
-    for (int t = 0; t < m; t++) { tmp[2 * t] = sx[t]; tmp[2 * t + 1] = sy[t]; }
-    qsort(tmp, (size_t)m, 2 * sizeof *tmp, an_cmp_pair);
-    int k = 0;
-    for (int t = 0; t < m; t++)
-        if (k == 0 || tmp[2 * t] != sx[k - 1] || tmp[2 * t + 1] != sy[k - 1]) {
-            sx[k] = tmp[2 * t];
-            sy[k] = tmp[2 * t + 1];
-            k++;
-        }
-    return k;
-}
-
-/* T of the farthest point test (see the top): the collected images are
- * those within H1 = s + rho + d(x) of x. *T = -1 when V(x) is empty (x
- * coincides with another point: then T <= rho). */
-static int voronoi_max(const ctx *C, size_t i, work *w, double x, double y, double s, double *T, double *tx,
-                       double *ty)
-{
-    const double reach = (s + C->rho) * (1 + 1e-9) + 1e-12;
-    double *P = w->pa, *Q = w->pb;
-    int nv = 4;
-    const double sq[8] = {x - s, y - s, x + s, y - s, x + s, y + s, x - s, y + s};
-    memcpy(P, sq, sizeof sq);
-    /* Nearest first: the cell shrinks at once, and the images farther than
-     * twice its reach cannot cut it (a far row of images cut first would
-     * carve a polygon of O(n) vertices). */
-    size_t nk = 0;
+    const double R = (C->cell_ub[c] + 0.5 * L * sqrt(2.0)) * (1 + 1e-9) + 1e-15;
+    if (collect(C, cx, cy, R, w) != 0) return -1;
+    size_t m = 0;
     for (size_t t = 0; t < w->m; t++) {
-        if (w->id[t] == i || fabs(w->x[t] - x) > reach || fabs(w->y[t] - y) > reach) continue;
-        if (w->x[t] == x && w->y[t] == y) continue; /* a coincident point: no bisector */
-        if (t > 0 && w->x[t] == w->x[t - 1] && w->y[t] == w->y[t - 1]) continue; /* the same bisector again */
-        const double dx = w->x[t] - x, dy = w->y[t] - y;
-        w->key[2 * nk] = dx * dx + dy * dy;
-        w->key[2 * nk + 1] = (double)t;
-        nk++;
+        const double dx = w->x[t] - cx, dy = w->y[t] - cy;
+        if (dx * dx + dy * dy > R * R) continue;
+        w->x[m] = w->x[t];
+        w->y[m] = w->y[t];
+        m++;
     }
-    /* A heap, popped in (distance, index) order: the clipping usually ends
-     * after the first few, so sorting all of them (n log n a point on a
-     * cluster) would be wasted. */
-    for (size_t r = nk / 2; r-- > 0;) sift_down(w->key, nk, r);
-    double far2 = 2 * s * s;
-    double lastx = NAN, lasty = NAN;
-    for (size_t left = nk; left > 0 && nv > 0;) {
-        if (w->key[0] >= 4 * far2 * (1 + 1e-9)) break;
-        const size_t t = (size_t)w->key[1];
-        left--;
-        w->key[0] = w->key[2 * left];
-        w->key[1] = w->key[2 * left + 1];
-        sift_down(w->key, left, 0);
-        /* A repeat of the position just clipped by: the same bisector. */
-        if (w->x[t] == lastx && w->y[t] == lasty) continue;
-        lastx = w->x[t];
-        lasty = w->y[t];
-        nv = clip(P, nv, Q, w->sd, x, y, w->x[t], w->y[t]);
-        double *tmp = P; P = Q; Q = tmp;
-        far2 = 0;
-        for (int v = 0; v < nv; v++) {
-            const double dx = P[2 * v] - x, dy = P[2 * v + 1] - y;
-            far2 = fmax(far2, dx * dx + dy * dy);
-        }
-    }
-    *T = -1;
-    if (nv == 0) return 0;
-    /* Points whose bisector touches V(x) (within rounding), by id. */
-    double ext = 0;
-    for (int v = 0; v < nv; v++) ext = fmax(ext, fmax(fabs(P[2 * v] - x), fabs(P[2 * v + 1] - y)));
-    const double eps = 1e-9 * (ext + 1e-300);
-    if (!w->mark) { w->mark = calloc(C->n, 1); if (!w->mark) return -1; }
-    int covered = 0; /* the point collected before t is marked or a copy of one */
-    for (size_t t = 0; t < w->m; t++) {
-        /* A copy of such a point: all its images coincide with that
-         * point's, so it adds no position. */
-        const int copy = covered && t > 0 && w->x[t] == w->x[t - 1] && w->y[t] == w->y[t - 1];
-        covered = copy || (w->mark[w->id[t]] && w->id[t] != i);
-        if (copy || w->id[t] == i || w->mark[w->id[t]] || fabs(w->x[t] - x) > reach || fabs(w->y[t] - y) > reach)
-            continue;
-        const double nx = w->x[t] - x, ny = w->y[t] - y, mx = 0.5 * (w->x[t] + x), my = 0.5 * (w->y[t] + y);
-        const double scale = sqrt(nx * nx + ny * ny);
-        for (int v = 0; v < nv; v++)
-            if ((P[2 * v] - mx) * nx + (P[2 * v + 1] - my) * ny >= -eps * scale) { w->mark[w->id[t]] = 1; break; }
-        covered = w->mark[w->id[t]];
-    }
-    int k = 0;
-    for (size_t t = 0; t < w->m; t++)
-        if (w->mark[w->id[t]] && w->id[t] != i) { w->sx[k] = w->x[t]; w->sy[k] = w->y[t]; k++; }
-    for (size_t t = 0; t < w->m; t++) w->mark[w->id[t]] = 0;
-    k = unique_points(w->sx, w->sy, k, w->scratch);
-    /* The largest distance to those points over V(x): for each of them,
-     * V(x) clipped to its own cell among them, at a vertex. */
-    double best = -1, bx = x, by = y;
-    /* V(x) cut by k more bisectors: at most 4 + m + k <= 2 cap + 4 vertices. */
-    double *R = w->scratch, *U = w->scratch + 4 * (w->cap + 8);
-    for (int a = 0; a < k; a++) {
-        memcpy(R, P, 2 * (size_t)nv * sizeof *R);
-        int nr = nv;
-        for (int b = 0; b < k && nr > 0; b++) {
-            if (b == a) continue;
-            nr = clip(R, nr, U, w->sd, w->sx[a], w->sy[a], w->sx[b], w->sy[b]);
-            double *tmp = R; R = U; U = tmp;
-        }
-        for (int v = 0; v < nr; v++) {
-            const double dx = R[2 * v] - w->sx[a], dy = R[2 * v + 1] - w->sy[a], d2 = dx * dx + dy * dy;
-            if (d2 > best) { best = d2; bx = R[2 * v]; by = R[2 * v + 1]; }
-        }
-        R = w->scratch;
-        U = w->scratch + 4 * (w->cap + 8);
-    }
-    if (best < 0) return 0;
-    /* The value from the distances themselves, not the clipping. */
-    *T = sqrt(cfpo_min_dist2(bx, by, w->sx, w->sy, k, -1));
-    *tx = cfpo_wrap01(bx);
-    *ty = cfpo_wrap01(by);
+    double px, py;
+    const double r2 = an_farthest(w->x, w->y, m, S, cx, cy, &px, &py, &w->far);
+    if (r2 < 0 || m == 0) return -2;
+    *out = sqrt(r2);
+    arg[0] = cfpo_wrap01(px);
+    arg[1] = cfpo_wrap01(py);
     return 0;
 }
 
@@ -350,14 +190,14 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     if (s >= 0.5) s = 0.5;
     const double H1 = (s + C->rho + di) * (1 + 1e-9) + 1e-12;
     const double h = fmax(fmax(3 * C->delta, C->delta + di), C->Dn) * (1 + 1e-9);
-    if (collect(C, x, y, fmax(H1, h), w) != 0) return -1;
     double px, py;
 
     /* Farthest point test: R(x) = max(rho, T). */
-    (void)H1;
     double T, tx = 0, ty = 0;
-    if (voronoi_max(C, i, w, x, y, s, &T, &tx, &ty) != 0) return -1;
-    const size_t top = C->by_rho[0];
+    if (an_cert_reserve(w, 64) != 0) return -1;
+    const int st = an_vmax(C, i, w, x, y, s, fmax(H1, h), &T, &tx, &ty);
+    if (st != 0) return st;
+    const size_t top = C->top;
     res->fp = fmax(T, C->rho) - di;
     res->tx = T >= C->rho ? tx : C->arg_cell[2 * top];
     res->ty = T >= C->rho ? ty : C->arg_cell[2 * top + 1];
@@ -365,6 +205,7 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     double r2;
 
     /* Local Characterization Theorem on D = [x-h, x+h]^2, S = D eroded. */
+    if (collect(C, x, y, h, w) != 0) return -1;
     const double e = h - C->delta;
     const cfpo_square S = {x - e, y - e, x + e, y + e};
     m = subset(w, x, y, h, C->n, w->sx, w->sy);
@@ -395,7 +236,9 @@ typedef int (*item_fn)(const ctx *C, size_t t, work *w, void *out);
 
 static int cell_item(const ctx *C, size_t t, work *w, void *out)
 {
-    return cell_radius(C, t, w, (double *)out + t, C->arg_cell + 2 * t);
+    (void)out;
+    const size_t c = C->order[t];
+    return cell_radius(C, c, w, C->rho_cell + c, C->arg_cell + 2 * c);
 }
 
 static int point_item(const ctx *C, size_t t, work *w, void *out)
@@ -446,6 +289,49 @@ static void summarise(const point_result *pr, size_t n, double tol, double Dn, a
     c->fpd = c->fp_pass == n && c->lct_pass == n;
 }
 
+/* rho, the largest empty circle of X, and the cell where it is reached
+ * (the largest radius, the lowest index among equal ones). A cell's radius
+ * lies within its centre's distance to X plus its half-diagonal (ub), so
+ * the cells are solved exactly by decreasing ub, a batch at a time, until
+ * the next ub is below the largest radius found: no cell left can reach
+ * it. rho_cell and arg_cell are filled for the cells solved. */
+static int covering(ctx *C, size_t *order, double *ub)
+{
+    const size_t cells = C->G.g * C->G.g;
+    const double L = C->G.L, hd = 0.5 * L * sqrt(2.0);
+    int status = 0;
+#pragma omp parallel for schedule(dynamic, 64)
+    for (size_t t = 0; t < cells; t++) {
+        const double cx = ((double)(t % C->G.g) + 0.5) * L, cy = ((double)(t / C->G.g) + 0.5) * L;
+        ub[t] = (sqrt(an_ptree_nearest(C->tree, cx, cy, C->n)) + hd) * (1 + 1e-9) + 1e-15;
+    }
+    cell_key *keys = malloc(cells * sizeof *keys);
+    if (!keys) return -1;
+    for (size_t t = 0; t < cells; t++) keys[t] = (cell_key){ub[t], t};
+    qsort(keys, cells, sizeof *keys, by_radius_desc);
+    for (size_t t = 0; t < cells; t++) order[t] = keys[t].c;
+    free(keys);
+    C->cell_ub = ub;
+    C->rho = -1;
+    C->top = cells;
+    const size_t batch = 256;
+    for (size_t a = 0; a < cells && !(ub[order[a]] < C->rho);) {
+        const size_t b = a + batch < cells ? a + batch : cells;
+        C->order = order + a;
+        status = parallel_over(C, b - a, cell_item, NULL);
+        if (status < 0) return status;
+        for (size_t t = a; t < b; t++) {
+            const size_t c = order[t];
+            if (C->rho_cell[c] > C->rho || (C->rho_cell[c] == C->rho && c < C->top)) {
+                C->rho = C->rho_cell[c];
+                C->top = c;
+            }
+        }
+        a = b;
+    }
+    return 0;
+}
+
 int an_certify(const double *xy, size_t n, double tol_rel, an_certificate *c, double *viol,
                double *target, char *err, size_t errlen)
 {
@@ -456,39 +342,31 @@ int an_certify(const double *xy, size_t n, double tol_rel, an_certificate *c, do
         snprintf(err, errlen, "the certificate needs at least 2 points");
         return -1;
     }
-    ctx C = {.xy = xy, .n = n, .Dn = cfpo_delta_bound((double)n)};
+    an_ptree tree;
+    ctx C = {.xy = xy, .n = n, .Dn = cfpo_delta_bound((double)n), .tree = &tree};
     double *nn = malloc(n * sizeof *nn);
     point_result *pr = malloc(n * sizeof *pr);
-    double *rho_cell = NULL, *arg_cell = NULL;
-    size_t *by_rho = NULL;
-    cell_key *keys = NULL;
+    double *rho_cell = NULL, *arg_cell = NULL, *ub = NULL;
+    size_t *order = NULL;
     int status = 0;
     double dmin, davg;
-    if (!nn || !pr || grid_build(xy, n, &C.G) != 0 || cfpo_nn_stats(xy, n, nn, &dmin, &davg) != 0) {
+    if (an_ptree_build(&tree, xy, n) != 0 || !nn || !pr || grid_build(xy, n, &C.G) != 0 ||
+        cfpo_nn_stats(xy, n, nn, &dmin, &davg) != 0) {
         status = -1;
         goto done;
     }
     const size_t cells = C.G.g * C.G.g;
     rho_cell = malloc(cells * sizeof *rho_cell);
     arg_cell = malloc(2 * cells * sizeof *arg_cell);
-    by_rho = malloc(cells * sizeof *by_rho);
-    if (!rho_cell || !arg_cell || !by_rho) { status = -1; goto done; }
+    order = malloc(cells * sizeof *order);
+    ub = malloc(cells * sizeof *ub);
+    if (!rho_cell || !arg_cell || !order || !ub) { status = -1; goto done; }
+    C.rho_cell = rho_cell;
     C.arg_cell = arg_cell;
     C.nn = nn;
     C.delta = dmin * C.Dn;
-    status = parallel_over(&C, cells, cell_item, rho_cell);
+    status = covering(&C, order, ub);
     if (status < 0) goto done;
-    keys = malloc(cells * sizeof *keys);
-    if (!keys) { status = -1; goto done; }
-    C.rho = 0;
-    for (size_t t = 0; t < cells; t++) {
-        keys[t] = (cell_key){rho_cell[t], t};
-        C.rho = fmax(C.rho, rho_cell[t]);
-    }
-    qsort(keys, cells, sizeof *keys, by_radius_desc);
-    for (size_t t = 0; t < cells; t++) by_rho[t] = keys[t].c;
-    C.rho_cell = rho_cell;
-    C.by_rho = by_rho;
     status = parallel_over(&C, n, point_item, pr);
     if (status < 0) goto done;
     c->delta = dmin;
@@ -497,8 +375,9 @@ int an_certify(const double *xy, size_t n, double tol_rel, an_certificate *c, do
 done:
     if (status == -1) snprintf(err, errlen, "certificate: out of memory");
     if (status == -2) snprintf(err, errlen, "certificate: the local solver found no candidate");
-    free(nn); free(pr); free(rho_cell); free(arg_cell); free(by_rho); free(keys);
+    free(nn); free(pr); free(rho_cell); free(arg_cell); free(order); free(ub);
     free(C.G.start); free(C.G.idx);
+    an_ptree_free(&tree);
     return status < 0 ? -1 : 0;
 }
 

@@ -217,7 +217,8 @@ static int clip_region(const an_far_ws *ws, size_t i, region *R, double best)
 }
 
 typedef struct {
-    cfpo_square S;
+    const double *dom; /* the convex polygon searched, CCW */
+    int ndom;
     double best, bx, by;
     int found;
     double oct[16]; /* a convex polygon inside the points' hull, CCW */
@@ -300,21 +301,21 @@ static int deep_inside(const far_state *F, double ax, double ay)
     return depth(F, ax, ay) > sigma * (1 + 1e-9) + 1e-12 * sqrt(F->w2);
 }
 
-/* Point i's region clipped to S; its farthest vertex may raise the best. */
+/* Point i's region clipped to the domain; its farthest vertex may raise
+ * the best. */
 static void visit(const an_far_ws *ws, size_t i, far_state *F)
 {
-    const cfpo_square S = F->S;
-    const double corner[4][2] = {{S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1}};
+    const double *corner = F->dom;
     const double ax = ws->x[i], ay = ws->y[i];
     double ub = 0;
-    for (int c = 0; c < 4; c++) {
-        const double dx = corner[c][0] - ax, dy = corner[c][1] - ay, d2 = dx * dx + dy * dy;
+    for (int c = 0; c < F->ndom; c++) {
+        const double dx = corner[2 * c] - ax, dy = corner[2 * c + 1] - ay, d2 = dx * dx + dy * dy;
         if (d2 > ub) ub = d2;
     }
     if (ub <= F->best) return;
     if (deep_inside(F, ax, ay)) return;
-    region R = {ws->pa, ws->pb, ws->sd, 4, ub};
-    for (int c = 0; c < 4; c++) { R.P[2 * c] = corner[c][0]; R.P[2 * c + 1] = corner[c][1]; }
+    region R = {ws->pa, ws->pb, ws->sd, F->ndom, ub};
+    memcpy(R.P, corner, 2 * (size_t)F->ndom * sizeof *corner);
     if (!clip_region(ws, i, &R, F->best)) return;
     for (int v = 0; v < R.nv; v++) {
         const double dx = R.P[2 * v] - ax, dy = R.P[2 * v + 1] - ay, d2 = dx * dx + dy * dy;
@@ -347,8 +348,13 @@ static void solve_on(an_far_ws *ws, size_t k, far_state *F)
     }
 }
 
+/* The answer, kept inside the square's sides against rounding (S NULL:
+ * as found). */
 static void clamp_to(const cfpo_square *S, const far_state *F, double *cx, double *cy)
 {
+    *cx = F->bx;
+    *cy = F->by;
+    if (!S) return;
     *cx = F->bx < S->x0 ? S->x0 : F->bx > S->x1 ? S->x1 : F->bx;
     *cy = F->by < S->y0 ? S->y0 : F->by > S->y1 ? S->y1 : F->by;
 }
@@ -362,17 +368,18 @@ static void clamp_to(const cfpo_square *S, const far_state *F, double *cx, doubl
  * free of the hull's vertices holds none of the hull deeper than
  * W^2 / (2 rho), the sagitta of a chord of length W), so the whole set is
  * solved again only as a guard against rounding. */
-static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_square S, double *cx, double *cy,
-                            an_far_ws *ws)
+static double farthest_tree(const double *yx, const double *yy, size_t m, const double *dom, int ndom,
+                            const cfpo_square *Sq, double *cx, double *cy, an_far_ws *ws)
 {
-    far_state F = {S, -1, 0.5 * (S.x0 + S.x1), 0.5 * (S.y0 + S.y1), 0, {0}, 0, {0}, 0};
+    far_state F = {dom, ndom, -1, dom[0], dom[1], 0, {0}, 0, {0}, 0};
+    if (Sq) { F.bx = 0.5 * (Sq->x0 + Sq->x1); F.by = 0.5 * (Sq->y0 + Sq->y1); }
     octagon(yx, yy, m, &F);
-    /* The corners of S are in S: the farthest of them from the points is a
-     * value the answer reaches, known before any region is clipped. */
-    const double corner[4][2] = {{S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1}};
-    for (int c = 0; c < 4; c++) {
-        const double d2 = cfpo_min_dist2(corner[c][0], corner[c][1], yx, yy, (int)m, -1);
-        if (d2 > F.best) { F.best = d2; F.bx = corner[c][0]; F.by = corner[c][1]; F.found = 1; }
+    /* The corners of the domain are in it: the farthest of them from the
+     * points is a value the answer reaches, known before any region is
+     * clipped. */
+    for (int c = 0; c < ndom; c++) {
+        const double d2 = cfpo_min_dist2(dom[2 * c], dom[2 * c + 1], yx, yy, (int)m, -1);
+        if (d2 > F.best) { F.best = d2; F.bx = dom[2 * c]; F.by = dom[2 * c + 1]; F.found = 1; }
     }
     const far_state F0 = F;
     size_t k = 0;
@@ -381,7 +388,7 @@ static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_s
     if (k < m) {
         if (k > 0) solve_on(ws, k, &F);
         if (!F.found) return -1;
-        clamp_to(&S, &F, cx, cy);
+        clamp_to(Sq, &F, cx, cy);
         /* x/y[0, k) still hold only band points (the tree reorders them
          * and its leaves drop repeats, leaving copies of band points). */
         const double d_all = cfpo_min_dist2(*cx, *cy, yx, yy, (int)m, -1);
@@ -393,7 +400,7 @@ static double farthest_tree(const double *yx, const double *yy, size_t m, cfpo_s
     memcpy(ws->y, yy, m * sizeof *yy);
     solve_on(ws, m, &F);
     if (!F.found) return -1;
-    clamp_to(&S, &F, cx, cy);
+    clamp_to(Sq, &F, cx, cy);
     return cfpo_min_dist2(*cx, *cy, yx, yy, (int)m, -1);
 }
 
@@ -407,5 +414,22 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
     }
     if (m > (size_t)INT32_MAX / 4 || reserve(ws, m) != 0) return -1;
     if (m <= AN_FAR_SMALL) return cfpo_local_solve(yx, yy, (int)m, -1, S, hx, hy, -1, cx, cy, ws->scratch);
-    return farthest_tree(yx, yy, m, S, cx, cy, ws);
+    const double dom[8] = {S.x0, S.y0, S.x1, S.y0, S.x1, S.y1, S.x0, S.y1};
+    return farthest_tree(yx, yy, m, dom, 4, &S, cx, cy, ws);
+}
+
+double an_farthest_poly(const double *yx, const double *yy, size_t m, const double *P, int nv, double *cx,
+                        double *cy, an_far_ws *ws)
+{
+    if (m == 0 || nv < 1) return -1;
+    if (m > (size_t)INT32_MAX / 4 || (size_t)nv > (size_t)INT32_MAX / 4 || reserve(ws, m + (size_t)nv) != 0)
+        return -1;
+    /* The domain is copied: the solver's polygon buffers may be the
+     * caller's. */
+    double *dom = malloc(2 * (size_t)nv * sizeof *dom);
+    if (!dom) return -1;
+    memcpy(dom, P, 2 * (size_t)nv * sizeof *dom);
+    const double r = farthest_tree(yx, yy, m, dom, nv, NULL, cx, cy, ws);
+    free(dom);
+    return r;
 }

@@ -49,6 +49,13 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
                    double *cy, an_far_ws *ws);
 void an_far_free(an_far_ws *ws);
 
+/* The same for a convex polygon P of nv vertices (counter-clockwise)
+ * instead of a square, always by the tree: the point (*cx, *cy) of P
+ * farthest from the m >= 1 points, and its squared distance to them; -1
+ * out of memory or no vertex found. */
+double an_farthest_poly(const double *yx, const double *yy, size_t m, const double *P, int nv, double *cx,
+                        double *cy, an_far_ws *ws);
+
 /* The polygon p of n vertices cut to the side where the signed distances
  * sd[v] of its vertices are <= 0 (a half-plane), into q; the new count
  * (at most n + 1). Shared with the certificate's own clipping. */

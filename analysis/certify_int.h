@@ -1,0 +1,55 @@
+/* certify_int.h - what the certificate's files share (certify.c, vmax.c,
+ * lct.c): the set and its indexes, and the per-thread buffers. */
+#ifndef AN_CERTIFY_INT_H
+#define AN_CERTIFY_INT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "farthest.h"
+#include "ptree.h"
+
+typedef struct {
+    size_t g;
+    double L;
+    size_t *start, *idx;
+} an_grid;
+
+typedef struct {
+    const double *xy;
+    size_t n;
+    an_grid G;
+    const an_ptree *tree;  /* the points, for nearest-first walks */
+    const double *nn;
+    double delta, rho, Dn;
+    double *rho_cell;      /* per cell, where it was solved */
+    double *arg_cell;      /* 2 per cell: where the cell's radius is reached */
+    const double *cell_ub; /* per cell: an upper bound of its radius */
+    const size_t *order;   /* the cells being solved */
+    size_t top;            /* the cell where rho is reached */
+} an_cert_ctx;
+
+/* Per-thread buffers: collected images (position, id), a subset, scratch. */
+typedef struct {
+    double *x, *y, *sx, *sy, *scratch;
+    double *pa, *pb, *sd; /* polygons being clipped, signed distances */
+    size_t *id;
+    uint8_t *mark;
+    size_t *marked;       /* the ids marked, to clear them */
+    size_t m, cap;
+    an_far_ws far;        /* the farthest-point solver's buffers */
+    an_pwalk walk;
+} an_cert_work;
+
+/* Room for m collected images, and polygons of m + 8 vertices: 0, or -1
+ * (the buffers kept so far stay valid). */
+int an_cert_reserve(an_cert_work *w, size_t m);
+
+/* T of the farthest point test for point i at (x, y) (certify.c says what
+ * it is): the square of half-side s, the images of the touching points
+ * gathered within Chebyshev Hg. *T = -1 when V(x) is empty or T < rho
+ * for certain. 0, -1 out of memory, or -2 the solver found no vertex. */
+int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y, double s, double Hg, double *T,
+            double *tx, double *ty);
+
+#endif

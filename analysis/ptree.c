@@ -1,0 +1,238 @@
+/* ptree.c - see ptree.h. */
+#include "ptree.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define LEAF 8
+
+static void swap_pt(an_ptree *T, size_t a, size_t b)
+{
+    const double x = T->x[a], y = T->y[a];
+    const size_t id = T->id[a];
+    T->x[a] = T->x[b]; T->y[a] = T->y[b]; T->id[a] = T->id[b];
+    T->x[b] = x; T->y[b] = y; T->id[b] = id;
+}
+
+/* Reorders [lo, hi) so that the k-th smallest of v is at k, smaller or
+ * equal ones before it, larger or equal ones after: selection by a
+ * three-way partition around a median of three. */
+static void select_kth(an_ptree *T, const double *v, size_t lo, size_t hi, size_t k)
+{
+    while (hi - lo > 1) {
+        const double a = v[lo], b = v[lo + (hi - lo) / 2], c = v[hi - 1];
+        const double pivot = a < b ? (b < c ? b : (a < c ? c : a)) : (a < c ? a : (b < c ? c : b));
+        size_t lt = lo, i = lo, gt = hi; /* [lo, lt) < pivot, [lt, i) == pivot, [gt, hi) > pivot */
+        while (i < gt) {
+            if (v[i] < pivot) swap_pt(T, lt++, i++);
+            else if (v[i] > pivot) swap_pt(T, i, --gt);
+            else i++;
+        }
+        if (k < lt) hi = lt;
+        else if (k >= gt) lo = gt;
+        else return;
+    }
+}
+
+static long build(an_ptree *T, size_t lo, size_t hi)
+{
+    const long me = (long)T->nodes++;
+    an_pnode nd = {T->x[lo], T->y[lo], T->x[lo], T->y[lo], lo, hi, -1, -1};
+    for (size_t t = lo + 1; t < hi; t++) {
+        if (T->x[t] < nd.x0) nd.x0 = T->x[t];
+        if (T->x[t] > nd.x1) nd.x1 = T->x[t];
+        if (T->y[t] < nd.y0) nd.y0 = T->y[t];
+        if (T->y[t] > nd.y1) nd.y1 = T->y[t];
+    }
+    T->node[me] = nd;
+    if (hi - lo <= LEAF || (nd.x0 == nd.x1 && nd.y0 == nd.y1)) return me;
+    const size_t mid = lo + (hi - lo) / 2;
+    select_kth(T, nd.x1 - nd.x0 >= nd.y1 - nd.y0 ? T->x : T->y, lo, hi, mid);
+    const long left = build(T, lo, mid);
+    const long right = build(T, mid, hi);
+    T->node[me].left = left;
+    T->node[me].right = right;
+    return me;
+}
+
+int an_ptree_build(an_ptree *T, const double *xy, size_t n)
+{
+    memset(T, 0, sizeof *T);
+    if (n == 0) return 0;
+    T->x = malloc(n * sizeof *T->x);
+    T->y = malloc(n * sizeof *T->y);
+    T->id = malloc(n * sizeof *T->id);
+    T->node = malloc((2 * n / LEAF + 2 * 64 + 1) * 2 * sizeof *T->node);
+    if (!T->x || !T->y || !T->id || !T->node) return -1;
+    for (size_t i = 0; i < n; i++) {
+        T->x[i] = xy[2 * i];
+        T->y[i] = xy[2 * i + 1];
+        T->id[i] = i;
+    }
+    T->n = n;
+    build(T, 0, n);
+    return 0;
+}
+
+void an_ptree_free(an_ptree *T)
+{
+    free(T->x); free(T->y); free(T->id); free(T->node);
+    memset(T, 0, sizeof *T);
+}
+
+/* Squared distance from (qx, qy) to a box moved by (ox, oy). Computed as
+ * a point's distance is (the point moved, then the difference taken), so
+ * by the monotony of rounding it is never above a point's inside. */
+static double box_d2(const an_pnode *b, double ox, double oy, double qx, double qy)
+{
+    const double x0 = b->x0 + ox, x1 = b->x1 + ox, y0 = b->y0 + oy, y1 = b->y1 + oy;
+    const double dx = qx < x0 ? x0 - qx : qx > x1 ? qx - x1 : 0;
+    const double dy = qy < y0 ? y0 - qy : qy > y1 ? qy - y1 : 0;
+    return dx * dx + dy * dy;
+}
+
+#define STACK 160 /* the depth is about log2(n / LEAF) */
+
+double an_ptree_nearest(const an_ptree *T, double qx, double qy, size_t skip)
+{
+    double best = INFINITY;
+    if (T->n == 0) return best;
+    qx -= floor(qx);
+    qy -= floor(qy);
+    /* With the query and the points in [0, 1), each point's nearest image
+     * is among its shifts by -1, 0, 1 in each coordinate. */
+    for (int oy = -1; oy <= 1; oy++)
+        for (int ox = -1; ox <= 1; ox++) {
+            long stack[STACK];
+            int sp = 0;
+            stack[sp++] = 0;
+            while (sp > 0) {
+                const an_pnode *b = &T->node[stack[--sp]];
+                if (box_d2(b, ox, oy, qx, qy) >= best) continue;
+                if (b->left < 0) {
+                    for (size_t t = b->lo; t < b->hi; t++) {
+                        if (T->id[t] == skip) continue;
+                        const double dx = (T->x[t] + ox) - qx, dy = (T->y[t] + oy) - qy, d2 = dx * dx + dy * dy;
+                        if (d2 < best) best = d2;
+                    }
+                    continue;
+                }
+                const long l = b->left, r = b->right;
+                const int lnear = box_d2(&T->node[l], ox, oy, qx, qy) <= box_d2(&T->node[r], ox, oy, qx, qy);
+                stack[sp++] = lnear ? r : l;
+                stack[sp++] = lnear ? l : r;
+            }
+        }
+    return best;
+}
+
+/* Heap entries: (key, item, ox, oy); item >= 0 a node, item < 0 the point
+ * at tree position -item - 1. Ordered by key, then item, then offset. */
+static int less4(const double *a, const double *b)
+{
+    for (int k = 0; k < 4; k++)
+        if (a[k] != b[k]) return a[k] < b[k];
+    return 0;
+}
+
+static void swap4(double *a, double *b)
+{
+    for (int k = 0; k < 4; k++) { const double t = a[k]; a[k] = b[k]; b[k] = t; }
+}
+
+static int push(an_pwalk *W, double key, double item, double ox, double oy)
+{
+    if (W->len == W->cap) {
+        const size_t cap = W->cap ? 2 * W->cap : 256;
+        double *k = realloc(W->key, 4 * cap * sizeof *k);
+        if (!k) return -1;
+        W->key = k;
+        W->cap = cap;
+    }
+    size_t c = W->len++;
+    double *h = W->key;
+    h[4 * c] = key; h[4 * c + 1] = item; h[4 * c + 2] = ox; h[4 * c + 3] = oy;
+    while (c > 0) {
+        const size_t p = (c - 1) / 2;
+        if (!less4(h + 4 * c, h + 4 * p)) break;
+        swap4(h + 4 * c, h + 4 * p);
+        c = p;
+    }
+    return 0;
+}
+
+static void pop(an_pwalk *W)
+{
+    double *h = W->key;
+    const size_t n = --W->len;
+    memcpy(h, h + 4 * n, 4 * sizeof *h);
+    for (size_t r = 0;;) {
+        size_t c = 2 * r + 1;
+        if (c >= n) return;
+        if (c + 1 < n && less4(h + 4 * (c + 1), h + 4 * c)) c++;
+        if (!less4(h + 4 * c, h + 4 * r)) return;
+        swap4(h + 4 * c, h + 4 * r);
+        r = c;
+    }
+}
+
+int an_pwalk_start(an_pwalk *W, const an_ptree *T, double qx, double qy, double r, size_t skip)
+{
+    W->len = 0;
+    W->skip = skip;
+    W->T = T;
+    W->qx = qx;
+    W->qy = qy;
+    W->r2 = r * r;
+    if (T->n == 0) return 0;
+    /* Image (ox, oy) of the set lies in [ox, ox + 1) x [oy, oy + 1). */
+    const double ox0 = floor(qx - r), ox1 = floor(qx + r), oy0 = floor(qy - r), oy1 = floor(qy + r);
+    for (double oy = oy0; oy <= oy1; oy++)
+        for (double ox = ox0; ox <= ox1; ox++) {
+            const double d2 = box_d2(&T->node[0], ox, oy, qx, qy);
+            if (d2 <= W->r2 && push(W, d2, 0, ox, oy) != 0) return -1;
+        }
+    return 0;
+}
+
+int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2)
+{
+    const an_ptree *T = W->T;
+    while (W->len > 0) {
+        const double key = W->key[0], ox = W->key[2], oy = W->key[3];
+        const long item = (long)W->key[1];
+        pop(W);
+        if (item < 0) {
+            const size_t t = (size_t)(-item - 1);
+            *px = T->x[t] + ox;
+            *py = T->y[t] + oy;
+            *id = T->id[t];
+            *d2 = key;
+            return 1;
+        }
+        const an_pnode *b = &T->node[item];
+        if (b->left >= 0) {
+            const double dl = box_d2(&T->node[b->left], ox, oy, W->qx, W->qy);
+            const double dr = box_d2(&T->node[b->right], ox, oy, W->qx, W->qy);
+            if (dl <= W->r2 && push(W, dl, (double)b->left, ox, oy) != 0) return -1;
+            if (dr <= W->r2 && push(W, dr, (double)b->right, ox, oy) != 0) return -1;
+            continue;
+        }
+        const int one = b->x0 == b->x1 && b->y0 == b->y1; /* one position: one of its points */
+        for (size_t t = b->lo; t < b->hi; t++) {
+            if (one && T->id[t] == W->skip) continue;
+            const double X = T->x[t] + ox, Y = T->y[t] + oy;
+            const double dx = X - W->qx, dy = Y - W->qy, e2 = dx * dx + dy * dy;
+            if (e2 <= W->r2 && push(W, e2, -(double)t - 1, ox, oy) != 0) return -1;
+            if (one) break;
+        }
+    }
+    return 0;
+}
+
+void an_pwalk_free(an_pwalk *W)
+{
+    free(W->key);
+    memset(W, 0, sizeof *W);
+}

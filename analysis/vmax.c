@@ -1,0 +1,187 @@
+/* vmax.c - T of the farthest point test: the largest distance to the rest
+ * of the set over the Voronoi cell V(x) of x (certify.c says why that
+ * decides the test), found through the points' tree, so that a point of
+ * a cluster costs about log n and not one scan of every image. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "certify_int.h"
+#include "geom.h"
+
+#define VMAX_DIRECT 64 /* touching points solved by clipping each against all */
+
+/* Clips polygon P (n vertices in p) to the side of the bisector of a and b
+ * nearer a, into q. Returns the new count. */
+static int clip(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by)
+{
+    const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
+    for (int v = 0; v < n; v++) sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
+    return an_clip_sd(p, n, q, sd);
+}
+
+/* Sorts the m positions (sx, sy) and drops repeats; returns the count. */
+static int unique_points(double *sx, double *sy, int m, double *tmp)
+{
+    for (int t = 0; t < m; t++) { tmp[2 * t] = sx[t]; tmp[2 * t + 1] = sy[t]; }
+    qsort(tmp, (size_t)m, 2 * sizeof *tmp, an_cmp_pair);
+    int k = 0;
+    for (int t = 0; t < m; t++)
+        if (k == 0 || tmp[2 * t] != sx[k - 1] || tmp[2 * t + 1] != sy[k - 1]) {
+            sx[k] = tmp[2 * t];
+            sy[k] = tmp[2 * t + 1];
+            k++;
+        }
+    return k;
+}
+
+/* V(x): the square of half-side s around x clipped by the bisectors of x
+ * and the images of the other points, nearest first, until the next one is
+ * more than twice the polygon's reach away (it cannot cut it). Leaves the
+ * polygon in w->pa (which = 0) or w->pb (1), its squared reach in *far2. */
+static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y, double s, double reach,
+                   int *nv_out, int *which, double *far2)
+{
+    double *P = w->pa, *Q = w->pb;
+    int nv = 4, in_b = 0;
+    const double sq[8] = {x - s, y - s, x + s, y - s, x + s, y + s, x - s, y + s};
+    memcpy(P, sq, sizeof sq);
+    *far2 = 2 * s * s;
+    if (an_pwalk_start(&w->walk, C->tree, x, y, 2 * sqrt(*far2) * (1 + 1e-9), i) != 0) return -1;
+    double lastx = NAN, lasty = NAN, px, py, d2;
+    size_t id;
+    int got;
+    while (nv > 0 && (got = an_pwalk_next(&w->walk, &px, &py, &id, &d2)) != 0) {
+        if (got < 0) return -1;
+        if (d2 >= 4 * *far2 * (1 + 1e-9)) break;
+        if (id == i || fabs(px - x) > reach || fabs(py - y) > reach) continue;
+        if (px == x && py == y) continue;            /* a coincident point: no bisector */
+        if (px == lastx && py == lasty) continue;    /* the same bisector again */
+        lastx = px;
+        lasty = py;
+        if ((size_t)nv + 1 > w->cap + 8) {
+            if (an_cert_reserve(w, 2 * w->cap) != 0) return -1;
+            P = in_b ? w->pb : w->pa;
+            Q = in_b ? w->pa : w->pb;
+        }
+        nv = clip(P, nv, Q, w->sd, x, y, px, py);
+        double *tmp = P; P = Q; Q = tmp;
+        in_b = !in_b;
+        *far2 = 0;
+        for (int v = 0; v < nv; v++) {
+            const double dx = P[2 * v] - x, dy = P[2 * v + 1] - y;
+            *far2 = fmax(*far2, dx * dx + dy * dy);
+        }
+    }
+    *nv_out = nv;
+    *which = in_b;
+    return 0;
+}
+
+int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y, double s, double Hg, double *T,
+            double *tx, double *ty)
+{
+    const double reach = (s + C->rho) * (1 + 1e-9) + 1e-12;
+    *T = -1;
+    int nv, in_b;
+    double far2;
+    if (cell_of(C, i, w, x, y, s, reach, &nv, &in_b, &far2) != 0) return -1;
+    if (nv == 0) return 0;
+    /* For p in V(x), d(p, X \ {x}) <= |p - x| + d(x): when even that stays
+     * below rho, T < rho and the test needs no more. */
+    if ((sqrt(far2) + C->nn[i]) * (1 + 1e-9) < C->rho) return 0;
+    const double *P = in_b ? w->pb : w->pa;
+    /* Points whose bisector touches V(x) (within rounding eps), by id: a
+     * vertex v with (v - m).n >= -eps |n| needs |n| <= 2 sqrt(far2) + 2 eps. */
+    double ext = 0;
+    for (int v = 0; v < nv; v++) ext = fmax(ext, fmax(fabs(P[2 * v] - x), fabs(P[2 * v + 1] - y)));
+    const double eps = 1e-9 * (ext + 1e-300);
+    if (!w->mark) {
+        w->mark = calloc(C->n, 1);
+        w->marked = malloc(C->n * sizeof *w->marked);
+        if (!w->mark || !w->marked) return -1;
+    }
+    size_t nmarked = 0;
+    if (an_pwalk_start(&w->walk, C->tree, x, y, (2 * sqrt(far2) + 2 * eps) * (1 + 1e-9) + 1e-300, i) != 0)
+        return -1;
+    double px, py, d2, lastx = NAN, lasty = NAN;
+    size_t id;
+    int got;
+    while ((got = an_pwalk_next(&w->walk, &px, &py, &id, &d2)) != 0) {
+        if (got < 0) return -1;
+        if (id == i) continue;
+        /* A point where the image before it was: the same bisector, and
+         * its images are that one's (gathered if that one is marked). */
+        if (px == lastx && py == lasty) continue;
+        lastx = px;
+        lasty = py;
+        if (w->mark[id] || fabs(px - x) > reach || fabs(py - y) > reach) continue;
+        const double nx = px - x, ny = py - y, mx = 0.5 * (px + x), my = 0.5 * (py + y);
+        const double scale = sqrt(nx * nx + ny * ny);
+        for (int v = 0; v < nv; v++)
+            if ((P[2 * v] - mx) * nx + (P[2 * v + 1] - my) * ny >= -eps * scale) {
+                w->mark[id] = 1;
+                w->marked[nmarked++] = id;
+                break;
+            }
+    }
+    /* Every image of those points within Hg of x. */
+    size_t k = 0;
+    for (size_t t = 0; t < nmarked; t++) {
+        const size_t j = w->marked[t];
+        const double xj = C->xy[2 * j], yj = C->xy[2 * j + 1];
+        for (double oy = ceil(y - Hg - yj) - 1; oy <= floor(y + Hg - yj) + 1; oy++)
+            for (double ox = ceil(x - Hg - xj) - 1; ox <= floor(x + Hg - xj) + 1; ox++) {
+                const double X = xj + ox, Y = yj + oy;
+                if (fabs(X - x) > Hg || fabs(Y - y) > Hg) continue;
+                if (an_cert_reserve(w, k + (size_t)nv + 1) != 0) return -1;
+                P = in_b ? w->pb : w->pa;
+                w->sx[k] = X;
+                w->sy[k] = Y;
+                k++;
+            }
+        w->mark[j] = 0;
+    }
+    if (an_cert_reserve(w, k + (size_t)nv + 8) != 0) return -1;
+    P = in_b ? w->pb : w->pa;
+    k = (size_t)unique_points(w->sx, w->sy, (int)k, w->scratch);
+    /* The largest distance to those points over V(x): for each of them,
+     * V(x) clipped to its own cell among them, at a vertex; by the tree of
+     * farthest.c when they are many (the far ends of a line of points,
+     * where V(x) has a vertex for each image of the line). */
+    double best = -1, bx = x, by = y;
+    if (k > VMAX_DIRECT) {
+        best = an_farthest_poly(w->sx, w->sy, k, P, nv, &bx, &by, &w->far);
+        if (best < 0) return -2;
+        k = 0;
+    }
+    /* V(x) cut by k more bisectors: at most nv + k <= cap + 8 vertices. */
+    double *R = w->scratch, *U = w->scratch + 4 * (w->cap + 8);
+    for (size_t a = 0; a < k; a++) {
+        memcpy(R, P, 2 * (size_t)nv * sizeof *R);
+        int nr = nv;
+        for (size_t b = 0; b < k && nr > 0; b++) {
+            if (b == a) continue;
+            nr = clip(R, nr, U, w->sd, w->sx[a], w->sy[a], w->sx[b], w->sy[b]);
+            double *tmp = R; R = U; U = tmp;
+        }
+        for (int v = 0; v < nr; v++) {
+            const double dx = R[2 * v] - w->sx[a], dy = R[2 * v + 1] - w->sy[a], e2 = dx * dx + dy * dy;
+            if (e2 > best) { best = e2; bx = R[2 * v]; by = R[2 * v + 1]; }
+        }
+        R = w->scratch;
+        U = w->scratch + 4 * (w->cap + 8);
+    }
+    if (best < 0) return 0;
+    if (k == 0) { /* solved by the tree: best is already the distance */
+        *T = sqrt(best);
+        *tx = cfpo_wrap01(bx);
+        *ty = cfpo_wrap01(by);
+        return 0;
+    }
+    /* The value from the distances themselves, not the clipping. */
+    *T = sqrt(cfpo_min_dist2(bx, by, w->sx, w->sy, (int)k, -1));
+    *tx = cfpo_wrap01(bx);
+    *ty = cfpo_wrap01(by);
+    return 0;
+}
