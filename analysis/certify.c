@@ -92,7 +92,9 @@ int an_cert_reserve(work *w, size_t m)
     if (pb) w->pb = pb;
     double *sd = realloc(w->sd, 2 * (cap + 8) * sizeof *sd);
     if (sd) w->sd = sd;
-    if (!x || !y || !sx || !sy || !id || !sc || !pa || !pb || !sd) return -1;
+    double *fr2 = realloc(w->fr2, (cap + 8) * sizeof *fr2);
+    if (fr2) w->fr2 = fr2;
+    if (!x || !y || !sx || !sy || !id || !sc || !pa || !pb || !sd || !fr2) return -1;
     w->cap = cap;
     return 0;
 }
@@ -100,8 +102,9 @@ int an_cert_reserve(work *w, size_t m)
 static void work_free(work *w)
 {
     free(w->x); free(w->y); free(w->sx); free(w->sy); free(w->id); free(w->scratch);
-    free(w->pa); free(w->pb); free(w->sd); free(w->mark); free(w->marked);
+    free(w->pa); free(w->pb); free(w->sd); free(w->fr2); free(w->mark); free(w->marked);
     an_far_free(&w->far);
+    an_far_prep_free(&w->prep);
     an_pwalk_free(&w->walk);
 }
 
@@ -209,12 +212,26 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     const double e = h - C->delta;
     const cfpo_square S = {x - e, y - e, x + e, y + e};
     m = subset(w, x, y, h, C->n, w->sx, w->sy);
-    r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
+    /* A large neighbourhood seen again (each point of a cluster has the
+     * whole cluster for D(x)) is solved in its prepared form. */
+    const int large = m > AN_FAR_SMALL;
+    int prepared = 0;
+    if (large && an_far_prep_same(&w->prep, w->sx, w->sy, (size_t)m)) {
+        if (!w->prep.ready && an_far_prep_build(&w->prep) != 0) return -1;
+        prepared = 1;
+        r2 = an_far_prep_solve(&w->prep, S, 0, 0, 0, &px, &py, &w->far);
+    } else {
+        if (large && an_far_prep_set(&w->prep, w->sx, w->sy, (size_t)m) != 0) return -1;
+        r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
+    }
     if (r2 < 0) return -2;
     res->p1 = sqrt(r2) - C->delta;
+    const int m1 = m;
     m = subset(w, x, y, h, i, w->sx, w->sy);
     double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
-    r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
+    r2 = -3;
+    if (prepared && m == m1 - 1 && m > AN_FAR_SMALL) r2 = an_far_prep_solve(&w->prep, S, 1, x, y, &px, &py, &w->far);
+    if (r2 == -3) r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
     if (r2 < 0) return -2;
     res->p2 = sqrt(r2) - sqrt(dY2);
     return 0;

@@ -33,11 +33,13 @@ typedef struct {
 typedef struct {
     double *x, *y, *sx, *sy, *scratch;
     double *pa, *pb, *sd; /* polygons being clipped, signed distances */
+    double *fr2;          /* squared radii of the walks' filter disks */
     size_t *id;
     uint8_t *mark;
     size_t *marked;       /* the ids marked, to clear them */
     size_t m, cap;
     an_far_ws far;        /* the farthest-point solver's buffers */
+    an_far_prep prep;     /* the last large neighbourhood, prepared when seen again */
     an_pwalk walk;
 } an_cert_work;
 

@@ -1,5 +1,6 @@
 /* farthest.c - see farthest.h. */
 #include "farthest.h"
+#include "farthest_int.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -13,18 +14,9 @@
         (p) = q_;                                                                                                      \
     } while (0)
 
-/* A node of the 2-d tree: the bounding box of its points, their range in
- * x/y, and its children (left < 0: a leaf). */
-typedef struct an_kd_node {
-    double x0, y0, x1, y1;
-    size_t lo, hi;
-    long left, right;
-} kd_node;
-
 #define KD_LEAF 8
-#define KD_DEPTH 120 /* midpoint splits: enough for any double-precision spread */
 
-static int reserve(an_far_ws *ws, size_t m)
+int an_far_reserve(an_far_ws *ws, size_t m)
 {
     if (m <= ws->cap) return 0;
     size_t cap = ws->cap ? ws->cap : 256;
@@ -97,7 +89,7 @@ static size_t sort_unique(an_far_ws *ws, size_t lo, size_t hi)
  * bounding box (so a cluster gets depth where it needs it). A leaf keeps
  * each position once (the distance to a set does not depend on how often
  * a position occurs); equal positions always fall on the same side. */
-static long kd_build(an_far_ws *ws, size_t lo, size_t hi, int depth)
+long an_kd_build(an_far_ws *ws, size_t lo, size_t hi, int depth)
 {
     double *x = ws->x, *y = ws->y;
     const long id = (long)ws->nodes_used++;
@@ -134,8 +126,8 @@ static long kd_build(an_far_ws *ws, size_t lo, size_t hi, int depth)
         return id;
     }
     ws->nodes[id] = nd;
-    const long left = kd_build(ws, lo, split, depth + 1);
-    const long right = kd_build(ws, split, hi, depth + 1);
+    const long left = an_kd_build(ws, lo, split, depth + 1);
+    const long right = an_kd_build(ws, split, hi, depth + 1);
     ws->nodes[id].left = left;
     ws->nodes[id].right = right;
     return id;
@@ -143,20 +135,12 @@ static long kd_build(an_far_ws *ws, size_t lo, size_t hi, int depth)
 
 /* Squared distance from (ax, ay) to a node's box, rounded down a little
  * (the box's sides are its points' own coordinates). */
-static double box_d2(const kd_node *n, double ax, double ay)
+double an_kd_box_d2(const kd_node *n, double ax, double ay)
 {
     const double dx = ax < n->x0 ? n->x0 - ax : ax > n->x1 ? ax - n->x1 : 0;
     const double dy = ay < n->y0 ? n->y0 - ay : ay > n->y1 ? ay - n->y1 : 0;
     return (dx * dx + dy * dy) * (1 - 1e-12);
 }
-
-/* Point i's region: a convex polygon P of nv vertices, far2 its largest
- * squared distance from point i. */
-typedef struct {
-    double *P, *Q, *sd;
-    int nv;
-    double far2;
-} region;
 
 /* Clips the region by the bisector of (ax, ay) and (bx, by), keeping the
  * side of a: 0 when nothing is left. */
@@ -190,14 +174,12 @@ static int clip_by(region *R, double ax, double ay, double bx, double by)
 /* Pushes the children of node n, the nearer to (ax, ay) on top. */
 static void push_children(const kd_node *N, const kd_node *n, double ax, double ay, long *stack, int *sp)
 {
-    const double dl = box_d2(&N[n->left], ax, ay), dr = box_d2(&N[n->right], ax, ay);
+    const double dl = an_kd_box_d2(&N[n->left], ax, ay), dr = an_kd_box_d2(&N[n->right], ax, ay);
     stack[(*sp)++] = dl <= dr ? n->right : n->left;
     stack[(*sp)++] = dl <= dr ? n->left : n->right;
 }
 
-/* Clips point i's region by every other point near enough to cut it,
- * nearest boxes first; 0 once it is empty or no farther than best. */
-static int clip_region(const an_far_ws *ws, size_t i, region *R, double best)
+int an_clip_region(const an_far_ws *ws, size_t i, size_t excl, region *R, double best)
 {
     const kd_node *N = ws->nodes;
     const double ax = ws->x[i], ay = ws->y[i];
@@ -206,10 +188,10 @@ static int clip_region(const an_far_ws *ws, size_t i, region *R, double best)
     stack[sp++] = 0;
     while (sp > 0) {
         const kd_node *n = &N[stack[--sp]];
-        if (box_d2(n, ax, ay) >= 4 * R->far2) continue;
+        if (an_kd_box_d2(n, ax, ay) >= 4 * R->far2) continue;
         if (n->left >= 0) { push_children(N, n, ax, ay, stack, &sp); continue; }
         for (size_t j = n->lo; j < n->hi; j++) {
-            if (j == i) continue;
+            if (j == i || j == excl) continue;
             if (!clip_by(R, ax, ay, ws->x[j], ws->y[j]) || R->far2 <= best) return 0;
         }
     }
@@ -316,7 +298,7 @@ static void visit(const an_far_ws *ws, size_t i, far_state *F)
     if (deep_inside(F, ax, ay)) return;
     region R = {ws->pa, ws->pb, ws->sd, F->ndom, ub};
     memcpy(R.P, corner, 2 * (size_t)F->ndom * sizeof *corner);
-    if (!clip_region(ws, i, &R, F->best)) return;
+    if (!an_clip_region(ws, i, (size_t)-1, &R, F->best)) return;
     for (int v = 0; v < R.nv; v++) {
         const double dx = R.P[2 * v] - ax, dy = R.P[2 * v + 1] - ay, d2 = dx * dx + dy * dy;
         if (d2 > F->best) { F->best = d2; F->bx = R.P[2 * v]; F->by = R.P[2 * v + 1]; F->found = 1; }
@@ -327,7 +309,7 @@ static void visit(const an_far_ws *ws, size_t i, far_state *F)
 static void solve_on(an_far_ws *ws, size_t k, far_state *F)
 {
     ws->nodes_used = 0;
-    kd_build(ws, 0, k, 0);
+    an_kd_build(ws, 0, k, 0);
     /* The leaves in tree order; a box whose four corners are deep inside
      * the hull holds only such points (depth is a minimum of linear
      * functions, least at a corner of a box): it is passed over whole. */
@@ -412,7 +394,7 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
         *cy = 0.5 * (S.y0 + S.y1);
         return INFINITY;
     }
-    if (m > (size_t)INT32_MAX / 4 || reserve(ws, m) != 0) return -1;
+    if (m > (size_t)INT32_MAX / 4 || an_far_reserve(ws, m) != 0) return -1;
     if (m <= AN_FAR_SMALL) return cfpo_local_solve(yx, yy, (int)m, -1, S, hx, hy, -1, cx, cy, ws->scratch);
     const double dom[8] = {S.x0, S.y0, S.x1, S.y0, S.x1, S.y1, S.x0, S.y1};
     return farthest_tree(yx, yy, m, dom, 4, &S, cx, cy, ws);
@@ -422,7 +404,7 @@ double an_farthest_poly(const double *yx, const double *yy, size_t m, const doub
                         double *cy, an_far_ws *ws)
 {
     if (m == 0 || nv < 1) return -1;
-    if (m > (size_t)INT32_MAX / 4 || (size_t)nv > (size_t)INT32_MAX / 4 || reserve(ws, m + (size_t)nv) != 0)
+    if (m > (size_t)INT32_MAX / 4 || (size_t)nv > (size_t)INT32_MAX / 4 || an_far_reserve(ws, m + (size_t)nv) != 0)
         return -1;
     /* The domain is copied: the solver's polygon buffers may be the
      * caller's. */

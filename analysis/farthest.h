@@ -56,6 +56,34 @@ void an_far_free(an_far_ws *ws);
 double an_farthest_poly(const double *yx, const double *yy, size_t m, const double *P, int nv, double *cx,
                         double *cy, an_far_ws *ws);
 
+/* A set prepared once for many solves (farprep.c): the same answers as
+ * an_farthest's tree, with each solve costing about the number of
+ * positions whose Voronoi cell reaches far (a cluster's rim) instead of
+ * the whole set. Zero-initialise; an_far_prep_free at the end. */
+typedef struct {
+    an_far_ws tree;  /* the set's positions in tree order, and the tree */
+    double *reach2;  /* per tree position: its cell's squared reach */
+    size_t *cand;    /* the positions by decreasing reach */
+    double *yx, *yy; /* the set as given, to recognise it */
+    size_t m, u, cap;
+    int ready;       /* built since set */
+} an_far_prep;
+
+/* 1 when the m points (yx, yy) are, in order, the set last given. */
+int an_far_prep_same(const an_far_prep *P, const double *yx, const double *yy, size_t m);
+/* Keeps a copy of the set (not built yet): 0, or -1 out of memory. */
+int an_far_prep_set(an_far_prep *P, const double *yx, const double *yy, size_t m);
+/* Builds the tree and the reaches of the set given: 0, or -1. */
+int an_far_prep_build(an_far_prep *P);
+/* The point of S farthest from the set, or (exclude) from the set with
+ * one copy of the position (ex, ey) left out; its squared distance. -1
+ * out of memory or not built; -3 when this case is not for the prepared
+ * form (the position is not in the set, or its cell is not bounded):
+ * call an_farthest. */
+double an_far_prep_solve(const an_far_prep *P, cfpo_square S, int exclude, double ex, double ey, double *cx,
+                         double *cy, an_far_ws *ws);
+void an_far_prep_free(an_far_prep *P);
+
 /* The polygon p of n vertices cut to the side where the signed distances
  * sd[v] of its vertices are <= 0 (a half-plane), into q; the new count
  * (at most n + 1). Shared with the certificate's own clipping. */

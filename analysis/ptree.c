@@ -181,6 +181,7 @@ int an_pwalk_start(an_pwalk *W, const an_ptree *T, double qx, double qy, double 
 {
     W->len = 0;
     W->skip = skip;
+    W->fn = 0;
     W->T = T;
     W->qx = qx;
     W->qy = qy;
@@ -194,6 +195,31 @@ int an_pwalk_start(an_pwalk *W, const an_ptree *T, double qx, double qy, double 
             if (d2 <= W->r2 && push(W, d2, 0, ox, oy) != 0) return -1;
         }
     return 0;
+}
+
+void an_pwalk_filter(an_pwalk *W, const double *fv, const double *fr2, int fn)
+{
+    W->fv = fv;
+    W->fr2 = fr2;
+    W->fn = fn;
+}
+
+/* Whether the box [x0, x1] x [y0, y1] meets one of the filter's disks. */
+static int kept(const an_pwalk *W, double x0, double y0, double x1, double y1)
+{
+    if (W->fn == 0) return 1;
+    for (int v = 0; v < W->fn; v++) {
+        const double cx = W->fv[2 * v], cy = W->fv[2 * v + 1];
+        const double dx = cx < x0 ? x0 - cx : cx > x1 ? cx - x1 : 0;
+        const double dy = cy < y0 ? y0 - cy : cy > y1 ? cy - y1 : 0;
+        if (dx * dx + dy * dy <= W->fr2[v]) return 1;
+    }
+    return 0;
+}
+
+static int kept_node(const an_pwalk *W, const an_pnode *b, double ox, double oy)
+{
+    return kept(W, b->x0 + ox, b->y0 + oy, b->x1 + ox, b->y1 + oy);
 }
 
 int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2)
@@ -215,8 +241,10 @@ int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2)
         if (b->left >= 0) {
             const double dl = box_d2(&T->node[b->left], ox, oy, W->qx, W->qy);
             const double dr = box_d2(&T->node[b->right], ox, oy, W->qx, W->qy);
-            if (dl <= W->r2 && push(W, dl, (double)b->left, ox, oy) != 0) return -1;
-            if (dr <= W->r2 && push(W, dr, (double)b->right, ox, oy) != 0) return -1;
+            if (dl <= W->r2 && kept_node(W, &T->node[b->left], ox, oy) && push(W, dl, (double)b->left, ox, oy) != 0)
+                return -1;
+            if (dr <= W->r2 && kept_node(W, &T->node[b->right], ox, oy) && push(W, dr, (double)b->right, ox, oy) != 0)
+                return -1;
             continue;
         }
         const int one = b->x0 == b->x1 && b->y0 == b->y1; /* one position: one of its points */
@@ -224,7 +252,7 @@ int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2)
             if (one && T->id[t] == W->skip) continue;
             const double X = T->x[t] + ox, Y = T->y[t] + oy;
             const double dx = X - W->qx, dy = Y - W->qy, e2 = dx * dx + dy * dy;
-            if (e2 <= W->r2 && push(W, e2, -(double)t - 1, ox, oy) != 0) return -1;
+            if (e2 <= W->r2 && kept(W, X, Y, X, Y) && push(W, e2, -(double)t - 1, ox, oy) != 0) return -1;
             if (one) break;
         }
     }

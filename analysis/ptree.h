@@ -44,6 +44,8 @@ typedef struct {
     const an_ptree *T;
     double qx, qy, r2;
     size_t skip;
+    const double *fv, *fr2; /* the filter (an_pwalk_filter): disks, fn of them */
+    int fn;
 } an_pwalk;
 
 int an_pwalk_start(an_pwalk *W, const an_ptree *T, double qx, double qy, double r, size_t skip);
@@ -52,5 +54,11 @@ int an_pwalk_start(an_pwalk *W, const an_ptree *T, double qx, double qy, double 
  * out in an unspecified but fixed order. */
 int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2);
 void an_pwalk_free(an_pwalk *W);
+
+/* From now on, images (and boxes of them) meeting none of the fn closed
+ * disks of centres fv[2v], fv[2v + 1] and squared radii fr2[v] are left
+ * out (fn = 0: none is). The arrays are read at each step, not copied: a
+ * caller may shrink them as it goes, never grow them. start clears it. */
+void an_pwalk_filter(an_pwalk *W, const double *fv, const double *fr2, int fn);
 
 #endif

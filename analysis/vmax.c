@@ -35,6 +35,21 @@ static int unique_points(double *sx, double *sy, int m, double *tmp)
     return k;
 }
 
+/* Walks on only through images within sqrt(fr2[v]) of some vertex v of
+ * the polygon P: fr2[v] = |v - x|^2 (1 + 1e-9) + slack. An image y whose
+ * bisector with x meets P has |v - y| < |v - x| at a vertex ((v - m).n =
+ * (|v - x|^2 - |v - y|^2) / 2, linear in v, so largest at a vertex); on
+ * a strip-like V(x) (a line of points) this passes over the whole line
+ * that the distance bound alone would walk through. */
+static void set_filter(an_cert_work *w, const double *P, int nv, double x, double y, double slack)
+{
+    for (int v = 0; v < nv; v++) {
+        const double dx = P[2 * v] - x, dy = P[2 * v + 1] - y;
+        w->fr2[v] = (dx * dx + dy * dy) * (1 + 1e-9) + slack + 1e-300;
+    }
+    an_pwalk_filter(&w->walk, P, w->fr2, nv);
+}
+
 /* V(x): the square of half-side s around x clipped by the bisectors of x
  * and the images of the other points, nearest first, until the next one is
  * more than twice the polygon's reach away (it cannot cut it). Leaves the
@@ -48,6 +63,7 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
     memcpy(P, sq, sizeof sq);
     *far2 = 2 * s * s;
     if (an_pwalk_start(&w->walk, C->tree, x, y, 2 * sqrt(*far2) * (1 + 1e-9), i) != 0) return -1;
+    set_filter(w, P, nv, x, y, 0);
     double lastx = NAN, lasty = NAN, px, py, d2;
     size_t id;
     int got;
@@ -67,6 +83,7 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
         nv = clip(P, nv, Q, w->sd, x, y, px, py);
         double *tmp = P; P = Q; Q = tmp;
         in_b = !in_b;
+        set_filter(w, P, nv, x, y, 0);
         *far2 = 0;
         for (int v = 0; v < nv; v++) {
             const double dx = P[2 * v] - x, dy = P[2 * v + 1] - y;
@@ -104,6 +121,8 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
     size_t nmarked = 0;
     if (an_pwalk_start(&w->walk, C->tree, x, y, (2 * sqrt(far2) + 2 * eps) * (1 + 1e-9) + 1e-300, i) != 0)
         return -1;
+    /* Touching within eps: |v - y|^2 <= |v - x|^2 + 2 eps |n| at a vertex. */
+    set_filter(w, P, nv, x, y, 2 * eps * (2 * sqrt(far2) + 2 * eps) * (1 + 1e-9));
     double px, py, d2, lastx = NAN, lasty = NAN;
     size_t id;
     int got;

@@ -1,0 +1,44 @@
+/* farthest_int.h - the pieces of farthest.c that its prepared form
+ * (farprep.c) shares: the 2-d tree over a workspace's points and the
+ * clipping of one point's region by the others. */
+#ifndef AN_FARTHEST_INT_H
+#define AN_FARTHEST_INT_H
+
+#include <stddef.h>
+
+#include "farthest.h"
+
+/* A node of the 2-d tree: the bounding box of its points, their range in
+ * x/y, and its children (left < 0: a leaf). */
+typedef struct an_kd_node {
+    double x0, y0, x1, y1;
+    size_t lo, hi;
+    long left, right;
+} kd_node;
+
+#define KD_DEPTH 120 /* midpoint splits: enough for any double-precision spread */
+
+/* Point i's region: a convex polygon P of nv vertices, far2 its largest
+ * squared distance from point i. */
+typedef struct {
+    double *P, *Q, *sd;
+    int nv;
+    double far2;
+} region;
+
+/* Room for m points (and polygons of m + 8 vertices): 0 or -1. */
+int an_far_reserve(an_far_ws *ws, size_t m);
+
+/* The tree over ws->x/y[lo, hi): split at the middle of the wider side of
+ * the bounding box; a leaf keeps each position once. The root's index. */
+long an_kd_build(an_far_ws *ws, size_t lo, size_t hi, int depth);
+
+/* Squared distance from (ax, ay) to a node's box, rounded down a little. */
+double an_kd_box_d2(const kd_node *n, double ax, double ay);
+
+/* Clips point i's region by every other point of the tree in ws (but
+ * point excl) near enough to cut it, nearest boxes first; 0 once it is
+ * empty or no farther than best. */
+int an_clip_region(const an_far_ws *ws, size_t i, size_t excl, region *R, double best);
+
+#endif
