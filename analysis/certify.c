@@ -32,6 +32,7 @@
 #include "certify.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -208,9 +209,32 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     double r2;
 
     /* Local Characterization Theorem on D = [x-h, x+h]^2, S = D eroded. */
-    if (collect(C, x, y, h, w) != 0) return -1;
     const double e = h - C->delta;
     const cfpo_square S = {x - e, y - e, x + e, y + e};
+    const an_far_prep *Pp = &w->prep;
+    /* D(x) holds exactly the prepared set when that set's box lies in
+     * D(x) and D(x) holds as many images (one of x's, as 2h < 1): then
+     * neither is collected. */
+    if (Pp->ready && h < 0.5 && fabs(Pp->x0 - x) <= h && fabs(Pp->x1 - x) <= h && fabs(Pp->y0 - y) <= h &&
+        fabs(Pp->y1 - y) <= h && an_ptree_count_box(C->tree, x, y, h) == Pp->m) {
+        r2 = an_far_prep_solve(Pp, S, 0, 0, 0, NULL, &px, &py, &w->far);
+        if (r2 < 0) return -2;
+        res->p1 = sqrt(r2) - C->delta;
+        const double dY2 = an_far_prep_nearest(Pp, x, y, 1, x, y), p1_at[2] = {px, py};
+        r2 = an_far_prep_solve(Pp, S, 1, x, y, p1_at, &px, &py, &w->far);
+        if (r2 != -3) {
+            if (r2 < 0) return -2;
+            res->p2 = sqrt(r2) - sqrt(dY2);
+            return 0;
+        }
+        if (collect(C, x, y, h, w) != 0) return -1;
+        m = subset(w, x, y, h, i, w->sx, w->sy);
+        r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
+        if (r2 < 0) return -2;
+        res->p2 = sqrt(r2) - sqrt(dY2);
+        return 0;
+    }
+    if (collect(C, x, y, h, w) != 0) return -1;
     m = subset(w, x, y, h, C->n, w->sx, w->sy);
     /* A large neighbourhood seen again (each point of a cluster has the
      * whole cluster for D(x)) is solved in its prepared form. */
@@ -219,7 +243,7 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     if (large && an_far_prep_same(&w->prep, w->sx, w->sy, (size_t)m)) {
         if (!w->prep.ready && an_far_prep_build(&w->prep) != 0) return -1;
         prepared = 1;
-        r2 = an_far_prep_solve(&w->prep, S, 0, 0, 0, &px, &py, &w->far);
+        r2 = an_far_prep_solve(&w->prep, S, 0, 0, 0, NULL, &px, &py, &w->far);
     } else {
         if (large && an_far_prep_set(&w->prep, w->sx, w->sy, (size_t)m) != 0) return -1;
         r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
@@ -230,7 +254,9 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     m = subset(w, x, y, h, i, w->sx, w->sy);
     double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
     r2 = -3;
-    if (prepared && m == m1 - 1 && m > AN_FAR_SMALL) r2 = an_far_prep_solve(&w->prep, S, 1, x, y, &px, &py, &w->far);
+    const double p1_at[2] = {px, py};
+    if (prepared && m == m1 - 1 && m > AN_FAR_SMALL)
+        r2 = an_far_prep_solve(&w->prep, S, 1, x, y, p1_at, &px, &py, &w->far);
     if (r2 == -3) r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
     if (r2 < 0) return -2;
     res->p2 = sqrt(r2) - sqrt(dY2);
@@ -331,8 +357,9 @@ static int covering(ctx *C, size_t *order, double *ub)
     C->cell_ub = ub;
     C->rho = -1;
     C->top = cells;
-    const size_t batch = 256;
-    for (size_t a = 0; a < cells && !(ub[order[a]] < C->rho);) {
+    /* Small batches first: the first radii found usually end it. */
+    size_t batch = 2 * (size_t)omp_get_max_threads();
+    for (size_t a = 0; a < cells && !(ub[order[a]] < C->rho); batch = batch < 256 ? 2 * batch : batch) {
         const size_t b = a + batch < cells ? a + batch : cells;
         C->order = order + a;
         status = parallel_over(C, b - a, cell_item, NULL);

@@ -26,7 +26,7 @@
 void an_far_prep_free(an_far_prep *P)
 {
     an_far_free(&P->tree);
-    free(P->reach2); free(P->cand); free(P->yx); free(P->yy);
+    free(P->reach2); free(P->cand); free(P->yx); free(P->yy); free(P->copies);
     memset(P, 0, sizeof *P);
 }
 
@@ -48,59 +48,14 @@ int an_far_prep_set(an_far_prep *P, const double *yx, const double *yy, size_t m
         if (c) P->cand = c;
         double *r = realloc(P->reach2, m * sizeof *r);
         if (r) P->reach2 = r;
-        if (!a || !b || !c || !r) return -1;
+        size_t *k = realloc(P->copies, m * sizeof *k);
+        if (k) P->copies = k;
+        if (!a || !b || !c || !r || !k) return -1;
         P->cap = m;
     }
     memcpy(P->yx, yx, m * sizeof *yx);
     memcpy(P->yy, yy, m * sizeof *yy);
     P->m = m;
-    return 0;
-}
-
-int an_far_prep_build(an_far_prep *P)
-{
-    const size_t m = P->m;
-    an_far_ws *T = &P->tree;
-    if (an_far_reserve(T, m) != 0) return -1;
-    memcpy(T->x, P->yx, m * sizeof *T->x);
-    memcpy(T->y, P->yy, m * sizeof *T->y);
-    double x0 = T->x[0], x1 = x0, y0 = T->y[0], y1 = y0;
-    for (size_t t = 1; t < m; t++) {
-        x0 = fmin(x0, T->x[t]); x1 = fmax(x1, T->x[t]);
-        y0 = fmin(y0, T->y[t]); y1 = fmax(y1, T->y[t]);
-    }
-    T->nodes_used = 0;
-    an_kd_build(T, 0, m, 0);
-    const double Rb = 4 * sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0));
-    size_t u = 0;
-    for (size_t k = 0; k < T->nodes_used; k++) {
-        const kd_node *nd = &T->nodes[k];
-        if (nd->left >= 0) continue;
-        for (size_t j = nd->lo; j < nd->hi; j++) {
-            const double ax = T->x[j], ay = T->y[j];
-            double r2 = INFINITY;
-            if (Rb > 0) {
-                region R = {T->pa, T->pb, T->sd, 4, 2 * Rb * Rb};
-                const double box[8] = {ax - Rb, ay - Rb, ax + Rb, ay - Rb, ax + Rb, ay + Rb, ax - Rb, ay + Rb};
-                memcpy(R.P, box, sizeof box);
-                if (!an_clip_region(T, j, NONE, &R, -1)) r2 = 0; /* empty: cannot happen for distinct positions */
-                else {
-                    int touches = 0;
-                    for (int v = 0; v < R.nv; v++)
-                        touches |= fabs(R.P[2 * v] - ax) >= Rb * (1 - 1e-9) || fabs(R.P[2 * v + 1] - ay) >= Rb * (1 - 1e-9);
-                    r2 = touches ? INFINITY : R.far2;
-                }
-            }
-            P->reach2[j] = r2;
-            T->key[2 * u] = -r2; /* by decreasing reach, then position */
-            T->key[2 * u + 1] = (double)j;
-            u++;
-        }
-    }
-    qsort(T->key, u, 2 * sizeof *T->key, an_cmp_pair);
-    for (size_t k = 0; k < u; k++) P->cand[k] = (size_t)T->key[2 * k + 1];
-    P->u = u;
-    P->ready = 1;
     return 0;
 }
 
@@ -148,6 +103,64 @@ static size_t find(const an_far_ws *T, double ex, double ey)
         stack[sp++] = n->left;
     }
     return NONE;
+}
+
+int an_far_prep_build(an_far_prep *P)
+{
+    const size_t m = P->m;
+    an_far_ws *T = &P->tree;
+    if (an_far_reserve(T, m) != 0) return -1;
+    memcpy(T->x, P->yx, m * sizeof *T->x);
+    memcpy(T->y, P->yy, m * sizeof *T->y);
+    double x0 = T->x[0], x1 = x0, y0 = T->y[0], y1 = y0;
+    for (size_t t = 1; t < m; t++) {
+        x0 = fmin(x0, T->x[t]); x1 = fmax(x1, T->x[t]);
+        y0 = fmin(y0, T->y[t]); y1 = fmax(y1, T->y[t]);
+    }
+    T->nodes_used = 0;
+    an_kd_build(T, 0, m, 0);
+    const double Rb = 4 * sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0));
+    size_t u = 0;
+    for (size_t k = 0; k < T->nodes_used; k++) {
+        const kd_node *nd = &T->nodes[k];
+        if (nd->left >= 0) continue;
+        for (size_t j = nd->lo; j < nd->hi; j++) {
+            const double ax = T->x[j], ay = T->y[j];
+            double r2 = INFINITY;
+            if (Rb > 0) {
+                region R = {T->pa, T->pb, T->sd, 4, 2 * Rb * Rb};
+                const double box[8] = {ax - Rb, ay - Rb, ax + Rb, ay - Rb, ax + Rb, ay + Rb, ax - Rb, ay + Rb};
+                memcpy(R.P, box, sizeof box);
+                if (!an_clip_region(T, j, NONE, &R, -1)) r2 = 0; /* empty: cannot happen for distinct positions */
+                else {
+                    int touches = 0;
+                    for (int v = 0; v < R.nv; v++)
+                        touches |= fabs(R.P[2 * v] - ax) >= Rb * (1 - 1e-9) ||
+                                   fabs(R.P[2 * v + 1] - ay) >= Rb * (1 - 1e-9);
+                    r2 = touches ? INFINITY : R.far2;
+                }
+            }
+            P->reach2[j] = r2;
+            T->key[2 * u] = -r2; /* by decreasing reach, then position */
+            T->key[2 * u + 1] = (double)j;
+            u++;
+        }
+    }
+    qsort(T->key, u, 2 * sizeof *T->key, an_cmp_pair);
+    for (size_t k = 0; k < u; k++) P->cand[k] = (size_t)T->key[2 * k + 1];
+    for (size_t k = 0; k < u; k++) P->copies[P->cand[k]] = 0;
+    for (size_t t = 0; t < m; t++) {
+        const size_t j = find(T, P->yx[t], P->yy[t]);
+        if (j == NONE) return -1; /* cannot happen: every point is in its leaf */
+        P->copies[j]++;
+    }
+    P->x0 = x0;
+    P->x1 = x1;
+    P->y0 = y0;
+    P->y1 = y1;
+    P->u = u;
+    P->ready = 1;
+    return 0;
 }
 
 typedef struct {
@@ -201,19 +214,29 @@ static void visit_near(const an_far_prep *P, size_t e, double r2, prep_state *F,
     }
 }
 
-double an_far_prep_solve(const an_far_prep *P, cfpo_square S, int exclude, double ex, double ey, double *cx,
-                         double *cy, an_far_ws *ws)
+double an_far_prep_nearest(const an_far_prep *P, double x, double y, int exclude, double ex, double ey)
+{
+    if (!P->ready) return -1;
+    size_t excl = NONE;
+    if (exclude) {
+        excl = find(&P->tree, ex, ey);
+        if (excl != NONE && P->copies[excl] > 1) excl = NONE;
+    }
+    return nearest(&P->tree, x, y, excl);
+}
+
+double an_far_prep_solve(const an_far_prep *P, cfpo_square S, int exclude, double ex, double ey, const double *from,
+                         double *cx, double *cy, an_far_ws *ws)
 {
     const an_far_ws *T = &P->tree;
     if (!P->ready || an_far_reserve(ws, P->m) != 0) return -1;
     prep_state F = {S, NONE, -1, 0, 0};
     if (exclude) {
-        size_t copies = 0;
-        for (size_t t = 0; t < P->m; t++) copies += P->yx[t] == ex && P->yy[t] == ey;
-        if (copies == 0) return -3;
-        if (copies == 1) { /* else the positions left are the same */
-            F.excl = find(T, ex, ey);
-            if (F.excl == NONE || !(P->reach2[F.excl] < INFINITY)) return -3;
+        const size_t e = find(T, ex, ey);
+        if (e == NONE) return -3;
+        if (P->copies[e] == 1) { /* else the positions left are the same */
+            F.excl = e;
+            if (!(P->reach2[e] < INFINITY)) return -3;
         }
     }
     const double corner[8] = {S.x0, S.y0, S.x1, S.y0, S.x1, S.y1, S.x0, S.y1};
@@ -222,7 +245,15 @@ double an_far_prep_solve(const an_far_prep *P, cfpo_square S, int exclude, doubl
         if (d2 > F.best) { F.best = d2; F.bx = corner[2 * c]; F.by = corner[2 * c + 1]; }
     }
     if (!(F.best < INFINITY)) return -3; /* nothing left */
-    for (size_t k = 0; k < P->u; k++) {
+    if (exclude && from) {
+        /* Leaving a point out moves every distance up or keeps it: the
+         * answer with it, at `from`, is reached without it too, and only the
+         * cells of its neighbours (visited below) change. Every other cell
+         * was within that answer, so it needs no visit. */
+        const double d2 = nearest(T, from[0], from[1], F.excl);
+        if (d2 > F.best) { F.best = d2; F.bx = from[0]; F.by = from[1]; }
+    }
+    for (size_t k = 0; k < P->u && !(exclude && from); k++) {
         const size_t j = P->cand[k];
         if (P->reach2[j] * (1 + 1e-9) <= F.best) break;
         if (j != F.excl) visit(P, j, &F, ws);

@@ -179,6 +179,20 @@ static void push_children(const kd_node *N, const kd_node *n, double ax, double 
     stack[(*sp)++] = dl <= dr ? n->left : n->right;
 }
 
+/* Whether box n can hold a point y whose bisector with a cuts the region:
+ * (v - m).n = (|v - a|^2 - |v - y|^2) / 2 is linear in v, so such a y has
+ * |v - y| < |v - a| at a vertex v. A far vertex's disk bulges into a
+ * cluster only by a thin sliver, so the wide regions of a cluster's rim
+ * pass over the rest of it. */
+static int can_cut(const region *R, const kd_node *n, double ax, double ay)
+{
+    for (int v = 0; v < R->nv; v++) {
+        const double vx = R->P[2 * v], vy = R->P[2 * v + 1], dx = vx - ax, dy = vy - ay;
+        if (an_kd_box_d2(n, vx, vy) < (dx * dx + dy * dy) * (1 + 1e-9)) return 1;
+    }
+    return 0;
+}
+
 int an_clip_region(const an_far_ws *ws, size_t i, size_t excl, region *R, double best)
 {
     const kd_node *N = ws->nodes;
@@ -188,7 +202,7 @@ int an_clip_region(const an_far_ws *ws, size_t i, size_t excl, region *R, double
     stack[sp++] = 0;
     while (sp > 0) {
         const kd_node *n = &N[stack[--sp]];
-        if (an_kd_box_d2(n, ax, ay) >= 4 * R->far2) continue;
+        if (an_kd_box_d2(n, ax, ay) >= 4 * R->far2 || !can_cut(R, n, ax, ay)) continue;
         if (n->left >= 0) { push_children(N, n, ax, ay, stack, &sp); continue; }
         for (size_t j = n->lo; j < n->hi; j++) {
             if (j == i || j == excl) continue;

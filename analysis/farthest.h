@@ -65,6 +65,8 @@ typedef struct {
     double *reach2;  /* per tree position: its cell's squared reach */
     size_t *cand;    /* the positions by decreasing reach */
     double *yx, *yy; /* the set as given, to recognise it */
+    size_t *copies;  /* per tree position: how often the set holds it */
+    double x0, y0, x1, y1; /* the set's bounding box */
     size_t m, u, cap;
     int ready;       /* built since set */
 } an_far_prep;
@@ -76,12 +78,18 @@ int an_far_prep_set(an_far_prep *P, const double *yx, const double *yy, size_t m
 /* Builds the tree and the reaches of the set given: 0, or -1. */
 int an_far_prep_build(an_far_prep *P);
 /* The point of S farthest from the set, or (exclude) from the set with
- * one copy of the position (ex, ey) left out; its squared distance. -1
+ * one copy of the position (ex, ey) left out; its squared distance. With
+ * exclude, `from` (or NULL) may give this function's answer for the same
+ * S with nothing left out, which spares most of the work. -1
  * out of memory or not built; -3 when this case is not for the prepared
  * form (the position is not in the set, or its cell is not bounded):
  * call an_farthest. */
-double an_far_prep_solve(const an_far_prep *P, cfpo_square S, int exclude, double ex, double ey, double *cx,
-                         double *cy, an_far_ws *ws);
+double an_far_prep_solve(const an_far_prep *P, cfpo_square S, int exclude, double ex, double ey, const double *from,
+                         double *cx, double *cy, an_far_ws *ws);
+/* The squared distance from (x, y) to the set, or (exclude) to the set
+ * with one copy of the position (ex, ey) left out (INFINITY if none is
+ * left); -1 not built. */
+double an_far_prep_nearest(const an_far_prep *P, double x, double y, int exclude, double ex, double ey);
 void an_far_prep_free(an_far_prep *P);
 
 /* The polygon p of n vertices cut to the side where the signed distances

@@ -127,6 +127,39 @@ double an_ptree_nearest(const an_ptree *T, double qx, double qy, size_t skip)
     return best;
 }
 
+size_t an_ptree_count_box(const an_ptree *T, double cx, double cy, double h)
+{
+    size_t count = 0;
+    if (T->n == 0) return 0;
+    /* Image (ox, oy) lies in [ox, ox + 1) x [oy, oy + 1). */
+    const double ox0 = floor(cx - h) - 1, ox1 = floor(cx + h) + 1, oy0 = floor(cy - h) - 1, oy1 = floor(cy + h) + 1;
+    for (double oy = oy0; oy <= oy1; oy++)
+        for (double ox = ox0; ox <= ox1; ox++) {
+            long stack[STACK];
+            int sp = 0;
+            stack[sp++] = 0;
+            while (sp > 0) {
+                const an_pnode *b = &T->node[stack[--sp]];
+                /* By the monotony of rounding, a box whose sides pass
+                 * holds only points that pass, and one beyond holds none. */
+                const double x0 = b->x0 + ox, x1 = b->x1 + ox, y0 = b->y0 + oy, y1 = b->y1 + oy;
+                if (x0 - cx > h || cx - x1 > h || y0 - cy > h || cy - y1 > h) continue;
+                if (fabs(x0 - cx) <= h && fabs(x1 - cx) <= h && fabs(y0 - cy) <= h && fabs(y1 - cy) <= h) {
+                    count += b->hi - b->lo;
+                    continue;
+                }
+                if (b->left < 0) {
+                    for (size_t t = b->lo; t < b->hi; t++)
+                        count += fabs((T->x[t] + ox) - cx) <= h && fabs((T->y[t] + oy) - cy) <= h;
+                    continue;
+                }
+                stack[sp++] = b->left;
+                stack[sp++] = b->right;
+            }
+        }
+    return count;
+}
+
 /* Heap entries: (key, item, ox, oy); item >= 0 a node, item < 0 the point
  * at tree position -item - 1. Ordered by key, then item, then offset. */
 static int less4(const double *a, const double *b)

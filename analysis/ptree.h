@@ -32,10 +32,15 @@ void an_ptree_free(an_ptree *T);
  * index is not `skip` (pass n to skip none); INFINITY when there is none. */
 double an_ptree_nearest(const an_ptree *T, double qx, double qy, size_t skip);
 
+/* How many images (x_j + ox, y_j + oy) have |X - cx| <= h and
+ * |Y - cy| <= h, each difference computed as written. */
+size_t an_ptree_count_box(const an_ptree *T, double cx, double cy, double h);
+
 /* The images of the points within distance r of (qx, qy) in the plane
  * (the set repeated with period 1), nearest first: a best-first walk with
  * its own heap. Where many points share one position (a leaf of one
- * position), one of them stands for all, not `skip` if another is there. Zero-initialise; an_pwalk_start, then an_pwalk_next until
+ * position), one of them stands for all, not `skip` if another is there.
+ * Zero-initialise; an_pwalk_start, then an_pwalk_next until
  * it returns 0; an_pwalk_free at the end (the heap is reused across
  * starts). */
 typedef struct {

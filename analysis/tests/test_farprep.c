@@ -44,18 +44,19 @@ static void compare(const char *what, const double *yx, const double *yy, size_t
                                    : 1e-5 * pow(10.0, cfpo_rand01(seed, (uint64_t)q, 1));
         const cfpo_square S = {yx[c] - half, yy[c] - half, yx[c] + half, yy[c] + half};
         double cx, cy, rx, ry;
-        const double got = an_far_prep_solve(&P, S, 0, 0, 0, &cx, &cy, &ws);
+        const double got = an_far_prep_solve(&P, S, 0, 0, 0, NULL, &cx, &cy, &ws);
+        const double at[2] = {cx, cy};
         const double want = an_farthest(yx, yy, m, S, yx[c], yy[c], &rx, &ry, &ref);
         if (!(got >= 0 && fabs(sqrt(got) - sqrt(want)) <= 1e-12 * (2 * half + 1))) bad++;
         CHECK(cx >= S.x0 && cx <= S.x1 && cy >= S.y0 && cy <= S.y1, "%s: point outside the square", what);
         CHECK(fabs(cfpo_min_dist2(cx, cy, yx, yy, (int)m, -1) - got) <= 1e-15, "%s: value is not the point's distance",
               what);
         /* The centre's own point left out (as the certificate does), and
-         * another point. */
-        for (int k = 0; k < 2; k++) {
-            const size_t e = k == 0 ? c : (size_t)(cfpo_rand01(seed, (uint64_t)q, 2) * (double)m) % m;
+         * another point; from scratch and from the answer above. */
+        for (int k = 0; k < 4; k++) {
+            const size_t e = k % 2 == 0 ? c : (size_t)(cfpo_rand01(seed, (uint64_t)q, 2) * (double)m) % m;
             const size_t m2 = without(yx, yy, m, e, ox, oy);
-            const double g2 = an_far_prep_solve(&P, S, 1, yx[e], yy[e], &cx, &cy, &ws);
+            const double g2 = an_far_prep_solve(&P, S, 1, yx[e], yy[e], k < 2 ? NULL : at, &cx, &cy, &ws);
             tried++;
             if (g2 == -3) continue;
             own++;
