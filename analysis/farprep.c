@@ -120,6 +120,7 @@ int an_far_prep_build(an_far_prep *P)
     T->nodes_used = 0;
     an_kd_build(T, 0, m, 0);
     const double Rb = 4 * sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0));
+    P->Rb = Rb;
     size_t u = 0;
     for (size_t k = 0; k < T->nodes_used; k++) {
         const kd_node *nd = &T->nodes[k];
@@ -191,22 +192,44 @@ static void visit(const an_far_prep *P, size_t j, prep_state *F, an_far_ws *ws)
     }
 }
 
-/* Visits the positions within squared distance r2 of position e. */
-static void visit_near(const an_far_prep *P, size_t e, double r2, prep_state *F, an_far_ws *ws)
+/* Whether the box [x0, x1] x [y0, y1] meets one of the closed disks
+ * around the nv vertices v of C through e (radius |v - e|, a little more). */
+static int meets(const double *C, int nv, double ex, double ey, double x0, double y0, double x1, double y1)
+{
+    for (int v = 0; v < nv; v++) {
+        const double vx = C[2 * v], vy = C[2 * v + 1], rx = vx - ex, ry = vy - ey;
+        const double dx = vx < x0 ? x0 - vx : vx > x1 ? vx - x1 : 0;
+        const double dy = vy < y0 ? y0 - vy : vy > y1 ? vy - y1 : 0;
+        if (dx * dx + dy * dy <= (rx * rx + ry * ry) * (1 + 1e-9) + 1e-300) return 1;
+    }
+    return 0;
+}
+
+/* Visits the Voronoi neighbours of position e: the points a with
+ * |v - a| = |v - e| at a vertex v of e's cell (the ends of their common
+ * edge), found as the points in the disks around the cell's vertices
+ * through e. The cell is e's region in the box of half-side Rb, bounded
+ * (the caller checked its reach). */
+static void visit_near(const an_far_prep *P, size_t e, prep_state *F, an_far_ws *ws)
 {
     const an_far_ws *T = &P->tree;
-    const double ex = T->x[e], ey = T->y[e];
+    const double ex = T->x[e], ey = T->y[e], Rb = P->Rb;
+    region R = {ws->pa, ws->pb, ws->sd, 4, 2 * Rb * Rb};
+    const double box[8] = {ex - Rb, ey - Rb, ex + Rb, ey - Rb, ex + Rb, ey + Rb, ex - Rb, ey + Rb};
+    memcpy(R.P, box, sizeof box);
+    if (!an_clip_region(T, e, NONE, &R, -1)) return;
+    double *cell = ws->scratch; /* visit clips in pa / pb */
+    memcpy(cell, R.P, 2 * (size_t)R.nv * sizeof *cell);
+    const int nv = R.nv;
     long stack[2 * KD_DEPTH + 4];
     int sp = 0;
     stack[sp++] = 0;
     while (sp > 0) {
         const kd_node *n = &T->nodes[stack[--sp]];
-        if (an_kd_box_d2(n, ex, ey) > r2) continue;
+        if (!meets(cell, nv, ex, ey, n->x0, n->y0, n->x1, n->y1)) continue;
         if (n->left < 0) {
-            for (size_t j = n->lo; j < n->hi; j++) {
-                const double dx = T->x[j] - ex, dy = T->y[j] - ey;
-                if (j != e && dx * dx + dy * dy <= r2) visit(P, j, F, ws);
-            }
+            for (size_t j = n->lo; j < n->hi; j++)
+                if (j != e && meets(cell, nv, ex, ey, T->x[j], T->y[j], T->x[j], T->y[j])) visit(P, j, F, ws);
             continue;
         }
         stack[sp++] = n->right;
@@ -258,7 +281,7 @@ double an_far_prep_solve(const an_far_prep *P, cfpo_square S, int exclude, doubl
         if (P->reach2[j] * (1 + 1e-9) <= F.best) break;
         if (j != F.excl) visit(P, j, &F, ws);
     }
-    if (F.excl != NONE) visit_near(P, F.excl, 4 * P->reach2[F.excl] * (1 + 1e-9), &F, ws);
+    if (F.excl != NONE) visit_near(P, F.excl, &F, ws);
     *cx = F.bx < S.x0 ? S.x0 : F.bx > S.x1 ? S.x1 : F.bx;
     *cy = F.by < S.y0 ? S.y0 : F.by > S.y1 ? S.y1 : F.by;
     return nearest(T, *cx, *cy, F.excl);

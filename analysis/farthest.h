@@ -67,6 +67,7 @@ typedef struct {
     double *yx, *yy; /* the set as given, to recognise it */
     size_t *copies;  /* per tree position: how often the set holds it */
     double x0, y0, x1, y1; /* the set's bounding box */
+    double Rb;       /* the half-side of the box a cell's reach is taken in */
     size_t m, u, cap;
     int ready;       /* built since set */
 } an_far_prep;
