@@ -105,7 +105,7 @@ static void work_free(work *w)
     free(w->x); free(w->y); free(w->sx); free(w->sy); free(w->id); free(w->scratch);
     free(w->pa); free(w->pb); free(w->sd); free(w->fr2); free(w->mark); free(w->marked);
     an_far_free(&w->far);
-    an_far_prep_free(&w->prep);
+    for (int k = 0; k < AN_PREP_SLOTS; k++) an_far_prep_free(&w->prep[k]);
     an_pwalk_free(&w->walk);
 }
 
@@ -113,7 +113,7 @@ static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / 
 
 /* All images of points within Chebyshev distance H of (cx, cy), in a fixed
  * order (cells by rows, points by index inside a cell). */
-static int collect(const ctx *C, double cx, double cy, double H, work *w)
+int an_cert_collect(const ctx *C, double cx, double cy, double H, work *w)
 {
     const long g = (long)C->G.g;
     const long ix0 = (long)floor((cx - H) * g), ix1 = (long)floor((cx + H) * g);
@@ -139,19 +139,6 @@ static int collect(const ctx *C, double cx, double cy, double H, work *w)
     return 0;
 }
 
-/* Copies into sx/sy the collected images within Chebyshev H of (cx, cy),
- * leaving out the images of point `skip` (pass n to keep all). */
-static int subset(const work *w, double cx, double cy, double H, size_t skip, double *sx, double *sy)
-{
-    int m = 0;
-    for (size_t t = 0; t < w->m; t++) {
-        if (w->id[t] == skip || fabs(w->x[t] - cx) > H || fabs(w->y[t] - cy) > H) continue;
-        sx[m] = w->x[t];
-        sy[m] = w->y[t];
-        m++;
-    }
-    return m;
-}
 
 /* Largest empty circle radius of X restricted to centres in cell c. For
  * p in the cell, d(p, X) <= d(centre, X) + |p - centre| <= ub (the bound
@@ -164,7 +151,7 @@ static int cell_radius(const ctx *C, size_t c, work *w, double *out, double *arg
     const cfpo_square S = {x0, y0, x0 + L, y0 + L};
     const double cx = x0 + 0.5 * L, cy = y0 + 0.5 * L;
     const double R = (C->cell_ub[c] + 0.5 * L * sqrt(2.0)) * (1 + 1e-9) + 1e-15;
-    if (collect(C, cx, cy, R, w) != 0) return -1;
+    if (an_cert_collect(C, cx, cy, R, w) != 0) return -1;
     size_t m = 0;
     for (size_t t = 0; t < w->m; t++) {
         const double dx = w->x[t] - cx, dy = w->y[t] - cy;
@@ -194,7 +181,6 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     if (s >= 0.5) s = 0.5;
     const double H1 = (s + C->rho + di) * (1 + 1e-9) + 1e-12;
     const double h = fmax(fmax(3 * C->delta, C->delta + di), C->Dn) * (1 + 1e-9);
-    double px, py;
 
     /* Farthest point test: R(x) = max(rho, T). */
     double T, tx = 0, ty = 0;
@@ -205,62 +191,9 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     res->fp = fmax(T, C->rho) - di;
     res->tx = T >= C->rho ? tx : C->arg_cell[2 * top];
     res->ty = T >= C->rho ? ty : C->arg_cell[2 * top + 1];
-    int m;
-    double r2;
 
-    /* Local Characterization Theorem on D = [x-h, x+h]^2, S = D eroded. */
-    const double e = h - C->delta;
-    const cfpo_square S = {x - e, y - e, x + e, y + e};
-    const an_far_prep *Pp = &w->prep;
-    /* D(x) holds exactly the prepared set when that set's box lies in
-     * D(x) and D(x) holds as many images (one of x's, as 2h < 1): then
-     * neither is collected. */
-    if (Pp->ready && h < 0.5 && fabs(Pp->x0 - x) <= h && fabs(Pp->x1 - x) <= h && fabs(Pp->y0 - y) <= h &&
-        fabs(Pp->y1 - y) <= h && an_ptree_count_box(C->tree, x, y, h) == Pp->m) {
-        r2 = an_far_prep_solve(Pp, S, 0, 0, 0, NULL, &px, &py, &w->far);
-        if (r2 < 0) return -2;
-        res->p1 = sqrt(r2) - C->delta;
-        const double dY2 = an_far_prep_nearest(Pp, x, y, 1, x, y), p1_at[2] = {px, py};
-        r2 = an_far_prep_solve(Pp, S, 1, x, y, p1_at, &px, &py, &w->far);
-        if (r2 != -3) {
-            if (r2 < 0) return -2;
-            res->p2 = sqrt(r2) - sqrt(dY2);
-            return 0;
-        }
-        if (collect(C, x, y, h, w) != 0) return -1;
-        m = subset(w, x, y, h, i, w->sx, w->sy);
-        r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
-        if (r2 < 0) return -2;
-        res->p2 = sqrt(r2) - sqrt(dY2);
-        return 0;
-    }
-    if (collect(C, x, y, h, w) != 0) return -1;
-    m = subset(w, x, y, h, C->n, w->sx, w->sy);
-    /* A large neighbourhood seen again (each point of a cluster has the
-     * whole cluster for D(x)) is solved in its prepared form. */
-    const int large = m > AN_FAR_SMALL;
-    int prepared = 0;
-    if (large && an_far_prep_same(&w->prep, w->sx, w->sy, (size_t)m)) {
-        if (!w->prep.ready && an_far_prep_build(&w->prep) != 0) return -1;
-        prepared = 1;
-        r2 = an_far_prep_solve(&w->prep, S, 0, 0, 0, NULL, &px, &py, &w->far);
-    } else {
-        if (large && an_far_prep_set(&w->prep, w->sx, w->sy, (size_t)m) != 0) return -1;
-        r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
-    }
-    if (r2 < 0) return -2;
-    res->p1 = sqrt(r2) - C->delta;
-    const int m1 = m;
-    m = subset(w, x, y, h, i, w->sx, w->sy);
-    double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
-    r2 = -3;
-    const double p1_at[2] = {px, py};
-    if (prepared && m == m1 - 1 && m > AN_FAR_SMALL)
-        r2 = an_far_prep_solve(&w->prep, S, 1, x, y, p1_at, &px, &py, &w->far);
-    if (r2 == -3) r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
-    if (r2 < 0) return -2;
-    res->p2 = sqrt(r2) - sqrt(dY2);
-    return 0;
+    /* Local Characterization Theorem (lct.c). */
+    return an_lct(C, i, w, h, &res->p1, &res->p2);
 }
 
 typedef struct {

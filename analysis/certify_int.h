@@ -29,6 +29,8 @@ typedef struct {
     size_t top;            /* the cell where rho is reached */
 } an_cert_ctx;
 
+#define AN_PREP_SLOTS 8 /* a thread keeps this many large neighbourhoods */
+
 /* Per-thread buffers: collected images (position, id), a subset, scratch. */
 typedef struct {
     double *x, *y, *sx, *sy, *scratch;
@@ -39,13 +41,24 @@ typedef struct {
     size_t *marked;       /* the ids marked, to clear them */
     size_t m, cap;
     an_far_ws far;        /* the farthest-point solver's buffers */
-    an_far_prep prep;     /* the last large neighbourhood, prepared when seen again */
+    an_far_prep prep[AN_PREP_SLOTS]; /* large neighbourhoods, prepared when seen again */
+    unsigned long used[AN_PREP_SLOTS], clock; /* when each slot was last used */
     an_pwalk walk;
 } an_cert_work;
 
 /* Room for m collected images, and polygons of m + 8 vertices: 0, or -1
  * (the buffers kept so far stay valid). */
 int an_cert_reserve(an_cert_work *w, size_t m);
+
+/* All images of points within Chebyshev distance H of (cx, cy) into
+ * w->x/y/id/m, in a fixed order (cells by rows, points by index inside a
+ * cell): 0, or -1 out of memory. */
+int an_cert_collect(const an_cert_ctx *C, double cx, double cy, double H, an_cert_work *w);
+
+/* Both properties of the Local Characterization Theorem for point i, with
+ * D(x) of half-side h (lct.c): their violations, absolute. 0, -1 out of
+ * memory, -2 the solver found no vertex. */
+int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1, double *p2);
 
 /* T of the farthest point test for point i at (x, y) (certify.c says what
  * it is): the square of half-side s, the images of the touching points
