@@ -282,7 +282,7 @@ int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2)
         }
         const int one = b->x0 == b->x1 && b->y0 == b->y1; /* one position: one of its points */
         for (size_t t = b->lo; t < b->hi; t++) {
-            if (one && T->id[t] == W->skip) continue;
+            if (one && T->id[t] == W->skip && t + 1 < b->hi) continue; /* another copy stands for it */
             const double X = T->x[t] + ox, Y = T->y[t] + oy;
             const double dx = X - W->qx, dy = Y - W->qy, e2 = dx * dx + dy * dy;
             if (e2 <= W->r2 && kept(W, X, Y, X, Y) && push(W, e2, -(double)t - 1, ox, oy) != 0) return -1;

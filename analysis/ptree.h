@@ -38,8 +38,8 @@ size_t an_ptree_count_box(const an_ptree *T, double cx, double cy, double h);
 
 /* The images of the points within distance r of (qx, qy) in the plane
  * (the set repeated with period 1), nearest first: a best-first walk with
- * its own heap. Where many points share one position (a leaf of one
- * position), one of them stands for all, not `skip` if another is there.
+ * its own heap. Where the points of a leaf all share one position, one of
+ * them stands for all: not `skip`, unless it is the last of them.
  * Zero-initialise; an_pwalk_start, then an_pwalk_next until
  * it returns 0; an_pwalk_free at the end (the heap is reused across
  * starts). */
@@ -61,9 +61,11 @@ int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2);
 void an_pwalk_free(an_pwalk *W);
 
 /* From now on, images (and boxes of them) meeting none of the fn closed
- * disks of centres fv[2v], fv[2v + 1] and squared radii fr2[v] are left
- * out (fn = 0: none is). The arrays are read at each step, not copied: a
- * caller may shrink them as it goes, never grow them. start clears it. */
+ * disks of centres fv[2v], fv[2v + 1] and squared radii fr2[v] are not
+ * queued (fn = 0: none is left out); those queued before still come out,
+ * so the filter only spares work. The arrays are read at each step, not
+ * copied: a caller may shrink them as it goes, never grow them. start
+ * clears it. */
 void an_pwalk_filter(an_pwalk *W, const double *fv, const double *fr2, int fn);
 
 #endif

@@ -69,6 +69,7 @@ static void expect(const char *what, const double *xy, size_t n, int fpd, double
     CHECK((c.fp_pass == n) == (c.lct_pass == n), "%s: the two tests disagree (%zu vs %zu)", what, c.fp_pass, c.lct_pass);
     brute(what, xy, n, c.fp_worst, viol[c.fp_worst], target);
     brute(what, xy, n, 0, viol[0], target);
+    brute(what, xy, n, n - 1, viol[n - 1], target);
     free(viol);
     free(target);
 }
@@ -156,6 +157,17 @@ static void degenerate(void)
     expect("duplicated", xy, n, 0, 0.0);
     for (size_t i = 0; i < 300; i++) { xy[2 * i] = i % 2 ? 0.7 : 0.1; xy[2 * i + 1] = 0.3; }
     expect("150 copies of two positions", xy, 300, 0, 0.0);
+    /* A diagonal segment that does not wrap: 300 points 1.7e-3 apart in
+     * each coordinate (0.51 of the torus). Every point fails (fpd 0, pass
+     * 0): d(x) is 2.4e-3, while X \ {x} leaves an empty circle of radius
+     * about 0.44 (7.0 Delta(n)) off the gap that the segment leaves on its
+     * diagonal, whichever x is taken out. The endpoints' Voronoi cells
+     * have a vertex for each point of the segment (the bisectors fan out:
+     * about 295), more than VMAX_DIRECT (64) touching points: the
+     * an_farthest_poly path of vmax.c, checked against brute force at both
+     * ends. */
+    for (size_t i = 0; i < 300; i++) { xy[2 * i] = 0.1 + 1.7e-3 * i; xy[2 * i + 1] = 0.3 + 1.7e-3 * i; }
+    expect("diagonal segment", xy, 300, 0, 0.0);
     for (size_t i = 0; i < 1000; i++) { xy[2 * i] = (double)i / 1000; xy[2 * i + 1] = 0.5; }
     an_certificate c;
     CHECK(cert(xy, 1000, &c, NULL, NULL) == 0 && !c.fpd && c.fp_pass == 0, "1,000 collinear points");

@@ -1,8 +1,8 @@
 /* test_ptree.c - the certificate's point tree (ptree.c) against brute
- * force, on uniform sets (1 to 3,000 points), clusters of 1e-3 and 1e-9,
- * horizontal and diagonal lines, points on the torus's edge (0, 2^-1074,
- * 1 - 2^-53), 300 copies of each of two positions (and an uneven mix) and
- * a 20 x 20 lattice (exact ties).
+ * force, on uniform sets (1 to 3,000 points), clusters of 1e-3 and 1e-9
+ * (against the edge y = 0), horizontal, vertical and diagonal lines,
+ * points on the torus's edge (0, 2^-1074, 1e-300, 1 - 2^-53), 300 copies
+ * of each of two positions (and 240 + 360) and a 20 x 20 lattice (ties).
  *
  * Must hold:
  *  - the tree: every point once, each node's box holding its points, a
@@ -12,19 +12,26 @@
  *    point but `skip` and its images by -1, 0, 1 (which hold the nearest
  *    one, the query wrapped into [0, 1)), computed as a point's distance
  *    (image first, then the difference); and to within rounding the torus
- *    distance of cfpo_torus_dist2. Queries at the points, between them,
- *    outside [0, 1) and on the edge; skip = none, the nearest point, and a
- *    few fixed indices;
- *  - the walk (radius 0, below 0.5, about 1 and above 1, and exactly at a
- *    point's distance): with no leaf of one position, the multiset of
- *    (index, image) equals the brute force over every image with offsets
- *    well past the disk, whatever `skip`; each image (px, py) is its point
+ *    distance of cfpo_torus_dist2. Queries at the points, at the points
+ *    moved by whole periods, between them, outside [0, 1), on the edge;
+ *    skip = none, the nearest point, and a few fixed indices;
+ *  - the walk (radius 0, below 0.5, 1, above 1, and exactly at an image's
+ *    distance): with no leaf of one position, the multiset of (index,
+ *    image) equals the brute force over every image with offsets well
+ *    past the disk, whatever `skip`; each image (px, py) is its point
  *    moved by integers, with d2 = (px - qx)^2 + (py - qy)^2 exactly and
  *    within r, the distances non-decreasing, and the same query gives the
  *    same sequence again (the heap reused) and from a fresh walk. With 300
  *    copies of each of two positions, each position is reported exactly
  *    once for each of its images in the disk, and never as `skip` when
- *    `skip` is one of its copies. */
+ *    `skip` is one of its copies (240 + 360: at least once, no point's
+ *    image twice);
+ *  - an_ptree_count_box: the brute force's count of images in a closed
+ *    square (half-sides 0 to 1.2, and through a point's image);
+ *  - the walk's filter: fixed disks give the brute force's images in them
+ *    (closed disks); disks shrunk during a walk, every image in the new
+ *    ones beyond the distance reached and none outside the old ones; a new
+ *    start drops the filter. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -173,7 +180,11 @@ static void nearest(const char *what, const an_ptree *T, const double *xy, size_
     }
     const double edge[][2] = {{0, 0}, {-0.0, 1}, {1, 1}, {0x1p-1074, 1 - 0x1p-53}, {-1e-300, 0.5},
                               {1 - 0x1p-53, -0x1p-60}, {-1, 2}, {0.5, 0.25}};
-    for (size_t k = 0; k < sizeof edge / sizeof edge[0]; k++) { q[2 * nq] = edge[k][0]; q[2 * nq + 1] = edge[k][1]; nq++; }
+    for (size_t k = 0; k < sizeof edge / sizeof edge[0]; k++) {
+        q[2 * nq] = edge[k][0];
+        q[2 * nq + 1] = edge[k][1];
+        nq++;
+    }
     for (int k = 0; k < nq; k++) {
         const double qx = q[2 * k], qy = q[2 * k + 1];
         one_nearest(what, T, xy, n, qx, qy, n);
@@ -185,6 +196,44 @@ static void nearest(const char *what, const an_ptree *T, const double *xy, size_
     CHECK(nn_fail_exact == 0, "%s: %d of %d nearest queries differ from brute force", what, nn_fail_exact, nn_queries);
     CHECK(nn_fail_torus == 0, "%s: %d of %d nearest queries differ from the torus distance", what, nn_fail_torus,
           nn_queries);
+}
+
+/* ---- counting in a square ---- */
+
+/* Images with both differences, computed as written, within h: offsets
+ * two periods past the square on each side. */
+static size_t brute_count(const double *xy, size_t n, double cx, double cy, double h)
+{
+    size_t count = 0;
+    for (size_t j = 0; j < n; j++)
+        for (double oy = floor(cy - h) - 2; oy <= floor(cy + h) + 2; oy++)
+            for (double ox = floor(cx - h) - 2; ox <= floor(cx + h) + 2; ox++)
+                count += fabs((xy[2 * j] + ox) - cx) <= h && fabs((xy[2 * j + 1] + oy) - cy) <= h;
+    return count;
+}
+
+/* an_ptree_count_box against brute force: squares of half-side 0, small,
+ * 0.3, 0.5 and 1.2 (images of a point more than once), and squares whose
+ * side passes exactly through a point's image (closed). */
+static void count_box(const char *what, const an_ptree *T, const double *xy, size_t n, uint64_t seed)
+{
+    int bad = 0, runs = 0;
+    for (int k = 0; k < 10; k++) {
+        const double u = cfpo_rand01(seed, 7, 2 * (uint64_t)k), v = cfpo_rand01(seed, 7, 2 * (uint64_t)k + 1);
+        const size_t i = (size_t)(u * n), j = (size_t)(v * n);
+        double cx = 3 * u - 1, cy = 3 * v - 1;
+        if (k % 3 == 0 && n > 0) { cx = xy[2 * i]; cy = xy[2 * i + 1]; }
+        const double h[] = {0, n > 0 ? 2.0 / sqrt((double)n) : 0.1, 0.3, 0.5, 1.2,
+                            n > 0 ? fabs((xy[2 * j] + 1) - cx) : 0.2, n > 0 ? fabs(xy[2 * j + 1] - cy) : 0.2};
+        for (size_t a = 0; a < sizeof h / sizeof h[0]; a++) {
+            const size_t got = an_ptree_count_box(T, cx, cy, h[a]), want = brute_count(xy, n, cx, cy, h[a]);
+            runs++;
+            if (got != want && bad++ < 3)
+                fprintf(stderr, "%s: count in the square of (%.17g, %.17g) half-side %.17g: %zu, brute force %zu\n",
+                        what, cx, cy, h[a], got, want);
+        }
+    }
+    CHECK(bad == 0, "%s: %d of %d counts in a square differ from brute force", what, bad, runs);
 }
 
 /* ---- the walk ---- */
@@ -200,6 +249,11 @@ static int cmp_image(const void *a, const void *b)
 }
 
 typedef struct { image *v; size_t len, cap; } list;
+
+static void sort_list(list *L)
+{
+    if (L->len > 1) qsort(L->v, L->len, sizeof *L->v, cmp_image);
+}
 
 static void add(list *L, size_t id, double ox, double oy, double d2, int either)
 {
@@ -229,17 +283,50 @@ static void brute_walk(const double *xy, size_t n, double qx, double qy, double 
             }
 }
 
+/* Whether the image (X, Y) lies in one of the fn closed disks (centres
+ * fv, squared radii fr2), in the walk's arithmetic. */
+static int in_disks(double X, double Y, const double *fv, const double *fr2, int fn)
+{
+    for (int v = 0; v < fn; v++) {
+        const double dx = fabs(X - fv[2 * v]), dy = fabs(Y - fv[2 * v + 1]);
+        if (dx * dx + dy * dy <= fr2[v]) return 1;
+    }
+    return 0;
+}
+
+/* The brute force's images in the disks (the pointers are L's). */
+static void keep_in_disks(const double *xy, list *L, const double *fv, const double *fr2, int fn)
+{
+    size_t k = 0;
+    for (size_t g = 0; g < L->len; g++) {
+        const image *e = &L->v[g];
+        if (in_disks(xy[2 * e->id] + e->ox, xy[2 * e->id + 1] + e->oy, fv, fr2, fn)) L->v[k++] = *e;
+    }
+    L->len = k;
+}
+
 /* Runs the walk; checks each image's form, distance and order; 0 on
  * failure. The images go to L with their offsets. */
+static int walk_on(const char *what, an_pwalk *W, const double *xy, size_t n, double qx, double qy, double r,
+                   list *L, size_t stop, double last);
+
 static int run_walk(const char *what, an_pwalk *W, const an_ptree *T, const double *xy, size_t n, double qx,
                     double qy, double r, size_t skip, list *L)
 {
     L->len = 0;
-    int ok_form = 1, ok_d2 = 1, ok_order = 1, got;
-    double px, py, d2, last = -INFINITY;
-    size_t id;
     if (an_pwalk_start(W, T, qx, qy, r, skip) != 0) { CHECK(0, "%s: walk start failed", what); return 0; }
-    while ((got = an_pwalk_next(W, &px, &py, &id, &d2)) == 1) {
+    return walk_on(what, W, xy, n, qx, qy, r, L, SIZE_MAX, -INFINITY);
+}
+
+/* The walk from where it is, appending to L, until it ends or L holds
+ * `stop` images; `last` the distance given before. */
+static int walk_on(const char *what, an_pwalk *W, const double *xy, size_t n, double qx, double qy, double r,
+                   list *L, size_t stop, double last)
+{
+    int ok_form = 1, ok_d2 = 1, ok_order = 1, got = 0;
+    double px, py, d2;
+    size_t id;
+    while (L->len < stop && (got = an_pwalk_next(W, &px, &py, &id, &d2)) == 1) {
         if (id >= n) { ok_form = 0; break; }
         const double ox = round(px - xy[2 * id]), oy = round(py - xy[2 * id + 1]);
         if (xy[2 * id] + ox != px || xy[2 * id + 1] + oy != py) ok_form = 0;
@@ -250,6 +337,7 @@ static int run_walk(const char *what, an_pwalk *W, const an_ptree *T, const doub
         add(L, id, ox, oy, d2, 0);
         if (L->len > 100000000) break;
     }
+    if (L->len >= stop && got == 1) got = 0; /* stopped, not ended */
     CHECK(got == 0, "%s: walk ended with %d", what, got);
     CHECK(ok_form, "%s: r = %g: an image is not its point moved by whole periods", what, r);
     CHECK(ok_d2, "%s: r = %g: a distance is not the image's, or beyond r", what, r);
@@ -264,6 +352,24 @@ static int same_sequence(const list *A, const list *B)
         if (A->v[k].id != B->v[k].id || A->v[k].ox != B->v[k].ox || A->v[k].oy != B->v[k].oy ||
             A->v[k].d2 != B->v[k].d2)
             return 0;
+    return 1;
+}
+
+/* Sorts A and B; 1 when each of A is one of B's (at the same distance),
+ * once, and each of B not `either` and beyond t is in A. */
+static int covers(list *A, list *B, double t)
+{
+    sort_list(A);
+    sort_list(B);
+    size_t g = 0, w = 0;
+    while (g < A->len || w < B->len) {
+        const int c = g == A->len ? 1 : w == B->len ? -1 : cmp_image(&A->v[g], &B->v[w]);
+        if (c == 0) {
+            if (A->v[g].d2 != B->v[w].d2) return 0;
+            g++; w++;
+        } else if (c > 0 && (B->v[w].either || !(B->v[w].d2 > t))) w++;
+        else return 0;
+    }
     return 1;
 }
 
@@ -307,25 +413,12 @@ static void walk_exact(const char *what, const an_ptree *T, const double *xy, si
             if (!run_walk(what, &W, T, xy, n, qx, qy, r[a], n, &got)) continue;
             runs++;
             brute_walk(xy, n, qx, qy, r[a], &want);
-            list sorted = got;
+            list sorted = got; /* a copy: got keeps the walk's order */
             sorted.v = malloc((got.len + 1) * sizeof *got.v);
-            memcpy(sorted.v, got.v, got.len * sizeof *got.v);
-            qsort(sorted.v, sorted.len, sizeof *sorted.v, cmp_image);
-            qsort(want.v, want.len, sizeof *want.v, cmp_image);
-            /* Both sorted: each image given is one of the brute force's,
-             * once, and each of those not `either` is given. */
-            int same = 1;
-            size_t g = 0, w = 0;
-            while (same && (g < sorted.len || w < want.len)) {
-                const int c = g == sorted.len ? 1 : w == want.len ? -1 : cmp_image(&sorted.v[g], &want.v[w]);
-                if (c == 0) { same = sorted.v[g].d2 == want.v[w].d2; g++; w++; }
-                else if (c > 0 && want.v[w].either) w++;
-                else same = 0;
-            }
-            if (!same)
-                if (bad_multiset++ < 3)
-                    fprintf(stderr, "%s: walk at (%.17g, %.17g) r = %.17g: %zu images, brute force %zu\n", what, qx,
-                            qy, r[a], sorted.len, want.len);
+            if (got.len > 0) memcpy(sorted.v, got.v, got.len * sizeof *got.v);
+            if (!covers(&sorted, &want, -INFINITY) && bad_multiset++ < 3)
+                fprintf(stderr, "%s: walk at (%.17g, %.17g) r = %.17g: %zu images, brute force %zu\n", what, qx, qy,
+                        r[a], sorted.len, want.len);
             free(sorted.v);
             /* The same query again on a used heap, and on a fresh walk:
              * the same sequence, ties included. */
@@ -334,13 +427,11 @@ static void walk_exact(const char *what, const an_ptree *T, const double *xy, si
             an_pwalk_free(&W2);
             run_walk(what, &W2, T, xy, n, qx, qy, r[a], n, &again);
             if (!same_sequence(&got, &again)) bad_repeat++;
-            /* skip only chooses among copies: here nothing changes. (Not
-             * for n = 1: its one point is a leaf of one position, which
-             * the walk passes over when it is `skip`.) */
-            if (n > 1) {
-                run_walk(what, &W, T, xy, n, qx, qy, r[a], (size_t)(v * n), &again);
-                if (!same_sequence(&got, &again)) bad_skip++;
-            }
+            /* skip only chooses among copies: here nothing changes (for
+             * n = 1 too: the last of a position is reported even when it
+             * is `skip`). */
+            run_walk(what, &W, T, xy, n, qx, qy, r[a], (size_t)(v * n), &again);
+            if (!same_sequence(&got, &again)) bad_skip++;
         }
     }
     CHECK(bad_multiset == 0, "%s: %d of %d walks differ from brute force", what, bad_multiset, runs);
@@ -349,6 +440,95 @@ static void walk_exact(const char *what, const an_ptree *T, const double *xy, si
     an_pwalk_free(&W);
     an_pwalk_free(&W2);
     free(got.v); free(want.v); free(again.v);
+}
+
+/* The filter (an_pwalk_filter): with fixed disks, the images within r
+ * in one of them (closed: disks through an image, and of radius 0 at
+ * one); disks shrunk half-way, every image in the new disks beyond the
+ * distance reached, and only images in the old ones; a new start clears
+ * the filter. */
+static void walk_filter(const char *what, const an_ptree *T, const double *xy, size_t n, uint64_t seed)
+{
+    an_pwalk W = {0};
+    list got = {0}, want = {0}, tail = {0}, all = {0};
+    int bad_fixed = 0, bad_shrink = 0, bad_clear = 0, runs = 0;
+    for (int k = 0; k < 6 && n > 0; k++) {
+        const double u = cfpo_rand01(seed, 5, 4 * (uint64_t)k), v = cfpo_rand01(seed, 5, 4 * (uint64_t)k + 1);
+        const size_t i = (size_t)(u * n);
+        const double qx = k % 2 ? xy[2 * i] : 2 * u - 0.5, qy = k % 2 ? xy[2 * i + 1] : 2 * v - 0.5;
+        const double r = k < 3 ? 0.43 : 1.3;
+        /* Four disks about the query: two random, one through an image
+         * of point j (its radius that image's distance), one of radius 0
+         * at another image of j. */
+        double fv[8], fr2[4], gr2[4];
+        for (int d = 0; d < 2; d++) {
+            fv[2 * d] = qx + r * (cfpo_rand01(seed, 6 + (uint64_t)d, 3 * (uint64_t)k) - 0.5);
+            fv[2 * d + 1] = qy + r * (cfpo_rand01(seed, 6 + (uint64_t)d, 3 * (uint64_t)k + 1) - 0.5);
+            fr2[d] = pow(0.3 * r * cfpo_rand01(seed, 6 + (uint64_t)d, 3 * (uint64_t)k + 2), 2);
+        }
+        const size_t j = (size_t)(v * n);
+        const double jx = xy[2 * j] + round(qx - xy[2 * j]), jy = xy[2 * j + 1] + round(qy - xy[2 * j + 1]);
+        fv[4] = 0.5 * (qx + jx) + 1e-3;
+        fv[5] = 0.5 * (qy + jy);
+        fr2[2] = fabs(jx - fv[4]) * fabs(jx - fv[4]) + fabs(jy - fv[5]) * fabs(jy - fv[5]);
+        fv[6] = jx + 1;
+        fv[7] = jy - 1;
+        fr2[3] = 0;
+        for (int d = 0; d < 4; d++) gr2[d] = fr2[d] * 0.5;
+        /* Fixed. */
+        an_pwalk_start(&W, T, qx, qy, r, n);
+        an_pwalk_filter(&W, fv, fr2, 4);
+        got.len = 0;
+        if (!walk_on(what, &W, xy, n, qx, qy, r, &got, SIZE_MAX, -INFINITY)) continue;
+        runs++;
+        brute_walk(xy, n, qx, qy, r, &want);
+        keep_in_disks(xy, &want, fv, fr2, 4);
+        if (!covers(&got, &want, -INFINITY)) bad_fixed++;
+        /* Shrunk after half of them: the first three disks at half their
+         * squared radius (the pointers change too). */
+        const size_t half = got.len / 2;
+        an_pwalk_start(&W, T, qx, qy, r, n);
+        an_pwalk_filter(&W, fv, fr2, 4);
+        all.len = 0;
+        walk_on(what, &W, xy, n, qx, qy, r, &all, half, -INFINITY);
+        const double t = half > 0 ? all.v[half - 1].d2 : -INFINITY;
+        an_pwalk_filter(&W, fv, gr2, 3);
+        tail.len = 0;
+        walk_on(what, &W, xy, n, qx, qy, r, &tail, SIZE_MAX, t);
+        int ok = 1;
+        for (size_t g = 0; g < tail.len; g++) {
+            const image *e = &tail.v[g];
+            if (!in_disks(xy[2 * e->id] + e->ox, xy[2 * e->id + 1] + e->oy, fv, fr2, 4) || e->d2 < t) ok = 0;
+        }
+        brute_walk(xy, n, qx, qy, r, &want);
+        keep_in_disks(xy, &want, fv, gr2, 3);
+        /* Every image in the new disks beyond t is in the tail (which may
+         * hold more: images queued before the change). */
+        list extra = {0};
+        for (size_t g = 0; g < tail.len; g++) {
+            const image *e = &tail.v[g];
+            if (in_disks(xy[2 * e->id] + e->ox, xy[2 * e->id + 1] + e->oy, fv, gr2, 3))
+                add(&extra, e->id, e->ox, e->oy, e->d2, 0);
+        }
+        list beyond = {0};
+        for (size_t g = 0; g < want.len; g++)
+            if (want.v[g].d2 >= t) {
+                const image *e = &want.v[g];
+                add(&beyond, e->id, e->ox, e->oy, e->d2, e->either);
+            }
+        if (!ok || !covers(&extra, &beyond, t)) bad_shrink++;
+        free(extra.v);
+        free(beyond.v);
+        /* A new start: no filter. */
+        run_walk(what, &W, T, xy, n, qx, qy, r, n, &got);
+        brute_walk(xy, n, qx, qy, r, &want);
+        if (!covers(&got, &want, -INFINITY)) bad_clear++;
+    }
+    CHECK(bad_fixed == 0, "%s: %d of %d filtered walks differ from brute force", what, bad_fixed, runs);
+    CHECK(bad_shrink == 0, "%s: %d walks wrong after the disks shrank", what, bad_shrink);
+    CHECK(bad_clear == 0, "%s: %d walks keep a filter after a new start", what, bad_clear);
+    an_pwalk_free(&W);
+    free(got.v); free(want.v); free(tail.v); free(all.v);
 }
 
 /* Sets of repeated positions: the distinct positions of xy (np of them,
@@ -364,7 +544,8 @@ static void walk_copies(const char *what, const an_ptree *T, const double *xy, s
     int bad_pos = 0, bad_count = 0, bad_skip = 0, bad_dup = 0, runs = 0;
     const double rs[] = {0, 0.2, 0.49, 1.0, 1.7};
     for (int k = 0; k < 8; k++) {
-        double qx = cfpo_rand01(seed, 4, 2 * (uint64_t)k) * 3 - 1, qy = cfpo_rand01(seed, 4, 2 * (uint64_t)k + 1) * 3 - 1;
+        double qx = cfpo_rand01(seed, 4, 2 * (uint64_t)k) * 3 - 1;
+        double qy = cfpo_rand01(seed, 4, 2 * (uint64_t)k + 1) * 3 - 1;
         if (k < 2) { qx = pos[2 * k % (2 * np)]; qy = pos[2 * k % (2 * np) + 1]; } /* at a position */
         for (size_t a = 0; a < sizeof rs / sizeof rs[0]; a++)
             for (int s = 0; s < 3; s++) {
@@ -413,7 +594,7 @@ static void walk_copies(const char *what, const an_ptree *T, const double *xy, s
 
 /* ---- the sets ---- */
 
-enum { UNIFORM, CLUSTER3, CLUSTER9, HLINE, DIAG, EDGE, LATTICE, COPIES, UNEVEN, KINDS };
+enum { UNIFORM, CLUSTER3, CLUSTER9, HLINE, VLINE, DIAG, EDGE, LATTICE, COPIES, UNEVEN, KINDS };
 
 static size_t make(int kind, size_t n, double *xy, uint64_t seed)
 {
@@ -429,6 +610,7 @@ static size_t make(int kind, size_t n, double *xy, uint64_t seed)
         case CLUSTER3: x = 0.3 + 1e-3 * u; y = 0.6 + 1e-3 * v; break;
         case CLUSTER9: x = 0.5 + 1e-9 * u; y = 1e-9 * v; break; /* against the edge y = 0 */
         case HLINE: y = 0.25; break;
+        case VLINE: x = 0.75; break;
         case DIAG: y = u; break;
         case EDGE: x = ev[i % ne]; y = ev[i / ne]; break;
         case LATTICE: x = (double)(i % 20) / 20; y = (double)(i / 20) / 20; break;
@@ -444,8 +626,9 @@ static size_t make(int kind, size_t n, double *xy, uint64_t seed)
 
 int main(void)
 {
-    static const char *names[KINDS] = {"uniform", "1e-3 cluster", "1e-9 cluster", "horizontal line",
-                                       "diagonal line", "torus edge", "20x20 lattice", "300 + 300 copies",
+    static const char *names[KINDS] = {"uniform",       "1e-3 cluster",  "1e-9 cluster",
+                                       "horizontal line", "vertical line", "diagonal line",
+                                       "torus edge",    "20x20 lattice", "300 + 300 copies",
                                        "240 + 360 copies"};
     const size_t sizes[] = {1, 2, 9, 500, 3000};
     double *xy = malloc(2 * 3000 * sizeof *xy);
@@ -460,6 +643,7 @@ int main(void)
             CHECK(an_ptree_build(&T, xy, n) == 0, "%s: build failed", what);
             shape(what, &T, xy, n);
             nearest(what, &T, xy, n, 31 + (uint64_t)kind);
+            count_box(what, &T, xy, n, 71 + (uint64_t)kind);
             const int one = has_one_position_leaf(&T);
             CHECK(one == (kind == COPIES || kind == UNEVEN), "%s: a leaf of one position %s", what,
                   one ? "where none was expected" : "missing");
@@ -471,6 +655,7 @@ int main(void)
             } else {
                 const int nq = n >= 3000 ? 4 : n >= 500 ? 8 : 16;
                 walk_exact(what, &T, xy, n, 51 + (uint64_t)kind, nq, n >= 3000 ? 1.3 : n >= 500 ? 1.6 : 2.7);
+                walk_filter(what, &T, xy, n, 61 + (uint64_t)kind);
             }
             an_ptree_free(&T);
         }
