@@ -170,7 +170,7 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
      * where V(x) has a vertex for each image of the line). */
     double best = -1, bx = x, by = y;
     if (k > VMAX_DIRECT) {
-        best = an_farthest_poly(w->sx, w->sy, k, P, nv, &bx, &by, &w->far);
+        best = an_farthest_poly(w->sx, w->sy, k, P, nv, x, y, &bx, &by, &w->far);
         if (best < 0) return -2;
         k = 0;
     }

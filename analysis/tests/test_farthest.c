@@ -161,7 +161,9 @@ static void one_poly(const char *what, const double *yx, const double *yy, size_
                      an_far_ws *ws)
 {
     double cx = NAN, cy = NAN;
-    const double got = an_farthest_poly(yx, yy, m, P, nv, &cx, &cy, ws);
+    double mx = 0, my = 0; /* a point inside: the vertices' mean */
+    for (int v = 0; v < nv; v++) { mx += P[2 * v] / nv; my += P[2 * v + 1] / nv; }
+    const double got = an_farthest_poly(yx, yy, m, P, nv, mx, my, &cx, &cy, ws);
     const double ref = brute_poly(yx, yy, m, P, nv);
     CHECK(got >= 0 && fabs(got - ref) <= 1e-12 * ref, "%s (m = %zu, %d vertices): %.17g against brute force %.17g",
           what, m, nv, sqrt(got), sqrt(ref));
@@ -267,7 +269,9 @@ static void poly_tests(an_far_ws *ws)
                     const cfpo_square S = {0, 0, 1, 1};
                     double *scratch = malloc(cfpo_solver_scratch(m) * sizeof *scratch);
                     const double ref = cfpo_local_solve(x, y, (int)m, -1, S, 0.5, 0.5, -1, &rx, &ry, scratch);
-                    const double got = an_farthest_poly(x, y, m, P, nv, &cx, &cy, ws);
+                    double mx = 0, my = 0;
+                    for (int v = 0; v < nv; v++) { mx += P[2 * v] / nv; my += P[2 * v + 1] / nv; }
+                    const double got = an_farthest_poly(x, y, m, P, nv, mx, my, &cx, &cy, ws);
                     free(scratch);
                     CHECK(fabs(got - ref) <= 1e-12 * ref, "%s (m = %zu): %.17g against the core's %.17g", what, m,
                           sqrt(got), sqrt(ref));
@@ -276,7 +280,7 @@ static void poly_tests(an_far_ws *ws)
         }
     /* No points: a failure (m >= 1 is required), not a value. */
     double cx, cy;
-    CHECK(an_farthest_poly(x, y, 0, P, polygon(7, 0, P), &cx, &cy, ws) == -1, "poly: no points");
+    CHECK(an_farthest_poly(x, y, 0, P, polygon(7, 0, P), 0.5, 0.5, &cx, &cy, ws) == -1, "poly: no points");
     free(x);
     free(y);
 }
