@@ -40,17 +40,11 @@ int an_far_prep_set(an_far_prep *P, const double *yx, const double *yy, size_t m
     P->ready = 0;
     P->m = 0;
     if (m > P->cap) {
-        double *a = realloc(P->yx, m * sizeof *a);
-        if (a) P->yx = a;
-        double *b = realloc(P->yy, m * sizeof *b);
-        if (b) P->yy = b;
-        size_t *c = realloc(P->cand, m * sizeof *c);
-        if (c) P->cand = c;
-        double *r = realloc(P->reach2, m * sizeof *r);
-        if (r) P->reach2 = r;
-        size_t *k = realloc(P->copies, m * sizeof *k);
-        if (k) P->copies = k;
-        if (!a || !b || !c || !r || !k) return -1;
+        GROW(P->yx, m);
+        GROW(P->yy, m);
+        GROW(P->cand, m);
+        GROW(P->reach2, m);
+        GROW(P->copies, m);
         P->cap = m;
     }
     memcpy(P->yx, yx, m * sizeof *yx);

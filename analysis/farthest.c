@@ -7,12 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define GROW(p, n)                                                                                                     \
-    do {                                                                                                               \
-        void *q_ = realloc((p), (n) * sizeof *(p));                                                                    \
-        if (!q_) return -1;                                                                                            \
-        (p) = q_;                                                                                                      \
-    } while (0)
 
 #define KD_LEAF 8
 

@@ -5,8 +5,17 @@
 #define AN_FARTHEST_INT_H
 
 #include <stddef.h>
+#include <stdlib.h>
 
 #include "farthest.h"
+
+/* Grows array p to n elements, or returns -1 from the caller. */
+#define GROW(p, n)                                                                                                     \
+    do {                                                                                                               \
+        void *q_ = realloc((p), (n) * sizeof *(p));                                                                    \
+        if (!q_) return -1;                                                                                            \
+        (p) = q_;                                                                                                      \
+    } while (0)
 
 /* A node of the 2-d tree: the bounding box of its points, their range in
  * x/y, and its children (left < 0: a leaf). */
