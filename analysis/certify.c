@@ -41,6 +41,7 @@
 #include "certify_int.h"
 #include "farthest.h"
 #include "geom.h"
+#include "nnhist.h"
 #include "ptree.h"
 #include "stats.h"
 
@@ -328,7 +329,7 @@ int an_certify(const double *xy, size_t n, double tol_rel, an_certificate *c, do
     int status = 0;
     double dmin, davg;
     if (an_ptree_build(&tree, xy, n) != 0 || !nn || !pr || grid_build(xy, n, &C.G) != 0 ||
-        cfpo_nn_stats(xy, n, nn, &dmin, &davg) != 0) {
+        an_nn_stats(xy, n, &tree, nn, &dmin, &davg) != 0) {
         status = -1;
         goto done;
     }

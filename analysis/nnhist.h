@@ -9,6 +9,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "ptree.h"
+
 #define AN_NN_BINS 200
 #define AN_NN_BIN 0.01
 
@@ -16,6 +18,12 @@ typedef struct {
     double delta_min, delta_avg; /* of this set, / Delta(n) */
     double *nn;                  /* n distances (not normalised), owned */
 } an_nn;
+
+/* The core's cfpo_nn_stats, the same bits (each distance the same
+ * minimum of cfpo_torus_dist2, summed in the same order), through the
+ * points' tree T (NULL: one is built): about n log n however the points
+ * crowd, where the core's grid costs n^2 on a cluster. 0, or -1. */
+int an_nn_stats(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg);
 
 /* n >= 2. Adds this set's distances into hist (AN_NN_BINS counts).
  * 0, or -1 when out of memory. Free nn with free(). */

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom.h"
+
 #define LEAF 8
 
 static void swap_pt(an_ptree *T, size_t a, size_t b)
@@ -158,6 +160,40 @@ size_t an_ptree_count_box(const an_ptree *T, double cx, double cy, double h)
             }
         }
     return count;
+}
+
+double an_ptree_nearest_torus(const an_ptree *T, double qx, double qy, size_t skip)
+{
+    double best = INFINITY;
+    if (T->n == 0) return best;
+    const double wx = qx - floor(qx), wy = qy - floor(qy);
+    for (int oy = -1; oy <= 1; oy++)
+        for (int ox = -1; ox <= 1; ox++) {
+            long stack[STACK];
+            int sp = 0;
+            stack[sp++] = 0;
+            while (sp > 0) {
+                const an_pnode *b = &T->node[stack[--sp]];
+                /* The image distance and cfpo_torus_dist2 round apart by
+                 * less than 1e-15 (every value below 2): a box is passed
+                 * over only when it is farther than that beyond the best. */
+                const double r = sqrt(best) + 1e-15;
+                if (box_d2(b, ox, oy, wx, wy) > r * r) continue;
+                if (b->left < 0) {
+                    for (size_t t = b->lo; t < b->hi; t++) {
+                        if (T->id[t] == skip) continue;
+                        const double d2 = cfpo_torus_dist2(qx, qy, T->x[t], T->y[t]);
+                        if (d2 < best) best = d2;
+                    }
+                    continue;
+                }
+                const long l = b->left, rr = b->right;
+                const int lnear = box_d2(&T->node[l], ox, oy, wx, wy) <= box_d2(&T->node[rr], ox, oy, wx, wy);
+                stack[sp++] = lnear ? rr : l;
+                stack[sp++] = lnear ? l : rr;
+            }
+        }
+    return best;
 }
 
 /* Heap entries: (key, item, ox, oy); item >= 0 a node, item < 0 the point

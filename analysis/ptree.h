@@ -32,6 +32,11 @@ void an_ptree_free(an_ptree *T);
  * index is not `skip` (pass n to skip none); INFINITY when there is none. */
 double an_ptree_nearest(const an_ptree *T, double qx, double qy, size_t skip);
 
+/* The same nearest point, its distance computed as cfpo_torus_dist2 does
+ * (the same bits as a scan of every point would give), for (qx, qy) in
+ * [0, 1). */
+double an_ptree_nearest_torus(const an_ptree *T, double qx, double qy, size_t skip);
+
 /* How many images (x_j + ox, y_j + oy) have |X - cx| <= h and
  * |Y - cy| <= h, each difference computed as written. */
 size_t an_ptree_count_box(const an_ptree *T, double cx, double cy, double h);
