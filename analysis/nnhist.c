@@ -14,7 +14,32 @@ static size_t coord(double v, size_t g)
     return c >= g ? g - 1 : c;
 }
 
+/* The most points in one cell of the core's grid (about 2 per cell). */
+static size_t crowding(const double *xy, size_t n)
+{
+    size_t g = (size_t)floor(sqrt((double)n / 2.0));
+    if (g < 1) g = 1;
+    size_t *count = calloc(g * g, sizeof *count), most = n;
+    if (!count) return most;
+    most = 0;
+    for (size_t i = 0; i < n; i++) {
+        const size_t c = coord(xy[2 * i + 1], g) * g + coord(xy[2 * i], g);
+        if (++count[c] > most) most = count[c];
+    }
+    free(count);
+    return most;
+}
+
 int an_nn_stats(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg)
+{
+    if (n < 2) return -1;
+    /* A spread set: the core's grid is faster than the tree (and gives the
+     * same bits). */
+    if (crowding(xy, n) <= AN_NN_CROWDED) return cfpo_nn_stats(xy, n, nn, delta_min, delta_avg);
+    return an_nn_stats_tree(xy, n, T, nn, delta_min, delta_avg);
+}
+
+int an_nn_stats_tree(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg)
 {
     if (n < 2) return -1;
     an_ptree own;

@@ -20,10 +20,15 @@ typedef struct {
 } an_nn;
 
 /* The core's cfpo_nn_stats, the same bits (each distance the same
- * minimum of cfpo_torus_dist2, summed in the same order), through the
- * points' tree T (NULL: one is built): about n log n however the points
- * crowd, where the core's grid costs n^2 on a cluster. 0, or -1. */
+ * minimum of cfpo_torus_dist2, summed in the same order). Where more than
+ * AN_NN_CROWDED points share a cell of the core's grid (about 2 a cell),
+ * through the points' tree T (NULL: one is built), about n log n however
+ * they crowd, where the grid costs n^2 on a cluster; else the core's grid,
+ * faster on a spread set. 0, or -1. */
+#define AN_NN_CROWDED 64
 int an_nn_stats(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg);
+/* The same, always through the tree. */
+int an_nn_stats_tree(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg);
 
 /* n >= 2. Adds this set's distances into hist (AN_NN_BINS counts).
  * 0, or -1 when out of memory. Free nn with free(). */

@@ -1,4 +1,5 @@
-/* test_nnstats.c - an_nn_stats (the points' tree) gives the core's
+/* test_nnstats.c - an_nn_stats_tree (the points' tree), and an_nn_stats
+ * (the tree or the core's grid, as the set crowds), give the core's
  * cfpo_nn_stats bit for bit: every nearest-neighbour distance, delta_min
  * and delta_avg (summed in the core's order), on uniform sets, clusters of
  * 1e-3 and 1e-9, a cluster across the torus's corner, lines, repeated
@@ -24,8 +25,11 @@ static void same(const char *what, const double *xy, size_t n)
     CHECK(cfpo_nn_stats(xy, n, a, &amin, &aavg) == 0, "%s: core", what);
     an_ptree T;
     CHECK(an_ptree_build(&T, xy, n) == 0, "%s: tree", what);
-    for (int with_tree = 0; with_tree < 2; with_tree++) {
-        CHECK(an_nn_stats(xy, n, with_tree ? &T : NULL, b, &bmin, &bavg) == 0, "%s: an_nn_stats", what);
+    for (int way = 0; way < 3; way++) { /* the tree, built or given, and the choice */
+        const int with_tree = way == 1;
+        CHECK((way < 2 ? an_nn_stats_tree(xy, n, with_tree ? &T : NULL, b, &bmin, &bavg)
+                       : an_nn_stats(xy, n, &T, b, &bmin, &bavg)) == 0,
+              "%s: an_nn_stats", what);
         size_t bad = 0;
         for (size_t i = 0; i < n; i++) bad += memcmp(&a[i], &b[i], sizeof a[i]) != 0;
         CHECK(bad == 0, "%s: %zu of %zu distances differ (tree given: %d)", what, bad, n, with_tree);
