@@ -113,6 +113,7 @@ int an_far_prep_build(an_far_prep *P)
     }
     T->nodes_used = 0;
     an_kd_build(T, 0, m, 0);
+    an_hull_links(T);
     const double Rb = 4 * sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0));
     P->Rb = Rb;
     size_t u = 0;
@@ -122,7 +123,7 @@ int an_far_prep_build(an_far_prep *P)
         for (size_t j = nd->lo; j < nd->hi; j++) {
             const double ax = T->x[j], ay = T->y[j];
             double r2 = INFINITY;
-            if (Rb > 0) {
+            if (Rb > 0 && !(T->hull_ok && T->hull[2 * j] >= 0)) { /* a hull vertex's cell is unbounded */
                 region R = {T->pa, T->pb, T->sd, 4, 2 * Rb * Rb};
                 const double box[8] = {ax - Rb, ay - Rb, ax + Rb, ay - Rb, ax + Rb, ay + Rb, ax - Rb, ay + Rb};
                 memcpy(R.P, box, sizeof box);
@@ -177,6 +178,11 @@ static void visit(const an_far_prep *P, size_t j, prep_state *F, an_far_ws *ws)
         if (d2 > ub) ub = d2;
     }
     if (ub <= F->best) return;
+    /* A hull vertex: its wedge, unless the point left out is one of the
+     * neighbours that bound it. */
+    if (T->hull_ok && T->hull[2 * j] >= 0 && (size_t)T->hull[2 * j] != F->excl &&
+        (size_t)T->hull[2 * j + 1] != F->excl && an_wedge_bound(T, j, corner, 4) <= F->best)
+        return;
     region R = {ws->pa, ws->pb, ws->sd, 4, ub};
     memcpy(R.P, corner, sizeof corner);
     if (!an_clip_region(T, j, F->excl, &R, F->best)) return;

@@ -23,6 +23,9 @@ int an_far_reserve(an_far_ws *ws, size_t m)
     GROW(ws->sd, cap + 8);
     GROW(ws->scratch, cfpo_solver_scratch(cap));
     GROW(ws->nodes, 2 * cap + 1);
+    GROW(ws->hull, 2 * cap);
+    GROW(ws->hbuf, 3 * cap);
+    ws->hull_ok = 0;
     ws->cap = cap;
     return 0;
 }
@@ -30,7 +33,7 @@ int an_far_reserve(an_far_ws *ws, size_t m)
 void an_far_free(an_far_ws *ws)
 {
     free(ws->x); free(ws->y); free(ws->key); free(ws->pa); free(ws->pb); free(ws->sd); free(ws->scratch);
-    free(ws->nodes);
+    free(ws->nodes); free(ws->hull); free(ws->hbuf);
     memset(ws, 0, sizeof *ws);
 }
 
@@ -375,6 +378,7 @@ static void visit(const an_far_ws *ws, size_t i, far_state *F)
     }
     if (ub <= F->best) return;
     if (deep_inside(F, ax, ay)) return;
+    if (an_wedge_bound(ws, i, corner, nc) <= F->best) return;
     region R = {ws->pa, ws->pb, ws->sd, nc, ub};
     memcpy(R.P, corner, 2 * (size_t)nc * sizeof *corner);
     if (!an_clip_region(ws, i, (size_t)-1, &R, F->best)) return;
@@ -390,6 +394,7 @@ static void solve_on(an_far_ws *ws, size_t k, far_state *F)
 {
     ws->nodes_used = 0;
     an_kd_build(ws, 0, k, 0);
+    an_hull_links(ws);
     /* The leaves in tree order; a box whose four corners are deep inside
      * the hull holds only such points (depth is a minimum of linear
      * functions, least at a corner of a box): it is passed over whole. */

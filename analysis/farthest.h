@@ -40,6 +40,9 @@ typedef struct {
     double *x, *y, *key, *pa, *pb, *sd, *scratch;
     struct an_kd_node *nodes;
     size_t cap, nodes_used;
+    long *hull;    /* per position: the hull vertices before and after it, or -1 */
+    double *hbuf;  /* the hull's sort buffer */
+    int hull_ok;   /* hull[] describes the current tree */
 } an_far_ws;
 
 /* The point (*cx, *cy) of S farthest from the m points (yx, yy): returns

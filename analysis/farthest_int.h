@@ -50,4 +50,14 @@ double an_kd_box_d2(const kd_node *n, double ax, double ay);
  * empty or no farther than best. */
 int an_clip_region(const an_far_ws *ws, size_t i, size_t excl, region *R, double best);
 
+/* Links each hull vertex of the tree's positions in ws to its hull
+ * neighbours (hull.c); other positions get -1. */
+void an_hull_links(an_far_ws *ws);
+
+/* An upper bound of the squared distance from position i to the points of
+ * its region within the convex polygon dom (ndom <= 8 vertices): the wedge
+ * between its bisectors with its hull neighbours, cut to dom; INFINITY
+ * when i is not a hull vertex. */
+double an_wedge_bound(const an_far_ws *ws, size_t i, const double *dom, int ndom);
+
 #endif

@@ -111,6 +111,11 @@ int main(void)
         yy[i] = 0.5 + o + 1e-3 * cfpo_rand01(5, i, 1);
     }
     compare("two clusters", yx, yy, 400, 16, 0.75);
+    for (size_t i = 0; i < 400; i++) { /* every cell unbounded: left-out cases are not for the prepared form */
+        yx[i] = 0.5 + 0.005 * cos(6.283185307179586 * (double)i / 400);
+        yy[i] = 0.5 + 0.005 * sin(6.283185307179586 * (double)i / 400);
+    }
+    compare("circle", yx, yy, 400, 17, 0);
     free(yx);
     free(yy);
     return test_report(passed_, failed_);

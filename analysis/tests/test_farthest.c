@@ -293,7 +293,7 @@ int main(void)
     const cfpo_square sq[] = {{0.4, 0.4, 0.6, 0.6}, {0.0, 0.0, 1.0, 1.0}, {0.45, 0.45, 0.55, 0.55},
                               {0.9, 0.1, 0.95, 0.15}, {0.2, 0.7, 0.8, 0.75}};
     char what[96];
-    for (int kind = 0; kind < 8; kind++) {
+    for (int kind = 0; kind < 10; kind++) {
         for (size_t m = AN_FAR_SMALL + 1; m <= M; m += 157) {
             for (size_t i = 0; i < m; i++) {
                 const double u = cfpo_rand01(11, (uint64_t)kind, 2 * i), v = cfpo_rand01(11, (uint64_t)kind, 2 * i + 1);
@@ -307,7 +307,14 @@ int main(void)
                 case 6: x[i] = 0.5 + 1e-9 * u; y[i] = 0.5 + 1e-9 * v;                /* tiny cluster + outliers */
                         if (i % 50 == 0) { x[i] = u; y[i] = v; }
                         break;
-                default: x[i] = floor(u * 8) / 8; y[i] = floor(v * 8) / 8; break;   /* lattice with repeats */
+                case 7: x[i] = floor(u * 8) / 8; y[i] = floor(v * 8) / 8; break;    /* lattice with repeats */
+                case 8: x[i] = 0.5 + 0.05 * cos(6.283185307179586 * (double)i / (double)m); /* a circle: */
+                        y[i] = 0.5 + 0.05 * sin(6.283185307179586 * (double)i / (double)m); /* all on the hull */
+                        break;
+                default: x[i] = 0.5 + 0.05 * cos(6.283185307179586 * u);                /* a circle, random */
+                         y[i] = 0.5 + 0.05 * sin(6.283185307179586 * u);                /* angles */
+                         if (i % 7 == 0) { x[i] = 0.5 + 0.03 * u; y[i] = 0.5 + 0.03 * v; } /* and inside */
+                         break;
                 }
             }
             for (size_t s = 0; s < sizeof sq / sizeof sq[0]; s++) {
