@@ -228,6 +228,7 @@ typedef struct {
     int noct;
     double edge[24]; /* its edges' inward unit normals and offsets */
     double w2;      /* the squared diameter of the points' box */
+    int flat;       /* the octagon has no area: the points lie on a line */
 } far_state;
 
 /* The octagon's edges as inward unit normals (nx, ny) and offsets c: the
@@ -275,6 +276,12 @@ static void octagon(const double *yx, const double *yy, size_t m, far_state *F)
         F->noct++;
     }
     octagon_edges(F);
+    double area2 = 0; /* twice the octagon's area: about 0 on a line of points */
+    for (int e = 0; e < F->noct; e++) {
+        const int f = e + 1 == F->noct ? 0 : e + 1;
+        area2 += F->oct[2 * e] * F->oct[2 * f + 1] - F->oct[2 * f] * F->oct[2 * e + 1];
+    }
+    F->flat = !(fabs(area2) > 1e-9 * F->w2);
 }
 
 /* How deep (ax, ay) lies inside the octagon: its least distance to an
@@ -394,7 +401,8 @@ static void solve_on(an_far_ws *ws, size_t k, far_state *F)
 {
     ws->nodes_used = 0;
     an_kd_build(ws, 0, k, 0);
-    an_hull_links(ws);
+    ws->hull_ok = 0;
+    if (!F->flat) an_hull_links(ws); /* else the points lie on a line: no wedge */
     /* The leaves in tree order; a box whose four corners are deep inside
      * the hull holds only such points (depth is a minimum of linear
      * functions, least at a corner of a box): it is passed over whole. */
@@ -438,7 +446,7 @@ static void clamp_to(const cfpo_square *S, const far_state *F, double *cx, doubl
 static double farthest_tree(const double *yx, const double *yy, size_t m, const double *dom, int ndom,
                             const sector *sec, const cfpo_square *Sq, double *cx, double *cy, an_far_ws *ws)
 {
-    far_state F = {dom, ndom, sec, -1, dom[0], dom[1], 0, {0}, 0, {0}, 0};
+    far_state F = {dom, ndom, sec, -1, dom[0], dom[1], 0, {0}, 0, {0}, 0, 0};
     if (Sq) { F.bx = 0.5 * (Sq->x0 + Sq->x1); F.by = 0.5 * (Sq->y0 + Sq->y1); }
     octagon(yx, yy, m, &F);
     /* The corners of the domain are in it: the farthest of them from the
