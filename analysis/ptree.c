@@ -96,12 +96,13 @@ static double box_d2(const an_pnode *b, double ox, double oy, double qx, double 
 
 #define STACK 160 /* the depth is about log2(n / LEAF) */
 
-double an_ptree_nearest(const an_ptree *T, double qx, double qy, size_t skip)
+/* The nearest point to (qx, qy) but skip: its squared distance as the
+ * image distance (torus = 0) or as cfpo_torus_dist2 computes it (1). */
+static double nearest(const an_ptree *T, double qx, double qy, size_t skip, int torus)
 {
     double best = INFINITY;
     if (T->n == 0) return best;
-    qx -= floor(qx);
-    qy -= floor(qy);
+    const double wx = qx - floor(qx), wy = qy - floor(qy);
     /* With the query and the points in [0, 1), each point's nearest image
      * is among its shifts by -1, 0, 1 in each coordinate. */
     for (int oy = -1; oy <= 1; oy++)
@@ -111,22 +112,37 @@ double an_ptree_nearest(const an_ptree *T, double qx, double qy, size_t skip)
             stack[sp++] = 0;
             while (sp > 0) {
                 const an_pnode *b = &T->node[stack[--sp]];
-                if (box_d2(b, ox, oy, qx, qy) >= best) continue;
+                /* The image distance and cfpo_torus_dist2 round apart by
+                 * less than 1e-15 (every value below 2): for the latter a
+                 * box is passed over only when farther than that beyond. */
+                const double r = sqrt(best) + 1e-15, box = box_d2(b, ox, oy, wx, wy);
+                if (torus ? box > r * r : box >= best) continue;
                 if (b->left < 0) {
                     for (size_t t = b->lo; t < b->hi; t++) {
                         if (T->id[t] == skip) continue;
-                        const double dx = (T->x[t] + ox) - qx, dy = (T->y[t] + oy) - qy, d2 = dx * dx + dy * dy;
+                        const double dx = (T->x[t] + ox) - wx, dy = (T->y[t] + oy) - wy;
+                        const double d2 = torus ? cfpo_torus_dist2(qx, qy, T->x[t], T->y[t]) : dx * dx + dy * dy;
                         if (d2 < best) best = d2;
                     }
                     continue;
                 }
-                const long l = b->left, r = b->right;
-                const int lnear = box_d2(&T->node[l], ox, oy, qx, qy) <= box_d2(&T->node[r], ox, oy, qx, qy);
-                stack[sp++] = lnear ? r : l;
-                stack[sp++] = lnear ? l : r;
+                const long l = b->left, rr = b->right;
+                const int lnear = box_d2(&T->node[l], ox, oy, wx, wy) <= box_d2(&T->node[rr], ox, oy, wx, wy);
+                stack[sp++] = lnear ? rr : l;
+                stack[sp++] = lnear ? l : rr;
             }
         }
     return best;
+}
+
+double an_ptree_nearest(const an_ptree *T, double qx, double qy, size_t skip)
+{
+    return nearest(T, qx, qy, skip, 0);
+}
+
+double an_ptree_nearest_torus(const an_ptree *T, double qx, double qy, size_t skip)
+{
+    return nearest(T, qx, qy, skip, 1);
 }
 
 size_t an_ptree_count_box(const an_ptree *T, double cx, double cy, double h)
@@ -160,40 +176,6 @@ size_t an_ptree_count_box(const an_ptree *T, double cx, double cy, double h)
             }
         }
     return count;
-}
-
-double an_ptree_nearest_torus(const an_ptree *T, double qx, double qy, size_t skip)
-{
-    double best = INFINITY;
-    if (T->n == 0) return best;
-    const double wx = qx - floor(qx), wy = qy - floor(qy);
-    for (int oy = -1; oy <= 1; oy++)
-        for (int ox = -1; ox <= 1; ox++) {
-            long stack[STACK];
-            int sp = 0;
-            stack[sp++] = 0;
-            while (sp > 0) {
-                const an_pnode *b = &T->node[stack[--sp]];
-                /* The image distance and cfpo_torus_dist2 round apart by
-                 * less than 1e-15 (every value below 2): a box is passed
-                 * over only when it is farther than that beyond the best. */
-                const double r = sqrt(best) + 1e-15;
-                if (box_d2(b, ox, oy, wx, wy) > r * r) continue;
-                if (b->left < 0) {
-                    for (size_t t = b->lo; t < b->hi; t++) {
-                        if (T->id[t] == skip) continue;
-                        const double d2 = cfpo_torus_dist2(qx, qy, T->x[t], T->y[t]);
-                        if (d2 < best) best = d2;
-                    }
-                    continue;
-                }
-                const long l = b->left, rr = b->right;
-                const int lnear = box_d2(&T->node[l], ox, oy, wx, wy) <= box_d2(&T->node[rr], ox, oy, wx, wy);
-                stack[sp++] = lnear ? rr : l;
-                stack[sp++] = lnear ? l : rr;
-            }
-        }
-    return best;
 }
 
 /* Heap entries: (key, item, ox, oy); item >= 0 a node, item < 0 the point
