@@ -45,31 +45,8 @@
 #include "ptree.h"
 #include "stats.h"
 
-typedef an_grid grid;
 typedef an_cert_ctx ctx;
 typedef an_cert_work work;
-
-static size_t coord(double v, size_t g)
-{
-    size_t c = (size_t)(v * (double)g);
-    return c >= g ? g - 1 : c;
-}
-
-static int grid_build(const double *xy, size_t n, grid *G)
-{
-    size_t g = (size_t)floor(sqrt((double)n / 2.0));
-    G->g = g = g < 1 ? 1 : g;
-    G->L = 1.0 / (double)g;
-    G->start = calloc(g * g + 1, sizeof *G->start);
-    G->idx = malloc(n * sizeof *G->idx);
-    if (!G->start || !G->idx) return -1;
-    for (size_t i = 0; i < n; i++) G->start[coord(xy[2 * i + 1], g) * g + coord(xy[2 * i], g) + 1]++;
-    for (size_t c = 0; c < g * g; c++) G->start[c + 1] += G->start[c];
-    for (size_t i = 0; i < n; i++) G->idx[G->start[coord(xy[2 * i + 1], g) * g + coord(xy[2 * i], g)]++] = i;
-    for (size_t c = g * g; c > 0; c--) G->start[c] = G->start[c - 1];
-    G->start[0] = 0;
-    return 0;
-}
 
 int an_cert_reserve(work *w, size_t m)
 {
@@ -328,7 +305,7 @@ int an_certify(const double *xy, size_t n, double tol_rel, an_certificate *c, do
     size_t *order = NULL;
     int status = 0;
     double dmin, davg;
-    if (an_ptree_build(&tree, xy, n) != 0 || !nn || !pr || grid_build(xy, n, &C.G) != 0 ||
+    if (an_ptree_build(&tree, xy, n) != 0 || !nn || !pr || an_grid_build(xy, n, &C.G) != 0 ||
         an_nn_stats(xy, n, &tree, nn, &dmin, &davg) != 0) {
         status = -1;
         goto done;
@@ -354,7 +331,7 @@ done:
     if (status == -1) snprintf(err, errlen, "certificate: out of memory");
     if (status == -2) snprintf(err, errlen, "certificate: the local solver found no candidate");
     free(nn); free(pr); free(rho_cell); free(arg_cell); free(order); free(ub);
-    free(C.G.start); free(C.G.idx);
+    an_grid_free(&C.G);
     an_ptree_free(&tree);
     return status < 0 ? -1 : 0;
 }

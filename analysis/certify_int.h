@@ -7,13 +7,8 @@
 #include <stdint.h>
 
 #include "farthest.h"
+#include "grid.h"
 #include "ptree.h"
-
-typedef struct {
-    size_t g;
-    double L;
-    size_t *start, *idx;
-} an_grid;
 
 typedef struct {
     const double *xy;

@@ -2,77 +2,34 @@
 #include "nnhist.h"
 
 #include <math.h>
-#include <string.h>
 #include <stdlib.h>
 
 #include "geom.h"
+#include "grid.h"
 #include "stats.h"
 
-static size_t coord(double v, size_t g)
+/* Through the tree (T, or one built here), summed in G's order: the
+ * core's, a sum per row of cells, then the rows. */
+static int tree_stats(const double *xy, size_t n, const an_grid *G, const an_ptree *T, double *nn, double *delta_min,
+                      double *delta_avg)
 {
-    size_t c = (size_t)(v * (double)g);
-    return c >= g ? g - 1 : c;
-}
-
-/* The most points in one cell of the core's grid (about 2 per cell). */
-static size_t crowding(const double *xy, size_t n)
-{
-    size_t g = (size_t)floor(sqrt((double)n / 2.0));
-    if (g < 1) g = 1;
-    size_t *count = calloc(g * g, sizeof *count), most = n;
-    if (!count) return most;
-    most = 0;
-    for (size_t i = 0; i < n; i++) {
-        const size_t c = coord(xy[2 * i + 1], g) * g + coord(xy[2 * i], g);
-        if (++count[c] > most) most = count[c];
-    }
-    free(count);
-    return most;
-}
-
-int an_nn_stats(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg)
-{
-    if (n < 2) return -1;
-    /* A spread set: the core's grid is faster than the tree (and gives the
-     * same bits). */
-    if (crowding(xy, n) <= AN_NN_CROWDED) return cfpo_nn_stats(xy, n, nn, delta_min, delta_avg);
-    return an_nn_stats_tree(xy, n, T, nn, delta_min, delta_avg);
-}
-
-int an_nn_stats_tree(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg)
-{
-    if (n < 2) return -1;
-    an_ptree own;
-    int built = 0;
+    an_ptree own = {0};
+    double *d = nn ? nn : malloc(n * sizeof *d);
+    int status = -1;
+    if (!d) return -1;
     if (!T) {
-        if (an_ptree_build(&own, xy, n) != 0) { an_ptree_free(&own); return -1; }
+        if (an_ptree_build(&own, xy, n) != 0) goto done;
         T = &own;
-        built = 1;
     }
-    /* The core's order: cells of its grid by rows, points by index in a
-     * cell; a sum per row, then the rows. */
-    size_t g = (size_t)floor(sqrt((double)n / 2.0));
-    if (g < 1) g = 1;
-    size_t *start = calloc(g * g + 1, sizeof *start), *idx = malloc(n * sizeof *idx);
-    double *d = malloc(n * sizeof *d);
-    if (!start || !idx || !d) {
-        free(start); free(idx); free(d);
-        if (built) an_ptree_free(&own);
-        return -1;
-    }
-    for (size_t i = 0; i < n; i++) start[coord(xy[2 * i + 1], g) * g + coord(xy[2 * i], g) + 1]++;
-    for (size_t c = 0; c < g * g; c++) start[c + 1] += start[c];
-    for (size_t i = 0; i < n; i++) idx[start[coord(xy[2 * i + 1], g) * g + coord(xy[2 * i], g)]++] = i;
-    for (size_t c = g * g; c > 0; c--) start[c] = start[c - 1];
-    start[0] = 0;
 #pragma omp parallel for schedule(dynamic, 256)
     for (size_t i = 0; i < n; i++) d[i] = sqrt(an_ptree_nearest_torus(T, xy[2 * i], xy[2 * i + 1], i));
+    const size_t g = G->g;
     double sum = 0, mn = INFINITY;
     for (size_t cy = 0; cy < g; cy++) {
         double rs = 0, rm = INFINITY;
-        for (size_t k = start[cy * g]; k < start[(cy + 1) * g]; k++) {
-            rs += d[idx[k]];
-            if (d[idx[k]] < rm) rm = d[idx[k]];
+        for (size_t k = G->start[cy * g]; k < G->start[(cy + 1) * g]; k++) {
+            rs += d[G->idx[k]];
+            if (d[G->idx[k]] < rm) rm = d[G->idx[k]];
         }
         sum += rs;
         if (rm < mn) mn = rm;
@@ -80,10 +37,38 @@ int an_nn_stats_tree(const double *xy, size_t n, const an_ptree *T, double *nn, 
     const double D = cfpo_delta_bound((double)n);
     *delta_min = mn / D;
     *delta_avg = sum / (double)n / D;
-    if (nn) memcpy(nn, d, n * sizeof *d);
-    free(start); free(idx); free(d);
-    if (built) an_ptree_free(&own);
-    return 0;
+    status = 0;
+done:
+    if (d != nn) free(d);
+    an_ptree_free(&own);
+    return status;
+}
+
+int an_nn_stats(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg)
+{
+    if (n < 2) return -1;
+    an_grid G;
+    int status = -1;
+    if (an_grid_build(xy, n, &G) == 0) {
+        size_t most = 0; /* the most points in one cell */
+        for (size_t c = 0; c < G.g * G.g; c++)
+            if (G.start[c + 1] - G.start[c] > most) most = G.start[c + 1] - G.start[c];
+        /* A spread set: the core's grid is faster than the tree (and gives
+         * the same bits). */
+        status = most <= AN_NN_CROWDED ? cfpo_nn_stats(xy, n, nn, delta_min, delta_avg)
+                                       : tree_stats(xy, n, &G, T, nn, delta_min, delta_avg);
+    }
+    an_grid_free(&G);
+    return status;
+}
+
+int an_nn_stats_tree(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg)
+{
+    if (n < 2) return -1;
+    an_grid G;
+    const int status = an_grid_build(xy, n, &G) == 0 ? tree_stats(xy, n, &G, T, nn, delta_min, delta_avg) : -1;
+    an_grid_free(&G);
+    return status;
 }
 
 int an_nn_compute(const double *xy, size_t n, an_nn *out, uint64_t *hist)
