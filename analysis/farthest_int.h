@@ -60,4 +60,11 @@ void an_hull_links(an_far_ws *ws);
  * when i is not a hull vertex. */
 double an_wedge_bound(const an_far_ws *ws, size_t i, const double *dom, int ndom);
 
+/* The farthest point of square S from the m points by a few of them
+ * (farsub.c): its squared distance to all m, when the few decide it, or
+ * -3 when they do not (then solve it whole). scratch: room for the core
+ * solver on 24 points. */
+double an_farthest_sub(const double *yx, const double *yy, size_t m, cfpo_square S, double hx, double hy, double *cx,
+                       double *cy, double *scratch);
+
 #endif

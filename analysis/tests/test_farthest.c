@@ -1,7 +1,8 @@
 /* test_farthest.c - an_farthest (the certificate's solver) against the
  * core's exact LocalCFPO solver and against brute force, on sets large
  * enough to take its grid path (more than AN_FAR_SMALL points): uniform,
- * clustered, collinear (horizontal, vertical, diagonal), repeated
+ * clustered, collinear (horizontal, vertical, diagonal; and a segment
+ * seen from one of its points, with and without it), repeated
  * positions, a cluster with far outliers, and squares inside, around and
  * far from the points. Must hold: the same farthest distance as the core
  * solver (to rounding), the returned point inside the square and at that
@@ -323,6 +324,22 @@ int main(void)
             }
         }
     }
+    /* A segment's point's neighbourhood (the theorem's D(x) on a line):
+     * the square centred on one of its points, with and without that
+     * point; the answer is decided by a few points (farsub.c). */
+    for (int dir = 0; dir < 3; dir++)
+        for (size_t m = 150; m <= M; m += 150) {
+            const double dx = dir == 1 ? 0 : 1.0 / (double)m, dy = dir == 0 ? 0 : 0.7 / (double)m;
+            for (size_t i = 0; i < m; i++) { x[i] = 0.1 + dx * (double)i; y[i] = 0.2 + dy * (double)i; }
+            const size_t c = m / 3;
+            for (int skip = 0; skip < 2; skip++) {
+                const double e = 0.1 + 0.05 * skip;
+                const cfpo_square Sc = {x[c] - e, y[c] - e, x[c] + e, y[c] + e};
+                if (skip) { x[c] = x[m - 1]; y[c] = y[m - 1]; }
+                snprintf(what, sizeof what, "segment %d, centred on a point%s", dir, skip ? ", left out" : "");
+                one(what, x, y, m - (size_t)skip, Sc, &ws);
+            }
+        }
     /* One point, many copies: the answer is the square's farthest corner. */
     for (size_t i = 0; i < M; i++) { x[i] = 0.25; y[i] = 0.5; }
     double cx, cy;
