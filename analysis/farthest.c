@@ -209,19 +209,9 @@ int an_clip_region(const an_far_ws *ws, size_t i, size_t excl, region *R, double
     return 1;
 }
 
-/* A many-sided domain seen from a point c inside it: its vertices' angles
- * around c, increasing from index rot on, and its bounding box. */
 typedef struct {
-    double cx, cy;
-    const double *ang; /* ang[j]: the angle of vertex (rot + j) mod n */
-    int rot;
-    double box[8];
-} sector;
-
-typedef struct {
-    const double *dom; /* the convex polygon searched, CCW */
+    const double *dom; /* the square searched, its corners CCW */
     int ndom;
-    const sector *sec; /* NULL: the region starts as the whole domain */
     double best, bx, by;
     int found;
     double oct[16]; /* a convex polygon inside the points' hull, CCW */
@@ -311,72 +301,12 @@ static int deep_inside(const far_state *F, double ax, double ay)
     return depth(F, ax, ay) > sigma * (1 + 1e-9) + 1e-12 * sqrt(F->w2);
 }
 
-/* The index j of the domain edge (from vertex (rot + j) mod n) holding
- * the direction phi from the sector's centre. */
-static int edge_at(const far_state *F, double phi)
-{
-    const double *A = F->sec->ang;
-    int lo = 0, hi = F->ndom; /* the first j with A[j] > phi */
-    while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        if (A[mid] <= phi) lo = mid + 1;
-        else hi = mid;
-    }
-    return lo == 0 ? F->ndom - 1 : lo - 1;
-}
-
-/* A region found in the domain's box, cut to the domain: only by the
- * edges facing it as seen from the centre c (a convex region not holding
- * c lies in the cone of its vertices' directions, where the domain is cut
- * off by those edges alone), one more on each side against rounding. 0
- * when nothing is left. */
-static int to_domain(const far_state *F, region *R)
-{
-    const sector *sc = F->sec;
-    const int n = F->ndom;
-    const double p0 = atan2(R->P[1] - sc->cy, R->P[0] - sc->cx);
-    double lo = 0, hi = 0;
-    for (int v = 1; v < R->nv; v++) {
-        double d = atan2(R->P[2 * v + 1] - sc->cy, R->P[2 * v] - sc->cx) - p0;
-        if (d > M_PI) d -= 2 * M_PI;
-        if (d <= -M_PI) d += 2 * M_PI;
-        lo = fmin(lo, d);
-        hi = fmax(hi, d);
-    }
-    int first = 0, count = n;
-    if (hi - lo < M_PI * (1 - 1e-6)) { /* else the region may hold c: every edge */
-        double a = p0 + lo, b = p0 + hi;
-        if (a <= -M_PI) a += 2 * M_PI;
-        if (b > M_PI) b -= 2 * M_PI;
-        const int ja = edge_at(F, a), jb = edge_at(F, b);
-        count = (jb - ja + n) % n + 3;
-        first = (ja - 1 + n) % n;
-        if (count > n) { first = 0; count = n; }
-    }
-    for (int t = 0; t < count && R->nv > 0; t++) {
-        const int e = (sc->rot + first + t) % n, f = (e + 1) % n;
-        const double px = F->dom[2 * e], py = F->dom[2 * e + 1];
-        const double ex = F->dom[2 * f] - px, ey = F->dom[2 * f + 1] - py;
-        int out = 0;
-        for (int v = 0; v < R->nv; v++) { /* CCW: inside is to the left of each edge */
-            R->sd[v] = -(ex * (R->P[2 * v + 1] - py) - ey * (R->P[2 * v] - px));
-            out |= R->sd[v] > 0;
-        }
-        if (!out) continue;
-        R->nv = an_clip_sd(R->P, R->nv, R->Q, R->sd);
-        double *tmp = R->P;
-        R->P = R->Q;
-        R->Q = tmp;
-    }
-    return R->nv > 0;
-}
-
-/* Point i's region clipped to the domain; its farthest vertex may raise
- * the best. */
+/* Point i's region in the domain; its farthest vertex may raise the
+ * best. */
 static void visit(const an_far_ws *ws, size_t i, far_state *F)
 {
-    const double *corner = F->sec ? F->sec->box : F->dom;
-    const int nc = F->sec ? 4 : F->ndom;
+    const double *corner = F->dom;
+    const int nc = F->ndom;
     const double ax = ws->x[i], ay = ws->y[i];
     double ub = 0;
     for (int c = 0; c < nc; c++) {
@@ -389,7 +319,6 @@ static void visit(const an_far_ws *ws, size_t i, far_state *F)
     region R = {ws->pa, ws->pb, ws->sd, nc, ub};
     memcpy(R.P, corner, 2 * (size_t)nc * sizeof *corner);
     if (!an_clip_region(ws, i, (size_t)-1, &R, F->best)) return;
-    if (F->sec && !to_domain(F, &R)) return;
     for (int v = 0; v < R.nv; v++) {
         const double dx = R.P[2 * v] - ax, dy = R.P[2 * v + 1] - ay, d2 = dx * dx + dy * dy;
         if (d2 > F->best) { F->best = d2; F->bx = R.P[2 * v]; F->by = R.P[2 * v + 1]; F->found = 1; }
@@ -423,13 +352,9 @@ static void solve_on(an_far_ws *ws, size_t k, far_state *F)
     }
 }
 
-/* The answer, kept inside the square's sides against rounding (S NULL:
- * as found). */
+/* The answer, kept inside the square's sides against rounding. */
 static void clamp_to(const cfpo_square *S, const far_state *F, double *cx, double *cy)
 {
-    *cx = F->bx;
-    *cy = F->by;
-    if (!S) return;
     *cx = F->bx < S->x0 ? S->x0 : F->bx > S->x1 ? S->x1 : F->bx;
     *cy = F->by < S->y0 ? S->y0 : F->by > S->y1 ? S->y1 : F->by;
 }
@@ -443,17 +368,17 @@ static void clamp_to(const cfpo_square *S, const far_state *F, double *cx, doubl
  * free of the hull's vertices holds none of the hull deeper than
  * W^2 / (2 rho), the sagitta of a chord of length W), so the whole set is
  * solved again only as a guard against rounding. */
-static double farthest_tree(const double *yx, const double *yy, size_t m, const double *dom, int ndom,
-                            const sector *sec, const cfpo_square *Sq, double *cx, double *cy, an_far_ws *ws)
+static double farthest_tree(const double *yx, const double *yy, size_t m, const cfpo_square *Sq, double *cx,
+                            double *cy, an_far_ws *ws)
 {
-    far_state F = {dom, ndom, sec, -1, dom[0], dom[1], 0, {0}, 0, {0}, 0, 0};
-    if (Sq) { F.bx = 0.5 * (Sq->x0 + Sq->x1); F.by = 0.5 * (Sq->y0 + Sq->y1); }
+    const double dom[8] = {Sq->x0, Sq->y0, Sq->x1, Sq->y0, Sq->x1, Sq->y1, Sq->x0, Sq->y1};
+    const int ndom = 4;
+    far_state F = {dom, ndom, -1, 0.5 * (Sq->x0 + Sq->x1), 0.5 * (Sq->y0 + Sq->y1), 0, {0}, 0, {0}, 0, 0};
     octagon(yx, yy, m, &F);
     /* The corners of the domain are in it: the farthest of them from the
      * points is a value the answer reaches, known before any region is
      * clipped. */
-    const int step = ndom > 64 ? ndom / 64 : 1; /* each vertex is a valid start: 64 of them are enough */
-    for (int c = 0; c < ndom; c += step) {
+    for (int c = 0; c < ndom; c++) {
         const double d2 = cfpo_min_dist2(dom[2 * c], dom[2 * c + 1], yx, yy, (int)m, -1);
         if (d2 > F.best) { F.best = d2; F.bx = dom[2 * c]; F.by = dom[2 * c + 1]; F.found = 1; }
     }
@@ -492,45 +417,5 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
     if (m <= AN_FAR_SMALL) return cfpo_local_solve(yx, yy, (int)m, -1, S, hx, hy, -1, cx, cy, ws->scratch);
     const double r2 = an_farthest_sub(yx, yy, m, S, hx, hy, cx, cy, ws->scratch);
     if (r2 != -3) return r2;
-    const double dom[8] = {S.x0, S.y0, S.x1, S.y0, S.x1, S.y1, S.x0, S.y1};
-    return farthest_tree(yx, yy, m, dom, 4, NULL, &S, cx, cy, ws);
-}
-
-double an_farthest_poly(const double *yx, const double *yy, size_t m, const double *P, int nv, double px,
-                        double py, double *cx, double *cy, an_far_ws *ws)
-{
-    if (m == 0 || nv < 1) return -1;
-    if (m > (size_t)INT32_MAX / 4 || (size_t)nv > (size_t)INT32_MAX / 4 || an_far_reserve(ws, m + (size_t)nv) != 0)
-        return -1;
-    /* The domain is copied: the solver's polygon buffers may be the
-     * caller's. */
-    double *dom = malloc(3 * (size_t)nv * sizeof *dom);
-    if (!dom) return -1;
-    memcpy(dom, P, 2 * (size_t)nv * sizeof *dom);
-    sector sec = {px, py, dom + 2 * nv, 0, {0}};
-    const sector *use = NULL;
-    if (nv > 8) { /* many sides: regions start in the box and meet only the edges they face */
-        double *ang = dom + 2 * nv, x0 = dom[0], x1 = dom[0], y0 = dom[1], y1 = dom[1];
-        for (int v = 0; v < nv; v++) {
-            ang[v] = atan2(dom[2 * v + 1] - py, dom[2 * v] - px);
-            if (ang[v] < ang[sec.rot]) sec.rot = v;
-            x0 = fmin(x0, dom[2 * v]); x1 = fmax(x1, dom[2 * v]);
-            y0 = fmin(y0, dom[2 * v + 1]); y1 = fmax(y1, dom[2 * v + 1]);
-        }
-        double *sorted = malloc((size_t)nv * sizeof *sorted);
-        if (!sorted) { free(dom); return -1; }
-        int increasing = 1;
-        for (int j = 0; j < nv; j++) {
-            sorted[j] = ang[(sec.rot + j) % nv];
-            increasing &= j == 0 || sorted[j] > sorted[j - 1];
-        }
-        memcpy(ang, sorted, (size_t)nv * sizeof *ang);
-        free(sorted);
-        const double box[8] = {x0, y0, x1, y0, x1, y1, x0, y1};
-        memcpy(sec.box, box, sizeof box);
-        use = increasing ? &sec : NULL; /* (p not strictly inside: the whole domain each time) */
-    }
-    const double r = farthest_tree(yx, yy, m, dom, nv, use, NULL, cx, cy, ws);
-    free(dom);
-    return r;
+    return farthest_tree(yx, yy, m, &S, cx, cy, ws);
 }

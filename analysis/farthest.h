@@ -52,15 +52,6 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
                    double *cy, an_far_ws *ws);
 void an_far_free(an_far_ws *ws);
 
-/* The same for a convex polygon P of nv vertices (counter-clockwise)
- * instead of a square, always by the tree: the point (*cx, *cy) of P
- * farthest from the m >= 1 points, and its squared distance to them; -1
- * out of memory or no vertex found. (px, py) is a point inside P: with
- * many sides, each point's region is found in P's box and then cut only
- * by the edges of P it faces from there. */
-double an_farthest_poly(const double *yx, const double *yy, size_t m, const double *P, int nv, double px,
-                        double py, double *cx, double *cy, an_far_ws *ws);
-
 /* A set prepared once for many solves (farprep.c): the same answers as
  * an_farthest's tree, with each solve costing about the number of
  * positions whose Voronoi cell reaches far (a cluster's rim) instead of

@@ -9,7 +9,7 @@
 #include "certify_int.h"
 #include "geom.h"
 
-#define VMAX_DIRECT 64 /* touching points solved by clipping each against all */
+#define VMAX_DIRECT 64 /* touching points solved by clipping each against all; more: hole_radius */
 
 /* Clips polygon P (n vertices in p) to the side of the bisector of a and b
  * nearer a, into q. Returns the new count. */
@@ -95,6 +95,84 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
     return 0;
 }
 
+typedef struct {
+    double ub;
+    size_t c;
+} cell_bound;
+
+static int by_bound_desc(const void *a, const void *b)
+{
+    const cell_bound *p = a, *q = b;
+    if (p->ub != q->ub) return p->ub > q->ub ? -1 : 1;
+    return p->c < q->c ? -1 : (p->c > q->c);
+}
+
+/* max(rho, T) for point i at once: the largest empty circle of X \ {x},
+ * as the covering radius itself is found (certify.c), over the grid's
+ * cells that meet V(x)'s box [bx0, bx1] x [by0, by1] (elsewhere nothing
+ * changes when x goes; V(x) is P, nv vertices). A cell's radius is at most its centre's distance
+ * to X \ {x} plus its half-diagonal, so cells are solved exactly by that
+ * bound, largest first, until it falls below the largest radius found.
+ * For V(x) with thousands of touching points (the end of a line of
+ * points, its cell reaching along every image of the line) this solves a
+ * few cells instead of V(x)'s partition among those points. *T = -1 when
+ * no cell beats rho. 0, -1 out of memory, -2 the solver found nothing. */
+static int hole_radius(const an_cert_ctx *C, size_t i, an_cert_work *w, const double *P, int nv, double *T,
+                       double *tx, double *ty)
+{
+    double box[4] = {P[0], P[0], P[1], P[1]};
+    for (int v = 1; v < nv; v++) {
+        box[0] = fmin(box[0], P[2 * v]); box[1] = fmax(box[1], P[2 * v]);
+        box[2] = fmin(box[2], P[2 * v + 1]); box[3] = fmax(box[3], P[2 * v + 1]);
+    }
+    const long g = (long)C->G.g;
+    const double L = C->G.L, hd = 0.5 * L * sqrt(2.0);
+    long ix0 = (long)floor(box[0] * (double)g), ix1 = (long)floor(box[1] * (double)g);
+    long iy0 = (long)floor(box[2] * (double)g), iy1 = (long)floor(box[3] * (double)g);
+    if (ix1 - ix0 + 1 >= g) { ix0 = 0; ix1 = g - 1; }
+    if (iy1 - iy0 + 1 >= g) { iy0 = 0; iy1 = g - 1; }
+    cell_bound *cand = malloc((size_t)(ix1 - ix0 + 1) * (size_t)(iy1 - iy0 + 1) * sizeof *cand);
+    if (!cand) return -1;
+    size_t k = 0;
+    for (long iy = iy0; iy <= iy1; iy++)
+        for (long ix = ix0; ix <= ix1; ix++) {
+            const long wx = ((ix % g) + g) % g, wy = ((iy % g) + g) % g;
+            const double cx = ((double)wx + 0.5) * L, cy = ((double)wy + 0.5) * L;
+            const double ub = (sqrt(an_ptree_nearest(C->tree, cx, cy, i)) + hd) * (1 + 1e-9) + 1e-15;
+            if (ub > C->rho) cand[k++] = (cell_bound){ub, (size_t)(wy * g + wx)};
+        }
+    qsort(cand, k, sizeof *cand, by_bound_desc);
+    double best = C->rho;
+    *T = -1;
+    int status = 0;
+    for (size_t t = 0; t < k && cand[t].ub > best && status == 0; t++) {
+        const size_t c = cand[t].c;
+        const double x0 = (double)(c % (size_t)g) * L, y0 = (double)(c / (size_t)g) * L;
+        const double cx = x0 + 0.5 * L, cy = y0 + 0.5 * L, R = (cand[t].ub + hd) * (1 + 1e-9) + 1e-15;
+        if (an_cert_collect(C, cx, cy, R, w) != 0) { status = -1; break; }
+        size_t m = 0;
+        for (size_t u = 0; u < w->m; u++) {
+            const double dx = w->x[u] - cx, dy = w->y[u] - cy;
+            if (w->id[u] == i || dx * dx + dy * dy > R * R) continue;
+            w->sx[m] = w->x[u];
+            w->sy[m] = w->y[u];
+            m++;
+        }
+        double px, py;
+        const cfpo_square S = {x0, y0, x0 + L, y0 + L};
+        const double r2 = an_farthest(w->sx, w->sy, m, S, cx, cy, &px, &py, &w->far);
+        if (r2 < 0 || m == 0) { status = -2; break; }
+        if (sqrt(r2) > best) {
+            best = sqrt(r2);
+            *T = best;
+            *tx = cfpo_wrap01(px);
+            *ty = cfpo_wrap01(py);
+        }
+    }
+    free(cand);
+    return status;
+}
+
 int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y, double s, double Hg, double *T,
             double *tx, double *ty)
 {
@@ -144,6 +222,10 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
                 break;
             }
     }
+    if (nmarked > VMAX_DIRECT) { /* many touching points: by the grid's cells instead */
+        for (size_t t = 0; t < nmarked; t++) w->mark[w->marked[t]] = 0;
+        return hole_radius(C, i, w, P, nv, T, tx, ty);
+    }
     /* Every image of those points within Hg of x. */
     size_t k = 0;
     for (size_t t = 0; t < nmarked; t++) {
@@ -165,15 +247,11 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
     P = in_b ? w->pb : w->pa;
     k = (size_t)unique_points(w->sx, w->sy, (int)k, w->scratch);
     /* The largest distance to those points over V(x): for each of them,
-     * V(x) clipped to its own cell among them, at a vertex; by the tree of
-     * farthest.c when they are many (the far ends of a line of points,
-     * where V(x) has a vertex for each image of the line). */
+     * V(x) clipped to its own cell among them, at a vertex; by the grid's
+     * cells when they are many (the far ends of a line of points, where
+     * V(x) has a vertex for each image of the line). */
     double best = -1, bx = x, by = y;
-    if (k > VMAX_DIRECT) {
-        best = an_farthest_poly(w->sx, w->sy, k, P, nv, x, y, &bx, &by, &w->far);
-        if (best < 0) return -2;
-        k = 0;
-    }
+    if (k > VMAX_DIRECT) return hole_radius(C, i, w, P, nv, T, tx, ty);
     /* V(x) cut by k more bisectors: at most nv + k <= cap + 8 vertices. */
     double *R = w->scratch, *U = w->scratch + 4 * (w->cap + 8);
     for (size_t a = 0; a < k; a++) {

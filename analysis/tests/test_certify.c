@@ -41,12 +41,39 @@ static double dist_rest(const double *xy, size_t n, size_t i, double px, double 
     return sqrt(m);
 }
 
+/* The largest empty circle of X \ {x_i} on the torus, from the core's
+ * exact solver on the unit square with the 3 x 3 images of the other
+ * points (enough while that circle's radius is below 1/2); -1 when it is
+ * not. Independent of the certificate's own solvers. */
+static double exact_radius(const double *xy, size_t n, size_t i)
+{
+    const size_t m = 9 * (n - 1);
+    double *yx = malloc(m * sizeof *yx), *yy = malloc(m * sizeof *yy);
+    double *scratch = malloc(cfpo_solver_scratch(m) * sizeof *scratch);
+    size_t k = 0;
+    for (size_t j = 0; j < n; j++)
+        for (int oy = -1; oy <= 1 && j != i; oy++)
+            for (int ox = -1; ox <= 1; ox++) { yx[k] = xy[2 * j] + ox; yy[k] = xy[2 * j + 1] + oy; k++; }
+    const cfpo_square S = {0, 0, 1, 1};
+    double cx, cy;
+    const double r = sqrt(cfpo_local_solve(yx, yy, (int)k, -1, S, 0.5, 0.5, -1, &cx, &cy, scratch));
+    free(yx);
+    free(yy);
+    free(scratch);
+    return r < 0.5 ? r : -1;
+}
+
 /* Brute force for point i: a G x G grid over the torus must not beat the
- * certificate's radius d(x) + viol, and the target must reach it. */
+ * certificate's radius d(x) + viol, and the target must reach it; for
+ * n <= 300, the radius must be the exact one (exact_radius). */
 static void brute(const char *what, const double *xy, size_t n, size_t i, double viol, const double *target)
 {
     const double D = cfpo_delta_bound((double)n), di = dist_rest(xy, n, i, xy[2 * i], xy[2 * i + 1]);
     const double radius = di + viol * D;
+    if (n <= 300) {
+        const double r = exact_radius(xy, n, i);
+        CHECK(r < 0 || fabs(r - radius) <= 1e-12, "%s point %zu: radius %.17g, exact %.17g", what, i, radius, r);
+    }
     const int G = 96;
     double best = 0;
     for (int a = 0; a < G; a++)
@@ -164,10 +191,18 @@ static void degenerate(void)
      * diagonal, whichever x is taken out. The endpoints' Voronoi cells
      * have a vertex for each point of the segment (the bisectors fan out:
      * about 295), more than VMAX_DIRECT (64) touching points: the
-     * an_farthest_poly path of vmax.c, checked against brute force at both
+     * hole_radius path of vmax.c, checked against brute force at both
      * ends. */
     for (size_t i = 0; i < 300; i++) { xy[2 * i] = 0.1 + 1.7e-3 * i; xy[2 * i + 1] = 0.3 + 1.7e-3 * i; }
     expect("diagonal segment", xy, 300, 0, 0.0);
+    /* A vertical segment, x = 0.5, y from 0.3 to 0.7: the largest empty
+     * circle is centred at the torus point (0, 0) and touches the two end
+     * points (and their images), so leaving an end point out grows it
+     * (T > rho, unlike the diagonal), and the end points' cells reach
+     * along the segment's images on both sides (many touching points):
+     * vmax.c's hole_radius decides the value at both ends. */
+    for (size_t i = 0; i < 200; i++) { xy[2 * i] = 0.5; xy[2 * i + 1] = 0.3 + 0.4 * (double)i / 199; }
+    expect("vertical segment", xy, 200, 0, 0.0);
     for (size_t i = 0; i < 1000; i++) { xy[2 * i] = (double)i / 1000; xy[2 * i + 1] = 0.5; }
     an_certificate c;
     CHECK(cert(xy, 1000, &c, NULL, NULL) == 0 && !c.fpd && c.fp_pass == 0, "1,000 collinear points");
