@@ -82,6 +82,7 @@ static void work_free(work *w)
 {
     free(w->x); free(w->y); free(w->sx); free(w->sy); free(w->id); free(w->scratch);
     free(w->pa); free(w->pb); free(w->sd); free(w->fr2); free(w->mark); free(w->marked);
+    free(w->cand); free(w->cand_id);
     an_far_free(&w->far);
     for (int k = 0; k < AN_PREP_SLOTS; k++) an_far_prep_free(&w->prep[k]);
     an_pwalk_free(&w->walk);

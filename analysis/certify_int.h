@@ -39,6 +39,8 @@ typedef struct {
     an_far_prep prep[AN_PREP_SLOTS]; /* large neighbourhoods, prepared when seen again */
     unsigned long used[AN_PREP_SLOTS], clock; /* when each slot was last used */
     an_pwalk walk;
+    double *cand;         /* vmax.c: images that may touch V(x), 2 per */
+    size_t *cand_id, ccap;
 } an_cert_work;
 
 /* Room for m collected images, and polygons of m + 8 vertices: 0, or -1

@@ -12,12 +12,17 @@
 #define VMAX_DIRECT 64 /* touching points solved by clipping each against all; more: hole_radius */
 
 /* Clips polygon P (n vertices in p) to the side of the bisector of a and b
- * nearer a, into q. Returns the new count. */
+ * nearer a, into q. Returns the new count, or -1 when no vertex is cut
+ * off (q untouched). */
 static int clip(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by)
 {
     const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
-    for (int v = 0; v < n; v++) sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
-    return an_clip_sd(p, n, q, sd);
+    int out = 0;
+    for (int v = 0; v < n; v++) {
+        sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
+        out |= sd[v] > 0;
+    }
+    return out ? an_clip_sd(p, n, q, sd) : -1;
 }
 
 /* Sorts the m positions (sx, sy) and drops repeats; returns the count. */
@@ -50,48 +55,95 @@ static void set_filter(an_cert_work *w, const double *P, int nv, double x, doubl
     an_pwalk_filter(&w->walk, P, w->fr2, nv);
 }
 
+/* The rounding slack of the touching test for polygon P: eps = 1e-9 of
+ * its extent from x; a vertex v with (v - m).n >= -eps |n| needs |n| <=
+ * 2 sqrt(far2) + 2 eps, so |v - y|^2 <= |v - x|^2 + 2 eps |n| is met with
+ * 2 eps |n| at most *slack; *radius bounds |n|. */
+static void touch_slack(const double *P, int nv, double x, double y, double far2, double *eps, double *slack,
+                        double *radius)
+{
+    double ext = 0;
+    for (int v = 0; v < nv; v++) {
+        const double ax = fabs(P[2 * v] - x), ay = fabs(P[2 * v + 1] - y), e = ax > ay ? ax : ay;
+        ext = e > ext ? e : ext;
+    }
+    *eps = 1e-9 * (ext + 1e-300);
+    *radius = (2 * sqrt(far2) + 2 * *eps) * (1 + 1e-9) + 1e-300;
+    *slack = 2 * *eps * (2 * sqrt(far2) + 2 * *eps) * (1 + 1e-9);
+}
+
+/* Keeps candidate (px, py, id) in w->cand. 0, or -1 out of memory. */
+static int keep(an_cert_work *w, size_t k, double px, double py, size_t id)
+{
+    if (k == w->ccap) {
+        const size_t cap = w->ccap ? 2 * w->ccap : 64;
+        double *c = realloc(w->cand, 2 * cap * sizeof *c);
+        if (c) w->cand = c;
+        size_t *d = realloc(w->cand_id, cap * sizeof *d);
+        if (d) w->cand_id = d;
+        if (!c || !d) return -1;
+        w->ccap = cap;
+    }
+    w->cand[2 * k] = px;
+    w->cand[2 * k + 1] = py;
+    w->cand_id[k] = id;
+    return 0;
+}
+
 /* V(x): the square of half-side s around x clipped by the bisectors of x
  * and the images of the other points, nearest first, until the next one is
- * more than twice the polygon's reach away (it cannot cut it). Leaves the
- * polygon in w->pa (which = 0) or w->pb (1), its squared reach in *far2. */
+ * farther than any that could touch the polygon. Leaves the polygon in
+ * w->pa (which = 0) or w->pb (1), its squared reach in *far2, and in
+ * w->cand (*ncand) every image that may touch it: the walk's filter and
+ * its end take the touching test's slack, and a point touching the final
+ * polygon touches every polygon containing it (the test is linear, so it
+ * holds at a vertex of the larger one), so no second walk is needed. */
 static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y, double s, double reach,
-                   int *nv_out, int *which, double *far2)
+                   int *nv_out, int *which, double *far2, size_t *ncand)
 {
     double *P = w->pa, *Q = w->pb;
     int nv = 4, in_b = 0;
     const double sq[8] = {x - s, y - s, x + s, y - s, x + s, y + s, x - s, y + s};
     memcpy(P, sq, sizeof sq);
     *far2 = 2 * s * s;
-    if (an_pwalk_start(&w->walk, C->tree, x, y, 2 * sqrt(*far2) * (1 + 1e-9), i) != 0) return -1;
-    set_filter(w, P, nv, x, y, 0);
+    double eps, slack, radius;
+    touch_slack(P, nv, x, y, *far2, &eps, &slack, &radius);
+    if (an_pwalk_start(&w->walk, C->tree, x, y, radius, i) != 0) return -1;
+    set_filter(w, P, nv, x, y, slack);
     double lastx = NAN, lasty = NAN, px, py, d2;
-    size_t id;
+    size_t id, k = 0;
     int got;
     while (nv > 0 && (got = an_pwalk_next(&w->walk, &px, &py, &id, &d2)) != 0) {
         if (got < 0) return -1;
-        if (d2 >= 4 * *far2 * (1 + 1e-9)) break;
+        if (d2 > radius * radius) break;
         if (id == i || fabs(px - x) > reach || fabs(py - y) > reach) continue;
-        if (px == x && py == y) continue;            /* a coincident point: no bisector */
-        if (px == lastx && py == lasty) continue;    /* the same bisector again */
+        if (px == lastx && py == lasty) continue; /* the same bisector again, the same images */
         lastx = px;
         lasty = py;
+        if (keep(w, k++, px, py, id) != 0) return -1;
+        if (px == x && py == y) continue;        /* a coincident point: no bisector */
+        if (d2 >= 4 * *far2 * (1 + 1e-9)) continue; /* too far to cut */
         if ((size_t)nv + 1 > w->cap + 8) {
             if (an_cert_reserve(w, 2 * w->cap) != 0) return -1;
             P = in_b ? w->pb : w->pa;
             Q = in_b ? w->pa : w->pb;
         }
-        nv = clip(P, nv, Q, w->sd, x, y, px, py);
+        const int cut = clip(P, nv, Q, w->sd, x, y, px, py);
+        if (cut < 0) continue; /* nothing cut off */
+        nv = cut;
         double *tmp = P; P = Q; Q = tmp;
         in_b = !in_b;
-        set_filter(w, P, nv, x, y, 0);
         *far2 = 0;
         for (int v = 0; v < nv; v++) {
-            const double dx = P[2 * v] - x, dy = P[2 * v + 1] - y;
-            *far2 = fmax(*far2, dx * dx + dy * dy);
+            const double dx = P[2 * v] - x, dy = P[2 * v + 1] - y, e2 = dx * dx + dy * dy;
+            *far2 = e2 > *far2 ? e2 : *far2;
         }
+        touch_slack(P, nv, x, y, *far2, &eps, &slack, &radius);
+        set_filter(w, P, nv, x, y, slack);
     }
     *nv_out = nv;
     *which = in_b;
+    *ncand = k;
     return 0;
 }
 
@@ -180,39 +232,27 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
     *T = -1;
     int nv, in_b;
     double far2;
-    if (cell_of(C, i, w, x, y, s, reach, &nv, &in_b, &far2) != 0) return -1;
+    size_t ncand;
+    if (cell_of(C, i, w, x, y, s, reach, &nv, &in_b, &far2, &ncand) != 0) return -1;
     if (nv == 0) return 0;
     /* For p in V(x), d(p, X \ {x}) <= |p - x| + d(x): when even that stays
      * below rho, T < rho and the test needs no more. */
     if ((sqrt(far2) + C->nn[i]) * (1 + 1e-9) < C->rho) return 0;
     const double *P = in_b ? w->pb : w->pa;
-    /* Points whose bisector touches V(x) (within rounding eps), by id: a
-     * vertex v with (v - m).n >= -eps |n| needs |n| <= 2 sqrt(far2) + 2 eps. */
-    double ext = 0;
-    for (int v = 0; v < nv; v++) ext = fmax(ext, fmax(fabs(P[2 * v] - x), fabs(P[2 * v + 1] - y)));
-    const double eps = 1e-9 * (ext + 1e-300);
+    /* Points whose bisector touches V(x) (within rounding eps), by id,
+     * among the walk's candidates: (v - m).n >= -eps |n| at a vertex. */
+    double eps, slack, radius;
+    touch_slack(P, nv, x, y, far2, &eps, &slack, &radius);
     if (!w->mark) {
         w->mark = calloc(C->n, 1);
         w->marked = malloc(C->n * sizeof *w->marked);
         if (!w->mark || !w->marked) return -1;
     }
     size_t nmarked = 0;
-    if (an_pwalk_start(&w->walk, C->tree, x, y, (2 * sqrt(far2) + 2 * eps) * (1 + 1e-9) + 1e-300, i) != 0)
-        return -1;
-    /* Touching within eps: |v - y|^2 <= |v - x|^2 + 2 eps |n| at a vertex. */
-    set_filter(w, P, nv, x, y, 2 * eps * (2 * sqrt(far2) + 2 * eps) * (1 + 1e-9));
-    double px, py, d2, lastx = NAN, lasty = NAN;
-    size_t id;
-    int got;
-    while ((got = an_pwalk_next(&w->walk, &px, &py, &id, &d2)) != 0) {
-        if (got < 0) return -1;
-        if (id == i) continue;
-        /* A point where the image before it was: the same bisector, and
-         * its images are that one's (gathered if that one is marked). */
-        if (px == lastx && py == lasty) continue;
-        lastx = px;
-        lasty = py;
-        if (w->mark[id] || fabs(px - x) > reach || fabs(py - y) > reach) continue;
+    for (size_t c = 0; c < ncand; c++) {
+        const double px = w->cand[2 * c], py = w->cand[2 * c + 1];
+        const size_t id = w->cand_id[c];
+        if (w->mark[id]) continue;
         const double nx = px - x, ny = py - y, mx = 0.5 * (px + x), my = 0.5 * (py + y);
         const double scale = sqrt(nx * nx + ny * ny);
         for (int v = 0; v < nv; v++)
@@ -259,7 +299,9 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
         int nr = nv;
         for (size_t b = 0; b < k && nr > 0; b++) {
             if (b == a) continue;
-            nr = clip(R, nr, U, w->sd, w->sx[a], w->sy[a], w->sx[b], w->sy[b]);
+            const int cut = clip(R, nr, U, w->sd, w->sx[a], w->sy[a], w->sx[b], w->sy[b]);
+            if (cut < 0) continue;
+            nr = cut;
             double *tmp = R; R = U; U = tmp;
         }
         for (int v = 0; v < nr; v++) {
