@@ -9,7 +9,7 @@
 #include "certify_int.h"
 #include "geom.h"
 
-#define VMAX_DIRECT 64 /* touching points solved by clipping each against all; more: hole_radius */
+#define VMAX_DIRECT 64 /* touching points (or sides of V(x)) solved by clipping; more: hole_radius */
 
 /* Clips polygon P (n vertices in p) to the side of the bisector of a and b
  * nearer a, into q. Returns the new count, or -1 when no vertex is cut
@@ -92,7 +92,9 @@ static int keep(an_cert_work *w, size_t k, double px, double py, size_t id)
 
 /* V(x): the square of half-side s around x clipped by the bisectors of x
  * and the images of the other points, nearest first, until the next one is
- * farther than any that could touch the polygon. Leaves the polygon in
+ * farther than any that could touch the polygon, or until the polygon has
+ * more than VMAX_DIRECT sides (the end of a line of points, whose cell
+ * has a side for each image of the line: then it still holds V(x)). Leaves the polygon in
  * w->pa (which = 0) or w->pb (1), its squared reach in *far2, and in
  * w->cand (*ncand) every image that may touch it: the walk's filter and
  * its end take the touching test's slack, and a point touching the final
@@ -138,6 +140,7 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
             const double dx = P[2 * v] - x, dy = P[2 * v + 1] - y, e2 = dx * dx + dy * dy;
             *far2 = e2 > *far2 ? e2 : *far2;
         }
+        if (nv > VMAX_DIRECT) break; /* a many-sided cell: the caller goes by the grid's cells */
         touch_slack(P, nv, x, y, *far2, &eps, &slack, &radius);
         set_filter(w, P, nv, x, y, slack);
     }
@@ -239,6 +242,7 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
      * below rho, T < rho and the test needs no more. */
     if ((sqrt(far2) + C->nn[i]) * (1 + 1e-9) < C->rho) return 0;
     const double *P = in_b ? w->pb : w->pa;
+    if (nv > VMAX_DIRECT) return hole_radius(C, i, w, P, nv, T, tx, ty); /* P holds V(x) */
     /* Points whose bisector touches V(x) (within rounding eps), by id,
      * among the walk's candidates: (v - m).n >= -eps |n| at a vertex. */
     double eps, slack, radius;
