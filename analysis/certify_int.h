@@ -25,6 +25,7 @@ typedef struct {
 } an_cert_ctx;
 
 #define AN_PREP_SLOTS 8 /* a thread keeps this many large neighbourhoods */
+#define AN_PREP_AFTER 3 /* and prepares one seen this many times */
 
 /* Per-thread buffers: collected images (position, id), a subset, scratch. */
 typedef struct {
@@ -38,6 +39,7 @@ typedef struct {
     an_far_ws far;        /* the farthest-point solver's buffers */
     an_far_prep prep[AN_PREP_SLOTS]; /* large neighbourhoods, prepared when seen again */
     unsigned long used[AN_PREP_SLOTS], clock; /* when each slot was last used */
+    unsigned seen[AN_PREP_SLOTS];                /* how often each slot's set came */
     an_pwalk walk;
     double *cand;         /* vmax.c: images that may touch V(x), 2 per */
     size_t *cand_id, ccap;

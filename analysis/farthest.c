@@ -419,3 +419,11 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
     if (r2 != -3) return r2;
     return farthest_tree(yx, yy, m, &S, cx, cy, ws);
 }
+
+double an_farthest_whole(const double *yx, const double *yy, size_t m, cfpo_square S, double hx, double hy,
+                         double *cx, double *cy, an_far_ws *ws)
+{
+    if (m <= AN_FAR_SMALL) return an_farthest(yx, yy, m, S, hx, hy, cx, cy, ws);
+    if (m > (size_t)INT32_MAX / 4 || an_far_reserve(ws, m) != 0) return -1;
+    return farthest_tree(yx, yy, m, &S, cx, cy, ws);
+}

@@ -67,4 +67,9 @@ double an_wedge_bound(const an_far_ws *ws, size_t i, const double *dom, int ndom
 double an_farthest_sub(const double *yx, const double *yy, size_t m, cfpo_square S, double hx, double hy, double *cx,
                        double *cy, double *scratch);
 
+/* an_farthest without the try on a few points (for a caller that made
+ * it already). */
+double an_farthest_whole(const double *yx, const double *yy, size_t m, cfpo_square S, double hx, double hy,
+                         double *cx, double *cy, an_far_ws *ws);
+
 #endif

@@ -12,6 +12,7 @@
 
 #include "certify_int.h"
 #include "farthest.h"
+#include "farthest_int.h"
 #include "geom.h"
 #include "ptree.h"
 
@@ -48,20 +49,23 @@ static an_far_prep *covering_slot(const an_cert_ctx *C, an_cert_work *w, double 
     return NULL;
 }
 
-/* The slot holding the collected set sx/sy (m points), or NULL after
- * keeping it in the least recently used slot; -1 in *err out of memory. */
+/* The slot holding the collected set sx/sy (m points) once it has been
+ * seen AN_PREP_AFTER times, or NULL (after keeping it in the least
+ * recently used slot if it is new); -1 in *err out of memory. */
 static an_far_prep *remembered(an_cert_work *w, int m, int *err)
 {
     int lru = 0;
     for (int k = 0; k < AN_PREP_SLOTS; k++) {
         if (an_far_prep_same(&w->prep[k], w->sx, w->sy, (size_t)m)) {
             w->used[k] = ++w->clock;
-            return &w->prep[k];
+            if (w->seen[k] < AN_PREP_AFTER) w->seen[k]++;
+            return w->seen[k] >= AN_PREP_AFTER ? &w->prep[k] : NULL;
         }
         if (w->used[k] < w->used[lru]) lru = k;
     }
     if (an_far_prep_set(&w->prep[lru], w->sx, w->sy, (size_t)m) != 0) *err = -1;
     w->used[lru] = ++w->clock;
+    w->seen[lru] = 1;
     return NULL;
 }
 
@@ -89,23 +93,30 @@ int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1
     }
     if (an_cert_collect(C, x, y, h, w) != 0) return -1;
     int m = subset(w, x, y, h, C->n, w->sx, w->sy);
+    /* The set is kept, and prepared when seen AN_PREP_AFTER times (each
+     * point of a cluster has the whole cluster for D(x)); until then a few
+     * points may decide it (farsub.c: a segment's or an arc's D(x), which
+     * differs from point to point or recurs a few times only). */
+    r2 = -3;
     if (m > AN_FAR_SMALL) {
         int err = 0;
         P = remembered(w, m, &err);
         if (err) return -1;
-        if (P && !P->ready && an_far_prep_build(P) != 0) return -1;
+        if (!P) r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
+        else if (!P->ready && an_far_prep_build(P) != 0) return -1;
     }
-    r2 = P ? an_far_prep_solve(P, S, 0, 0, 0, NULL, &px, &py, &w->far)
-           : an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
+    if (r2 == -3)
+        r2 = P ? an_far_prep_solve(P, S, 0, 0, 0, NULL, &px, &py, &w->far)
+               : an_farthest_whole(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
     if (r2 < 0) return -2;
     *p1 = sqrt(r2) - C->delta;
     const int m1 = m;
     const double p1_at[2] = {px, py};
     m = subset(w, x, y, h, i, w->sx, w->sy);
     const double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
-    r2 = -3;
-    if (P && m == m1 - 1 && m > AN_FAR_SMALL) r2 = an_far_prep_solve(P, S, 1, x, y, p1_at, &px, &py, &w->far);
-    if (r2 == -3) r2 = an_farthest(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
+    r2 = m > AN_FAR_SMALL ? an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch) : -3;
+    if (r2 == -3 && P && m == m1 - 1 && m > AN_FAR_SMALL) r2 = an_far_prep_solve(P, S, 1, x, y, p1_at, &px, &py, &w->far);
+    if (r2 == -3) r2 = an_farthest_whole(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
     if (r2 < 0) return -2;
     *p2 = sqrt(r2) - sqrt(dY2);
     return 0;

@@ -10,6 +10,7 @@
 #include "geom.h"
 
 #define VMAX_DIRECT 64 /* touching points (or sides of V(x)) solved by clipping; more: hole_radius */
+#define VMAX_CAND 1024 /* images met by the cell's walk; more: hole_radius */
 
 /* Clips polygon P (n vertices in p) to the side of the bisector of a and b
  * nearer a, into q. Returns the new count, or -1 when no vertex is cut
@@ -94,7 +95,11 @@ static int keep(an_cert_work *w, size_t k, double px, double py, size_t id)
  * and the images of the other points, nearest first, until the next one is
  * farther than any that could touch the polygon, or until the polygon has
  * more than VMAX_DIRECT sides (the end of a line of points, whose cell
- * has a side for each image of the line: then it still holds V(x)). Leaves the polygon in
+ * has a side for each image of the line: then it still holds V(x)), or
+ * the walk has met more than VMAX_CAND images that may touch it (points
+ * on a circle: every bisector passes through the centre, a vertex of
+ * every cell); then *nv_out is minus the polygon's count, and it holds
+ * V(x). Leaves the polygon in
  * w->pa (which = 0) or w->pb (1), its squared reach in *far2, and in
  * w->cand (*ncand) every image that may touch it: the walk's filter and
  * its end take the touching test's slack, and a point touching the final
@@ -123,6 +128,7 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
         lastx = px;
         lasty = py;
         if (keep(w, k++, px, py, id) != 0) return -1;
+        if (k > VMAX_CAND) { *nv_out = -nv; *which = in_b; *ncand = k; return 0; } /* still holds V(x) */
         if (px == x && py == y) continue;        /* a coincident point: no bisector */
         if (d2 >= 4 * *far2 * (1 + 1e-9)) continue; /* too far to cut */
         if ((size_t)nv + 1 > w->cap + 8) {
@@ -162,12 +168,32 @@ static int by_bound_desc(const void *a, const void *b)
     return p->c < q->c ? -1 : (p->c > q->c);
 }
 
+/* 0 when the square [x0, x0 + L] x [y0, y0 + L] lies wholly outside an
+ * edge of the counter-clockwise convex polygon P (n vertices), with a
+ * margin against rounding; 1 when it may meet it. */
+static int meets(double x0, double y0, double L, const double *P, int n)
+{
+    for (int e = 0; e < n; e++) {
+        const int f = e + 1 == n ? 0 : e + 1;
+        const double ex = P[2 * f] - P[2 * e], ey = P[2 * f + 1] - P[2 * e + 1];
+        const double tol = 1e-9 * (fabs(ex) + fabs(ey)) * (L + fabs(x0) + fabs(y0) + 1);
+        int out = 1;
+        for (int c = 0; c < 4 && out; c++) {
+            const double qx = x0 + (c & 1) * L - P[2 * e], qy = y0 + (c >> 1) * L - P[2 * e + 1];
+            out = ex * qy - ey * qx < -tol; /* right of the edge: outside */
+        }
+        if (out) return 0;
+    }
+    return 1;
+}
+
 /* max(rho, T) for point i at once: the largest empty circle of X \ {x},
  * as the covering radius itself is found (certify.c), over the grid's
- * cells that meet V(x)'s box [bx0, bx1] x [by0, by1] (elsewhere nothing
- * changes when x goes; V(x) is P, nv vertices). A cell's radius is at most its centre's distance
- * to X \ {x} plus its half-diagonal, so cells are solved exactly by that
- * bound, largest first, until it falls below the largest radius found.
+ * cells that meet V(x) (P, nv vertices, or a polygon holding it; elsewhere
+ * nothing changes when x goes). A cell's radius is at most its centre's
+ * distance to X \ {x} plus its half-diagonal, so cells are solved exactly
+ * by that bound, largest first, until it falls below the largest radius
+ * found.
  * For V(x) with thousands of touching points (the end of a line of
  * points, its cell reaching along every image of the line) this solves a
  * few cells instead of V(x)'s partition among those points. *T = -1 when
@@ -184,6 +210,9 @@ static int hole_radius(const an_cert_ctx *C, size_t i, an_cert_work *w, const do
     const double L = C->G.L, hd = 0.5 * L * sqrt(2.0);
     long ix0 = (long)floor(box[0] * (double)g), ix1 = (long)floor(box[1] * (double)g);
     long iy0 = (long)floor(box[2] * (double)g), iy1 = (long)floor(box[3] * (double)g);
+    /* Cells are tested against V(x) where they are taken unwrapped, as V(x)
+     * is; a box across the whole torus takes every cell once, untested. */
+    const int test = ix1 - ix0 + 1 < g && iy1 - iy0 + 1 < g;
     if (ix1 - ix0 + 1 >= g) { ix0 = 0; ix1 = g - 1; }
     if (iy1 - iy0 + 1 >= g) { iy0 = 0; iy1 = g - 1; }
     cell_bound *cand = malloc((size_t)(ix1 - ix0 + 1) * (size_t)(iy1 - iy0 + 1) * sizeof *cand);
@@ -191,6 +220,7 @@ static int hole_radius(const an_cert_ctx *C, size_t i, an_cert_work *w, const do
     size_t k = 0;
     for (long iy = iy0; iy <= iy1; iy++)
         for (long ix = ix0; ix <= ix1; ix++) {
+            if (test && !meets((double)ix * L, (double)iy * L, L, P, nv)) continue;
             const long wx = ((ix % g) + g) % g, wy = ((iy % g) + g) % g;
             const double cx = ((double)wx + 0.5) * L, cy = ((double)wy + 0.5) * L;
             const double ub = (sqrt(an_ptree_nearest(C->tree, cx, cy, i)) + hd) * (1 + 1e-9) + 1e-15;
@@ -238,6 +268,7 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
     size_t ncand;
     if (cell_of(C, i, w, x, y, s, reach, &nv, &in_b, &far2, &ncand) != 0) return -1;
     if (nv == 0) return 0;
+    if (nv < 0) return hole_radius(C, i, w, in_b ? w->pb : w->pa, -nv, T, tx, ty);
     /* For p in V(x), d(p, X \ {x}) <= |p - x| + d(x): when even that stays
      * below rho, T < rho and the test needs no more. */
     if ((sqrt(far2) + C->nn[i]) * (1 + 1e-9) < C->rho) return 0;
