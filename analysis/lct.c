@@ -9,6 +9,7 @@
  * (farprep.c), and from then on recognises it through the points' tree,
  * without collecting D(x) at all. */
 #include <math.h>
+#include <string.h>
 
 #include "certify_int.h"
 #include "farthest.h"
@@ -69,6 +70,139 @@ static an_far_prep *remembered(an_cert_work *w, int m, int *err)
     return NULL;
 }
 
+/* Polygon p (n vertices) cut to the side of the bisector of a and b
+ * nearer a, into q: the new count, or -1 when nothing is cut off. */
+static int cut_by(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by)
+{
+    const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
+    int out = 0;
+    for (int v = 0; v < n; v++) {
+        sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
+        out |= sd[v] > 0;
+    }
+    return out ? an_clip_sd(p, n, q, sd) : -1;
+}
+
+/* Polygon p cut to the half-plane a X + b Y <= c, into q (as cut_by). */
+static int cut_side(const double *p, int n, double *q, double *sd, double a, double b, double c)
+{
+    int out = 0;
+    for (int v = 0; v < n; v++) {
+        sd[v] = a * p[2 * v] + b * p[2 * v + 1] - c;
+        out |= sd[v] > 0;
+    }
+    return out ? an_clip_sd(p, n, q, sd) : -1;
+}
+
+#define P2_NEAR 64 /* x's neighbours handled this way at most */
+
+/* Property 2 from property 1's answer u = (ux, uy) (r2p1 = d(u, D)^2),
+ * with w->sx/sy = Y = D(x) without x (m points). Outside x's Voronoi
+ * region R in D nothing changes when x goes, and if u is outside R, its
+ * value stays the largest there. Inside R the nearest point of Y is a
+ * Voronoi neighbour of x whose shared edge lies within |p - y0| <= G of
+ * p in S (y0: x's nearest; the disk around p through its nearest shrunk
+ * towards it first meets x on that edge), so R is cut out in the box of
+ * half-side e + G, its neighbours are the points whose bisector touches
+ * it, and R cut to S is split among them. The squared answer, or -3 when
+ * this does not apply (u in R, a copy of x, many neighbours). */
+static double p2_from_p1(an_cert_work *w, int m, double x, double y, cfpo_square S, double ux, double uy,
+                         double r2p1, double *px, double *py)
+{
+    const double *sx = w->sx, *sy = w->sy;
+    double d0 = INFINITY, x0 = 0, y0 = 0;
+    for (int t = 0; t < m; t++) {
+        const double dx = sx[t] - x, dy = sy[t] - y, d2 = dx * dx + dy * dy;
+        if (d2 == 0) return -3;
+        if (d2 < d0) { d0 = d2; x0 = sx[t]; y0 = sy[t]; }
+    }
+    if (m == 0 || cfpo_min_dist2(ux, uy, sx, sy, m, -1) != r2p1) return -3;
+    const double cx[4] = {S.x0, S.x1, S.x1, S.x0}, cy[4] = {S.y0, S.y0, S.y1, S.y1};
+    double G2 = 0;
+    for (int c = 0; c < 4; c++) {
+        const double dx = cx[c] - x0, dy = cy[c] - y0, d2 = dx * dx + dy * dy;
+        G2 = d2 > G2 ? d2 : G2;
+    }
+    const double H = (0.5 * (S.x1 - S.x0) + sqrt(G2)) * (1 + 1e-9);
+    double *P = w->pa, *Q = w->pb;
+    const double box[8] = {x - H, y - H, x + H, y - H, x + H, y + H, x - H, y + H};
+    memcpy(P, box, sizeof box);
+    int nv = 4;
+    double far2 = 2 * H * H;
+    for (int t = 0; t < m && nv > 0; t++) {
+        const double dx = sx[t] - x, dy = sy[t] - y;
+        if (dx * dx + dy * dy >= 4 * far2 * (1 + 1e-9)) continue;
+        const int k = cut_by(P, nv, Q, w->sd, x, y, sx[t], sy[t]);
+        if (k < 0) continue;
+        nv = k;
+        double *tmp = P; P = Q; Q = tmp;
+        far2 = 0;
+        for (int v = 0; v < nv; v++) {
+            const double ex = P[2 * v] - x, ey = P[2 * v + 1] - y, e2 = ex * ex + ey * ey;
+            far2 = e2 > far2 ? e2 : far2;
+        }
+    }
+    if (nv == 0) return -3;
+    /* The neighbours: bisectors touching R within rounding (vmax.c's test). */
+    double ext = 0;
+    for (int v = 0; v < nv; v++) {
+        const double ax = fabs(P[2 * v] - x), ay = fabs(P[2 * v + 1] - y), e = ax > ay ? ax : ay;
+        ext = e > ext ? e : ext;
+    }
+    const double eps = 1e-9 * (ext + 1e-300);
+    double nbx[P2_NEAR], nby[P2_NEAR];
+    int k = 0;
+    for (int t = 0; t < m; t++) {
+        const double nx = sx[t] - x, ny = sy[t] - y, mx = 0.5 * (sx[t] + x), my = 0.5 * (sy[t] + y);
+        const double scale = sqrt(nx * nx + ny * ny);
+        int touch = 0;
+        for (int v = 0; v < nv && !touch; v++) touch = (P[2 * v] - mx) * nx + (P[2 * v + 1] - my) * ny >= -eps * scale;
+        int seen = 0;
+        for (int j = 0; j < k && touch && !seen; j++) seen = nbx[j] == sx[t] && nby[j] == sy[t];
+        if (!touch || seen) continue;
+        if (k == P2_NEAR) return -3;
+        nbx[k] = sx[t];
+        nby[k] = sy[t];
+        k++;
+    }
+    /* R cut to S. */
+    const double side[4][3] = {{1, 0, S.x1}, {-1, 0, -S.x0}, {0, 1, S.y1}, {0, -1, -S.y0}};
+    for (int c = 0; c < 4 && nv > 0; c++) {
+        const int r = cut_side(P, nv, Q, w->sd, side[c][0], side[c][1], side[c][2]);
+        if (r < 0) continue;
+        nv = r;
+        double *tmp = P; P = Q; Q = tmp;
+    }
+    double best = -1, bx = ux, by = uy;
+    double *R = w->scratch, *U = w->scratch + 4 * (w->cap + 8);
+    for (int a = 0; a < k && nv > 0; a++) {
+        memcpy(R, P, 2 * (size_t)nv * sizeof *R);
+        int nr = nv;
+        for (int b = 0; b < k && nr > 0; b++) {
+            if (b == a) continue;
+            const int r = cut_by(R, nr, U, w->sd, nbx[a], nby[a], nbx[b], nby[b]);
+            if (r < 0) continue;
+            nr = r;
+            double *tmp = R; R = U; U = tmp;
+        }
+        for (int v = 0; v < nr; v++) {
+            const double dx = R[2 * v] - nbx[a], dy = R[2 * v + 1] - nby[a], e2 = dx * dx + dy * dy;
+            if (e2 > best) { best = e2; bx = R[2 * v]; by = R[2 * v + 1]; }
+        }
+        R = w->scratch;
+        U = w->scratch + 4 * (w->cap + 8);
+    }
+    if (best >= 0) {
+        bx = bx < S.x0 ? S.x0 : bx > S.x1 ? S.x1 : bx;
+        by = by < S.y0 ? S.y0 : by > S.y1 ? S.y1 : by;
+        const double v2 = cfpo_min_dist2(bx, by, sx, sy, m, -1);
+        if (v2 > r2p1) { *px = bx; *py = by; return v2; }
+    }
+    *px = ux;
+    *py = uy;
+    return r2p1;
+}
+
 int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1, double *p2)
 {
     const double x = C->xy[2 * i], y = C->xy[2 * i + 1];
@@ -111,10 +245,13 @@ int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1
     if (r2 < 0) return -2;
     *p1 = sqrt(r2) - C->delta;
     const int m1 = m;
+    const double p1_r2 = r2;
     const double p1_at[2] = {px, py};
     m = subset(w, x, y, h, i, w->sx, w->sy);
     const double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
-    r2 = m > AN_FAR_SMALL ? an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch) : -3;
+    r2 = -3;
+    if (m > AN_FAR_SMALL && !P) r2 = p2_from_p1(w, m, x, y, S, p1_at[0], p1_at[1], p1_r2, &px, &py);
+    if (r2 == -3 && m > AN_FAR_SMALL) r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
     if (r2 == -3 && P && m == m1 - 1 && m > AN_FAR_SMALL) r2 = an_far_prep_solve(P, S, 1, x, y, p1_at, &px, &py, &w->far);
     if (r2 == -3) r2 = an_farthest_whole(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
     if (r2 < 0) return -2;

@@ -165,6 +165,60 @@ static void polished(void)
     free(xy); free(viol); free(target);
 }
 
+/* The theorem's two properties for every point by the core's solver on
+ * D(x) and D(x) \ {x} (images collected here, D(x) and S(x) as certify.h
+ * defines them): the largest violations / Delta(n) and the pass counts
+ * must be the certificate's. Independent of analysis/farthest.c,
+ * farsub.c and lct.c's shortcuts. */
+static void lct_reference(const char *what, const double *xy, size_t n)
+{
+    an_certificate c;
+    CHECK(cert(xy, n, &c, NULL, NULL) == 0, "%s: certify failed", what);
+    const double Dn = cfpo_delta_bound((double)n), tol = AN_CERT_TOL * Dn;
+    double *nn = malloc(n * sizeof *nn), *yx = malloc(9 * n * sizeof *yx), *yy = malloc(9 * n * sizeof *yy);
+    double *scratch = malloc(cfpo_solver_scratch(9 * n) * sizeof *scratch);
+    double delta = INFINITY;
+    for (size_t i = 0; i < n; i++) {
+        nn[i] = dist_rest(xy, n, i, xy[2 * i], xy[2 * i + 1]);
+        delta = fmin(delta, nn[i]);
+    }
+    double p1max = -INFINITY, p2max = -INFINITY;
+    size_t p1pass = 0, p2pass = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double x = xy[2 * i], y = xy[2 * i + 1];
+        const double h = fmax(fmax(3 * delta, delta + nn[i]), Dn) * (1 + 1e-9), e = h - delta;
+        const cfpo_square S = {x - e, y - e, x + e, y + e};
+        int m = 0, self = -1;
+        for (size_t j = 0; j < n; j++)
+            for (int oy = -1; oy <= 1; oy++)
+                for (int ox = -1; ox <= 1; ox++) {
+                    const double X = xy[2 * j] + ox, Y = xy[2 * j + 1] + oy;
+                    if (fabs(X - x) > h || fabs(Y - y) > h) continue;
+                    if (j == i && ox == 0 && oy == 0) self = m;
+                    yx[m] = X;
+                    yy[m] = Y;
+                    m++;
+                }
+        double cx, cy;
+        const double p1 = sqrt(cfpo_local_solve(yx, yy, m, -1, S, x, y, -1, &cx, &cy, scratch)) - delta;
+        const double dY = sqrt(cfpo_min_dist2(x, y, yx, yy, m, self));
+        const double p2 = sqrt(cfpo_local_solve(yx, yy, m, self, S, x, y, -1, &cx, &cy, scratch)) - dY;
+        p1max = fmax(p1max, p1 / Dn);
+        p2max = fmax(p2max, p2 / Dn);
+        p1pass += p1 <= tol;
+        p2pass += p2 <= tol;
+    }
+    CHECK(fabs(c.p1_max_violation - p1max) <= 1e-9 && fabs(c.p2_max_violation - p2max) <= 1e-9,
+          "%s: theorem's violations %.12g, %.12g; the core's solver %.12g, %.12g", what, c.p1_max_violation,
+          c.p2_max_violation, p1max, p2max);
+    CHECK(c.p1_pass == p1pass && c.p2_pass == p2pass, "%s: passes %zu, %zu; the core's solver %zu, %zu", what,
+          c.p1_pass, c.p2_pass, p1pass, p2pass);
+    free(nn);
+    free(yx);
+    free(yy);
+    free(scratch);
+}
+
 /* Degenerate sets: exact (brute force agrees). The clustered set and the
  * one of 150 copies of each of two positions put more than AN_FAR_SMALL
  * points in a neighbourhood, so they check the certificate's own solver
@@ -203,6 +257,21 @@ static void degenerate(void)
      * vmax.c's hole_radius decides the value at both ends. */
     for (size_t i = 0; i < 200; i++) { xy[2 * i] = 0.5; xy[2 * i + 1] = 0.3 + 0.4 * (double)i / 199; }
     expect("vertical segment", xy, 200, 0, 0.0);
+    /* Neighbourhoods of more than AN_FAR_SMALL (128) points that differ
+     * from point to point: the theorem by the certificate's own solvers
+     * (a few points, property 2 from property 1's answer, the tree)
+     * against the core's solver on every D(x). */
+    double *big = malloc(2 * 4000 * sizeof *big);
+    for (size_t i = 0; i < 4000; i++) { big[2 * i] = (double)i / 4000; big[2 * i + 1] = 0.5; }
+    lct_reference("collinear, 4,000", big, 4000);
+    for (size_t i = 0; i < 1000; i++) {
+        big[2 * i] = 0.5 + 0.03 * cos(6.283185307179586 * (double)i / 1000);
+        big[2 * i + 1] = 0.5 + 0.03 * sin(6.283185307179586 * (double)i / 1000);
+    }
+    lct_reference("circle, 1,000", big, 1000);
+    for (size_t i = 0; i < 3000; i++) { big[2 * i] = 0.1 + 1.5e-4 * (double)i; big[2 * i + 1] = 0.3 + 1e-4 * (double)i; }
+    lct_reference("segment, 3,000", big, 3000);
+    free(big);
     for (size_t i = 0; i < 1000; i++) { xy[2 * i] = (double)i / 1000; xy[2 * i + 1] = 0.5; }
     an_certificate c;
     CHECK(cert(xy, 1000, &c, NULL, NULL) == 0 && !c.fpd && c.fp_pass == 0, "1,000 collinear points");
