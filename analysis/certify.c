@@ -175,14 +175,9 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
     return an_lct(C, i, w, h, &res->p1, &res->p2);
 }
 
-typedef struct {
-    double r;
-    size_t c;
-} cell_key;
-
-static int by_radius_desc(const void *a, const void *b)
+int an_cell_key_desc(const void *a, const void *b)
 {
-    const cell_key *p = a, *q = b;
+    const an_cell_key *p = a, *q = b;
     if (p->r != q->r) return p->r > q->r ? -1 : 1;
     return p->c < q->c ? -1 : (p->c > q->c);
 }
@@ -260,10 +255,10 @@ static int covering(ctx *C, size_t *order, double *ub)
         const double cx = ((double)(t % C->G.g) + 0.5) * L, cy = ((double)(t / C->G.g) + 0.5) * L;
         ub[t] = (sqrt(an_ptree_nearest(C->tree, cx, cy, C->n)) + hd) * (1 + 1e-9) + 1e-15;
     }
-    cell_key *keys = malloc(cells * sizeof *keys);
+    an_cell_key *keys = malloc(cells * sizeof *keys);
     if (!keys) return -1;
-    for (size_t t = 0; t < cells; t++) keys[t] = (cell_key){ub[t], t};
-    qsort(keys, cells, sizeof *keys, by_radius_desc);
+    for (size_t t = 0; t < cells; t++) keys[t] = (an_cell_key){ub[t], t};
+    qsort(keys, cells, sizeof *keys, an_cell_key_desc);
     for (size_t t = 0; t < cells; t++) order[t] = keys[t].c;
     free(keys);
     C->cell_ub = ub;

@@ -45,6 +45,14 @@ typedef struct {
     size_t *cand_id, ccap;
 } an_cert_work;
 
+/* A grid cell and a radius (or a bound of it); qsort's order: largest
+ * radius first, then the lower cell index (certify.c). */
+typedef struct {
+    double r;
+    size_t c;
+} an_cell_key;
+int an_cell_key_desc(const void *a, const void *b);
+
 /* Room for m collected images, and polygons of m + 8 vertices: 0, or -1
  * (the buffers kept so far stay valid). */
 int an_cert_reserve(an_cert_work *w, size_t m);

@@ -60,6 +60,17 @@ int an_clip_sd(const double *p, int n, double *q, const double *sd)
     return k;
 }
 
+int an_clip_bisector(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by)
+{
+    const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
+    int out = 0;
+    for (int v = 0; v < n; v++) {
+        sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
+        out |= sd[v] > 0;
+    }
+    return out ? an_clip_sd(p, n, q, sd) : -1;
+}
+
 /* Drops repeated positions from [lo, hi), keeping the first of each;
  * returns the new end. Sorts first unless the range is small. */
 static size_t sort_unique(an_far_ws *ws, size_t lo, size_t hi)

@@ -93,6 +93,10 @@ void an_far_prep_free(an_far_prep *P);
  * sd[v] of its vertices are <= 0 (a half-plane), into q; the new count
  * (at most n + 1). Shared with the certificate's own clipping. */
 int an_clip_sd(const double *p, int n, double *q, const double *sd);
+/* Polygon p (n vertices) cut to the side of the bisector of a and b
+ * nearer a, into q: the new count, or -1 when no vertex is cut off (q
+ * untouched). sd: room for n values. */
+int an_clip_bisector(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by);
 /* qsort's order of (x, y) pairs of doubles: by x, then by y. */
 int an_cmp_pair(const void *a, const void *b);
 

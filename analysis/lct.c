@@ -70,20 +70,8 @@ static an_far_prep *remembered(an_cert_work *w, int m, int *err)
     return NULL;
 }
 
-/* Polygon p (n vertices) cut to the side of the bisector of a and b
- * nearer a, into q: the new count, or -1 when nothing is cut off. */
-static int cut_by(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by)
-{
-    const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
-    int out = 0;
-    for (int v = 0; v < n; v++) {
-        sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
-        out |= sd[v] > 0;
-    }
-    return out ? an_clip_sd(p, n, q, sd) : -1;
-}
-
-/* Polygon p cut to the half-plane a X + b Y <= c, into q (as cut_by). */
+/* Polygon p cut to the half-plane a X + b Y <= c, into q (as
+ * an_clip_bisector). */
 static int cut_side(const double *p, int n, double *q, double *sd, double a, double b, double c)
 {
     int out = 0;
@@ -132,7 +120,7 @@ static double p2_from_p1(an_cert_work *w, int m, double x, double y, cfpo_square
     for (int t = 0; t < m && nv > 0; t++) {
         const double dx = sx[t] - x, dy = sy[t] - y;
         if (dx * dx + dy * dy >= 4 * far2 * (1 + 1e-9)) continue;
-        const int k = cut_by(P, nv, Q, w->sd, x, y, sx[t], sy[t]);
+        const int k = an_clip_bisector(P, nv, Q, w->sd, x, y, sx[t], sy[t]);
         if (k < 0) continue;
         nv = k;
         double *tmp = P; P = Q; Q = tmp;
@@ -180,7 +168,7 @@ static double p2_from_p1(an_cert_work *w, int m, double x, double y, cfpo_square
         int nr = nv;
         for (int b = 0; b < k && nr > 0; b++) {
             if (b == a) continue;
-            const int r = cut_by(R, nr, U, w->sd, nbx[a], nby[a], nbx[b], nby[b]);
+            const int r = an_clip_bisector(R, nr, U, w->sd, nbx[a], nby[a], nbx[b], nby[b]);
             if (r < 0) continue;
             nr = r;
             double *tmp = R; R = U; U = tmp;

@@ -12,20 +12,6 @@
 #define VMAX_DIRECT 64 /* touching points (or sides of V(x)) solved by clipping; more: hole_radius */
 #define VMAX_CAND 1024 /* images met by the cell's walk; more: hole_radius */
 
-/* Clips polygon P (n vertices in p) to the side of the bisector of a and b
- * nearer a, into q. Returns the new count, or -1 when no vertex is cut
- * off (q untouched). */
-static int clip(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by)
-{
-    const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
-    int out = 0;
-    for (int v = 0; v < n; v++) {
-        sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
-        out |= sd[v] > 0;
-    }
-    return out ? an_clip_sd(p, n, q, sd) : -1;
-}
-
 /* Sorts the m positions (sx, sy) and drops repeats; returns the count. */
 static int unique_points(double *sx, double *sy, int m, double *tmp)
 {
@@ -136,7 +122,7 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
             P = in_b ? w->pb : w->pa;
             Q = in_b ? w->pa : w->pb;
         }
-        const int cut = clip(P, nv, Q, w->sd, x, y, px, py);
+        const int cut = an_clip_bisector(P, nv, Q, w->sd, x, y, px, py);
         if (cut < 0) continue; /* nothing cut off */
         nv = cut;
         double *tmp = P; P = Q; Q = tmp;
@@ -154,18 +140,6 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
     *which = in_b;
     *ncand = k;
     return 0;
-}
-
-typedef struct {
-    double ub;
-    size_t c;
-} cell_bound;
-
-static int by_bound_desc(const void *a, const void *b)
-{
-    const cell_bound *p = a, *q = b;
-    if (p->ub != q->ub) return p->ub > q->ub ? -1 : 1;
-    return p->c < q->c ? -1 : (p->c > q->c);
 }
 
 /* 0 when the square [x0, x0 + L] x [y0, y0 + L] lies wholly outside an
@@ -215,7 +189,7 @@ static int hole_radius(const an_cert_ctx *C, size_t i, an_cert_work *w, const do
     const int test = ix1 - ix0 + 1 < g && iy1 - iy0 + 1 < g;
     if (ix1 - ix0 + 1 >= g) { ix0 = 0; ix1 = g - 1; }
     if (iy1 - iy0 + 1 >= g) { iy0 = 0; iy1 = g - 1; }
-    cell_bound *cand = malloc((size_t)(ix1 - ix0 + 1) * (size_t)(iy1 - iy0 + 1) * sizeof *cand);
+    an_cell_key *cand = malloc((size_t)(ix1 - ix0 + 1) * (size_t)(iy1 - iy0 + 1) * sizeof *cand);
     if (!cand) return -1;
     size_t k = 0;
     for (long iy = iy0; iy <= iy1; iy++)
@@ -224,16 +198,16 @@ static int hole_radius(const an_cert_ctx *C, size_t i, an_cert_work *w, const do
             const long wx = ((ix % g) + g) % g, wy = ((iy % g) + g) % g;
             const double cx = ((double)wx + 0.5) * L, cy = ((double)wy + 0.5) * L;
             const double ub = (sqrt(an_ptree_nearest(C->tree, cx, cy, i)) + hd) * (1 + 1e-9) + 1e-15;
-            if (ub > C->rho) cand[k++] = (cell_bound){ub, (size_t)(wy * g + wx)};
+            if (ub > C->rho) cand[k++] = (an_cell_key){ub, (size_t)(wy * g + wx)};
         }
-    qsort(cand, k, sizeof *cand, by_bound_desc);
+    qsort(cand, k, sizeof *cand, an_cell_key_desc);
     double best = C->rho;
     *T = -1;
     int status = 0;
-    for (size_t t = 0; t < k && cand[t].ub > best && status == 0; t++) {
+    for (size_t t = 0; t < k && cand[t].r > best && status == 0; t++) {
         const size_t c = cand[t].c;
         const double x0 = (double)(c % (size_t)g) * L, y0 = (double)(c / (size_t)g) * L;
-        const double cx = x0 + 0.5 * L, cy = y0 + 0.5 * L, R = (cand[t].ub + hd) * (1 + 1e-9) + 1e-15;
+        const double cx = x0 + 0.5 * L, cy = y0 + 0.5 * L, R = (cand[t].r + hd) * (1 + 1e-9) + 1e-15;
         if (an_cert_collect(C, cx, cy, R, w) != 0) { status = -1; break; }
         size_t m = 0;
         for (size_t u = 0; u < w->m; u++) {
@@ -334,7 +308,7 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
         int nr = nv;
         for (size_t b = 0; b < k && nr > 0; b++) {
             if (b == a) continue;
-            const int cut = clip(R, nr, U, w->sd, w->sx[a], w->sy[a], w->sx[b], w->sy[b]);
+            const int cut = an_clip_bisector(R, nr, U, w->sd, w->sx[a], w->sy[a], w->sx[b], w->sy[b]);
             if (cut < 0) continue;
             nr = cut;
             double *tmp = R; R = U; U = tmp;
