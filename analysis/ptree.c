@@ -118,12 +118,17 @@ static double nearest(const an_ptree *T, double qx, double qy, size_t skip, int 
                 const double r = sqrt(best) + 1e-15, box = box_d2(b, ox, oy, wx, wy);
                 if (torus ? box > r * r : box >= best) continue;
                 if (b->left < 0) {
+                    /* One position: its points are all as far; one stands
+                     * for the rest (another than skip, if any). */
+                    const int one = b->x0 == b->x1 && b->y0 == b->y1;
                     for (size_t t = b->lo; t < b->hi; t++) {
                         if (T->id[t] == skip) continue;
                         const double dx = (T->x[t] + ox) - wx, dy = (T->y[t] + oy) - wy;
                         const double d2 = torus ? cfpo_torus_dist2(qx, qy, T->x[t], T->y[t]) : dx * dx + dy * dy;
                         if (d2 < best) best = d2;
+                        if (one) break;
                     }
+                    if (best == 0) return 0; /* nothing is nearer */
                     continue;
                 }
                 const long l = b->left, rr = b->right;
