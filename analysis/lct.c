@@ -238,8 +238,10 @@ int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1
     m = subset(w, x, y, h, i, w->sx, w->sy);
     const double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
     r2 = -3;
-    if (m > AN_FAR_SMALL && !P) r2 = p2_from_p1(w, m, x, y, S, p1_at[0], p1_at[1], p1_r2, &px, &py);
-    if (r2 == -3 && m > AN_FAR_SMALL) r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
+    if (m > AN_FAR_SMALL && !P) { /* a few points, else from property 1's answer */
+        r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
+        if (r2 == -3) r2 = p2_from_p1(w, m, x, y, S, p1_at[0], p1_at[1], p1_r2, &px, &py);
+    }
     if (r2 == -3 && P && m == m1 - 1 && m > AN_FAR_SMALL) r2 = an_far_prep_solve(P, S, 1, x, y, p1_at, &px, &py, &w->far);
     if (r2 == -3) r2 = an_farthest_whole(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, &w->far);
     if (r2 < 0) return -2;
