@@ -86,14 +86,17 @@ static int cut_side(const double *p, int n, double *q, double *sd, double a, dou
 
 /* Property 2 from property 1's answer u = (ux, uy) (r2p1 = d(u, D)^2),
  * with w->sx/sy = Y = D(x) without x (m points). Outside x's Voronoi
- * region R in D nothing changes when x goes, and if u is outside R, its
- * value stays the largest there. Inside R the nearest point of Y is a
+ * region R in D nothing changes when x goes, so the largest distance
+ * there is at most r2p1, and r2p1 itself if u is outside R; if u is in
+ * R, the largest distance over R is at least d(u, Y) >= r2p1. So the
+ * answer is the larger of r2p1 and the largest distance over R. Inside
+ * R the nearest point of Y is a
  * Voronoi neighbour of x whose shared edge lies within |p - y0| <= G of
  * p in S (y0: x's nearest; the disk around p through its nearest shrunk
  * towards it first meets x on that edge), so R is cut out in the box of
  * half-side e + G, its neighbours are the points whose bisector touches
  * it, and R cut to S is split among them. The squared answer, or -3 when
- * this does not apply (u in R, a copy of x, many neighbours). */
+ * this does not apply (a copy of x, many neighbours). */
 static double p2_from_p1(an_cert_work *w, int m, double x, double y, cfpo_square S, double ux, double uy,
                          double r2p1, double *px, double *py)
 {
@@ -104,7 +107,7 @@ static double p2_from_p1(an_cert_work *w, int m, double x, double y, cfpo_square
         if (d2 == 0) return -3;
         if (d2 < d0) { d0 = d2; x0 = sx[t]; y0 = sy[t]; }
     }
-    if (m == 0 || cfpo_min_dist2(ux, uy, sx, sy, m, -1) != r2p1) return -3;
+    if (m == 0) return -3;
     const double cx[4] = {S.x0, S.x1, S.x1, S.x0}, cy[4] = {S.y0, S.y0, S.y1, S.y1};
     double G2 = 0;
     for (int c = 0; c < 4; c++) {

@@ -271,6 +271,11 @@ static void degenerate(void)
     lct_reference("circle, 1,000", big, 1000);
     for (size_t i = 0; i < 3000; i++) { big[2 * i] = 0.1 + 1.5e-4 * (double)i; big[2 * i + 1] = 0.3 + 1e-4 * (double)i; }
     lct_reference("segment, 3,000", big, 3000);
+    for (size_t i = 0; i < 800; i++) { /* a dense patch: D(x) differs from point to point */
+        big[2 * i] = 0.45 + 0.1 * cfpo_rand01(9, i, 0);
+        big[2 * i + 1] = 0.45 + 0.1 * cfpo_rand01(9, i, 1);
+    }
+    lct_reference("uniform patch, 800", big, 800);
     free(big);
     for (size_t i = 0; i < 1000; i++) { xy[2 * i] = (double)i / 1000; xy[2 * i + 1] = 0.5; }
     an_certificate c;
