@@ -426,7 +426,8 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
     }
     if (m > (size_t)INT32_MAX / 4 || an_far_reserve(ws, m) != 0) return -1;
     if (m <= AN_FAR_SMALL) return cfpo_local_solve(yx, yy, (int)m, -1, S, hx, hy, -1, cx, cy, ws->scratch);
-    const double r2 = an_farthest_sub(yx, yy, m, S, hx, hy, cx, cy, ws->scratch);
+    double r2 = an_farthest_row(yx, yy, m, S, cx, cy, ws->scratch);
+    if (r2 == -3) r2 = an_farthest_sub(yx, yy, m, S, hx, hy, cx, cy, ws->scratch);
     if (r2 != -3) return r2;
     return farthest_tree(yx, yy, m, &S, cx, cy, ws);
 }

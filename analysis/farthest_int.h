@@ -72,4 +72,9 @@ double an_farthest_sub(const double *yx, const double *yy, size_t m, cfpo_square
 double an_farthest_whole(const double *yx, const double *yy, size_t m, cfpo_square S, double hx, double hy,
                          double *cx, double *cy, an_far_ws *ws);
 
+/* The same for m points that all share y or all share x (row.c): the
+ * squared answer, or -3 when they do not. tmp: room for m values. */
+double an_farthest_row(const double *yx, const double *yy, size_t m, cfpo_square S, double *cx, double *cy,
+                       double *tmp);
+
 #endif

@@ -219,16 +219,20 @@ int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1
     if (an_cert_collect(C, x, y, h, w) != 0) return -1;
     int m = subset(w, x, y, h, C->n, w->sx, w->sy);
     /* The set is kept, and prepared when seen AN_PREP_AFTER times (each
-     * point of a cluster has the whole cluster for D(x)); until then a few
-     * points may decide it (farsub.c: a segment's or an arc's D(x), which
-     * differs from point to point or recurs a few times only). */
+     * point of a cluster has the whole cluster for D(x)); until then it
+     * may be a row (row.c) or a few points may decide it (farsub.c: a
+     * segment's or an arc's D(x), which differs from point to point or
+     * recurs a few times only). */
     r2 = -3;
     if (m > AN_FAR_SMALL) {
         int err = 0;
         P = remembered(w, m, &err);
         if (err) return -1;
-        if (!P) r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
-        else if (!P->ready && an_far_prep_build(P) != 0) return -1;
+        if (!P) {
+            r2 = an_farthest_row(w->sx, w->sy, (size_t)m, S, &px, &py, w->scratch);
+            if (r2 == -3) r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
+        } else if (!P->ready && an_far_prep_build(P) != 0)
+            return -1;
     }
     if (r2 == -3)
         r2 = P ? an_far_prep_solve(P, S, 0, 0, 0, NULL, &px, &py, &w->far)
@@ -241,8 +245,9 @@ int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1
     m = subset(w, x, y, h, i, w->sx, w->sy);
     const double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
     r2 = -3;
-    if (m > AN_FAR_SMALL && !P) { /* a few points, else from property 1's answer */
-        r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
+    if (m > AN_FAR_SMALL && !P) { /* a row, a few points, else from property 1's answer */
+        r2 = an_farthest_row(w->sx, w->sy, (size_t)m, S, &px, &py, w->scratch);
+        if (r2 == -3) r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
         if (r2 == -3) r2 = p2_from_p1(w, m, x, y, S, p1_at[0], p1_at[1], p1_r2, &px, &py);
     }
     if (r2 == -3 && P && m == m1 - 1 && m > AN_FAR_SMALL) r2 = an_far_prep_solve(P, S, 1, x, y, p1_at, &px, &py, &w->far);
