@@ -18,6 +18,8 @@ int an_far_reserve(an_far_ws *ws, size_t m)
     GROW(ws->x, cap);
     GROW(ws->y, cap);
     GROW(ws->key, 2 * cap);
+    GROW(ws->fx, cap);
+    GROW(ws->fy, cap);
     GROW(ws->pa, 2 * (cap + 8));
     GROW(ws->pb, 2 * (cap + 8));
     GROW(ws->sd, cap + 8);
@@ -32,7 +34,7 @@ int an_far_reserve(an_far_ws *ws, size_t m)
 
 void an_far_free(an_far_ws *ws)
 {
-    free(ws->x); free(ws->y); free(ws->key); free(ws->pa); free(ws->pb); free(ws->sd); free(ws->scratch);
+    free(ws->x); free(ws->y); free(ws->key); free(ws->fx); free(ws->fy); free(ws->pa); free(ws->pb); free(ws->sd); free(ws->scratch);
     free(ws->nodes); free(ws->hull); free(ws->hbuf);
     memset(ws, 0, sizeof *ws);
 }
@@ -379,9 +381,53 @@ static void clamp_to(const cfpo_square *S, const far_state *F, double *cx, doubl
  * free of the hull's vertices holds none of the hull deeper than
  * W^2 / (2 rho), the sagitta of a chord of length W), so the whole set is
  * solved again only as a guard against rounding. */
-static double farthest_tree(const double *yx, const double *yy, size_t m, const cfpo_square *Sq, double *cx,
+/* The points of (yx, yy) that may be the nearest to some point of S,
+ * into ws->fx/fy: their count. A guard g (a point nearest to a corner of
+ * S or its centre) nearer than y to all four corners of S is nearer to
+ * every point of S (the points nearer to g than to y form a half-plane),
+ * so y is never the nearest there and its region misses S (a small square
+ * far from a line of points: all but the stretch of the line facing it). */
+static size_t near_square(const double *yx, const double *yy, size_t m, const cfpo_square *S, an_far_ws *ws)
+{
+    const double px[5] = {S->x0, S->x1, S->x1, S->x0, 0.5 * (S->x0 + S->x1)};
+    const double py[5] = {S->y0, S->y0, S->y1, S->y1, 0.5 * (S->y0 + S->y1)};
+    double g2[5][4]; /* squared distances from each guard to each corner, raised against rounding */
+    for (int k = 0; k < 5; k++) {
+        double best = INFINITY, gx = 0, gy = 0;
+        for (size_t t = 0; t < m; t++) {
+            const double dx = yx[t] - px[k], dy = yy[t] - py[k], d2 = dx * dx + dy * dy;
+            if (d2 < best) { best = d2; gx = yx[t]; gy = yy[t]; }
+        }
+        for (int c = 0; c < 4; c++) {
+            const double dx = gx - px[c], dy = gy - py[c];
+            g2[k][c] = (dx * dx + dy * dy) * (1 + 1e-9) + 1e-300;
+        }
+    }
+    size_t n = 0;
+    for (size_t t = 0; t < m; t++) {
+        double d2[4];
+        for (int c = 0; c < 4; c++) {
+            const double dx = yx[t] - px[c], dy = yy[t] - py[c];
+            d2[c] = dx * dx + dy * dy;
+        }
+        int dominated = 0;
+        for (int k = 0; k < 5 && !dominated; k++)
+            dominated = g2[k][0] < d2[0] && g2[k][1] < d2[1] && g2[k][2] < d2[2] && g2[k][3] < d2[3];
+        if (dominated) continue;
+        ws->fx[n] = yx[t];
+        ws->fy[n] = yy[t];
+        n++;
+    }
+    return n;
+}
+
+static double farthest_tree(const double *ax, const double *ay, size_t am, const cfpo_square *Sq, double *cx,
                             double *cy, an_far_ws *ws)
 {
+    /* Solved on the points that may be nearest in the square: the same
+     * distances to the set everywhere in it. */
+    const size_t m = near_square(ax, ay, am, Sq, ws);
+    const double *yx = ws->fx, *yy = ws->fy;
     const double dom[8] = {Sq->x0, Sq->y0, Sq->x1, Sq->y0, Sq->x1, Sq->y1, Sq->x0, Sq->y1};
     const int ndom = 4;
     far_state F = {dom, ndom, -1, 0.5 * (Sq->x0 + Sq->x1), 0.5 * (Sq->y0 + Sq->y1), 0, {0}, 0, {0}, 0, 0};

@@ -38,6 +38,7 @@
 struct an_kd_node;
 typedef struct {
     double *x, *y, *key, *pa, *pb, *sd, *scratch;
+    double *fx, *fy; /* the points that may be nearest somewhere in the square */
     struct an_kd_node *nodes;
     size_t cap, nodes_used;
     long *hull;    /* per position: the hull vertices before and after it, or -1 */
