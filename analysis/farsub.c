@@ -52,10 +52,18 @@ double an_farthest_sub(const double *yx, const double *yy, size_t m, cfpo_square
     const double mx = 0.5 * (S.x0 + S.x1), my = 0.5 * (S.y0 + S.y1);
     const double probe[9][2] = {{hx, hy},   {S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1},
                                 {mx, S.y0}, {S.x1, my},   {mx, S.y1},   {S.x0, my}};
-    for (int k = 0; k < 9; k++) {
-        const size_t t = nearest(yx, yy, m, probe[k][0], probe[k][1], &d2);
-        add(qx, qy, &q, yx[t], yy[t]);
+    /* The nearest to each probe, in one pass (the first of equals). */
+    double pd[9];
+    size_t parg[9] = {0};
+    for (int k = 0; k < 9; k++) pd[k] = INFINITY;
+    for (size_t t = 0; t < m; t++) {
+        const double x = yx[t], y = yy[t];
+        for (int k = 0; k < 9; k++) {
+            const double dx = x - probe[k][0], dy = y - probe[k][1], e2 = dx * dx + dy * dy;
+            if (e2 < pd[k]) { pd[k] = e2; parg[k] = t; }
+        }
     }
+    for (int k = 0; k < 9; k++) add(qx, qy, &q, yx[parg[k]], yy[parg[k]]);
     for (int round = 0; round < SUB_ROUNDS; round++) {
         double ux, uy;
         const double r2 = cfpo_local_solve(qx, qy, q, -1, S, hx, hy, -1, &ux, &uy, scratch);
