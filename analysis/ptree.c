@@ -289,11 +289,13 @@ int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2)
             const size_t t = (size_t)(-item - 1);
             *px = T->x[t] + ox;
             *py = T->y[t] + oy;
+            if (!kept(W, *px, *py, *px, *py)) continue; /* the filter has shrunk since it was pushed */
             *id = T->id[t];
             *d2 = key;
             return 1;
         }
         const an_pnode *b = &T->node[item];
+        if (!kept_node(W, b, ox, oy)) continue;
         if (b->left >= 0) {
             const double dl = box_d2(&T->node[b->left], ox, oy, W->qx, W->qy);
             const double dr = box_d2(&T->node[b->right], ox, oy, W->qx, W->qy);

@@ -66,11 +66,11 @@ int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2);
 void an_pwalk_free(an_pwalk *W);
 
 /* From now on, images (and boxes of them) meeting none of the fn closed
- * disks of centres fv[2v], fv[2v + 1] and squared radii fr2[v] are not
- * queued (fn = 0: none is left out); those queued before still come out,
- * so the filter only spares work. The arrays are read at each step, not
- * copied: a caller may shrink them as it goes, never grow them. start
- * clears it. */
+ * disks of centres fv[2v], fv[2v + 1] and squared radii fr2[v] are left
+ * out (fn = 0: none is): not queued, and dropped when they come out if
+ * queued before. The arrays are read at each step, not copied: a caller
+ * may shrink the disks as it goes (what they leave out stays out), never
+ * grow them. start clears it. */
 void an_pwalk_filter(an_pwalk *W, const double *fv, const double *fr2, int fn);
 
 #endif

@@ -10,7 +10,7 @@
 #include "geom.h"
 
 #define VMAX_DIRECT 64 /* touching points (or sides of V(x)) solved by clipping; more: hole_radius */
-#define VMAX_CAND 1024 /* images met by the cell's walk; more: hole_radius */
+#define VMAX_CAND 1024 /* images met by the cell's walk since its last cut; more: hole_radius */
 
 /* Sorts the m positions (sx, sy) and drops repeats; returns the count. */
 static int unique_points(double *sx, double *sy, int m, double *tmp)
@@ -82,10 +82,10 @@ static int keep(an_cert_work *w, size_t k, double px, double py, size_t id)
  * farther than any that could touch the polygon, or until the polygon has
  * more than VMAX_DIRECT sides (the end of a line of points, whose cell
  * has a side for each image of the line: then it still holds V(x)), or
- * the walk has met more than VMAX_CAND images that may touch it (points
- * on a circle: every bisector passes through the centre, a vertex of
- * every cell); then *nv_out is minus the polygon's count, and it holds
- * V(x). Leaves the polygon in
+ * the walk has met more than VMAX_CAND images in a row that may touch it
+ * but cut nothing (points on a circle: every bisector passes through the
+ * centre, a vertex of every cell); then *nv_out is minus the polygon's
+ * count, and it holds V(x). Leaves the polygon in
  * w->pa (which = 0) or w->pb (1), its squared reach in *far2, and in
  * w->cand (*ncand) every image that may touch it: the walk's filter and
  * its end take the touching test's slack, and a point touching the final
@@ -104,7 +104,7 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
     if (an_pwalk_start(&w->walk, C->tree, x, y, radius, i) != 0) return -1;
     set_filter(w, P, nv, x, y, slack);
     double lastx = NAN, lasty = NAN, px, py, d2;
-    size_t id, k = 0;
+    size_t id, k = 0, since = 0; /* since: the candidates when the cell was last cut */
     int got;
     while (nv > 0 && (got = an_pwalk_next(&w->walk, &px, &py, &id, &d2)) != 0) {
         if (got < 0) return -1;
@@ -114,17 +114,19 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
         lastx = px;
         lasty = py;
         if (keep(w, k++, px, py, id) != 0) return -1;
-        if (k > VMAX_CAND) { *nv_out = -nv; *which = in_b; *ncand = k; return 0; } /* still holds V(x) */
+        if (k - since > VMAX_CAND) { *nv_out = -nv; *which = in_b; *ncand = k; return 0; } /* still holds V(x) */
         if (px == x && py == y) continue;        /* a coincident point: no bisector */
         if (d2 >= 4 * *far2 * (1 + 1e-9)) continue; /* too far to cut */
         if ((size_t)nv + 1 > w->cap + 8) {
             if (an_cert_reserve(w, 2 * w->cap) != 0) return -1;
             P = in_b ? w->pb : w->pa;
             Q = in_b ? w->pa : w->pb;
+            set_filter(w, P, nv, x, y, slack); /* the buffers it read have moved */
         }
         const int cut = an_clip_bisector(P, nv, Q, w->sd, x, y, px, py);
         if (cut < 0) continue; /* nothing cut off */
         nv = cut;
+        since = k;
         double *tmp = P; P = Q; Q = tmp;
         in_b = !in_b;
         *far2 = 0;
