@@ -30,8 +30,8 @@
  *    square (half-sides 0 to 1.2, and through a point's image);
  *  - the walk's filter: fixed disks give the brute force's images in them
  *    (closed disks); disks shrunk during a walk, every image in the new
- *    ones beyond the distance reached and none outside the old ones; a new
- *    start drops the filter. */
+ *    ones beyond the distance reached and none outside them; a new start
+ *    drops the filter. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -445,8 +445,7 @@ static void walk_exact(const char *what, const an_ptree *T, const double *xy, si
 /* The filter (an_pwalk_filter): with fixed disks, the images within r
  * in one of them (closed: disks through an image, and of radius 0 at
  * one); disks shrunk half-way, every image in the new disks beyond the
- * distance reached, and only images in the old ones; a new start clears
- * the filter. */
+ * distance reached, and only those; a new start clears the filter. */
 static void walk_filter(const char *what, const an_ptree *T, const double *xy, size_t n, uint64_t seed)
 {
     an_pwalk W = {0};
@@ -498,12 +497,13 @@ static void walk_filter(const char *what, const an_ptree *T, const double *xy, s
         int ok = 1;
         for (size_t g = 0; g < tail.len; g++) {
             const image *e = &tail.v[g];
-            if (!in_disks(xy[2 * e->id] + e->ox, xy[2 * e->id + 1] + e->oy, fv, fr2, 4) || e->d2 < t) ok = 0;
+            if (!in_disks(xy[2 * e->id] + e->ox, xy[2 * e->id + 1] + e->oy, fv, gr2, 3) || e->d2 < t) ok = 0;
         }
         brute_walk(xy, n, qx, qy, r, &want);
         keep_in_disks(xy, &want, fv, gr2, 3);
-        /* Every image in the new disks beyond t is in the tail (which may
-         * hold more: images queued before the change). */
+        /* Every image in the new disks beyond t is in the tail, and the
+         * tail holds no other (images queued before the change are
+         * dropped when they come out). */
         list extra = {0};
         for (size_t g = 0; g < tail.len; g++) {
             const image *e = &tail.v[g];
