@@ -295,7 +295,6 @@ int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2)
             return 1;
         }
         const an_pnode *b = &T->node[item];
-        if (!kept_node(W, b, ox, oy)) continue;
         if (b->left >= 0) {
             const double dl = box_d2(&T->node[b->left], ox, oy, W->qx, W->qy);
             const double dr = box_d2(&T->node[b->right], ox, oy, W->qx, W->qy);
