@@ -67,8 +67,8 @@ void an_pwalk_free(an_pwalk *W);
 
 /* From now on, images (and boxes of them) meeting none of the fn closed
  * disks of centres fv[2v], fv[2v + 1] and squared radii fr2[v] are left
- * out (fn = 0: none is): not queued, and dropped when they come out if
- * queued before. The arrays are read at each step, not copied: a caller
+ * out (fn = 0: none is): not queued, and an image queued before is dropped
+ * when it comes out. The arrays are read at each step, not copied: a caller
  * may shrink the disks as it goes (what they leave out stays out), never
  * grow them. start clears it. */
 void an_pwalk_filter(an_pwalk *W, const double *fv, const double *fr2, int fn);
