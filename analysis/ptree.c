@@ -278,6 +278,37 @@ static int kept_node(const an_pwalk *W, const an_pnode *b, double ox, double oy)
     return kept(W, b->x0 + ox, b->y0 + oy, b->x1 + ox, b->y1 + oy);
 }
 
+void an_pwalk_prune(an_pwalk *W)
+{
+    if (W->fn == 0) return;
+    const an_ptree *T = W->T;
+    double *h = W->key;
+    size_t k = 0;
+    for (size_t e = 0; e < W->len; e++) {
+        const long item = (long)h[4 * e + 1];
+        const double ox = h[4 * e + 2], oy = h[4 * e + 3];
+        int keep;
+        if (item < 0) {
+            const size_t t = (size_t)(-item - 1);
+            const double X = T->x[t] + ox, Y = T->y[t] + oy;
+            keep = kept(W, X, Y, X, Y);
+        } else {
+            keep = kept_node(W, &T->node[item], ox, oy);
+        }
+        if (keep) memmove(h + 4 * k++, h + 4 * e, 4 * sizeof *h);
+    }
+    W->len = k;
+    for (size_t r = k / 2; r-- > 0;) /* heapify: sift each inner entry down */
+        for (size_t q = r;;) {
+            size_t c = 2 * q + 1;
+            if (c >= k) break;
+            if (c + 1 < k && less4(h + 4 * (c + 1), h + 4 * c)) c++;
+            if (!less4(h + 4 * c, h + 4 * q)) break;
+            swap4(h + 4 * c, h + 4 * q);
+            q = c;
+        }
+}
+
 int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2)
 {
     const an_ptree *T = W->T;

@@ -73,4 +73,9 @@ void an_pwalk_free(an_pwalk *W);
  * grow them. start clears it. */
 void an_pwalk_filter(an_pwalk *W, const double *fv, const double *fr2, int fn);
 
+/* Drops at once what the filter leaves out from the queue (after the disks
+ * shrank: images and boxes queued under wider ones), instead of one at a
+ * time as they come out. The order of what is left is unchanged. */
+void an_pwalk_prune(an_pwalk *W);
+
 #endif

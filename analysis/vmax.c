@@ -137,6 +137,7 @@ static int cell_of(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, do
         if (nv > VMAX_DIRECT) break; /* a many-sided cell: the caller goes by the grid's cells */
         touch_slack(P, nv, x, y, *far2, &eps, &slack, &radius);
         set_filter(w, P, nv, x, y, slack);
+        if (w->walk.len > 64) an_pwalk_prune(&w->walk);
     }
     *nv_out = nv;
     *which = in_b;

@@ -17,8 +17,9 @@
  *    image twice);
  *  - the walk's filter: fixed disks give the brute force's images in them
  *    (closed disks); disks shrunk during a walk, every image in the new
- *    ones beyond the distance reached and none outside them; a new start
- *    drops the filter. */
+ *    ones beyond the distance reached and none outside them, whether the
+ *    queue is pruned at once (an_pwalk_prune) or not; a new start drops
+ *    the filter. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -289,6 +290,7 @@ static void walk_filter(const char *what, const an_ptree *T, const double *xy, s
         walk_on(what, &W, xy, n, qx, qy, r, &all, half, -INFINITY);
         const double t = half > 0 ? all.v[half - 1].d2 : -INFINITY;
         an_pwalk_filter(&W, fv, gr2, 3);
+        if (k % 2) an_pwalk_prune(&W); /* the queue pruned at once, or image by image */
         tail.len = 0;
         walk_on(what, &W, xy, n, qx, qy, r, &tail, SIZE_MAX, t);
         int ok = 1;
