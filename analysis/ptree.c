@@ -218,12 +218,10 @@ static int push(an_pwalk *W, double key, double item, double ox, double oy)
     return 0;
 }
 
-static void pop(an_pwalk *W)
+/* Moves entry r of the heap h (n entries) down to its place. */
+static void sift_down(double *h, size_t n, size_t r)
 {
-    double *h = W->key;
-    const size_t n = --W->len;
-    memcpy(h, h + 4 * n, 4 * sizeof *h);
-    for (size_t r = 0;;) {
+    for (;;) {
         size_t c = 2 * r + 1;
         if (c >= n) return;
         if (c + 1 < n && less4(h + 4 * (c + 1), h + 4 * c)) c++;
@@ -231,6 +229,14 @@ static void pop(an_pwalk *W)
         swap4(h + 4 * c, h + 4 * r);
         r = c;
     }
+}
+
+static void pop(an_pwalk *W)
+{
+    double *h = W->key;
+    const size_t n = --W->len;
+    memcpy(h, h + 4 * n, 4 * sizeof *h);
+    sift_down(h, n, 0);
 }
 
 int an_pwalk_start(an_pwalk *W, const an_ptree *T, double qx, double qy, double r, size_t skip)
@@ -298,15 +304,7 @@ void an_pwalk_prune(an_pwalk *W)
         if (keep) memmove(h + 4 * k++, h + 4 * e, 4 * sizeof *h);
     }
     W->len = k;
-    for (size_t r = k / 2; r-- > 0;) /* heapify: sift each inner entry down */
-        for (size_t q = r;;) {
-            size_t c = 2 * q + 1;
-            if (c >= k) break;
-            if (c + 1 < k && less4(h + 4 * (c + 1), h + 4 * c)) c++;
-            if (!less4(h + 4 * c, h + 4 * q)) break;
-            swap4(h + 4 * c, h + 4 * q);
-            q = c;
-        }
+    for (size_t r = k / 2; r-- > 0;) sift_down(h, k, r); /* a heap again */
 }
 
 int an_pwalk_next(an_pwalk *W, double *px, double *py, size_t *id, double *d2)

@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "rng.h"
 
@@ -55,6 +56,19 @@ static inline size_t ptree_set_make(int kind, size_t n, double *xy, uint64_t see
         xy[2 * i + 1] = y;
     }
     return n;
+}
+
+/* Calls fn on every set tried, named in `what` (xy: room for 3,000). */
+static inline void ptree_sets_each(double *xy, void (*fn)(const char *what, const double *xy, size_t n, int kind))
+{
+    char what[96];
+    for (int kind = 0; kind < KINDS; kind++)
+        for (size_t s = 0; s < PTREE_SET_SIZES; s++) {
+            if (!ptree_set_tried(kind, ptree_set_sizes[s])) continue;
+            const size_t n = ptree_set_make(kind, ptree_set_sizes[s], xy, 21 + s);
+            snprintf(what, sizeof what, "%s, n = %zu", ptree_set_names[kind], n);
+            fn(what, xy, n, kind);
+        }
 }
 
 #endif

@@ -222,25 +222,23 @@ static void count_box(const char *what, const an_ptree *T, const double *xy, siz
     CHECK(bad == 0, "%s: %d of %d counts in a square differ from brute force", what, bad, runs);
 }
 
+static void one_set(const char *what, const double *xy, size_t n, int kind)
+{
+    an_ptree T;
+    CHECK(an_ptree_build(&T, xy, n) == 0, "%s: build failed", what);
+    shape(what, &T, xy, n);
+    nearest(what, &T, xy, n, 31 + (uint64_t)kind);
+    count_box(what, &T, xy, n, 71 + (uint64_t)kind);
+    const int one = has_one_position_leaf(&T);
+    CHECK(one == (kind == COPIES || kind == UNEVEN), "%s: a leaf of one position %s", what,
+          one ? "where none was expected" : "missing");
+    an_ptree_free(&T);
+}
+
 int main(void)
 {
     double *xy = malloc(2 * 3000 * sizeof *xy);
-    char what[96];
-    for (int kind = 0; kind < KINDS; kind++)
-        for (size_t s = 0; s < PTREE_SET_SIZES; s++) {
-            if (!ptree_set_tried(kind, ptree_set_sizes[s])) continue;
-            const size_t n = ptree_set_make(kind, ptree_set_sizes[s], xy, 21 + s);
-            snprintf(what, sizeof what, "%s, n = %zu", ptree_set_names[kind], n);
-            an_ptree T;
-            CHECK(an_ptree_build(&T, xy, n) == 0, "%s: build failed", what);
-            shape(what, &T, xy, n);
-            nearest(what, &T, xy, n, 31 + (uint64_t)kind);
-            count_box(what, &T, xy, n, 71 + (uint64_t)kind);
-            const int one = has_one_position_leaf(&T);
-            CHECK(one == (kind == COPIES || kind == UNEVEN), "%s: a leaf of one position %s", what,
-                  one ? "where none was expected" : "missing");
-            an_ptree_free(&T);
-        }
+    ptree_sets_each(xy, one_set);
     /* No point, and one point skipped: infinity. */
     an_ptree T;
     CHECK(an_ptree_build(&T, xy, 0) == 0 && an_ptree_nearest(&T, 0.5, 0.5, 0) == INFINITY, "no points");

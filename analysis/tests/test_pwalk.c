@@ -391,29 +391,27 @@ static void walk_copies(const char *what, const an_ptree *T, const double *xy, s
     free(got.v); free(want.v);
 }
 
+static void one_set(const char *what, const double *xy, size_t n, int kind)
+{
+    an_ptree T;
+    CHECK(an_ptree_build(&T, xy, n) == 0, "%s: build failed", what);
+    if (kind == COPIES || kind == UNEVEN) {
+        size_t b = 1;
+        while (xy[2 * b] == xy[0] && xy[2 * b + 1] == xy[1]) b++;
+        const double pos[4] = {xy[0], xy[1], xy[2 * b], xy[2 * b + 1]};
+        walk_copies(what, &T, xy, n, pos, 2, kind == COPIES, 41);
+    } else {
+        const int nq = n >= 3000 ? 4 : n >= 500 ? 8 : 16;
+        walk_exact(what, &T, xy, n, 51 + (uint64_t)kind, nq, n >= 3000 ? 1.3 : n >= 500 ? 1.6 : 2.7);
+        walk_filter(what, &T, xy, n, 61 + (uint64_t)kind);
+    }
+    an_ptree_free(&T);
+}
+
 int main(void)
 {
     double *xy = malloc(2 * 3000 * sizeof *xy);
-    char what[96];
-    for (int kind = 0; kind < KINDS; kind++)
-        for (size_t s = 0; s < PTREE_SET_SIZES; s++) {
-            if (!ptree_set_tried(kind, ptree_set_sizes[s])) continue;
-            const size_t n = ptree_set_make(kind, ptree_set_sizes[s], xy, 21 + s);
-            snprintf(what, sizeof what, "%s, n = %zu", ptree_set_names[kind], n);
-            an_ptree T;
-            CHECK(an_ptree_build(&T, xy, n) == 0, "%s: build failed", what);
-            if (kind == COPIES || kind == UNEVEN) {
-                size_t b = 1;
-                while (xy[2 * b] == xy[0] && xy[2 * b + 1] == xy[1]) b++;
-                const double pos[4] = {xy[0], xy[1], xy[2 * b], xy[2 * b + 1]};
-                walk_copies(what, &T, xy, n, pos, 2, kind == COPIES, 41);
-            } else {
-                const int nq = n >= 3000 ? 4 : n >= 500 ? 8 : 16;
-                walk_exact(what, &T, xy, n, 51 + (uint64_t)kind, nq, n >= 3000 ? 1.3 : n >= 500 ? 1.6 : 2.7);
-                walk_filter(what, &T, xy, n, 61 + (uint64_t)kind);
-            }
-            an_ptree_free(&T);
-        }
+    ptree_sets_each(xy, one_set);
     /* No point: an empty walk. */
     an_ptree T;
     an_pwalk W = {0};
