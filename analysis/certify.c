@@ -119,22 +119,28 @@ int an_cert_collect(const ctx *C, double cx, double cy, double H, work *w)
 }
 
 
-/* Largest empty circle radius of X restricted to centres in cell c. For
- * p in the cell, d(p, X) <= d(centre, X) + |p - centre| <= ub (the bound
- * the caller computed), so p's nearest point lies within ub + the cell's
- * half-diagonal of the centre: only those points are needed. */
-static int cell_radius(const ctx *C, size_t c, work *w, double *out, double *arg)
+double an_cell_bound(const ctx *C, size_t c, size_t skip)
+{
+    const size_t g = C->G.g;
+    const double L = C->G.L, cx = ((double)(c % g) + 0.5) * L, cy = ((double)(c / g) + 0.5) * L;
+    return (sqrt(an_ptree_nearest(C->tree, cx, cy, skip)) + 0.5 * L * sqrt(2.0)) * (1 + 1e-9) + 1e-15;
+}
+
+/* For p in the cell, d(p, X) <= d(centre, X) + |p - centre| <= ub, so
+ * p's nearest point lies within ub + the cell's half-diagonal of the
+ * centre: only those points are needed. */
+int an_cell_radius(const ctx *C, size_t c, double ub, size_t skip, work *w, double *out, double *arg)
 {
     const size_t g = C->G.g;
     const double L = C->G.L, x0 = (double)(c % g) * L, y0 = (double)(c / g) * L;
     const cfpo_square S = {x0, y0, x0 + L, y0 + L};
     const double cx = x0 + 0.5 * L, cy = y0 + 0.5 * L;
-    const double R = (C->cell_ub[c] + 0.5 * L * sqrt(2.0)) * (1 + 1e-9) + 1e-15;
+    const double R = (ub + 0.5 * L * sqrt(2.0)) * (1 + 1e-9) + 1e-15;
     if (an_cert_collect(C, cx, cy, R, w) != 0) return -1;
     size_t m = 0;
     for (size_t t = 0; t < w->m; t++) {
         const double dx = w->x[t] - cx, dy = w->y[t] - cy;
-        if (dx * dx + dy * dy > R * R) continue;
+        if (w->id[t] == skip || dx * dx + dy * dy > R * R) continue;
         w->x[m] = w->x[t];
         w->y[m] = w->y[t];
         m++;
@@ -188,7 +194,7 @@ static int cell_item(const ctx *C, size_t t, work *w, void *out)
 {
     (void)out;
     const size_t c = C->order[t];
-    return cell_radius(C, c, w, C->rho_cell + c, C->arg_cell + 2 * c);
+    return an_cell_radius(C, c, C->cell_ub[c], C->n, w, C->rho_cell + c, C->arg_cell + 2 * c);
 }
 
 static int point_item(const ctx *C, size_t t, work *w, void *out)
@@ -248,13 +254,9 @@ static void summarise(const point_result *pr, size_t n, double tol, double Dn, a
 static int covering(ctx *C, size_t *order, double *ub)
 {
     const size_t cells = C->G.g * C->G.g;
-    const double L = C->G.L, hd = 0.5 * L * sqrt(2.0);
     int status = 0;
 #pragma omp parallel for schedule(dynamic, 64)
-    for (size_t t = 0; t < cells; t++) {
-        const double cx = ((double)(t % C->G.g) + 0.5) * L, cy = ((double)(t / C->G.g) + 0.5) * L;
-        ub[t] = (sqrt(an_ptree_nearest(C->tree, cx, cy, C->n)) + hd) * (1 + 1e-9) + 1e-15;
-    }
+    for (size_t t = 0; t < cells; t++) ub[t] = an_cell_bound(C, t, C->n);
     an_cell_key *keys = malloc(cells * sizeof *keys);
     if (!keys) return -1;
     for (size_t t = 0; t < cells; t++) keys[t] = (an_cell_key){ub[t], t};

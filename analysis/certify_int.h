@@ -62,10 +62,26 @@ int an_cert_reserve(an_cert_work *w, size_t m);
  * cell): 0, or -1 out of memory. */
 int an_cert_collect(const an_cert_ctx *C, double cx, double cy, double H, an_cert_work *w);
 
+/* An upper bound of cell c's largest empty circle radius with X \ {skip}
+ * (skip = n: none): its centre's distance to the set plus its
+ * half-diagonal, raised against rounding. */
+double an_cell_bound(const an_cert_ctx *C, size_t c, size_t skip);
+
+/* Cell c's largest empty circle radius with X \ {skip} into *out and
+ * where it is reached (wrapped) into arg[0..1], given ub = an upper bound
+ * of it. 0, -1 out of memory, -2 the solver found nothing. */
+int an_cell_radius(const an_cert_ctx *C, size_t c, double ub, size_t skip, an_cert_work *w, double *out, double *arg);
+
 /* Both properties of the Local Characterization Theorem for point i, with
  * D(x) of half-side h (lct.c): their violations, absolute. 0, -1 out of
  * memory, -2 the solver found no vertex. */
 int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1, double *p2);
+
+/* The touching test of a bisector with a convex polygon P (vmax.c): eps =
+ * 1e-9 of P's extent from (x, y), and whether the bisector of (x, y) and
+ * (px, py) meets P within eps, (v - m).n >= -eps |n| at a vertex v. */
+double an_touch_eps(const double *P, int nv, double x, double y);
+int an_touches(const double *P, int nv, double x, double y, double px, double py, double eps);
 
 /* T of the farthest point test for point i at (x, y) (certify.c says what
  * it is): the square of half-side s, the images of the touching points

@@ -33,6 +33,19 @@ static size_t nearest(const double *yx, const double *yy, size_t m, double px, d
     return arg;
 }
 
+void an_nearest_each(const double *yx, const double *yy, size_t m, const double (*probe)[2], int k, size_t *arg)
+{
+    double pd[AN_NEAREST_EACH];
+    for (int j = 0; j < k; j++) { pd[j] = INFINITY; arg[j] = 0; }
+    for (size_t t = 0; t < m; t++) {
+        const double x = yx[t], y = yy[t];
+        for (int j = 0; j < k; j++) {
+            const double dx = x - probe[j][0], dy = y - probe[j][1], e2 = dx * dx + dy * dy;
+            if (e2 < pd[j]) { pd[j] = e2; arg[j] = t; }
+        }
+    }
+}
+
 /* Adds point t of Y to Q unless its position is there already: 1 if added. */
 static int add(double *qx, double *qy, int *q, double x, double y)
 {
@@ -52,17 +65,8 @@ double an_farthest_sub(const double *yx, const double *yy, size_t m, cfpo_square
     const double mx = 0.5 * (S.x0 + S.x1), my = 0.5 * (S.y0 + S.y1);
     const double probe[9][2] = {{hx, hy},   {S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1},
                                 {mx, S.y0}, {S.x1, my},   {mx, S.y1},   {S.x0, my}};
-    /* The nearest to each probe, in one pass (the first of equals). */
-    double pd[9];
-    size_t parg[9] = {0};
-    for (int k = 0; k < 9; k++) pd[k] = INFINITY;
-    for (size_t t = 0; t < m; t++) {
-        const double x = yx[t], y = yy[t];
-        for (int k = 0; k < 9; k++) {
-            const double dx = x - probe[k][0], dy = y - probe[k][1], e2 = dx * dx + dy * dy;
-            if (e2 < pd[k]) { pd[k] = e2; parg[k] = t; }
-        }
-    }
+    size_t parg[9];
+    an_nearest_each(yx, yy, m, probe, 9, parg);
     for (int k = 0; k < 9; k++) add(qx, qy, &q, yx[parg[k]], yy[parg[k]]);
     for (int round = 0; round < SUB_ROUNDS; round++) {
         double ux, uy;

@@ -73,6 +73,31 @@ int an_clip_bisector(const double *p, int n, double *q, double *sd, double ax, d
     return out ? an_clip_sd(p, n, q, sd) : -1;
 }
 
+double an_split_farthest(const double *P, int nv, const double *qx, const double *qy, size_t k, double *R,
+                         double *U, double *sd, double *bx, double *by)
+{
+    double best = -1;
+    double *const r0 = R, *const u0 = U;
+    for (size_t a = 0; a < k; a++) {
+        memcpy(R, P, 2 * (size_t)nv * sizeof *R);
+        int nr = nv;
+        for (size_t b = 0; b < k && nr > 0; b++) {
+            if (b == a) continue;
+            const int cut = an_clip_bisector(R, nr, U, sd, qx[a], qy[a], qx[b], qy[b]);
+            if (cut < 0) continue;
+            nr = cut;
+            double *tmp = R; R = U; U = tmp;
+        }
+        for (int v = 0; v < nr; v++) {
+            const double dx = R[2 * v] - qx[a], dy = R[2 * v + 1] - qy[a], e2 = dx * dx + dy * dy;
+            if (e2 > best) { best = e2; *bx = R[2 * v]; *by = R[2 * v + 1]; }
+        }
+        R = r0;
+        U = u0;
+    }
+    return best;
+}
+
 /* Drops repeated positions from [lo, hi), keeping the first of each;
  * returns the new end. Sorts first unless the range is small. */
 static size_t sort_unique(an_far_ws *ws, size_t lo, size_t hi)
@@ -389,25 +414,21 @@ static void clamp_to(const cfpo_square *S, const far_state *F, double *cx, doubl
  * far from a line of points: all but the stretch of the line facing it). */
 static size_t near_square(const double *yx, const double *yy, size_t m, const cfpo_square *S, an_far_ws *ws)
 {
-    const double px[5] = {S->x0, S->x1, S->x1, S->x0, 0.5 * (S->x0 + S->x1)};
-    const double py[5] = {S->y0, S->y0, S->y1, S->y1, 0.5 * (S->y0 + S->y1)};
+    const double probe[5][2] = {{S->x0, S->y0}, {S->x1, S->y0}, {S->x1, S->y1}, {S->x0, S->y1},
+                                {0.5 * (S->x0 + S->x1), 0.5 * (S->y0 + S->y1)}};
+    size_t guard[5];
+    an_nearest_each(yx, yy, m, probe, 5, guard);
     double g2[5][4]; /* squared distances from each guard to each corner, raised against rounding */
-    for (int k = 0; k < 5; k++) {
-        double best = INFINITY, gx = 0, gy = 0;
-        for (size_t t = 0; t < m; t++) {
-            const double dx = yx[t] - px[k], dy = yy[t] - py[k], d2 = dx * dx + dy * dy;
-            if (d2 < best) { best = d2; gx = yx[t]; gy = yy[t]; }
-        }
+    for (int k = 0; k < 5; k++)
         for (int c = 0; c < 4; c++) {
-            const double dx = gx - px[c], dy = gy - py[c];
+            const double dx = yx[guard[k]] - probe[c][0], dy = yy[guard[k]] - probe[c][1];
             g2[k][c] = (dx * dx + dy * dy) * (1 + 1e-9) + 1e-300;
         }
-    }
     size_t n = 0;
     for (size_t t = 0; t < m; t++) {
         double d2[4];
         for (int c = 0; c < 4; c++) {
-            const double dx = yx[t] - px[c], dy = yy[t] - py[c];
+            const double dx = yx[t] - probe[c][0], dy = yy[t] - probe[c][1];
             d2[c] = dx * dx + dy * dy;
         }
         int dominated = 0;
@@ -472,8 +493,7 @@ double an_farthest(const double *yx, const double *yy, size_t m, cfpo_square S, 
     }
     if (m > (size_t)INT32_MAX / 4 || an_far_reserve(ws, m) != 0) return -1;
     if (m <= AN_FAR_SMALL) return cfpo_local_solve(yx, yy, (int)m, -1, S, hx, hy, -1, cx, cy, ws->scratch);
-    double r2 = an_farthest_row(yx, yy, m, S, cx, cy, ws->scratch);
-    if (r2 == -3) r2 = an_farthest_sub(yx, yy, m, S, hx, hy, cx, cy, ws->scratch);
+    const double r2 = an_farthest_quick(yx, yy, m, S, hx, hy, cx, cy, ws->scratch);
     if (r2 != -3) return r2;
     return farthest_tree(yx, yy, m, &S, cx, cy, ws);
 }
@@ -484,4 +504,11 @@ double an_farthest_whole(const double *yx, const double *yy, size_t m, cfpo_squa
     if (m <= AN_FAR_SMALL) return an_farthest(yx, yy, m, S, hx, hy, cx, cy, ws);
     if (m > (size_t)INT32_MAX / 4 || an_far_reserve(ws, m) != 0) return -1;
     return farthest_tree(yx, yy, m, &S, cx, cy, ws);
+}
+
+double an_farthest_quick(const double *yx, const double *yy, size_t m, cfpo_square S, double hx, double hy,
+                         double *cx, double *cy, double *scratch)
+{
+    const double r2 = an_farthest_row(yx, yy, m, S, cx, cy, scratch);
+    return r2 != -3 ? r2 : an_farthest_sub(yx, yy, m, S, hx, hy, cx, cy, scratch);
 }

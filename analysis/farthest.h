@@ -98,6 +98,13 @@ int an_clip_sd(const double *p, int n, double *q, const double *sd);
  * nearer a, into q: the new count, or -1 when no vertex is cut off (q
  * untouched). sd: room for n values. */
 int an_clip_bisector(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by);
+/* The convex polygon P (nv vertices) split among the k points (qx, qy)
+ * (each point's part: P cut by its bisectors with the others): the
+ * largest squared distance from a point to a vertex of its part, at
+ * (*bx, *by), or -1 when every part is empty. R, U: room for polygons of
+ * nv + k vertices; sd: for nv + k values. */
+double an_split_farthest(const double *P, int nv, const double *qx, const double *qy, size_t k, double *R,
+                         double *U, double *sd, double *bx, double *by);
 /* qsort's order of (x, y) pairs of doubles: by x, then by y. */
 int an_cmp_pair(const void *a, const void *b);
 

@@ -77,4 +77,15 @@ double an_farthest_whole(const double *yx, const double *yy, size_t m, cfpo_squa
 double an_farthest_row(const double *yx, const double *yy, size_t m, cfpo_square S, double *cx, double *cy,
                        double *tmp);
 
+/* The shortcuts before a tree: a row (an_farthest_row), then a few points
+ * (an_farthest_sub); -3 when neither decides it. */
+double an_farthest_quick(const double *yx, const double *yy, size_t m, cfpo_square S, double hx, double hy,
+                         double *cx, double *cy, double *scratch);
+
+#define AN_NEAREST_EACH 9 /* probes at most */
+
+/* For each of the k <= AN_NEAREST_EACH probes, the index of the nearest of
+ * the m points (the first of equals) into arg, in one pass (farsub.c). */
+void an_nearest_each(const double *yx, const double *yy, size_t m, const double (*probe)[2], int k, size_t *arg);
+
 #endif

@@ -135,19 +135,11 @@ static double p2_from_p1(an_cert_work *w, int m, double x, double y, cfpo_square
     }
     if (nv == 0) return -3;
     /* The neighbours: bisectors touching R within rounding (vmax.c's test). */
-    double ext = 0;
-    for (int v = 0; v < nv; v++) {
-        const double ax = fabs(P[2 * v] - x), ay = fabs(P[2 * v + 1] - y), e = ax > ay ? ax : ay;
-        ext = e > ext ? e : ext;
-    }
-    const double eps = 1e-9 * (ext + 1e-300);
+    const double eps = an_touch_eps(P, nv, x, y);
     double nbx[P2_NEAR], nby[P2_NEAR];
     int k = 0;
     for (int t = 0; t < m; t++) {
-        const double nx = sx[t] - x, ny = sy[t] - y, mx = 0.5 * (sx[t] + x), my = 0.5 * (sy[t] + y);
-        const double scale = sqrt(nx * nx + ny * ny);
-        int touch = 0;
-        for (int v = 0; v < nv && !touch; v++) touch = (P[2 * v] - mx) * nx + (P[2 * v + 1] - my) * ny >= -eps * scale;
+        const int touch = an_touches(P, nv, x, y, sx[t], sy[t], eps);
         int seen = 0;
         for (int j = 0; j < k && touch && !seen; j++) seen = nbx[j] == sx[t] && nby[j] == sy[t];
         if (!touch || seen) continue;
@@ -164,25 +156,10 @@ static double p2_from_p1(an_cert_work *w, int m, double x, double y, cfpo_square
         nv = r;
         double *tmp = P; P = Q; Q = tmp;
     }
-    double best = -1, bx = ux, by = uy;
-    double *R = w->scratch, *U = w->scratch + 4 * (w->cap + 8);
-    for (int a = 0; a < k && nv > 0; a++) {
-        memcpy(R, P, 2 * (size_t)nv * sizeof *R);
-        int nr = nv;
-        for (int b = 0; b < k && nr > 0; b++) {
-            if (b == a) continue;
-            const int r = an_clip_bisector(R, nr, U, w->sd, nbx[a], nby[a], nbx[b], nby[b]);
-            if (r < 0) continue;
-            nr = r;
-            double *tmp = R; R = U; U = tmp;
-        }
-        for (int v = 0; v < nr; v++) {
-            const double dx = R[2 * v] - nbx[a], dy = R[2 * v + 1] - nby[a], e2 = dx * dx + dy * dy;
-            if (e2 > best) { best = e2; bx = R[2 * v]; by = R[2 * v + 1]; }
-        }
-        R = w->scratch;
-        U = w->scratch + 4 * (w->cap + 8);
-    }
+    double bx = ux, by = uy;
+    const double best = nv > 0 ? an_split_farthest(P, nv, nbx, nby, (size_t)k, w->scratch,
+                                                   w->scratch + 4 * (w->cap + 8), w->sd, &bx, &by)
+                               : -1;
     if (best >= 0) {
         bx = bx < S.x0 ? S.x0 : bx > S.x1 ? S.x1 : bx;
         by = by < S.y0 ? S.y0 : by > S.y1 ? S.y1 : by;
@@ -228,11 +205,8 @@ int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1
         int err = 0;
         P = remembered(w, m, &err);
         if (err) return -1;
-        if (!P) {
-            r2 = an_farthest_row(w->sx, w->sy, (size_t)m, S, &px, &py, w->scratch);
-            if (r2 == -3) r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
-        } else if (!P->ready && an_far_prep_build(P) != 0)
-            return -1;
+        if (!P) r2 = an_farthest_quick(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
+        else if (!P->ready && an_far_prep_build(P) != 0) return -1;
     }
     if (r2 == -3)
         r2 = P ? an_far_prep_solve(P, S, 0, 0, 0, NULL, &px, &py, &w->far)
@@ -246,8 +220,7 @@ int an_lct(const an_cert_ctx *C, size_t i, an_cert_work *w, double h, double *p1
     const double dY2 = cfpo_min_dist2(x, y, w->sx, w->sy, m, -1);
     r2 = -3;
     if (m > AN_FAR_SMALL && !P) { /* a row, a few points, else from property 1's answer */
-        r2 = an_farthest_row(w->sx, w->sy, (size_t)m, S, &px, &py, w->scratch);
-        if (r2 == -3) r2 = an_farthest_sub(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
+        r2 = an_farthest_quick(w->sx, w->sy, (size_t)m, S, x, y, &px, &py, w->scratch);
         if (r2 == -3) r2 = p2_from_p1(w, m, x, y, S, p1_at[0], p1_at[1], p1_r2, &px, &py);
     }
     if (r2 == -3 && P && m == m1 - 1 && m > AN_FAR_SMALL) r2 = an_far_prep_solve(P, S, 1, x, y, p1_at, &px, &py, &w->far);

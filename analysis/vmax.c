@@ -42,19 +42,33 @@ static void set_filter(an_cert_work *w, const double *P, int nv, double x, doubl
     an_pwalk_filter(&w->walk, P, w->fr2, nv);
 }
 
-/* The rounding slack of the touching test for polygon P: eps = 1e-9 of
- * its extent from x; a vertex v with (v - m).n >= -eps |n| needs |n| <=
- * 2 sqrt(far2) + 2 eps, so |v - y|^2 <= |v - x|^2 + 2 eps |n| is met with
- * 2 eps |n| at most *slack; *radius bounds |n|. */
-static void touch_slack(const double *P, int nv, double x, double y, double far2, double *eps, double *slack,
-                        double *radius)
+double an_touch_eps(const double *P, int nv, double x, double y)
 {
     double ext = 0;
     for (int v = 0; v < nv; v++) {
         const double ax = fabs(P[2 * v] - x), ay = fabs(P[2 * v + 1] - y), e = ax > ay ? ax : ay;
         ext = e > ext ? e : ext;
     }
-    *eps = 1e-9 * (ext + 1e-300);
+    return 1e-9 * (ext + 1e-300);
+}
+
+int an_touches(const double *P, int nv, double x, double y, double px, double py, double eps)
+{
+    const double nx = px - x, ny = py - y, mx = 0.5 * (px + x), my = 0.5 * (py + y);
+    const double scale = sqrt(nx * nx + ny * ny);
+    for (int v = 0; v < nv; v++)
+        if ((P[2 * v] - mx) * nx + (P[2 * v + 1] - my) * ny >= -eps * scale) return 1;
+    return 0;
+}
+
+/* The rounding slack of the touching test for polygon P (eps: an_touch_eps);
+ * a vertex v with (v - m).n >= -eps |n| needs |n| <= 2 sqrt(far2) + 2 eps,
+ * so |v - y|^2 <= |v - x|^2 + 2 eps |n| is met with 2 eps |n| at most
+ * *slack; *radius bounds |n|. */
+static void touch_slack(const double *P, int nv, double x, double y, double far2, double *eps, double *slack,
+                        double *radius)
+{
+    *eps = an_touch_eps(P, nv, x, y);
     *radius = (2 * sqrt(far2) + 2 * *eps) * (1 + 1e-9) + 1e-300;
     *slack = 2 * *eps * (2 * sqrt(far2) + 2 * *eps) * (1 + 1e-9);
 }
@@ -184,7 +198,7 @@ static int hole_radius(const an_cert_ctx *C, size_t i, an_cert_work *w, const do
         box[2] = fmin(box[2], P[2 * v + 1]); box[3] = fmax(box[3], P[2 * v + 1]);
     }
     const long g = (long)C->G.g;
-    const double L = C->G.L, hd = 0.5 * L * sqrt(2.0);
+    const double L = C->G.L;
     long ix0 = (long)floor(box[0] * (double)g), ix1 = (long)floor(box[1] * (double)g);
     long iy0 = (long)floor(box[2] * (double)g), iy1 = (long)floor(box[3] * (double)g);
     /* Cells are tested against V(x) where they are taken unwrapped, as V(x)
@@ -199,36 +213,22 @@ static int hole_radius(const an_cert_ctx *C, size_t i, an_cert_work *w, const do
         for (long ix = ix0; ix <= ix1; ix++) {
             if (test && !meets((double)ix * L, (double)iy * L, L, P, nv)) continue;
             const long wx = ((ix % g) + g) % g, wy = ((iy % g) + g) % g;
-            const double cx = ((double)wx + 0.5) * L, cy = ((double)wy + 0.5) * L;
-            const double ub = (sqrt(an_ptree_nearest(C->tree, cx, cy, i)) + hd) * (1 + 1e-9) + 1e-15;
-            if (ub > C->rho) cand[k++] = (an_cell_key){ub, (size_t)(wy * g + wx)};
+            const size_t c = (size_t)(wy * g + wx);
+            const double ub = an_cell_bound(C, c, i);
+            if (ub > C->rho) cand[k++] = (an_cell_key){ub, c};
         }
     qsort(cand, k, sizeof *cand, an_cell_key_desc);
     double best = C->rho;
     *T = -1;
     int status = 0;
     for (size_t t = 0; t < k && cand[t].r > best && status == 0; t++) {
-        const size_t c = cand[t].c;
-        const double x0 = (double)(c % (size_t)g) * L, y0 = (double)(c / (size_t)g) * L;
-        const double cx = x0 + 0.5 * L, cy = y0 + 0.5 * L, R = (cand[t].r + hd) * (1 + 1e-9) + 1e-15;
-        if (an_cert_collect(C, cx, cy, R, w) != 0) { status = -1; break; }
-        size_t m = 0;
-        for (size_t u = 0; u < w->m; u++) {
-            const double dx = w->x[u] - cx, dy = w->y[u] - cy;
-            if (w->id[u] == i || dx * dx + dy * dy > R * R) continue;
-            w->sx[m] = w->x[u];
-            w->sy[m] = w->y[u];
-            m++;
-        }
-        double px, py;
-        const cfpo_square S = {x0, y0, x0 + L, y0 + L};
-        const double r2 = an_farthest(w->sx, w->sy, m, S, cx, cy, &px, &py, &w->far);
-        if (r2 < 0 || m == 0) { status = -2; break; }
-        if (sqrt(r2) > best) {
-            best = sqrt(r2);
-            *T = best;
-            *tx = cfpo_wrap01(px);
-            *ty = cfpo_wrap01(py);
+        double r, at[2];
+        status = an_cell_radius(C, cand[t].c, cand[t].r, i, w, &r, at);
+        if (status == 0 && r > best) {
+            best = r;
+            *T = r;
+            *tx = at[0];
+            *ty = at[1];
         }
     }
     free(cand);
@@ -264,15 +264,9 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
     for (size_t c = 0; c < ncand; c++) {
         const double px = w->cand[2 * c], py = w->cand[2 * c + 1];
         const size_t id = w->cand_id[c];
-        if (w->mark[id]) continue;
-        const double nx = px - x, ny = py - y, mx = 0.5 * (px + x), my = 0.5 * (py + y);
-        const double scale = sqrt(nx * nx + ny * ny);
-        for (int v = 0; v < nv; v++)
-            if ((P[2 * v] - mx) * nx + (P[2 * v + 1] - my) * ny >= -eps * scale) {
-                w->mark[id] = 1;
-                w->marked[nmarked++] = id;
-                break;
-            }
+        if (w->mark[id] || !an_touches(P, nv, x, y, px, py, eps)) continue;
+        w->mark[id] = 1;
+        w->marked[nmarked++] = id;
     }
     if (nmarked > VMAX_DIRECT) { /* many touching points: by the grid's cells instead */
         for (size_t t = 0; t < nmarked; t++) w->mark[w->marked[t]] = 0;
@@ -302,34 +296,12 @@ int an_vmax(const an_cert_ctx *C, size_t i, an_cert_work *w, double x, double y,
      * V(x) clipped to its own cell among them, at a vertex; by the grid's
      * cells when they are many (the far ends of a line of points, where
      * V(x) has a vertex for each image of the line). */
-    double best = -1, bx = x, by = y;
     if (k > VMAX_DIRECT) return hole_radius(C, i, w, P, nv, T, tx, ty);
     /* V(x) cut by k more bisectors: at most nv + k <= cap + 8 vertices. */
-    double *R = w->scratch, *U = w->scratch + 4 * (w->cap + 8);
-    for (size_t a = 0; a < k; a++) {
-        memcpy(R, P, 2 * (size_t)nv * sizeof *R);
-        int nr = nv;
-        for (size_t b = 0; b < k && nr > 0; b++) {
-            if (b == a) continue;
-            const int cut = an_clip_bisector(R, nr, U, w->sd, w->sx[a], w->sy[a], w->sx[b], w->sy[b]);
-            if (cut < 0) continue;
-            nr = cut;
-            double *tmp = R; R = U; U = tmp;
-        }
-        for (int v = 0; v < nr; v++) {
-            const double dx = R[2 * v] - w->sx[a], dy = R[2 * v + 1] - w->sy[a], e2 = dx * dx + dy * dy;
-            if (e2 > best) { best = e2; bx = R[2 * v]; by = R[2 * v + 1]; }
-        }
-        R = w->scratch;
-        U = w->scratch + 4 * (w->cap + 8);
-    }
+    double bx = x, by = y;
+    const double best = an_split_farthest(P, nv, w->sx, w->sy, k, w->scratch, w->scratch + 4 * (w->cap + 8), w->sd,
+                                          &bx, &by);
     if (best < 0) return 0;
-    if (k == 0) { /* solved by the tree: best is already the distance */
-        *T = sqrt(best);
-        *tx = cfpo_wrap01(bx);
-        *ty = cfpo_wrap01(by);
-        return 0;
-    }
     /* The value from the distances themselves, not the clipping. */
     *T = sqrt(cfpo_min_dist2(bx, by, w->sx, w->sy, (int)k, -1));
     *tx = cfpo_wrap01(bx);
