@@ -37,7 +37,7 @@ static int gather_shifted(const cfpo_engine *E, int64_t lx, int64_t ly, double *
     return m;
 }
 
-static int gather(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre)
+int eng_gather_block(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre)
 {
     if (E->G.shift != 0) return gather_shifted(E, lx, ly, ox_, oy_, centre);
     const int64_t g = E->G.g, cx = E->x0 + lx, cy = E->y0 + ly;
@@ -107,7 +107,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     const size_t mcap = E->scratch_m;
     double *lxs = buf, *lys = buf + mcap, *sol = buf + 2 * mcap;
     int off = 0;
-    const int m = gather(E, lx, ly, lxs, lys, &off);
+    const int m = eng_gather_block(E, lx, ly, lxs, lys, &off);
     const double tolL = E->o.tol * E->G.L;
     int64_t moves = 0;
     unsigned mask = 0;

@@ -76,9 +76,11 @@ uint64_t cfpo_engine_bytes_local(int64_t nlocal, int64_t cells, int64_t ring, in
 /* The same for the whole torus on one rank. */
 uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads);
 
-/* Prepares the coming iteration from the set as it stands (the adaptive
- * variant's margin, from delta(X) as last measured by cfpo_engine_deltas):
- * call before the phases of an iteration (cfpo_engine_iterate does). */
+/* Prepares the coming iteration from the set as it stands: the net
+ * displacements cleared and, in the adaptive variant, the margin (from
+ * delta(X) as last measured by cfpo_engine_deltas), the grid shift and, in
+ * iterations 2-5, the hole jumps. Call before the phases of an iteration
+ * (cfpo_engine_iterate does). */
 void cfpo_engine_begin(cfpo_engine *E);
 
 /* One phase: every cell of colour `colour` in parallel, then migration and
@@ -86,7 +88,7 @@ void cfpo_engine_begin(cfpo_engine *E);
  * number of local problems solved. */
 int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved);
 
-/* One sweep: cfpo_engine_begin, the net displacements cleared, then every
+/* One sweep: cfpo_engine_begin, then every
  * colour's phase in order; *moved and *solved are this rank's totals. The
  * one colour loop: cfpo_engine_iterate and cfpo-bench both sweep so. */
 void cfpo_engine_sweep(cfpo_engine *E, int64_t *moved, int64_t *solved);

@@ -129,21 +129,33 @@ static void move_grid(cfpo_engine *E, double shift)
  * L - max(delta(X), theta Delta(n)) past the cell, the most the
  * convergence argument allows while delta(X) is large, and no more than
  * L - theta Delta(n) early on (delta(X) taken a hair high, so rounding
- * can only shrink S). */
+ * can only shrink S); the grid shift; then the backend's start of an
+ * iteration and, in iterations JUMP_FIRST..JUMP_LAST, the hole jumps
+ * (engine_jump.c) on the host arrays. */
 void cfpo_engine_begin(cfpo_engine *E)
 {
     E->cur++;
-    if (E->G.variant != CFPO_VARIANT_ADAPTIVE) return;
-    const double d = fmax(E->dmin_now * (1 + 1e-9), ADAPTIVE_THETA) * E->G.delta;
-    E->G.margin = d < E->G.L ? E->G.L - d : 0;
-    const double sh = eng_shift_of(&E->G, E->cur);
-    if (sh != E->G.shift) move_grid(E, sh);
+    if (E->G.variant == CFPO_VARIANT_ADAPTIVE) {
+        const double d = fmax(E->dmin_now * (1 + 1e-9), ADAPTIVE_THETA) * E->G.delta;
+        E->G.margin = d < E->G.L ? E->G.L - d : 0;
+        const double sh = eng_shift_of(&E->G, E->cur);
+        if (sh != E->G.shift) move_grid(E, sh);
+    }
+    E->be->begin(E);
+    if (eng_jump_due(E)) {
+        sync_host(E);
+        if (eng_jump(E) != 0) die(E, "moving points into holes");
+        sync_device(E);
+        if (E->cfg.check) {
+            eng_check_migration(E);
+            eng_check_halo(E);
+        }
+    }
 }
 
 void cfpo_engine_sweep(cfpo_engine *E, int64_t *moved, int64_t *solved)
 {
     cfpo_engine_begin(E);
-    E->be->begin(E);
     *moved = *solved = 0;
     for (int colour = 0; colour < E->G.period * E->G.period; colour++) {
         int64_t sv = 0;
