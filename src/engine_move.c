@@ -183,25 +183,68 @@ static void follow_sources(cfpo_engine *E)
     E->nloc = E->start[E->cells];
 }
 
+/* Sets MOVED_BIT on the own cells whose content the moves of colour
+ * `colour` and the arrivals change: a cell of that colour a point left,
+ * the cells its mask sends points to, the cells with arrivals. Only the
+ * cells of the phase's colour carry move bits (the others were cleared
+ * after their own phase), so every other cell keeps its slice as it is. */
+static void flag_moved(cfpo_engine *E, int colour)
+{
+    const eng_colour C = eng_colour_of(E, colour);
+    for (int64_t t = 0; t < C.nxc * C.nyc; t++) {
+        int64_t lx, ly;
+        eng_colour_cell(&C, t, &lx, &ly);
+        const int64_t c = ly * E->w + lx;
+        const unsigned mk = E->mask[c] & 0x1ffu & ~CENTRE_BIT;
+        if (!mk) continue;
+        E->mask[c] |= MOVED_BIT;
+        for (int bit = 0; bit < 9; bit++) {
+            if (!(mk >> bit & 1u)) continue;
+            const int64_t e = locate(E, lx + bit % 3 - 1, ly + bit / 3 - 1);
+            if (e >= 0) E->mask[e] |= MOVED_BIT;
+        }
+    }
+    for (size_t a = 0; a < E->narr; a++) E->mask[E->arr[a].cell] |= MOVED_BIT;
+}
+
+/* An unchanged own cell's slice copied to its new place, each slot its own
+ * source. Returns the count. */
+static int copy_cell(cfpo_engine *E, int64_t c)
+{
+    uint32_t wpos = E->start2[c];
+    for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++, wpos++) {
+        E->tx[wpos] = E->px[k];
+        E->ty[wpos] = E->py[k];
+        E->tid[wpos] = k;
+    }
+    return (int)(E->start[c + 1] - E->start[c]);
+}
+
+/* The cells flagged by flag_moved are rebuilt (count_cell, fill_cell);
+ * the others, most of them late in a run, keep their content and are
+ * copied as they are: the same result as rebuilding every cell. */
 int eng_relocate(cfpo_engine *E, int colour)
 {
     const int a_ = colour / E->G.period, b_ = colour % E->G.period;
     const int64_t cells = E->cells;
     uint32_t *ns = E->start2;
     if (eng_ensure_cap(E, (size_t)E->nloc + E->narr) != 0) return -1;
+    flag_moved(E, colour);
     const uint32_t *st = E->start;
     const uint16_t *mask = E->mask;
     const int64_t w = E->w;
 #pragma omp parallel for schedule(static) num_threads(E->nthreads)
-    for (int64_t c = 0; c < cells; c++) ns[c + 1] = count_cell(E, st, mask, w, c, a_, b_);
+    for (int64_t c = 0; c < cells; c++)
+        ns[c + 1] = (mask[c] & MOVED_BIT) ? count_cell(E, st, mask, w, c, a_, b_) : st[c + 1] - st[c];
     ns[0] = 0;
     for (int64_t c = 0; c < cells; c++) ns[c + 1] += ns[c];
     int maxcell = 0;
 #pragma omp parallel for schedule(static) reduction(max : maxcell) num_threads(E->nthreads)
     for (int64_t c = 0; c < cells; c++) {
-        const int m = fill_cell(E, c, a_, b_);
+        const int m = (mask[c] & MOVED_BIT) ? fill_cell(E, c, a_, b_) : copy_cell(E, c);
         if (m > maxcell) maxcell = m;
     }
+    for (int64_t c = 0; c < cells; c++) E->mask[c] &= (uint16_t)~MOVED_BIT;
     follow_sources(E);
     E->maxcell = maxcell;
     return eng_ensure_scratch(E);
