@@ -14,6 +14,11 @@
 #define CFPO_SOLVER_AVX2 1
 #else
 #define CFPO_SOLVER_AVX2 0
+/* Where not NULL, called by cfpo_local_solve with every call's inputs
+ * before it solves (cfpo-bench capture; set only while one thread runs). */
+extern void (*cfpo_solve_observer)(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                                   double hy, double floor2);
+
 #endif
 
 /* 1 where cfpo_local_solve_avx2 runs its AVX2 code (else it is the plain
@@ -28,5 +33,10 @@ double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int ski
  * Call only where cfpo_solver_avx2_usable() says 1. */
 double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                              double hy, double floor2, double *cx, double *cy, double *scratch);
+
+/* Where not NULL, called by cfpo_local_solve with every call's inputs
+ * before it solves (cfpo-bench capture; set only while one thread runs). */
+extern void (*cfpo_solve_observer)(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                                   double hy, double floor2);
 
 #endif
