@@ -250,12 +250,7 @@ TGT double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int 
 
     for (int i = 0; i < k; i++) {
         const double ax = px[i], ay = py[i];
-        double ub = 0;
-        for (int c = 0; c < 4; c++) {
-            double dx = corner[c][0] - ax, dy = corner[c][1] - ay;
-            double d2 = dx * dx + dy * dy;
-            if (d2 > ub) ub = d2;
-        }
+        const double ub = cfpo_corner_far2_hd(corner, ax, ay);
         if (ub <= best) continue;
         if (cell_empty(px, py, k, ax, ay, corner, A)) continue;
 
@@ -271,9 +266,8 @@ TGT double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int 
         double far2 = ub;
         for (int j = 0; j < k && alive; j++) {
             if (j == i) continue;
-            const double nx = px[j] - ax, ny = py[j] - ay;
-            if (nx * nx + ny * ny >= 4 * far2) continue;
-            const double mx = 0.5 * (px[j] + ax), my = 0.5 * (py[j] + ay);
+            double nx, ny, mx, my;
+            if (!cfpo_bisector_hd(px[j], py[j], ax, ay, far2, &nx, &ny, &mx, &my)) continue;
             int nn;
             if (small) {
                 nn = cut_small(x, y, nv, mx, my, nx, ny, ax, ay, ox, oy, &far2);
@@ -316,13 +310,7 @@ TGT double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int 
         }
     }
     if (!found) return -1.0;
-    if (bx < S.x0) bx = S.x0;
-    if (bx > S.x1) bx = S.x1;
-    if (by < S.y0) by = S.y0;
-    if (by > S.y1) by = S.y1;
-    *cx = bx;
-    *cy = by;
-    return cfpo_min_dist2_hd(bx, by, yx, yy, m, skip);
+    return cfpo_solve_finish_hd(bx, by, S, yx, yy, m, skip, cx, cy);
 }
 
 int cfpo_solver_avx2_usable(void) { return __builtin_cpu_supports("avx2"); }

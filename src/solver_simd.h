@@ -14,16 +14,18 @@
 #define CFPO_SOLVER_AVX2 1
 #else
 #define CFPO_SOLVER_AVX2 0
-/* Where not NULL, called by cfpo_local_solve with every call's inputs
- * before it solves (cfpo-bench capture; set only while one thread runs). */
-extern void (*cfpo_solve_observer)(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                                   double hy, double floor2);
-
 #endif
 
 /* 1 where cfpo_local_solve_avx2 runs its AVX2 code (else it is the plain
  * solver under another name). */
 int cfpo_solver_avx2_usable(void);
+
+/* The solver cfpo_local_solve runs, "avx2" or "plain", chosen once: AVX2
+ * where the CPU has it, unless the environment says CFPO_SOLVER=plain
+ * (the tests compare the two routes on whole runs). NULL when
+ * CFPO_SOLVER holds anything but "plain" or "auto" (cfpo reports it; the
+ * choice is then as if unset). */
+const char *cfpo_solver_name(void);
 
 /* The plain solver (solver_impl.h), whatever the CPU. */
 double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
