@@ -6,6 +6,12 @@
  *   cfpo-bench converge -n N -t T         iterations and seconds until
  *                                         delta_avg >= 0.929, delta_min >= 0.92
  *                                         and convergence; bytes per point
+ *   cfpo-bench capture  -n N -i IT,IT,.. -o FILE   records the local solves
+ *                                         of those iterations (one thread)
+ *   cfpo-bench replay   -o FILE [-k K] [-p plain|avx2]  replays them through
+ *                                         the plain and the AVX2 solver: ns per
+ *                                         call, and a non-zero exit if any
+ *                                         call's bits differ
  *
  * Protocol (after the Parallel Research Kernels): one untimed warm-up sweep,
  * then K timed sweeps; the median is reported. Sweep timings exclude the
@@ -16,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_solver.h"
 #include "cfpo.h"
 #include "cli.h"
 #include "engine.h"
@@ -116,22 +123,47 @@ static int converge(int64_t n, int threads, uint64_t seed)
     return 0;
 }
 
+static int is_mode(const char *a)
+{
+    return strcmp(a, "sweep") == 0 || strcmp(a, "converge") == 0 || strcmp(a, "capture") == 0 ||
+           strcmp(a, "replay") == 0;
+}
+
+/* "2,20,200" into its[] (at most 16). Returns the count, -1 if bad. */
+static int parse_its(const char *s, int *its)
+{
+    int n = 0;
+    while (*s) {
+        char *end;
+        long v = strtol(s, &end, 10);
+        if (end == s || v < 1 || v > 1000000 || n == 16) return -1;
+        its[n++] = (int)v;
+        if (*end == ',') end++;
+        else if (*end) return -1;
+        s = end;
+    }
+    return n ? n : -1;
+}
+
 int main(int argc, char **argv)
 {
-    if (argc < 2 || (strcmp(argv[1], "sweep") != 0 && strcmp(argv[1], "converge") != 0)) {
+    if (argc < 2 || !is_mode(argv[1])) {
         if (argc >= 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
-            printf("Usage: cfpo-bench sweep|converge -n N [-t THREADS] [-k SWEEPS] [-s SEED]\n");
+            printf("Usage: cfpo-bench sweep|converge -n N [-t THREADS] [-k SWEEPS] [-s SEED]\n"
+                   "       cfpo-bench capture -n N -i IT[,IT...] -o FILE [-s SEED]\n"
+                   "       cfpo-bench replay -o FILE [-k ROUNDS] [-p plain|avx2]\n");
             return 0;
         }
-        cli_usage_error(prog, "first argument must be 'sweep' or 'converge'");
+        cli_usage_error(prog, "first argument must be 'sweep', 'converge', 'capture' or 'replay'");
     }
     int64_t n = 65536, v;
-    int threads = omp_get_num_procs(), k = 5;
+    int threads = omp_get_num_procs(), k = 5, its[16], nits = 0;
     uint64_t seed = 1;
+    const char *file = NULL, *only = NULL;
     int ch;
     optind = 2;
     opterr = 0;
-    while ((ch = getopt(argc, argv, ":n:t:k:s:")) != -1) {
+    while ((ch = getopt(argc, argv, ":n:t:k:s:i:o:p:")) != -1) {
         switch (ch) {
         case 'n':
             if (cli_parse_i64(optarg, 11, INT64_MAX, &v) != 0) cli_usage_error(prog, "-n: bad value '%s'", optarg);
@@ -148,8 +180,25 @@ int main(int argc, char **argv)
         case 's':
             if (cli_parse_u64(optarg, &seed) != 0) cli_usage_error(prog, "-s: bad value '%s'", optarg);
             break;
+        case 'i':
+            if ((nits = parse_its(optarg, its)) < 0) cli_usage_error(prog, "-i: bad iteration list '%s'", optarg);
+            break;
+        case 'o': file = optarg; break;
+        case 'p':
+            if (strcmp(optarg, "plain") != 0 && strcmp(optarg, "avx2") != 0)
+                cli_usage_error(prog, "-p: bad solver '%s' (plain or avx2)", optarg);
+            only = optarg;
+            break;
         default: cli_usage_error(prog, "unknown or incomplete option '%s'", argv[optind - 1]);
         }
+    }
+    if (strcmp(argv[1], "capture") == 0) {
+        if (!file || !nits) cli_usage_error(prog, "capture needs -i ITERATIONS and -o FILE");
+        return bench_capture(prog, n, seed, its, nits, file);
+    }
+    if (strcmp(argv[1], "replay") == 0) {
+        if (!file) cli_usage_error(prog, "replay needs -o FILE");
+        return bench_replay(prog, file, only, k);
     }
     return strcmp(argv[1], "sweep") == 0 ? sweep(n, threads, k, seed) : converge(n, threads, seed);
 }

@@ -33,6 +33,7 @@
 #include "rng.h"
 
 #define ARRIVE_BIT (1u << 9) /* mask: the cell receives points from other ranks */
+#define MOVED_BIT (1u << 10) /* mask, inside eng_relocate only: the cell's content changes */
 #define NEED_BIT (1u << 15)  /* mask: the cell must be solved (its block changed) */
 #define ARRIVAL_CODE (1ull << 63)
 #define CENTRE_BIT (1u << 4)

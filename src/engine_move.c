@@ -150,27 +150,66 @@ static int fill_cell(cfpo_engine *E, int64_t c, int a_, int b_)
     return (int)(wpos - lo);
 }
 
-/* Ids and displacements follow the sources recorded in tid; the new
- * displacements go into the old positions' buffer, free by now. Then the
- * spare buffers become the live ones. */
-static void follow_sources(cfpo_engine *E)
+/* The next run of own cells in [c, c1) that keep their content (no
+ * MOVED_BIT): returns its end (c itself when cell c changed). */
+static int64_t unchanged_run(const cfpo_engine *E, int64_t c, int64_t c1)
 {
-    const uint32_t total = E->start2[E->cells];
-    float *ndq = (float *)E->px;
-#pragma omp parallel for schedule(static) num_threads(E->nthreads)
-    for (uint32_t j = 0; j < total; j++) {
-        const uint64_t code = E->tid[j];
-        if (code & ARRIVAL_CODE) {
-            const mig_rec *r = &E->arr[code & ~ARRIVAL_CODE].r;
-            ndq[2 * j] = r->dq[0];
-            ndq[2 * j + 1] = r->dq[1];
-            E->tid[j] = r->id;
-        } else {
-            ndq[2 * j] = E->dq[2 * code];
-            ndq[2 * j + 1] = E->dq[2 * code + 1];
-            E->tid[j] = E->pid[code];
+    while (c < c1 && !(E->mask[c] & MOVED_BIT)) c++;
+    return c;
+}
+
+/* Cells [c0, c1) into the spare buffers: a changed cell by fill_cell
+ * (sources in tid), a run of unchanged ones by one copy of positions. */
+static void fill_cells(cfpo_engine *E, int64_t c0, int64_t c1, int a_, int b_)
+{
+    const uint32_t *st = E->start, *ns = E->start2;
+    for (int64_t c = c0; c < c1;) {
+        const int64_t e = unchanged_run(E, c, c1);
+        if (e == c) {
+            fill_cell(E, c++, a_, b_);
+            continue;
         }
+        memcpy(E->tx + ns[c], E->px + st[c], (size_t)(st[e] - st[c]) * sizeof(double));
+        memcpy(E->ty + ns[c], E->py + st[c], (size_t)(st[e] - st[c]) * sizeof(double));
+        c = e;
     }
+}
+
+/* Ids and displacements of cells [c0, c1) follow their sources: the ones
+ * recorded in tid for a changed cell, the old slots of a run of unchanged
+ * ones (copied at once). The new displacements go into ndq, the old
+ * positions' buffer, free by now. */
+static void follow_cells(cfpo_engine *E, int64_t c0, int64_t c1, float *ndq)
+{
+    const uint32_t *st = E->start, *ns = E->start2;
+    for (int64_t c = c0; c < c1;) {
+        const int64_t e = unchanged_run(E, c, c1);
+        if (e > c) {
+            memcpy(E->tid + ns[c], E->pid + st[c], (size_t)(st[e] - st[c]) * sizeof(uint64_t));
+            memcpy(ndq + 2 * (size_t)ns[c], E->dq + 2 * (size_t)st[c], 2 * (size_t)(st[e] - st[c]) * sizeof(float));
+            c = e;
+            continue;
+        }
+        for (uint32_t j = ns[c]; j < ns[c + 1]; j++) {
+            const uint64_t code = E->tid[j];
+            if (code & ARRIVAL_CODE) {
+                const mig_rec *r = &E->arr[code & ~ARRIVAL_CODE].r;
+                ndq[2 * j] = r->dq[0];
+                ndq[2 * j + 1] = r->dq[1];
+                E->tid[j] = r->id;
+            } else {
+                ndq[2 * j] = E->dq[2 * code];
+                ndq[2 * j + 1] = E->dq[2 * code + 1];
+                E->tid[j] = E->pid[code];
+            }
+        }
+        c++;
+    }
+}
+
+/* The spare buffers become the live ones. */
+static void swap_buffers(cfpo_engine *E)
+{
     double *oldx = E->px, *oldy = E->py;
     float *olddq = E->dq;
     E->px = E->tx;
@@ -183,27 +222,62 @@ static void follow_sources(cfpo_engine *E)
     E->nloc = E->start[E->cells];
 }
 
+/* Sets MOVED_BIT on the own cells whose content the moves of colour
+ * `colour` and the arrivals change: a cell of that colour a point left,
+ * the cells its mask sends points to, the cells with arrivals. Only the
+ * cells of the phase's colour carry move bits (the others were cleared
+ * after their own phase), so every other cell keeps its slice as it is. */
+static void flag_moved(cfpo_engine *E, int colour)
+{
+    const eng_colour C = eng_colour_of(E, colour);
+    for (int64_t t = 0; t < C.nxc * C.nyc; t++) {
+        int64_t lx, ly;
+        eng_colour_cell(&C, t, &lx, &ly);
+        const int64_t c = ly * E->w + lx;
+        const unsigned mk = E->mask[c] & 0x1ffu & ~CENTRE_BIT;
+        if (!mk) continue;
+        E->mask[c] |= MOVED_BIT;
+        for (int bit = 0; bit < 9; bit++) {
+            if (!(mk >> bit & 1u)) continue;
+            const int64_t e = locate(E, lx + bit % 3 - 1, ly + bit / 3 - 1);
+            if (e >= 0) E->mask[e] |= MOVED_BIT;
+        }
+    }
+    for (size_t a = 0; a < E->narr; a++) E->mask[E->arr[a].cell] |= MOVED_BIT;
+}
+
+/* The cells flagged by flag_moved are rebuilt (count_cell, fill_cell);
+ * runs of the others, most cells late in a run, keep their content and are
+ * copied whole: the same result as rebuilding every cell. Cells go to the
+ * threads in contiguous chunks. */
 int eng_relocate(cfpo_engine *E, int colour)
 {
     const int a_ = colour / E->G.period, b_ = colour % E->G.period;
     const int64_t cells = E->cells;
     uint32_t *ns = E->start2;
     if (eng_ensure_cap(E, (size_t)E->nloc + E->narr) != 0) return -1;
+    flag_moved(E, colour);
     const uint32_t *st = E->start;
     const uint16_t *mask = E->mask;
     const int64_t w = E->w;
-#pragma omp parallel for schedule(static) num_threads(E->nthreads)
-    for (int64_t c = 0; c < cells; c++) ns[c + 1] = count_cell(E, st, mask, w, c, a_, b_);
-    ns[0] = 0;
-    for (int64_t c = 0; c < cells; c++) ns[c + 1] += ns[c];
-    int maxcell = 0;
+    uint32_t maxcell = 0;
 #pragma omp parallel for schedule(static) reduction(max : maxcell) num_threads(E->nthreads)
     for (int64_t c = 0; c < cells; c++) {
-        const int m = fill_cell(E, c, a_, b_);
+        const uint32_t m = (mask[c] & MOVED_BIT) ? count_cell(E, st, mask, w, c, a_, b_) : st[c + 1] - st[c];
+        ns[c + 1] = m;
         if (m > maxcell) maxcell = m;
     }
-    follow_sources(E);
-    E->maxcell = maxcell;
+    ns[0] = 0;
+    for (int64_t c = 0; c < cells; c++) ns[c + 1] += ns[c];
+    const int64_t chunks = (int64_t)E->nthreads * 8, per = (cells + chunks - 1) / chunks;
+#pragma omp parallel for schedule(static) num_threads(E->nthreads)
+    for (int64_t k = 0; k < chunks; k++) fill_cells(E, k * per, per * (k + 1) < cells ? per * (k + 1) : cells, a_, b_);
+    float *ndq = (float *)E->px;
+#pragma omp parallel for schedule(static) num_threads(E->nthreads)
+    for (int64_t k = 0; k < chunks; k++) follow_cells(E, k * per, per * (k + 1) < cells ? per * (k + 1) : cells, ndq);
+    for (int64_t c = 0; c < cells; c++) E->mask[c] &= (uint16_t)~MOVED_BIT;
+    swap_buffers(E);
+    E->maxcell = (int)maxcell;
     return eng_ensure_scratch(E);
 }
 

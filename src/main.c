@@ -16,6 +16,7 @@
 #include "plan.h"
 #include "pointfile.h"
 #include "runfiles.h"
+#include "solver_simd.h"
 #include "stoprule.h"
 
 static const char *prog = "cfpo";
@@ -268,7 +269,7 @@ static void parse(int argc, char **argv, cmdline *c)
         if (sampler_option(c, ch, optarg) || run_option(c, ch, optarg)) continue;
         switch (ch) {
         case 'h': if (comm_rank() == 0) usage(); comm_finalize(); exit(0);
-        case 'V': if (comm_rank() == 0) printf("cfpo %s\n", CFPO_VERSION); comm_finalize(); exit(0);
+        case 'V': if (comm_rank() == 0) printf("cfpo %s (LocalCFPO: %s)\n", CFPO_VERSION, cfpo_solver_name()); comm_finalize(); exit(0);
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
         default: cli_bad_option(prog, longopts, argv[optind - 1]);
         }
@@ -397,6 +398,7 @@ int main(int argc, char **argv)
 {
     comm_init(&argc, &argv);
     cli_set_exit(comm_rank() != 0, comm_finalize);
+    if (!cfpo_solver_name()) cli_usage_error(prog, "CFPO_SOLVER: bad value '%s' (plain or auto)", getenv("CFPO_SOLVER"));
     cmdline c = {0};
     parse(argc, argv, &c);
     settle_options(&c);

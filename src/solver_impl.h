@@ -64,6 +64,47 @@ CFPO_HD static inline int cfpo_order_by_hint_hd(const double *yx, const double *
     return k;
 }
 
+/* The farthest point of S from (ax, ay) is a corner: its squared
+ * distance bounds every point of y_i's cell. */
+CFPO_HD static inline double cfpo_corner_far2_hd(const double corner[4][2], double ax, double ay)
+{
+    double ub = 0;
+    for (int c = 0; c < 4; c++) {
+        double dx = corner[c][0] - ax, dy = corner[c][1] - ay;
+        double d2 = dx * dx + dy * dy;
+        if (d2 > ub) ub = d2;
+    }
+    return ub;
+}
+
+/* The bisector of y_i = (ax, ay) and (bx, by): normal n = y_j - y_i,
+ * midpoint m. 0 when y_j is 2 sqrt(far2) or more away: then it cannot cut
+ * a polygon within sqrt(far2) of y_i. */
+CFPO_HD static inline int cfpo_bisector_hd(double bx, double by, double ax, double ay, double far2, double *nx,
+                                           double *ny, double *mx, double *my)
+{
+    *nx = bx - ax;
+    *ny = by - ay;
+    if (*nx * *nx + *ny * *ny >= 4 * far2) return 0;
+    *mx = 0.5 * (bx + ax);
+    *my = 0.5 * (by + ay);
+    return 1;
+}
+
+/* The answer (bx, by) into S (clip rounding can leave a vertex a hair
+ * outside), stored in *cx, *cy; returns its value from Y. */
+CFPO_HD static inline double cfpo_solve_finish_hd(double bx, double by, cfpo_square S, const double *yx,
+                                                  const double *yy, int m, int skip, double *cx, double *cy)
+{
+    if (bx < S.x0) bx = S.x0;
+    if (bx > S.x1) bx = S.x1;
+    if (by < S.y0) by = S.y0;
+    if (by > S.y1) by = S.y1;
+    *cx = bx;
+    *cy = by;
+    return cfpo_min_dist2_hd(bx, by, yx, yy, m, skip);
+}
+
 CFPO_HD static inline double cfpo_local_solve_hd(const double *yx, const double *yy, int m, int skip,
                                                 cfpo_square S, double hx, double hy, double floor2,
                                                 double *cx, double *cy, double *scratch)
@@ -84,13 +125,7 @@ CFPO_HD static inline double cfpo_local_solve_hd(const double *yx, const double 
 
     for (int i = 0; i < k; i++) {
         const double ax = px[i], ay = py[i];
-        /* The farthest point of S from y_i is a corner: an upper bound. */
-        double ub = 0;
-        for (int c = 0; c < 4; c++) {
-            double dx = corner[c][0] - ax, dy = corner[c][1] - ay;
-            double d2 = dx * dx + dy * dy;
-            if (d2 > ub) ub = d2;
-        }
+        const double ub = cfpo_corner_far2_hd(corner, ax, ay);
         if (ub <= best) continue;
 
         double *poly = bufa, *next = bufb;
@@ -103,9 +138,8 @@ CFPO_HD static inline double cfpo_local_solve_hd(const double *yx, const double 
         double far2 = ub;
         for (int j = 0; j < k && alive; j++) {
             if (j == i) continue;
-            const double nx = px[j] - ax, ny = py[j] - ay;
-            if (nx * nx + ny * ny >= 4 * far2) continue;
-            const double mx = 0.5 * (px[j] + ax), my = 0.5 * (py[j] + ay);
+            double nx, ny, mx, my;
+            if (!cfpo_bisector_hd(px[j], py[j], ax, ay, far2, &nx, &ny, &mx, &my)) continue;
             /* Signed side of each vertex: <= 0 keeps it (closer to y_i). */
             double smax = -INFINITY, smin = INFINITY;
             for (int v = 0; v < nv; v++) {
@@ -157,14 +191,7 @@ CFPO_HD static inline double cfpo_local_solve_hd(const double *yx, const double 
         }
     }
     if (!found) return -1.0;
-    /* Clip rounding can leave a vertex a hair outside S: clamp. */
-    if (bx < S.x0) bx = S.x0;
-    if (bx > S.x1) bx = S.x1;
-    if (by < S.y0) by = S.y0;
-    if (by > S.y1) by = S.y1;
-    *cx = bx;
-    *cy = by;
-    return cfpo_min_dist2_hd(bx, by, yx, yy, m, skip);
+    return cfpo_solve_finish_hd(bx, by, S, yx, yy, m, skip, cx, cy);
 }
 
 #endif

@@ -157,6 +157,20 @@ for t in 1 2 3 4; do "$CFPO" -n 3000 --seed 9 -t $t -q -o d$t.bin >/dev/null || 
 "$CFPO" -n 3000 --seed 9 -t 2 --no-skip -q -o dn.bin >/dev/null
 cmp -s d1.bin d2.bin && cmp -s d1.bin d3.bin && cmp -s d1.bin d4.bin && ok || bad "thread counts give different bytes"
 cmp -s d1.bin dn.bin && ok || bad "--no-skip gives different bytes"
+# --- the AVX2 solver (chosen where the CPU has it) and the plain one
+# (CFPO_SOLVER=plain) give the same bytes, every variant, 1 and 2 threads
+if [ "$(uname -m)" = x86_64 ] && grep -qw avx2 /proc/cpuinfo; then
+  "$CFPO" --version | grep -q "(LocalCFPO: avx2)" && ok || bad "AVX2 CPU, but --version says: $("$CFPO" --version)"
+fi
+CFPO_SOLVER=plain "$CFPO" --version | grep -q "(LocalCFPO: plain)" && ok || bad "CFPO_SOLVER=plain not taken: $(CFPO_SOLVER=plain "$CFPO" --version)"
+for v in adaptive paper simplified; do
+  for t in 1 2; do
+    "$CFPO" -n 3000 --seed 9 --variant $v -t $t -q -o r$v$t.bin >/dev/null
+    CFPO_SOLVER=plain "$CFPO" -n 3000 --seed 9 --variant $v -t $t -q -o p$v$t.bin >/dev/null
+    cmp -s r$v$t.bin p$v$t.bin && ok || bad "$v, $t threads: the plain solver gives other bytes"
+  done
+done
+CFPO_SOLVER=fast expect 2 "CFPO_SOLVER: bad value 'fast'" -n 100 -o x.npy
 "$CFPO" -n 3000 --seed 10 -q -o e.bin >/dev/null
 cmp -s d1.bin e.bin && bad "seeds 9 and 10 give the same bytes" || ok
 "$CFPO" -n 3000 --seed 9 --variant simplified -q -o sv.bin >/dev/null && ! cmp -s d1.bin sv.bin && ok || bad "simplified variant"

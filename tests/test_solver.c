@@ -5,9 +5,16 @@
  * S found by brute force (a dense grid, then hill climbing with shrinking
  * steps from the best grid points) may beat it. 10,000+ configurations,
  * degenerate ones included. Also checks the pruned mode (floor2) against
- * the plain mode. */
+ * the plain mode. Then the AVX2 solver (where the CPU has it) against the
+ * plain one, bit for bit (value and point), on all of these and on
+ * 200,000 more: random, lattices with jitter down to 1e-15, many-sided
+ * cells (polygons past the 8 vertices of the branch-free cut), points
+ * on S's corners and edges, far and huge coordinates, every floor mode. */
 #include "geom.h"
+#include "solver_simd.h"
 #include "testutil.h"
+
+#include <string.h>
 
 #include <stdint.h>
 #include <stdio.h>
@@ -66,6 +73,37 @@ static double brute(const double *yx, const double *yy, int m, cfpo_square S, do
 
 enum { MAXM = 40 };
 
+static int avx2_ok, same_calls;
+
+/* The AVX2 and the plain solver on the same call: the same bits? */
+static int same_bits(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
+                     double floor2, const char *kind)
+{
+    if (!avx2_ok) return 0;
+    double sa[10 * (MAXM + 8)], sb[10 * (MAXM + 8)];
+    double ax, ay, bx, by;
+    double va = cfpo_local_solve_plain(yx, yy, m, skip, S, hx, hy, floor2, &ax, &ay, sa);
+    double vb = cfpo_local_solve_avx2(yx, yy, m, skip, S, hx, hy, floor2, &bx, &by, sb);
+    same_calls++;
+    if (memcmp(&va, &vb, 8) || memcmp(&ax, &bx, 8) || memcmp(&ay, &by, 8)) {
+        fprintf(stderr, "%s: AVX2 solver %.17g at (%.17g, %.17g), plain %.17g at (%.17g, %.17g), m=%d skip=%d floor2=%.17g\n",
+                kind, vb, bx, by, va, ax, ay, m, skip, floor2);
+        return 1;
+    }
+    return 0;
+}
+
+/* Every floor mode and a skipped index: the same bits? */
+static int same_all(const double *yx, const double *yy, int m, cfpo_square S, double hx, double hy, double v,
+                    const char *kind)
+{
+    const double floors[5] = {-1.0, 0.0, 0.5 * v, v, v * (1 + 1e-9)};
+    int bad = 0;
+    for (int f = 0; f < 5; f++) bad |= same_bits(yx, yy, m, -1, S, hx, hy, floors[f], kind);
+    if (m > 1) bad |= same_bits(yx, yy, m, m / 2, S, hx, hy, -1.0, kind);
+    return bad;
+}
+
 static int check(const double *yx, const double *yy, int m, cfpo_square S, double hx, double hy,
                  const char *kind, double *worst_gap)
 {
@@ -104,6 +142,78 @@ static int check(const double *yx, const double *yy, int m, cfpo_square S, doubl
         fprintf(stderr, "%s: pruned solve above an unbeatable floor: %.17g\n", kind, vq);
         bad = 1;
     }
+    bad |= same_all(yx, yy, m, S, hx, hy, v, kind);
+    return bad;
+}
+
+/* More configurations for the AVX2 comparison alone. Returns failures. */
+static int avx2_more(int count)
+{
+    double yx[MAXM], yy[MAXM];
+    int bad = 0;
+    for (int it = 0; it < count; it++) {
+        const double mg = (it % 3 == 0) ? 0.04 : (it % 3 == 1 ? 0.0 : 0.4 * urand());
+        cfpo_square S = {-mg, -mg, 1 + mg, 1 + mg};
+        int m = 2 + (int)(urand() * (MAXM - 2));
+        const char *name = "avx2-random";
+        switch (it % 6) {
+        case 0: /* uniform in the 3x3 block, any count up to MAXM */
+            for (int j = 0; j < m; j++) { yx[j] = -1 + 3 * urand(); yy[j] = -1 + 3 * urand(); }
+            break;
+        case 1: { /* a lattice jittered by 10^-15 .. 10^-3: near-ties */
+            name = "avx2-lattice";
+            const double jit = pow(10.0, -15 + 12 * urand());
+            m = 0;
+            for (int a = -1; a <= 2; a++)
+                for (int b = -1; b <= 2; b++) {
+                    yx[m] = a * 0.5 + jit * (urand() - 0.5);
+                    yy[m] = b * 0.5 + jit * (urand() - 0.5);
+                    m++;
+                }
+            break;
+        }
+        case 2: { /* a point with a ring around it: a cell of up to MAXM - 1 sides */
+            name = "avx2-many-sided";
+            const double ox = 0.5 + 0.2 * (urand() - 0.5), oy = 0.5 + 0.2 * (urand() - 0.5);
+            const double r = 0.05 + 0.5 * urand();
+            yx[0] = ox;
+            yy[0] = oy;
+            for (int j = 1; j < m; j++) {
+                const double a = (it % 12 == 2) ? 6.283185307179586 * j / (m - 1) : 6.283185307179586 * urand();
+                yx[j] = ox + r * cos(a);
+                yy[j] = oy + r * sin(a);
+            }
+            break;
+        }
+        case 3: /* on S's corners and edges, and duplicated */
+            name = "avx2-boundary";
+            for (int j = 0; j < m; j++) {
+                const double c[3] = {S.x0, S.x1, S.x0 + (S.x1 - S.x0) * urand()};
+                yx[j] = c[(int)(urand() * 3)];
+                yy[j] = c[(int)(urand() * 3)];
+                if (j > 0 && urand() < 0.2) { yx[j] = yx[j - 1]; yy[j] = yy[j - 1]; }
+            }
+            break;
+        case 4: { /* the whole problem scaled: tiny and huge frames */
+            name = "avx2-scaled";
+            const double sc = pow(2.0, (int)(urand() * 120) - 60);
+            S = (cfpo_square){S.x0 * sc, S.y0 * sc, S.x1 * sc, S.y1 * sc};
+            for (int j = 0; j < m; j++) { yx[j] = (-1 + 3 * urand()) * sc; yy[j] = (-1 + 3 * urand()) * sc; }
+            break;
+        }
+        default: { /* far from the origin: a frame offset by up to 10^6 */
+            name = "avx2-offset";
+            const double o = pow(10.0, 6 * urand());
+            S = (cfpo_square){S.x0 + o, S.y0 - o, S.x1 + o, S.y1 - o};
+            for (int j = 0; j < m; j++) { yx[j] = o - 1 + 3 * urand(); yy[j] = -o - 1 + 3 * urand(); }
+            break;
+        }
+        }
+        const double hx = S.x0 + (S.x1 - S.x0) * urand(), hy = S.y0 + (S.y1 - S.y0) * urand();
+        double sc[10 * (MAXM + 8)], cx, cy;
+        const double v = cfpo_local_solve_plain(yx, yy, m, -1, S, hx, hy, -1.0, &cx, &cy, sc);
+        bad += same_all(yx, yy, m, S, hx, hy, v, name);
+    }
     return bad;
 }
 
@@ -111,6 +221,7 @@ int main(void)
 {
     double yx[MAXM], yy[MAXM];
     int failures = 0, total = 0;
+    avx2_ok = cfpo_solver_avx2_usable();
     double worst_gap = 0;
     const double L = 1.0;
     for (int it = 0; it < 12000; it++) {
@@ -232,6 +343,13 @@ int main(void)
             failures++;
         }
     }
+    {
+        const int more = 200000, bad = avx2_more(more);
+        total += more;
+        failures += bad;
+    }
+    if (avx2_ok) printf("AVX2 solver vs plain solver: %d calls compared bit for bit\n", same_calls);
+    else printf("AVX2 solver vs plain solver: not compared (no AVX2 on this CPU or build)\n");
     printf("solver vs brute force: %d configurations, worst solver-minus-brute gap %.3g (relative to |S|^2)\n",
            total, worst_gap);
     return test_report(total - failures, failures);

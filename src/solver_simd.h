@@ -1,0 +1,44 @@
+/* solver_simd.h - layer 1, host only: the AVX2 LocalCFPO (solver_avx2.c)
+ * beside the plain one, for geom.c's choice and for the tests and the
+ * benchmark that compare them. Everyone else calls cfpo_local_solve.
+ * May include geom.h. */
+#ifndef CFPO_SOLVER_SIMD_H
+#define CFPO_SOLVER_SIMD_H
+
+#include "geom.h"
+
+/* The AVX2 code is compiled on x86-64 by GCC or Clang (function by
+ * function, with the target attribute, whatever -march says), and chosen
+ * at run time where the CPU has AVX2. */
+#if (defined(__x86_64__) || defined(_M_X64)) && (defined(__GNUC__) || defined(__clang__)) && !defined(CFPO_NO_AVX2)
+#define CFPO_SOLVER_AVX2 1
+#else
+#define CFPO_SOLVER_AVX2 0
+#endif
+
+/* 1 where cfpo_local_solve_avx2 runs its AVX2 code (else it is the plain
+ * solver under another name). */
+int cfpo_solver_avx2_usable(void);
+
+/* The solver cfpo_local_solve runs, "avx2" or "plain", chosen once: AVX2
+ * where the CPU has it, unless the environment says CFPO_SOLVER=plain
+ * (the tests compare the two routes on whole runs). NULL when
+ * CFPO_SOLVER holds anything but "plain" or "auto" (cfpo reports it; the
+ * choice is then as if unset). */
+const char *cfpo_solver_name(void);
+
+/* The plain solver (solver_impl.h), whatever the CPU. */
+double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                              double hy, double floor2, double *cx, double *cy, double *scratch);
+
+/* The AVX2 solver: the same arguments and the same bits as the plain one.
+ * Call only where cfpo_solver_avx2_usable() says 1. */
+double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                             double hy, double floor2, double *cx, double *cy, double *scratch);
+
+/* Where not NULL, called by cfpo_local_solve with every call's inputs
+ * before it solves (cfpo-bench capture; set only while one thread runs). */
+extern void (*cfpo_solve_observer)(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                                   double hy, double floor2);
+
+#endif
