@@ -123,6 +123,7 @@ PyObject *core_run(PyObject *self, PyObject *args)
     c.t0 = cli_now();
     c.ts = PyEval_SaveThread();
     cfpo_engine *E = cfpo_engine_create_ex(n, &o, &cfg, err, sizeof err);
+    const int created = E != NULL;
     if (E) rc = cfpo_engine_run(E, &res, err, sizeof err);
     seconds = cli_now() - c.t0;
     PyEval_RestoreThread(c.ts);
@@ -140,7 +141,7 @@ PyObject *core_run(PyObject *self, PyObject *args)
     cfpo_engine_free(E);
     if (c.failed || rc != 0 || !points) {
         free(c.trace.v);
-        if (!c.failed && rc != 0) core_error(E ? PyExc_RuntimeError : PyExc_ValueError, err);
+        if (!c.failed && rc != 0) core_error(created ? PyExc_RuntimeError : PyExc_ValueError, err);
         return NULL;
     }
     if (want_trace) {

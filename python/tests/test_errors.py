@@ -55,7 +55,7 @@ def test_bad_arguments(call, exc, msg):
     (np.zeros((4, 2), dtype=complex), TypeError, "np.asarray(points, dtype=np.float64)"),
     (np.zeros((4, 2), dtype=bool), TypeError, "is not a real number type"),
     (np.array([["a", "b"]]), TypeError, "is not a real number type"),
-    ([[0.1, 0.2], None], TypeError, "is not a real number type"),
+    (np.array([[0.1, None]], dtype=object), TypeError, "is not a real number type"),
     ([[0.1, 0.2], [0.3]], TypeError, "cannot be read as an array of numbers"),
 ])
 def test_bad_point_arrays(points, exc, msg):
