@@ -22,7 +22,7 @@ fi
 if ! "$V/bin/python" -c "import scikit_build_core, numpy, pytest" 2>/dev/null; then
   log "installing the build tools and pytest from PyPI"
   "$V/bin/python" -m pip install -q --upgrade pip
-  "$V/bin/python" -m pip install -q "scikit-build-core>=0.10" "numpy>=1.23" pytest
+  "$V/bin/python" -m pip install -q "scikit-build-core>=0.11" "numpy>=1.23" pytest
 fi
 log "building and installing cfpo (build folder $B/python)"
 export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2}

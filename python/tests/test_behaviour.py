@@ -144,7 +144,7 @@ def rss_kb():
 
 def test_no_leak_over_1000_calls():
     def calls():
-        p = cfpo.sample(64, max_iter=2)
+        p = cfpo.sample(64, max_iter=2, threads=1)
         cfpo.analysis.deltas(p)
         cfpo.baselines.dart(64)
         cfpo.load(path)
@@ -179,6 +179,24 @@ def test_threads_none_follows_omp_num_threads(monkeypatch):
     assert _args.threads(None) == 1
     monkeypatch.delenv("OMP_NUM_THREADS")
     assert _args.threads(None) == 0  # all cores, as the command
+    # The run uses that many threads: OMP_NUM_THREADS set in the process
+    # after the start (OpenMP itself read 1 at start-up) still counts.
+    script = textwrap.dedent("""
+        import os, cfpo
+        tasks = []
+        def seen(s):
+            tasks.append(len(os.listdir("/proc/self/task")))
+            return False
+        cfpo.sample(2000, max_iter=3, progress=seen)
+        os.environ["OMP_NUM_THREADS"] = "3"
+        before = len(tasks)
+        cfpo.sample(2000, max_iter=3, progress=seen)
+        print(max(tasks[:before]), max(tasks[before:]))
+    """)
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    out = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True, text=True, check=True)
+    one, three = map(int, out.stdout.split())
+    assert (one, three) == (1, 3), out.stdout  # the interpreter's thread, then two OpenMP workers beside it
     # Any thread count gives the same points.
     monkeypatch.setenv("OMP_NUM_THREADS", "1")
     a = cfpo.sample(300, max_iter=10)

@@ -132,17 +132,33 @@ def test_analysis_numbers_match_command(tmp_path, command):
     assert c.violation.argmax() == c.summary["fp_worst"]
 
 
-def test_spectrum_and_raps_files_match(tmp_path, command):
+def rows_of(path):
+    return [line.split() for line in path.read_text().splitlines() if line and not line.startswith("#")]
+
+
+def num(fmt, v):
+    return fmt % v if np.isfinite(v) else "NaN"
+
+
+def test_spectrum_raps_and_histogram_files_match(tmp_path, command):
+    """raps.txt, nn_hist.txt and spectrum.txt of cfpo-analyze, written from
+    Python's arrays with the command's formats: the same text."""
     pts = cfpo.baselines.dart(300, seed=2)
     stats_json(command, tmp_path, pts, "-K", 20)
     s = cfpo.analysis.spectrum(pts, 20)
-    raps = [line.split() for line in (tmp_path / "out" / "raps.txt").read_text().splitlines()
-            if line and not line.startswith("#")]
-    assert len(raps) > 10
+    raps = rows_of(tmp_path / "out" / "raps.txt")
+    assert [int(r[0]) for r in raps] == list(range(1, 21))
     for row in raps:
-        ring = int(row[0])
-        assert float(row[2]) == pytest.approx(s.raps[ring], rel=1e-9, abs=1e-12)
-        assert int(row[4]) == s.ring_count[ring]
+        i = int(row[0])
+        assert row[2:] == [num("%.12g", s.raps[i]), num("%.9g", s.anisotropy_db[i]), str(s.ring_count[i])]
+    d = cfpo.analysis.deltas(pts)
+    hist = rows_of(tmp_path / "out" / "nn_hist.txt")
+    assert [int(r[2]) for r in hist] == d.hist.tolist() and d.hist.sum() == 300
+    spec = rows_of(tmp_path / "out" / "spectrum.txt")
+    assert [int(v) for v in spec[0][1:]] == list(range(-20, 21))
+    P = np.array([[float(v) for v in row[1:]] for row in spec[1:]])
+    assert P.shape == s.power.shape == (41, 41)
+    assert np.allclose(P, s.power, rtol=6e-9, atol=0)  # the file holds 9 significant digits
     # The exact sum agrees with the NUFFT as the command's --check measures.
     e = cfpo.analysis.spectrum(pts, 20, exact=True)
     assert np.max(np.abs(e.power - s.power) / np.maximum(e.power, 1)) < 1e-6
