@@ -9,7 +9,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_BUILD   ?= build-fuzz
 CMAKE_ARGS = -DCMAKE_BUILD_TYPE=$(TYPE) -DCFPO_NATIVE=$(NATIVE)
 
-.PHONY: all build test test-sanitize fuzz bench bench-core replot help clean deps
+.PHONY: all build test test-sanitize fuzz bench bench-core replot help clean deps python
 
 all: build
 
@@ -24,6 +24,11 @@ build: deps $(BUILD)/CMakeCache.txt
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The Python package in a virtual environment $(BUILD)/venv (pip install
+# of this checkout through scikit-build-core; see README.md, "Python").
+python: deps
+	scripts/python-venv.sh $(BUILD)
 
 # Unit tests under AddressSanitizer + UndefinedBehaviorSanitizer.
 test-sanitize: deps
@@ -56,6 +61,7 @@ help:
 	@echo "  make test          build, then run every CTest test"
 	@echo "  make test-sanitize unit tests in an ASan+UBSan build (build-asan/)"
 	@echo "  make fuzz          libFuzzer harnesses, FUZZ_SECONDS each (default 60), in $(FUZZ_BUILD)/"
+	@echo "  make python        the Python package (import cfpo) in a virtual environment $(BUILD)/venv"
 	@echo "  make bench         method comparison and figures (PROFILE=smoke|default|paper); results/<date>-<host>/"
 	@echo "  make replot        redraw figures and summary.md of RESULTS=results/... (default: newest)"
 	@echo "  make bench-core    core CFPO benchmark, sweeps and convergence (PROFILE=smoke|default)"

@@ -222,9 +222,12 @@ static int parallel_over(const ctx *C, size_t count, item_fn fn, void *out)
 }
 
 static void summarise(const point_result *pr, size_t n, double tol, double Dn, an_certificate *c,
-                      double *viol, double *target)
+                      double *viol, double *target, unsigned char *pass)
 {
     for (size_t i = 0; i < n && viol; i++) viol[i] = pr[i].fp / Dn;
+    for (size_t i = 0; i < n && pass; i++)
+        pass[i] = (unsigned char)((pr[i].fp <= tol ? AN_PASS_FP : 0) | (pr[i].p1 <= tol ? AN_PASS_P1 : 0) |
+                                  (pr[i].p2 <= tol ? AN_PASS_P2 : 0));
     for (size_t i = 0; i < n && target; i++) {
         target[2 * i] = pr[i].tx;
         target[2 * i + 1] = pr[i].ty;
@@ -288,6 +291,12 @@ static int covering(ctx *C, size_t *order, double *ub)
 int an_certify(const double *xy, size_t n, double tol_rel, an_certificate *c, double *viol,
                double *target, char *err, size_t errlen)
 {
+    return an_certify_points(xy, n, tol_rel, c, viol, target, NULL, err, errlen);
+}
+
+int an_certify_points(const double *xy, size_t n, double tol_rel, an_certificate *c, double *viol,
+                      double *target, unsigned char *pass, char *err, size_t errlen)
+{
     memset(c, 0, sizeof *c);
     c->n = n;
     c->tol_rel = tol_rel;
@@ -324,7 +333,7 @@ int an_certify(const double *xy, size_t n, double tol_rel, an_certificate *c, do
     if (status < 0) goto done;
     c->delta = dmin;
     c->covering = C.rho / C.Dn;
-    summarise(pr, n, tol_rel * C.Dn, C.Dn, c, viol, target);
+    summarise(pr, n, tol_rel * C.Dn, C.Dn, c, viol, target, pass);
 done:
     if (status == -1) snprintf(err, errlen, "certificate: out of memory");
     if (status == -2) snprintf(err, errlen, "certificate: the local solver found no candidate");

@@ -47,6 +47,13 @@ typedef struct {
 int an_certify(const double *xy, size_t n, double tol_rel, an_certificate *c, double *viol,
                double *target, char *err, size_t errlen);
 
+/* an_certify with each point's verdict too: pass[i] (n bytes, may be
+ * NULL) holds AN_PASS_FP when point i passes the farthest point test,
+ * AN_PASS_P1 / AN_PASS_P2 when it satisfies property 1 / 2. */
+enum { AN_PASS_FP = 1, AN_PASS_P1 = 2, AN_PASS_P2 = 4 };
+int an_certify_points(const double *xy, size_t n, double tol_rel, an_certificate *c, double *viol,
+                      double *target, unsigned char *pass, char *err, size_t errlen);
+
 /* Adds b into a (sums counts, keeps the largest violations; fpd = both). */
 void an_certificate_merge(an_certificate *a, const an_certificate *b);
 

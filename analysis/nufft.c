@@ -16,11 +16,16 @@
  * point belongs to the strip holding its first row and writes only into
  * that strip and the next one. Even strips run concurrently, then odd ones;
  * inside a strip points go in index order. Every grid value is therefore
- * summed in one fixed order, whatever the number of threads. */
+ * summed in one fixed order, whatever the number of threads.
+ *
+ * FFTW's planner is not thread-safe (only fftw_execute is): planning and
+ * destroying a plan hold one process-wide lock, so several threads of a
+ * program (the Python package's callers) may compute spectra at once. */
 #include "power.h"
 
 #include <fftw3.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -216,7 +221,10 @@ int an_power_nufft(const double *xy, size_t n, int K, int width, double *P, an_n
         return -1;
     }
     double t1 = cli_now();
+    static pthread_mutex_t planner = PTHREAD_MUTEX_INITIALIZER;
+    pthread_mutex_lock(&planner);
     fftw_plan plan = fftw_plan_dft_r2c_2d(M, M, grid, (fftw_complex *)grid, FFTW_ESTIMATE);
+    pthread_mutex_unlock(&planner);
     if (!plan) {
         fftw_free(grid);
         free(phihat);
@@ -224,7 +232,9 @@ int an_power_nufft(const double *xy, size_t n, int K, int width, double *P, an_n
         return -1;
     }
     fftw_execute(plan);
+    pthread_mutex_lock(&planner);
     fftw_destroy_plan(plan);
+    pthread_mutex_unlock(&planner);
     double t2 = cli_now();
     kernel_ft(&k, K, phihat);
     deconvolve(&k, K, phihat, (const fftw_complex *)grid, n, P);

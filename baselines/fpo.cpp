@@ -339,10 +339,9 @@ double fpo_scale(const fpo_engine *E) { return E->G.L; }
 
 void fpo_deltas(fpo_engine *E, double *dmin, double *davg)
 {
-    if (cfpo_nn_stats(E->xy.data(), (size_t)E->n, nullptr, dmin, davg) != 0) {
-        fprintf(stderr, "fpo: out of memory for statistics\n");
-        std::exit(1);
-    }
+    /* Out of memory: NaN statistics, as ccvt, ccdt and bnot (no exit: the
+     * engine also runs inside the Python package). */
+    if (cfpo_nn_stats(E->xy.data(), (size_t)E->n, nullptr, dmin, davg) != 0) *dmin = *davg = NAN;
 }
 
 void fpo_iterate(fpo_engine *E, cfpo_iter_stats *s)

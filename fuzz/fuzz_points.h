@@ -1,4 +1,4 @@
-/* fuzz_points.h - the body shared by the three point-file harnesses: the
+/* fuzz_points.h - the body shared by the four point-file harnesses: the
  * reader must return 0 with n >= 1 points all in [0,1)^2, or -1 with one
  * line naming the file; anything else (a crash, a sanitizer report, a
  * message without the name, a point outside) aborts. */

@@ -16,6 +16,7 @@ PKGS=(
   libgmp-dev libmpfr-dev  # CGAL's exact number types
   gnuplot-nox       # figures
   clang libclang-rt-dev  # libFuzzer and its sanitizers (make fuzz)
+  python3-dev python3-venv  # the Python package (make python; its tests in make test)
 )
 
 check_only=0

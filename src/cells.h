@@ -25,6 +25,7 @@
 #define CFPO_CELLS_H
 
 #include <math.h>
+#include <setjmp.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -123,6 +124,10 @@ struct cfpo_engine {
     /* timing and traffic */
     double t_compute, t_migrate, t_halo, b_halo, b_migrate;
     int64_t phases, chk_mig, chk_halo;
+    /* Set by cfpo_engine_run on one rank: where eng_fatal returns to, so a
+     * failure mid-run (out of memory) comes back as an error, never exit(). */
+    jmp_buf *fail;
+    char fail_msg[160];
 };
 
 
@@ -254,6 +259,9 @@ void eng_sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi);
 int eng_build_neighbours(cfpo_engine *E);
 int eng_refresh_halo(cfpo_engine *E);
 void eng_check_fail(const cfpo_engine *E, const char *what);
+/* Out of memory while `what`, mid-run: back to cfpo_engine_run (one rank;
+ * it returns -1 with the message) or, on several ranks, the job ends. */
+void eng_fatal(cfpo_engine *E, const char *what);
 void eng_check_migration(cfpo_engine *E);
 void eng_check_halo(cfpo_engine *E);
 int eng_ensure_scratch(cfpo_engine *E);

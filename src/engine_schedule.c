@@ -50,8 +50,12 @@ static void sync_device(cfpo_engine *E)
     if (E->be->sync_device) E->be->sync_device(E);
 }
 
-static void die(const cfpo_engine *E, const char *what)
+void eng_fatal(cfpo_engine *E, const char *what)
 {
+    if (E->fail) {
+        snprintf(E->fail_msg, sizeof E->fail_msg, "out of memory while %s", what);
+        longjmp(*E->fail, 1);
+    }
     fprintf(stderr, "cfpo: rank %d: out of memory while %s\n", E->rank, what);
     comm_abort(1);
 }
@@ -71,13 +75,13 @@ static void settle(cfpo_engine *E, const eng_colour *C, int64_t moves)
         for (int k = 0; k < E->nnb; k++) E->nb[k].nout = 0;
     if (rc == 0 && eng_exchange_migrants(E) != 0) rc = -1;
     if (rc == 0 && (crossed || E->narr) && E->be->relocate(E, C->colour) != 0) rc = -1;
-    if (rc != 0) die(E, "moving points between cells");
+    if (rc != 0) eng_fatal(E, "moving points between cells");
     if (moves) E->be->unmark(E, C);
     for (size_t i = 0; i < E->narr; i++) E->mask[E->arr[i].cell] &= (uint16_t)~ARRIVE_BIT;
     E->narr = 0;
     E->t_migrate += now() - t1;
     if (E->cfg.check && !E->shifting) eng_check_migration(E);
-    if (eng_refresh_halo(E) != 0) die(E, "refreshing the halo");
+    if (eng_refresh_halo(E) != 0) eng_fatal(E, "refreshing the halo");
     if (E->nnb) sync_device(E);
     if (E->cfg.check && !E->shifting) eng_check_halo(E);
 }
@@ -195,7 +199,7 @@ static int decide(const cfpo_engine *E, const cfpo_iter_stats *s, double elapsed
     return why;
 }
 
-int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen)
+static int run_loop(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen)
 {
     const double t0 = now();
     cfpo_iter_stats s = {0};
@@ -221,5 +225,23 @@ int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen)
     E->iter0 = it;
     *res = (cfpo_result){.iterations = it, .converged = s.converged, .stop = why, .seconds = now() - t0,
                          .delta_min = s.delta_min, .delta_avg = s.delta_avg, .cells_per_side = E->G.g};
+    return rc;
+}
+
+/* One rank: a failure mid-run (eng_fatal) jumps back here and the run
+ * returns -1 with its message, so a library caller (the Python module)
+ * never sees exit(). Several ranks: every rank must stop, so it aborts. */
+int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen)
+{
+    if (E->nranks > 1) return run_loop(E, res, err, errlen);
+    jmp_buf back;
+    if (setjmp(back) != 0) {
+        E->fail = NULL;
+        snprintf(err, errlen, "%s", E->fail_msg);
+        return -1;
+    }
+    E->fail = &back;
+    const int rc = run_loop(E, res, err, errlen);
+    E->fail = NULL;
     return rc;
 }

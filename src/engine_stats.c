@@ -75,11 +75,7 @@ static double box_min(const cfpo_engine *E, const nn_query *q, int64_t B)
     return best;
 }
 
-static void stats_oom(const cfpo_engine *E)
-{
-    fprintf(stderr, "cfpo: rank %d: out of memory in statistics\n", E->rank);
-    comm_abort(1);
-}
+static void stats_oom(cfpo_engine *E) { eng_fatal(E, "computing statistics"); }
 
 /* Points whose nearest neighbour may lie outside their block. */
 typedef struct {

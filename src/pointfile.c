@@ -1,4 +1,4 @@
-/* pointfile.c - see pointfile.h. Text numbers are written with 17
+/* pointfile.c - see pointfile.h. Text and CSV numbers are written with 17
  * significant digits, so every format round-trips doubles exactly. */
 #define _POSIX_C_SOURCE 200809L
 #include "pointfile.h"
@@ -43,6 +43,7 @@ pf_format pf_format_of(const char *path)
     for (size_t i = 0; i < sizeof raw / sizeof *raw; i++)
         if (strcasecmp(e, raw[i]) == 0) return PF_RAW;
     if (strcasecmp(e, ".npy") == 0) return PF_NPY;
+    if (strcasecmp(e, ".csv") == 0) return PF_CSV;
     return PF_UNKNOWN;
 }
 
@@ -52,9 +53,16 @@ const char *pf_format_name(pf_format f)
     case PF_TEXT: return "text";
     case PF_NPY: return "npy";
     case PF_RAW: return "raw";
+    case PF_CSV: return "csv";
     default: return "unknown";
     }
 }
+
+int pf_format_is_text(pf_format f) { return f == PF_TEXT || f == PF_CSV; }
+
+/* The first line of a CSV point file. */
+#define CSV_HEADER "x,y"
+
 
 static int host_is_little_endian(void)
 {
@@ -126,7 +134,8 @@ pf_writer *pf_writer_open(const char *path, size_t n, char *err, size_t errlen)
     }
     w->fmt = fmt;
     w->n = n;
-    if (fmt == PF_NPY && write_npy_header(w->a.f, n) != 0) {
+    if ((fmt == PF_NPY && write_npy_header(w->a.f, n) != 0) ||
+        (fmt == PF_CSV && fputs(CSV_HEADER "\n", w->a.f) < 0)) {
         set_err(err, errlen, "%s: write failed: %s", path, strerror(errno));
         pf_writer_abort(w);
         return NULL;
@@ -141,9 +150,10 @@ int pf_writer_put(pf_writer *w, const double *xy, size_t count, char *err, size_
         return -1;
     }
     int ok = 1;
-    if (w->fmt == PF_TEXT) {
+    if (pf_format_is_text(w->fmt)) {
+        const char *line = w->fmt == PF_CSV ? "%.17g,%.17g\n" : "%.17g %.17g\n";
         for (size_t i = 0; i < count && ok; i++)
-            ok = fprintf(w->a.f, "%.17g %.17g\n", xy[2 * i], xy[2 * i + 1]) > 0;
+            ok = fprintf(w->a.f, line, xy[2 * i], xy[2 * i + 1]) > 0;
     } else if (host_is_little_endian()) {
         ok = fwrite(xy, sizeof(double), 2 * count, w->a.f) == 2 * count;
     } else {
@@ -257,13 +267,72 @@ static int read_all(const char *path, unsigned char **buf, size_t *len, char *er
     return 0;
 }
 
-static int parse_text(const char *path, unsigned char *buf, size_t len, double **out, size_t *nout,
+static int skip_blanks(char **p)
+{
+    while (**p == ' ' || **p == '\t' || **p == '\r') (*p)++;
+    return **p;
+}
+
+/* One point line: "x y" (text: blanks between, '#' starts a comment) or
+ * "x,y" (CSV: blanks allowed around the comma, no comments). 0 or -1. */
+static int parse_pair(char *p, int csv, double *x, double *y)
+{
+    char *e1, *e2;
+    *x = strtod(p, &e1);
+    if (e1 == p) return -1;
+    char *q = e1;
+    if (csv) {
+        if (skip_blanks(&q) != ',') return -1;
+        q++;
+        skip_blanks(&q);
+        if (*q == '\0') return -1;
+    }
+    *y = strtod(q, &e2);
+    if (e2 == q) return -1;
+    const int end = skip_blanks(&e2);
+    return end == '\0' || (!csv && end == '#') ? 0 : -1;
+}
+
+/* The CSV header: the first line not blank must be "x,y" (blanks around
+ * the names allowed). *pos moves past it. 0 or -1. */
+static int csv_header(const char *path, unsigned char *buf, size_t len, size_t *pos, size_t *line,
+                      char *err, size_t errlen)
+{
+    while (*pos < len) {
+        size_t end = *pos;
+        while (end < len && buf[end] != '\n') end++;
+        (*line)++;
+        const size_t span = end - *pos;
+        buf[end] = '\0';
+        char *p = (char *)buf + *pos;
+        *pos = end + 1;
+        if (memchr(p, '\0', span)) {
+            set_err(err, errlen, "%s: line %zu: binary data in a text file", path, *line);
+            return -1;
+        }
+        if (skip_blanks(&p) == '\0') continue;
+        static const char want[] = CSV_HEADER; /* its characters, blanks allowed between */
+        size_t k = 0;
+        while (want[k] && skip_blanks(&p) == want[k]) p++, k++;
+        if (!want[k] && skip_blanks(&p) == '\0') return 0;
+        set_err(err, errlen, "%s: line %zu: expected the CSV header \"" CSV_HEADER "\"", path, *line);
+        return -1;
+    }
+    set_err(err, errlen, "%s: contains no points (not even the CSV header \"" CSV_HEADER "\")", path);
+    return -1;
+}
+
+static int parse_text(const char *path, int csv, unsigned char *buf, size_t len, double **out, size_t *nout,
                       char *err, size_t errlen)
 {
     size_t cap = 1024, n = 0, line = 0;
     double *xy = malloc(cap * 2 * sizeof *xy);
     if (!xy) { set_err(err, errlen, "%s: out of memory", path); return -1; }
     size_t pos = 0;
+    if (csv && csv_header(path, buf, len, &pos, &line, err, errlen) != 0) {
+        free(xy);
+        return -1;
+    }
     while (pos < len) {
         size_t end = pos;
         while (end < len && buf[end] != '\n') end++;
@@ -276,15 +345,12 @@ static int parse_text(const char *path, unsigned char *buf, size_t len, double *
         }
         buf[end] = '\0'; /* read_all leaves a spare byte after the data */
         char *p = (char *)buf + pos;
-        while (*p == ' ' || *p == '\t' || *p == '\r') p++;
-        if (*p != '\0' && *p != '#') {
-            char *e1, *e2 = NULL;
-            double x = strtod(p, &e1);
-            double y = e1 != p ? strtod(e1, &e2) : 0.0;
-            char *q = e2 ? e2 : p;
-            while (*q == ' ' || *q == '\t' || *q == '\r') q++;
-            if (e1 == p || e2 == e1 || (*q != '\0' && *q != '#')) {
-                set_err(err, errlen, "%s: line %zu: expected two numbers \"x y\"", path, line);
+        const int first = skip_blanks(&p);
+        if (first != '\0' && (csv || first != '#')) {
+            double x, y;
+            if (parse_pair(p, csv, &x, &y) != 0) {
+                set_err(err, errlen, csv ? "%s: line %zu: expected two numbers \"x,y\""
+                                         : "%s: line %zu: expected two numbers \"x y\"", path, line);
                 free(xy);
                 return -1;
             }
@@ -391,7 +457,7 @@ static int parse_npy(const char *path, const unsigned char *buf, size_t len, dou
 static int parse_any(pf_format fmt, const char *path, unsigned char *buf, size_t len, double **xy, size_t *n,
                      char *err, size_t errlen)
 {
-    if (fmt == PF_TEXT) return parse_text(path, buf, len, xy, n, err, errlen);
+    if (pf_format_is_text(fmt)) return parse_text(path, fmt == PF_CSV, buf, len, xy, n, err, errlen);
     if (fmt == PF_RAW) return parse_raw(path, buf, len, xy, n, err, errlen);
     if (fmt == PF_NPY) return parse_npy(path, buf, len, xy, n, err, errlen);
     set_err(err, errlen, "%s: unknown point file format (use " PF_EXTENSIONS ")", path);

@@ -1,7 +1,8 @@
 /* pointfile.h - layer 2 (its code uses atomic.h, layer 0): the one module
  * that reads and writes point files.
  *
- * Owns: the three formats (text "x y" lines with '#' comments, NumPy .npy
+ * Owns: the four formats (text "x y" lines with '#' comments, CSV (a header
+ * line "x,y", then "x,y" a line), NumPy .npy
  * n x 2 float64 (read also: float32 and big-endian, versions 1.0-3.0, the
  * header read strictly by npy.c), raw little-endian float64 pairs), the choice of format by
  * file extension, atomic writing (temporary file in the same folder, renamed
@@ -14,14 +15,17 @@
 #include <stddef.h>
 #include <stdio.h>
 
-typedef enum { PF_UNKNOWN = 0, PF_TEXT, PF_NPY, PF_RAW } pf_format;
+typedef enum { PF_UNKNOWN = 0, PF_TEXT, PF_NPY, PF_RAW, PF_CSV } pf_format;
 
-/* Format from the file name: .txt .dat .pts .xy -> text, .npy -> NumPy,
- * .bin .raw .f64 -> raw float64. PF_UNKNOWN otherwise. */
+/* Format from the file name: .txt .dat .pts .xy -> text, .csv -> CSV,
+ * .npy -> NumPy, .bin .raw .f64 -> raw float64. PF_UNKNOWN otherwise. */
 pf_format pf_format_of(const char *path);
 const char *pf_format_name(pf_format f);
+/* 1 for the formats written line by line (text, CSV): one writer holds the
+ * whole set, no point has a fixed byte offset. */
+int pf_format_is_text(pf_format f);
 /* The accepted extensions, for messages and --help. */
-#define PF_EXTENSIONS ".txt/.dat/.pts/.xy (text), .npy (NumPy), .bin/.raw/.f64 (raw float64)"
+#define PF_EXTENSIONS ".txt/.dat/.pts/.xy (text), .csv (CSV), .npy (NumPy), .bin/.raw/.f64 (raw float64)"
 
 /* Streaming writer: points are appended in order; nothing appears under the
  * final name until pf_writer_commit succeeds. */
@@ -48,7 +52,7 @@ void pf_writer_abort(pf_writer *w);
 const char *pf_writer_tmpname(const pf_writer *w);
 
 /* The bytes before the first point: the .npy header (a multiple of 64
- * bytes), or nothing for raw files. Returns its length (0 for raw or text,
+ * bytes), or nothing for raw files. Returns its length (0 for raw, text or CSV,
  * or when cap is too small). For writers that place points themselves
  * (MPI-IO): point k then lies at offset len + 16 k. */
 #define PF_HEADER_MAX 256

@@ -57,7 +57,7 @@ int cfpo_runfiles_check(const char *out, const char *trace, const char *checkpoi
         snprintf(err, errlen, "%s: unknown output format (use %s)", out, PF_EXTENSIONS);
         return -1;
     }
-    if (fmt == PF_TEXT && ranks > 1) {
+    if (pf_format_is_text(fmt) && ranks > 1) {
         snprintf(err, errlen, "%s: text output needs one rank (no rank holds the whole set); use .npy or .bin",
                  out);
         return -1;
@@ -71,7 +71,7 @@ static int open_points(cfpo_runfiles *f, const char *out, char *err, size_t errl
     cli_guard_tmp(NULL);
     if (!out) return 0;
     f->fmt = pf_format_of(out);
-    if (f->fmt == PF_TEXT) {
+    if (pf_format_is_text(f->fmt)) {
         f->w = pf_writer_open(out, (size_t)f->n, err, errlen);
         if (!f->w) return -1;
         cli_guard_tmp(pf_writer_tmpname(f->w));

@@ -75,6 +75,30 @@ static void npy_with_header(const char *p, const char *dict, const void *data, s
     fclose(f);
 }
 
+/* CSV: the header line and one "x,y" a line as written; on reading,
+ * blanks around the names and numbers, CRLF, blank lines and no final
+ * newline are accepted. */
+static void test_csv_layout(void)
+{
+    const double xy[4] = {0.5, 0.25, 0.125, 0.75};
+    char err[512];
+    CHECK(pf_write(path("w.csv"), xy, 2, err, sizeof err) == 0, "csv write failed (%s)", err);
+    char got[64] = "";
+    FILE *f = fopen(path("w.csv"), "rb");
+    size_t len = f ? fread(got, 1, sizeof got - 1, f) : 0;
+    if (f) fclose(f);
+    got[len] = 0;
+    CHECK(strcmp(got, "x,y\n0.5,0.25\n0.125,0.75\n") == 0, "csv written as \"%s\"", got);
+    const char *csv = "\n x , y \r\n0.25 , 0.5\r\n\n0.75,0.125\n0,0";
+    put_bytes(path("c.csv"), csv, strlen(csv));
+    double *back = NULL;
+    size_t m = 0;
+    int r = pf_read(path("c.csv"), &back, &m, err, sizeof err);
+    CHECK(r == 0 && m == 3 && back[0] == 0.25 && back[1] == 0.5 && back[3] == 0.125 && back[5] == 0.0,
+          "csv with blanks and CRLF misread (%s)", err);
+    if (r == 0) free(back);
+}
+
 static void test_round_trips(void)
 {
     const size_t n = 1000;
@@ -88,7 +112,7 @@ static void test_round_trips(void)
     xy[1] = nextafter(1.0, 0.0);
     xy[2] = 4.9406564584124654e-324; /* smallest denormal */
     xy[3] = 0.1;
-    const char *names[] = {"a.txt", "a.npy", "a.bin", "a.dat", "a.raw"};
+    const char *names[] = {"a.txt", "a.npy", "a.bin", "a.dat", "a.raw", "a.csv", "A.CSV"};
     for (size_t t = 0; t < sizeof names / sizeof *names; t++) {
         char err[512];
         int w = pf_write(path(names[t]), xy, n, err, sizeof err);
@@ -122,6 +146,7 @@ static void test_round_trips(void)
     CHECK(r == 0 && m == 3 && back[0] == 0.25 && back[3] == 0.125 && back[5] == 0.0,
           "text with comments misread (%s)", err);
     free(back);
+    test_csv_layout();
     free(xy);
 }
 
@@ -133,6 +158,31 @@ static void test_rejects(void)
     expect_reject(path("empty.txt"), "no points", "empty text");
     put_bytes(path("comments.txt"), "# only\n#\n", 9);
     expect_reject(path("comments.txt"), "no points", "comments only");
+    static const struct {
+        const char *name, *data, *needle;
+    } bad_csv[] = {
+        {"e.csv", "", "no points"},
+        {"h.csv", "x,y\n", "no points"},
+        {"nohead.csv", "0.5,0.5\n", "line 1: expected the CSV header"},
+        {"head2.csv", "x,y,z\n0.5,0.5\n", "line 1: expected the CSV header"},
+        {"yx.csv", "y,x\n0.5,0.5\n", "CSV header"},
+        {"space.csv", "x,y\n0.5 0.5\n", "line 2: expected two numbers \"x,y\""},
+        {"three.csv", "x,y\n0.5,0.5,0.5\n", "line 2"},
+        {"one.csv", "x,y\n0.5,\n", "line 2"},
+        {"lead.csv", "x,y\n,0.5\n", "line 2"},
+        {"comment.csv", "x,y\n# no comments in CSV\n0.5,0.5\n", "line 2"},
+        {"out.csv", "x,y\n0.5,1\n", "outside [0,1)^2"},
+        {"nan.csv", "x,y\n0.5,nan\n", "not finite"},
+        {"nul.csv", "x,y\n0.5,0.5\0\n", "binary data"},
+        {"nulhead.csv", "x,\0y\n0.5,0.5\n", "binary data"},
+    };
+    for (size_t i = 0; i < sizeof bad_csv / sizeof *bad_csv; i++) {
+        const char *d = bad_csv[i].data;
+        size_t len = strlen(d);
+        if (strstr(bad_csv[i].name, "nul")) len += 1 + strlen(d + len + 1); /* past the NUL */
+        put_bytes(path(bad_csv[i].name), d, len);
+        expect_reject(path(bad_csv[i].name), bad_csv[i].needle, bad_csv[i].name);
+    }
     put_bytes(path("empty.bin"), "", 0);
     expect_reject(path("empty.bin"), "no points", "empty raw");
     put_bytes(path("one.txt"), "0.5 0.5\n0.5\n", 12);

@@ -1,0 +1,152 @@
+"""cfpo: blue-noise point sets on the unit torus [0, 1)^2.
+
+Parallel Constrained Farthest Point Optimization (CFPO), its analysis
+(spectra, distances, an exact FPD certificate) and eight baseline samplers,
+from the project's C library. Every array is the same bytes as the
+corresponding command writes for the same arguments.
+
+    import cfpo
+    pts = cfpo.sample(4096, seed=7)            # (4096, 2) float64
+    r = cfpo.run(4096, seed=7, target_min=0.9)  # with statistics and trace
+    spec = cfpo.analysis.spectrum(pts)
+    cfpo.save("points.csv", pts)
+
+The GIL is released during every long call; Ctrl-C raises
+KeyboardInterrupt within one iteration.
+"""
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import _args
+from . import _core
+from ._progress import ProgressLine
+
+__version__ = _core.version
+__all__ = ["sample", "run", "Result", "load", "save", "analysis", "baselines", "__version__"]
+
+STOP_REASONS = ("converged", "target", "time", "max-iter", "caller")
+TRACE_COLUMNS = ("iteration", "delta_min", "delta_avg", "moved", "solved", "max_disp", "seconds",
+                 "elapsed", "max_move")
+
+
+@dataclass
+class Result:
+    """The outcome of an iterative run.
+
+    points: (n, 2) float64 array; iterations: iterations done; seconds: wall
+    time of the run; delta_min, delta_avg: nearest-neighbour distances of the
+    result over Delta(n); converged: whether the convergence rule held;
+    stop: which rule ended the run, one of "converged", "target", "time",
+    "max-iter", "caller"; trace: dict of numpy arrays, one entry a row of the
+    command's --trace file (columns TRACE_COLUMNS; the baselines have no
+    max_move).
+    """
+    points: np.ndarray
+    iterations: int
+    seconds: float
+    delta_min: float
+    delta_avg: float
+    converged: bool
+    stop: str
+    trace: dict = field(repr=False, default_factory=dict)
+
+
+def _callback(progress, n, max_iter, stops):
+    """The per-iteration callable for the C run, and what to close after."""
+    if progress is None or progress is False:
+        return None, None
+    if progress is True:
+        line = ProgressLine(n, max_iter, *stops)
+        return line, line
+    if callable(progress):
+        return progress, None
+    raise TypeError("progress: expected None, True or a callable(stats) -> bool")
+
+
+def _call(want_trace, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
+          progress):
+    """Checks the arguments as the command does, then runs the C engine."""
+    if n is None and init is None:
+        raise ValueError("the number of points is required: n")
+    nn = -1 if n is None else _args.points_n(n)
+    if not isinstance(variant, str):
+        raise TypeError("variant: expected a string")
+    th = _args.threads(threads)
+    t = -1.0 if tol is None else _args.real("tol", tol, 0, _core.tol_max)
+    mi = _core.default_max_iter if max_iter is None else _args.whole("max_iter", max_iter, 0, 10**9)
+    stops = _args.stop_rules(target_min, target_avg, time_limit)
+    start = None if init is None else _args.as_points(init, "init")
+    cb, line = _callback(progress, nn if nn > 0 else start.shape[0], mi, stops)
+    try:
+        return _core.run(nn, _args.seed(seed), variant, th, t, mi, *stops, start, cb, want_trace)
+    finally:
+        if line is not None:
+            line.end()
+
+
+def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
+        target_avg=None, time_limit=None, init=None, progress=None):
+    """Runs CFPO and returns a Result (points, statistics, stop reason, trace).
+
+    n: number of points (at least the command's minimum; may be left out
+    with init). seed: 64-bit unsigned. variant: "adaptive" (default),
+    "paper" (alias "cfpo") or "simplified". threads: OpenMP threads; None
+    follows OMP_NUM_THREADS, else all cores (the result does not depend on
+    it). tol: move tolerance relative to the cell side (default: the
+    variant's). max_iter: iteration cap (default 10000). target_min,
+    target_avg: stop as soon as every given target holds. time_limit: stop
+    at the first iteration boundary past this many seconds. init: (n, 2)
+    start points (converted as cfpo.analysis documents) instead of the
+    variant's start. progress: True for a progress line with an ETA on
+    stderr, or a callable receiving each iteration's statistics as a dict
+    (iteration, delta_min, delta_avg, moved, solved, max_disp, seconds,
+    elapsed, max_move, converged) that stops the run (stop="caller") by
+    returning True.
+
+    The points are the same bytes as `cfpo -n N --seed S ... -o x.npy`
+    writes. Raises ValueError/TypeError for bad arguments (the command's
+    wording), MemoryError when n does not fit, KeyboardInterrupt on Ctrl-C.
+    """
+    r = _call(True, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
+              progress)
+    pts, it, secs, dmin, davg, conv, stop, tr = r
+    return Result(pts, it, secs, dmin, davg, conv, stop, dict(zip(TRACE_COLUMNS, tr)))
+
+def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
+           target_avg=None, time_limit=None, init=None, progress=None):
+    """CFPO points: run(...).points, an (n, 2) float64 array that owns its memory.
+
+    The same arguments as cfpo.run; the same bytes as `cfpo ... -o x.npy`.
+    """
+    return _call(False, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
+                 progress)[0]
+
+def load(path):
+    """Reads a point file into an (n, 2) float64 array.
+
+    The format comes from the extension: .txt/.dat/.pts/.xy (text "x y"
+    lines, '#' comments), .csv (a header line "x,y", then "x,y" a line),
+    .npy (NumPy, float64 or float32), .bin/.raw/.f64 (raw little-endian
+    float64 pairs). The reader is the commands' own: it refuses empty,
+    truncated or corrupt files, NaN/inf and points outside [0, 1)^2
+    (ValueError), and missing or unreadable files (OSError).
+    """
+    return _core.load(path)
+
+
+def save(path, points):
+    """Writes points ((n, 2), in [0, 1)^2) to path, format from the extension.
+
+    The file is written under a temporary name and renamed when complete,
+    so a failure leaves nothing behind; the bytes are those the commands
+    write. Unknown extensions raise ValueError, unwritable paths OSError.
+    """
+    a = _args.as_points(points)
+    if _core.format_of(str(path)) == "unknown":
+        raise ValueError(f"{path}: unknown output format (use {_core.extensions})")
+    _core.save(path, a)
+
+
+from . import analysis  # noqa: E402  (needs the names above)
+from . import baselines  # noqa: E402

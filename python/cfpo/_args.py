@@ -1,0 +1,90 @@
+"""Argument checks shared by the package: the command line's ranges and
+wording, for Python values (ValueError for a bad value, TypeError for a
+wrong type), and the conversion of point arrays."""
+import math
+import numbers
+import os
+
+import numpy as np
+
+
+def whole(name, v, lo, hi):
+    """An int in [lo, hi] (bools refused)."""
+    if isinstance(v, bool) or not isinstance(v, numbers.Integral):
+        raise TypeError(f"{name}: expected a whole number, got {type(v).__name__}")
+    v = int(v)
+    if not lo <= v <= hi:
+        raise ValueError(f"{name}: '{v}' is not a whole number in {lo}..{hi}")
+    return v
+
+
+def real(name, v, lo, hi, open_lo=False):
+    """A finite float in [lo, hi] (or (lo, hi] with open_lo)."""
+    if isinstance(v, bool) or not isinstance(v, numbers.Real):
+        raise TypeError(f"{name}: expected a number, got {type(v).__name__}")
+    v = float(v)
+    ok = math.isfinite(v) and (v > lo if open_lo else v >= lo) and v <= hi
+    if not ok:
+        brace = "(" if open_lo else "["
+        raise ValueError(f"{name}: '{v:g}' is not a number in {brace}{lo:g}, {hi:g}]")
+    return v
+
+
+def seed(v):
+    """A 64-bit unsigned seed."""
+    return whole("seed", v, 0, 2**64 - 1)
+
+
+def points_n(v):
+    """The number of points: a positive whole number."""
+    return whole("n", v, 1, 2**63 - 1)
+
+
+def threads(v):
+    """threads=None follows OMP_NUM_THREADS (its first number), else all cores (0)."""
+    if v is None:
+        env = os.environ.get("OMP_NUM_THREADS", "").split(",")[0].strip()
+        return int(env) if env.isdigit() and 1 <= int(env) <= 4096 else 0
+    return whole("threads", v, 1, 4096)
+
+
+def stop_rules(target_min, target_avg, time_limit):
+    """The stop rules of src/stoprule.c (0 = not set)."""
+    tmin = 0.0 if target_min is None else real("target_min", target_min, 0, 1, open_lo=True)
+    tavg = 0.0 if target_avg is None else real("target_avg", target_avg, 0, 1.1, open_lo=True)
+    tlim = 0.0 if time_limit is None else real("time_limit", time_limit, 0, 1e9, open_lo=True)
+    return tmin, tavg, tlim
+
+
+def as_points(points, name="points", min_n=1):
+    """points as a C-contiguous float64 (n, 2) array in [0, 1)^2.
+
+    Any real numeric dtype (integers, float16/32/64, ...) and any memory
+    layout (Fortran order, strides, views) is converted (one copy when the
+    array is not already C-contiguous float64). Complex, boolean, object and
+    string arrays are refused with a TypeError that says how to convert.
+    Wrong shapes, NaN/inf, coordinates outside [0, 1) and fewer than min_n
+    points raise ValueError.
+    """
+    try:
+        a = np.asarray(points)
+    except (ValueError, TypeError) as e:
+        raise TypeError(f"{name}: cannot be read as an array of numbers ({e}); pass an (n, 2) array, "
+                        f"e.g. np.asarray({name}, dtype=np.float64)") from None
+    if a.dtype.kind not in "iuf":
+        raise TypeError(f"{name}: dtype {a.dtype} is not a real number type; convert with "
+                        f"np.asarray({name}, dtype=np.float64)")
+    if a.ndim != 2 or a.shape[1] != 2:
+        raise ValueError(f"{name}: expected an (n, 2) array of points, got shape {a.shape}")
+    a = np.ascontiguousarray(a, dtype=np.float64)
+    if a.shape[0] < min_n:
+        raise ValueError(f"{name}: {a.shape[0]} points; at least {min_n} needed")
+    finite = np.isfinite(a)
+    if not finite.all():
+        i = int(np.argwhere(~finite)[0][0])
+        raise ValueError(f"{name}: point {i} is not finite ({a[i, 0]:g}, {a[i, 1]:g})")
+    inside = (a >= 0) & (a < 1)
+    if not inside.all():
+        i = int(np.argwhere(~inside)[0][0])
+        raise ValueError(f"{name}: point {i} ({float(a[i, 0])!r}, {float(a[i, 1])!r}) is outside [0,1)^2")
+    return a

@@ -1,0 +1,129 @@
+"""Analysis of point sets on the unit torus: the numbers of cfpo-analyze.
+
+Every function takes points as an (n, 2) array in [0, 1)^2. Any real
+numeric dtype and any memory layout is accepted and converted to a
+C-contiguous float64 array (one copy only when needed); complex, boolean,
+object and string arrays raise TypeError saying how to convert. Wrong
+shapes, NaN/inf, points outside [0, 1) and too few points raise ValueError.
+The GIL is released during the computation.
+"""
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import _args
+from . import _core
+
+CERT_TOL = 1e-3  # analysis/certify.h AN_CERT_TOL
+KMAX = 4096      # analysis/power.h AN_KMAX
+
+
+@dataclass
+class Deltas:
+    """delta_min, delta_avg: the smallest and the mean nearest-neighbour
+    distance over Delta(n) = sqrt(2 / (sqrt(3) n)); nn: each point's
+    nearest-neighbour distance (not normalised); hist: the counts of
+    nn / Delta(n) in 200 bins of 0.01 (cfpo-analyze's nn_hist.txt)."""
+    delta_min: float
+    delta_avg: float
+    nn: np.ndarray = field(repr=False)
+    hist: np.ndarray = field(repr=False)
+
+
+def deltas(points):
+    """Nearest-neighbour statistics of a set of at least 2 points (Deltas)."""
+    a = _args.as_points(points, min_n=2)
+    return Deltas(*_core.deltas(a))
+
+
+@dataclass
+class Spectrum:
+    """The periodogram and its measures (cfpo-analyze's stats.json).
+
+    power: P(k) for k in [-K, K]^2, power[ky + K, kx + K]; K; ring_count,
+    raps (radially averaged power spectrum, raps[0] unused), anisotropy_db:
+    per integer ring |k| in 0..K; spike_ratio, spike_k (kx, ky), spike_ring,
+    spike_P, spike_ring_mean: the largest P(k) over the mean of its ring;
+    raps_peak_ring, raps_peak; effective_nyquist (r_01 / sqrt(n)), r_01,
+    r_half; oscillation (with its rings and whether they were clipped by K);
+    nufft: (kernel width, grid, beta) or None for the exact sum."""
+    K: int
+    power: np.ndarray = field(repr=False)
+    ring_count: np.ndarray = field(repr=False)
+    raps: np.ndarray = field(repr=False)
+    anisotropy_db: np.ndarray = field(repr=False)
+    spike_ratio: float = math.nan
+    spike_P: float = math.nan
+    spike_k: tuple = (0, 0)
+    spike_ring: int = 0
+    spike_ring_mean: float = math.nan
+    raps_peak_ring: int = 0
+    raps_peak: float = math.nan
+    effective_nyquist: float = math.nan
+    r_half: float = math.nan
+    r_01: float = math.nan
+    oscillation: float = math.nan
+    oscillation_rings: tuple = (0, 0)
+    oscillation_clipped: bool = False
+    nufft: tuple = None
+
+
+def default_K(n):
+    """cfpo-analyze's default K: ceil(6 sqrt(n)), between 8 and 2048."""
+    K = math.ceil(6 * math.sqrt(n))
+    return 8 if K < 8 else min(K, 2048)
+
+
+def spectrum(points, K=None, *, exact=False, width=None):
+    """Power spectrum P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / n and its measures.
+
+    K: frequencies in [-K, K]^2 (default default_K(n), at most 4096);
+    exact: direct summation instead of the NUFFT (O(n K^2)); width: NUFFT
+    kernel width 4..16 (default 12). Returns a Spectrum with the same
+    numbers as `cfpo-analyze -K K FILE` for one set. FFTW's planner is
+    guarded, so several threads may call this at once.
+    """
+    a = _args.as_points(points)
+    K = default_K(a.shape[0]) if K is None else _args.whole("K", K, 1, KMAX)
+    w = 0 if width is None else _args.whole("width", width, 4, 16)
+    P, cnt, raps, aniso, spike, peak, hsd, nufft = _core.spectrum(a, K, bool(exact), w)
+    s_ratio, s_P, kx, ky, s_ring, s_mean = spike
+    eff, r_half, r_01, osc, ofrom, oto, clipped = hsd
+    return Spectrum(K, P, cnt, raps, aniso, s_ratio, s_P, (kx, ky), s_ring, s_mean, peak[0], peak[1], eff,
+                    r_half, r_01, osc, (ofrom, oto), bool(clipped), nufft)
+
+
+@dataclass
+class Certificate:
+    """An exact certificate that a set is a Farthest Point Distribution.
+
+    passed: bool per point, it passes the farthest point test (no move of
+    it alone increases its distance to the rest by more than the tolerance);
+    lct_passed: bool per point, both properties of the Local
+    Characterization Theorem hold; violation: each point's farthest point
+    violation over Delta(n); target: for each point a farthest point of the
+    torus from the others; summary: the certificate of cfpo-analyze
+    --certify (fpd, tolerance, delta, covering_radius, fp_pass,
+    fp_max_violation, fp_worst, p1_pass, p2_pass, lct_pass,
+    p1_max_violation, p2_max_violation)."""
+    fpd: bool
+    passed: np.ndarray = field(repr=False)
+    lct_passed: np.ndarray = field(repr=False)
+    violation: np.ndarray = field(repr=False)
+    target: np.ndarray = field(repr=False)
+    summary: dict = field(default_factory=dict)
+
+
+def certify(points, tol=CERT_TOL):
+    """FPD certificate of a set of at least 2 points (Certificate).
+
+    tol: tolerance relative to Delta(n), in [0, 1] (default 1e-3). The
+    summary holds cfpo-analyze --certify's numbers.
+    """
+    a = _args.as_points(points, min_n=2)
+    t = _args.real("tol", tol, 0, 1)
+    flags, viol, target, summary = _core.certify(a, t)
+    passed = (flags & 1) != 0
+    lct = (flags & 6) == 6
+    return Certificate(summary["fpd"], passed, lct, viol, target, summary)

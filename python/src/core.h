@@ -1,0 +1,68 @@
+/* core.h - the pieces the extension module cfpo._core shares between its
+ * files (CPython + NumPy C API): error mapping, point arrays in and out,
+ * and the interruption check. The Python layer (python/cfpo/) checks and
+ * converts the arguments; these functions take them already checked and
+ * check again only what would otherwise crash.
+ *
+ * Rules every function here keeps: the GIL is released around every long
+ * call into the C library; Ctrl-C (a pending signal, seen through
+ * PyErr_CheckSignals) stops an iterative run at the next iteration; no
+ * path calls exit() or installs a signal handler. */
+#ifndef CFPO_PY_CORE_H
+#define CFPO_PY_CORE_H
+
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+
+#ifndef CFPO_PY_IMPORT_ARRAY
+#define NO_IMPORT_ARRAY
+#endif
+#define PY_ARRAY_UNIQUE_SYMBOL cfpo_core_ARRAY_API
+#define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
+#include <numpy/arrayobject.h>
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Raises the exception that fits a library message: MemoryError for "out
+ * of memory" / "too large for memory", else `type`. Returns NULL. */
+PyObject *core_error(PyObject *type, const char *msg);
+
+/* A C-contiguous float64 (n, 2) view of obj (a new reference), or NULL
+ * with TypeError/ValueError. The Python layer has already converted. */
+PyArrayObject *core_points_in(PyObject *obj, size_t *n);
+
+/* A new (n, 2) float64 array; *data its buffer. */
+PyObject *core_points_new(size_t n, double **data);
+
+/* A float64 array of shape dims over v (malloc'ed), which the array then
+ * owns (freed with it): no copy. On failure v is freed. */
+PyObject *core_adopt(double *v, int nd, const npy_intp *dims);
+/* The same for n points (xy: 2n doubles), shape (n, 2). */
+PyObject *core_points_adopt(double *xy, size_t n);
+
+/* 1 when a signal handler raised (KeyboardInterrupt): the exception is set.
+ * Call with the GIL held. */
+int core_interrupted(void);
+
+/* The trace: one row per iteration, grown as the run goes. */
+typedef struct {
+    double *v;    /* rows of TRACE_COLS */
+    size_t rows, cap;
+    int oom;
+} core_trace;
+#define TRACE_COLS 9
+void core_trace_add(core_trace *t, const double *row);
+/* The columns as a tuple of arrays (int64 for iteration, moved, solved;
+ * float64 otherwise), in the order of `cfpo --trace`. Frees t->v. */
+PyObject *core_trace_take(core_trace *t, int cols);
+
+/* The module's functions, one file each. */
+PyObject *core_run(PyObject *self, PyObject *args);
+PyObject *core_deltas(PyObject *self, PyObject *args);
+PyObject *core_spectrum(PyObject *self, PyObject *args);
+PyObject *core_certify(PyObject *self, PyObject *args);
+PyObject *core_poisson(PyObject *self, PyObject *args);
+PyObject *core_iterative(PyObject *self, PyObject *args);
+
+#endif

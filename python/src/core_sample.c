@@ -1,0 +1,157 @@
+/* core_sample.c - cfpo._core.run: one CFPO run through the engine, the
+ * way the `cfpo` command runs it (src/main.c: the same options, checks,
+ * start and points in id order), with the per-iteration callback in
+ * Python's hands: Ctrl-C, the caller's callback and the trace. */
+#include "core.h"
+
+#include <string.h>
+
+#include "cfpo.h"
+#include "cli.h"
+#include "engine.h"
+#include "plan.h"
+#include "stoprule.h"
+
+typedef struct {
+    PyThreadState *ts;  /* this thread's state while the GIL is released */
+    PyObject *callback; /* None or a callable(dict) -> truthy to stop */
+    int want_trace;
+    core_trace trace;
+    double t0;
+    int failed;         /* an exception is set (Ctrl-C, the callback's) */
+} run_ctx;
+
+static PyObject *stats_dict(const cfpo_iter_stats *s, double elapsed)
+{
+    return Py_BuildValue("{s:i,s:d,s:d,s:L,s:L,s:d,s:d,s:d,s:d,s:O}", "iteration", s->iteration,
+                         "delta_min", s->delta_min, "delta_avg", s->delta_avg, "moved",
+                         (long long)s->moved, "solved", (long long)s->solved, "max_disp", s->max_disp,
+                         "seconds", s->seconds, "elapsed", elapsed, "max_move", s->max_move,
+                         "converged", s->converged ? Py_True : Py_False);
+}
+
+/* Called by the engine after every iteration, on the calling thread with
+ * the GIL released: takes the GIL for the checks only. */
+static int on_iteration(const cfpo_iter_stats *s, void *user)
+{
+    run_ctx *c = user;
+    const double el = cli_now() - c->t0;
+    if (c->want_trace) {
+        const double row[TRACE_COLS] = {s->iteration, s->delta_min, s->delta_avg, (double)s->moved,
+                                        (double)s->solved, s->max_disp, s->seconds, el, s->max_move};
+        core_trace_add(&c->trace, row);
+    }
+    PyEval_RestoreThread(c->ts);
+    int stop = 0;
+    if (!c->failed && core_interrupted()) c->failed = 1;
+    if (!c->failed && c->callback != Py_None) {
+        PyObject *d = stats_dict(s, el);
+        PyObject *r = d ? PyObject_CallOneArg(c->callback, d) : NULL;
+        Py_XDECREF(d);
+        if (!r) c->failed = 1;
+        else {
+            stop = PyObject_IsTrue(r);
+            Py_DECREF(r);
+            if (stop < 0) c->failed = 1;
+        }
+    }
+    c->ts = PyEval_SaveThread();
+    return c->failed || stop > 0;
+}
+
+/* The options of a run from the arguments (already checked by the Python
+ * layer); ValueError with the command's wording for what the library
+ * refuses. */
+static int options_of(cfpo_options *o, unsigned long long seed, const char *variant, int threads,
+                      double tol, int max_iter, double tmin, double tavg, double tlimit)
+{
+    cfpo_options_init(o);
+    o->seed = seed;
+    if (cfpo_variant_parse(variant, &o->variant) != 0) {
+        PyErr_Format(PyExc_ValueError, "variant: '%s' is not one of adaptive, paper, simplified", variant);
+        return -1;
+    }
+    o->tol = tol >= 0 ? tol : cfpo_default_tol(o->variant);
+    o->threads = threads > 0 ? threads : 0;
+    if (max_iter >= 0) o->max_iter = max_iter;
+    o->stop.target_min = tmin;
+    o->stop.target_avg = tavg;
+    o->stop.time_limit = tlimit;
+    return 0;
+}
+
+PyObject *core_run(PyObject *self, PyObject *args)
+{
+    (void)self;
+    long long n;
+    unsigned long long seed;
+    const char *variant;
+    int threads, max_iter, want_trace;
+    double tol, tmin, tavg, tlimit;
+    PyObject *init, *callback;
+    if (!PyArg_ParseTuple(args, "LKsididddOOp", &n, &seed, &variant, &threads, &tol, &max_iter, &tmin, &tavg,
+                          &tlimit, &init, &callback, &want_trace))
+        return NULL;
+    cfpo_options o;
+    if (options_of(&o, seed, variant, threads, tol, max_iter, tmin, tavg, tlimit) != 0) return NULL;
+    cfpo_engine_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    PyArrayObject *start = NULL;
+    if (init != Py_None) {
+        size_t m;
+        if (!(start = core_points_in(init, &m))) return NULL;
+        if (n >= 0 && (size_t)n != m) {
+            Py_DECREF(start);
+            return PyErr_Format(PyExc_ValueError, "init: the array holds %zu points, n says %lld; "
+                                "leave n out or give the same", m, n);
+        }
+        n = (long long)m;
+        cfg.start_xy = (const double *)PyArray_DATA(start);
+    }
+    char err[1024];
+    const int vr = cfpo_plan_check(n, &o, 0, 0, err, sizeof err);
+    if (vr != 0) {
+        Py_XDECREF(start);
+        return core_error(vr == -2 ? PyExc_MemoryError : PyExc_ValueError, err);
+    }
+    run_ctx c = {.callback = callback, .want_trace = want_trace};
+    o.progress = on_iteration;
+    o.user = &c;
+    cfpo_result res;
+    int rc = -1;
+    double seconds;
+    c.t0 = cli_now();
+    c.ts = PyEval_SaveThread();
+    cfpo_engine *E = cfpo_engine_create_ex(n, &o, &cfg, err, sizeof err);
+    const int created = E != NULL;
+    if (E) rc = cfpo_engine_run(E, &res, err, sizeof err);
+    seconds = cli_now() - c.t0;
+    PyEval_RestoreThread(c.ts);
+    Py_XDECREF(start);
+    PyObject *points = NULL, *trace = NULL;
+    if (!c.failed && rc == 0) {
+        double *xy;
+        points = core_points_new((size_t)n, &xy);
+        if (points) {
+            Py_BEGIN_ALLOW_THREADS
+            cfpo_engine_points(E, xy);
+            Py_END_ALLOW_THREADS
+        }
+    }
+    cfpo_engine_free(E);
+    if (c.failed || rc != 0 || !points) {
+        free(c.trace.v);
+        if (!c.failed && rc != 0) core_error(created ? PyExc_RuntimeError : PyExc_ValueError, err);
+        return NULL;
+    }
+    if (want_trace) {
+        if (!(trace = core_trace_take(&c.trace, TRACE_COLS))) {
+            Py_DECREF(points);
+            return NULL;
+        }
+    } else {
+        trace = Py_NewRef(Py_None);
+    }
+    return Py_BuildValue("(NidddNsN)", points, res.iterations, seconds, res.delta_min, res.delta_avg,
+                         PyBool_FromLong(res.converged), cfpo_stop_name(res.stop), trace);
+}
