@@ -148,7 +148,7 @@ void cfpo_engine_begin(cfpo_engine *E)
     E->be->begin(E);
     if (eng_jump_due(E)) {
         sync_host(E);
-        if (eng_jump(E) != 0) die(E, "moving points into holes");
+        if (eng_jump(E) != 0) eng_fatal(E, "moving points into holes");
         sync_device(E);
         if (E->cfg.check) {
             eng_check_migration(E);
