@@ -117,7 +117,8 @@ add_ttq() { # key n seed threads
 for n in $TTQ_SIZES; do
   for s in $(seq 1 "$TTQ_SEEDS"); do
     slot=0
-    for c in $TTQ_CONFIGS; do
+    cv="TTQ_CONFIGS_$n"
+    for c in ${!cv:-$TTQ_CONFIGS}; do
       key=${c%:*}; t=${c#*:}
       if [ "$t" -gt 1 ] || [ "$slot" -eq 0 ] || [ "$slot" -ge "$cores" ]; then batch=$((batch + 1)); slot=0; fi
       if [ "$t" -gt 1 ]; then slot=$cores; else slot=$((slot + 1)); fi
@@ -200,7 +201,7 @@ csv="$work/runs.csv"
   echo "# git commit: $commit"
   echo "# libraries: FFTW $(pkgver libfftw3-dev); CGAL $(pkgver libcgal-dev); OpenMPI $(pkgver libopenmpi-dev); GMP $(pkgver libgmp-dev); gnuplot $(gnuplot --version | cut -d' ' -f2-)"
   echo "# environment: $( (env | grep -E '^(OMP|GOMP)_' || echo 'no OMP_ or GOMP_ variables') | sort | tr '\n' ' ' | sed 's/ $//')"
-  echo "# plan: SETS=$SETS COMP_N=$COMP_N COMP_THREADS=$COMP_THREADS EVO_ITERS=$EVO_ITERS RT_REPS=$RT_REPS RT_THREADS=$RT_THREADS TTQ_SIZES=$(echo $TTQ_SIZES $TTQ_BIG | tr ' ' ,) TTQ_SEEDS=$TTQ_SEEDS TTQ_MAXITER=$TTQ_MAXITER TTQ_TARGET_MIN=$TTQ_TARGET_MIN TTQ_TARGET_AVG=$TTQ_TARGET_AVG TTQ_CONFIGS=$(echo $TTQ_CONFIGS | tr ' ' ,) TASKSET=$([ -n "$TASKSET" ] && echo yes || echo no); $NJOBS runs"
+  echo "# plan: SETS=$SETS COMP_N=$COMP_N COMP_THREADS=$COMP_THREADS EVO_ITERS=$EVO_ITERS RT_REPS=$RT_REPS RT_THREADS=$RT_THREADS TTQ_SIZES=$(echo $TTQ_SIZES $TTQ_BIG | tr ' ' ,) TTQ_SEEDS=$TTQ_SEEDS TTQ_MAXITER=$TTQ_MAXITER TTQ_TARGET_MIN=$TTQ_TARGET_MIN TTQ_TARGET_AVG=$TTQ_TARGET_AVG TTQ_CONFIGS=$(echo $TTQ_CONFIGS | tr ' ' ,)$(for n in $TTQ_SIZES; do v=TTQ_CONFIGS_$n; [ -n "${!v:-}" ] && printf ' TTQ_CONFIGS_%s=%s' "$n" "$(echo ${!v} | tr ' ' ,)"; done) TASKSET=$([ -n "$TASKSET" ] && echo yes || echo no); $NJOBS runs"
   echo "# load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "# columns: seconds = the tool's own sampling time (start included, writing excluded); seconds_per_iteration = seconds / iterations; peak_bytes = peak resident memory of the process; n = points produced, n_target = points asked for; max_iter = iteration cap (- none); wall_seconds = the whole process as timed by this script; time_limit = --time-limit of a ttq run (- none); stop = the rule that ended the run (SUMMARY stop=); batch = runs with the same number started together, one per core (- alone)"
   echo "run,experiment,method,variant,n,n_target,seed,threads,ranks,max_iter,iterations,seconds,seconds_per_iteration,delta_min,delta_avg,peak_bytes,converged,wall_seconds,trace,time_limit,stop,batch"
