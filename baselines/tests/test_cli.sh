@@ -144,7 +144,17 @@ expect 0 "" "$B/cfpo-bnot" -n 300 -q --round-iters 500 --no-breaker --trace "$T/
 expect 2 "^cfpo-bnot: --epsilon: 'x' is not a number" "$B/cfpo-bnot" -n 300 --epsilon x
 expect 2 "^cfpo-bnot: --round-iters: '0' is not a whole number" "$B/cfpo-bnot" -n 300 --round-iters 0
 expect 2 "^cfpo-bnot: --max-rounds: '-1' is not a whole number" "$B/cfpo-bnot" -n 300 --max-rounds -1
+# CCDT's reference schedule: exactly K iterations; CCVT's options.
+expect 0 "" "$B/cfpo-ccdt" -n 300 -q --reference 7
+grep -q "iterations=7 .*converged=yes" "$T/out" && ok || bad "cfpo-ccdt --reference 7: $(cat "$T/out")"
+expect 2 "^cfpo-ccdt: --reference: '0' is not a whole number" "$B/cfpo-ccdt" -n 300 --reference 0
+expect 2 "^cfpo-ccvt: --point-set: 'grid' is neither lattice nor random" "$B/cfpo-ccvt" -n 300 --point-set grid
+expect 2 "^cfpo-ccvt: --update: 'x' is neither pair nor pass" "$B/cfpo-ccvt" -n 300 --update x
+expect 2 "^cfpo-ccvt: --assign: 'x' is neither nearest nor curve" "$B/cfpo-ccvt" -n 300 --assign x
+expect 1 "^cfpo-ccvt: n m = 20180 points have no lattice" "$B/cfpo-ccvt" -n 20 --points-per-site 1009
+expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 8 --point-set random -o "$T/r8.txt"
 expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 8 -o "$T/m8.txt"
+cmp -s "$T/m8.txt" "$T/r8.txt" && bad "cfpo-ccvt: --point-set random has no effect" || ok
 expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 9 -o "$T/m9.txt"
 cmp -s "$T/m8.txt" "$T/m9.txt" && bad "cfpo-ccvt: --points-per-site has no effect" || ok
 
