@@ -61,8 +61,8 @@ bench_profile() {
       ;;
     default)
       SETS=10; COMP_N=4096; RT_REPS=1
-      RT_SIZES_cfpo="1024 4096 16384 65536"; RT_SIZES_simplified="1024 4096 16384"
-      RT_SIZES_fpo="1024 16384"; RT_SIZES_lfpo="1024 16384"
+      RT_SIZES_cfpo="1024 4096 16384"; RT_SIZES_simplified="1024 4096 16384"
+      RT_SIZES_fpo="1024 16384"; RT_SIZES_lfpo="1024"
       RT_SIZES_ccvt="1024"; RT_SIZES_ccdt="1024"
       RT_SIZES_bnot="1024 4096 16384"
       # at 65,536 points only the experiment the CFPO schedule is tuned
@@ -104,8 +104,8 @@ bench_estimate() {
     a["simplified"] = 654; b["simplified"] = 0.35; cap["simplified"] = 1550; c["simplified"] = 0.75e-6
     a["fpo"] = 166; b["fpo"] = 0.33; cap["fpo"] = 5000; c["fpo"] = 2.5e-6
     a["lfpo"] = 239; b["lfpo"] = 0.55; cap["lfpo"] = 5000; c["lfpo"] = 2.5e-6
-    a["ccvt"] = 260; b["ccvt"] = 0; cap["ccvt"] = 5000; c["ccvt"] = 2e-5
-    a["ccdt"] = 130; b["ccdt"] = 0; cap["ccdt"] = 5000; c["ccdt"] = 3e-5
+    a["ccvt"] = 330; b["ccvt"] = 0; cap["ccvt"] = 5000; c["ccvt"] = 1.5e-5
+    a["ccdt"] = 120; b["ccdt"] = 0.1; cap["ccdt"] = 5000; c["ccdt"] = 1.5e-5
     a["bnot"] = 20; b["bnot"] = 0; cap["bnot"] = 20; c["bnot"] = 1.05e-5
     it = a[k] * (n / 1024) ^ b[k]; if (it > cap[k]) it = cap[k]
     if (m != "-" && m + 0 < it) it = m + 0
