@@ -61,7 +61,7 @@ bench_profile() {
       ;;
     default)
       SETS=10; COMP_N=4096; RT_REPS=1
-      RT_SIZES_cfpo="1024 4096 16384"; RT_SIZES_simplified="1024 4096 16384"
+      RT_SIZES_cfpo="1024 4096 16384"; RT_SIZES_simplified="1024 4096"
       RT_SIZES_fpo="1024 16384"; RT_SIZES_lfpo="1024"
       RT_SIZES_ccvt="1024"; RT_SIZES_ccdt="1024"
       RT_SIZES_bnot="1024 4096 16384"
