@@ -5,6 +5,10 @@
 #   COMP_N        points per set in the comparison, evolution and convergence
 #   COMP_THREADS  threads of CFPO in the comparison (1: every method on one
 #                 core, so the seconds compare like for like)
+#   COMP_TOGETHER one-thread comparison runs of one method (successive
+#                 seeds) that start together, each pinned to its own core
+#                 (at most the cores; 1: every run alone, the seconds free of
+#                 a neighbour's use of the memory system)
 #   EVO_ITERS     iterations at which CFPO is stopped for the evolution figure
 #                 (the converged column reuses the comparison's CFPO sets)
 #   RT_REPS       seeds per configuration of the runtime experiment
@@ -45,6 +49,7 @@ bench_profile() {
   # iteration, each waiting for a descheduled thread); see README.md
   export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
   COMP_THREADS=1
+  COMP_TOGETHER=$(nproc)
   EVO_ITERS="0 1 2 5 10"
   RT_THREADS=$(bench_threads_list)
   TTQ_TARGET_MIN=0.925; TTQ_TARGET_AVG=0.929
@@ -75,6 +80,7 @@ bench_profile() {
       ;;
     paper)
       SETS=10; COMP_N=4096; RT_REPS=1
+      COMP_TOGETHER=1
       RT_SIZES_cfpo="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_simplified="1024 4096 16384 65536 262144"
       RT_SIZES_fpo="1024 4096 16384 65536 262144"; RT_SIZES_lfpo="1024 4096 16384 65536"
