@@ -11,83 +11,7 @@
  * edges; the margin check. A failed check doubles the margin and builds
  * again. The weights keep mean 0 (they start at 0 and every Newton
  * direction is centred; the diagram only sees their differences). */
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Regular_triangulation_2.h>
-#include <CGAL/Regular_triangulation_face_base_2.h>
-#include <CGAL/Regular_triangulation_vertex_base_2.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <new>
-#include <utility>
-#include <vector>
-
-#include "bnot.h"
-extern "C" {
-#include "cli.h"
-#include "geom.h"
-#include "grid.h"
-#include "rng.h"
-#include "stats.h"
-#include "stoprule.h"
-}
-
-namespace {
-
-const uint64_t START_STREAM = 0x424e4f5453545254ULL; /* "BNOTSTRT" */
-const double CG_RTOL = 1e-3;
-const int MAX_NEWTON = 100;
-
-struct VInfo {
-    uint32_t id = UINT32_MAX; /* the site; UINT32_MAX: not set yet */
-    uint8_t orig = 0;         /* 1: the site itself, 0: a copy */
-};
-struct FInfo {
-    double cx = 0, cy = 0; /* power centre */
-};
-
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Regular_triangulation_vertex_base_2<K> Vbase;
-typedef CGAL::Triangulation_vertex_base_with_info_2<VInfo, K, Vbase> Vb;
-typedef CGAL::Regular_triangulation_face_base_2<K> Fbase;
-typedef CGAL::Triangulation_face_base_with_info_2<FInfo, K, Fbase> Fb;
-typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
-typedef CGAL::Regular_triangulation_2<K, Tds> RT;
-typedef RT::Vertex_handle Vertex_handle;
-typedef RT::Face_handle Face_handle;
-typedef K::Weighted_point_2 WPoint;
-typedef K::Point_2 Point;
-
-struct Ins {
-    double x, y;
-    uint32_t id;
-    uint8_t orig;
-};
-
-} // namespace
-
-struct bnot_engine {
-    int64_t n = 0;
-    double L = 0, tol = 0, cap_tol = BNOT_CAP_TOL, target = 0, margin = 0;
-    RT T;
-    std::vector<double> xy, w, area, cen, mom, cs;
-    std::vector<Vertex_handle> vh;
-    std::vector<Ins> ins;
-    std::vector<std::pair<uint64_t, uint32_t>> order;
-    /* Hessian, one row per site: off-diagonal entries (col, val) > 0
-     * meaning H_ij = -val; diagonal = the row's sum. */
-    std::vector<int64_t> rowp;
-    std::vector<uint32_t> col;
-    std::vector<double> val, diag;
-    std::vector<double> r, z, p, q, d, wold; /* CG and line search */
-    mutable std::vector<double> abscen;
-    double energy = 0, energy_moved = 0, cap_err = 0, res2 = 0, min_area = 0;
-    int64_t empty = 0, cg_iters = 0;
-    int newton = 0, ok = 1;
-};
+#include "bnot_impl.hpp"
 
 /* The triangulation of the sites and their copies within the margin. */
 static void triangulate(bnot_engine *E)
@@ -192,7 +116,7 @@ static int cell(bnot_engine *E, int64_t i, double wmax)
 }
 
 /* The power diagram for the weights E->w and everything derived from it. */
-static void build(bnot_engine *E)
+void bnot_build(bnot_engine *E)
 {
     const int64_t n = E->n;
     double wmax = -HUGE_VAL;
@@ -291,19 +215,20 @@ static void newton_direction(bnot_engine *E)
 }
 
 /* Damped Newton from the current weights (0 when a cell is empty). */
-static void solve(bnot_engine *E)
+void bnot_solve(bnot_engine *E)
 {
     E->newton = 0;
     E->cg_iters = 0;
     E->ok = 1;
-    build(E);
+    bnot_build(E);
     if (E->empty) {
         std::fill(E->w.begin(), E->w.end(), 0.0);
-        build(E);
+        bnot_build(E);
     }
-    while (E->cap_err > E->cap_tol) {
-        if (E->newton >= MAX_NEWTON) {
-            E->ok = 0;
+    for (;;) {
+        if (E->res_tol > 0 ? std::sqrt(E->res2) < E->res_tol : E->cap_err <= E->cap_tol) break;
+        if (E->newton >= E->max_newton) {
+            E->ok = E->res_tol > 0; /* the authors' rule caps the steps */
             return;
         }
         newton_direction(E);
@@ -312,13 +237,13 @@ static void solve(bnot_engine *E)
         int accepted = 0;
         for (double a = 1; a > 1e-12 && !accepted; a *= 0.5) {
             for (size_t i = 0; i < E->w.size(); i++) E->w[i] = E->wold[i] + a * E->d[i];
-            build(E);
+            bnot_build(E);
             accepted = E->empty == 0 && E->min_area >= floor && std::sqrt(E->res2) <= (1 - a / 2) * res;
         }
         E->newton++;
         if (!accepted) { /* no progress possible (rounding): keep the last weights */
             E->w = E->wold;
-            build(E);
+            bnot_build(E);
             E->ok = 0;
             return;
         }
@@ -326,7 +251,7 @@ static void solve(bnot_engine *E)
 }
 
 static bnot_engine *make(int64_t n, const double *xy, uint64_t seed, double L, double tol, double cap_tol,
-                         char *err, size_t errlen)
+                         const bnot_rule *rule, char *err, size_t errlen)
 {
     if (n >= (int64_t)UINT32_MAX) {
         snprintf(err, errlen, "n = %lld is too large (ids are 32-bit)", (long long)n);
@@ -343,6 +268,16 @@ static bnot_engine *make(int64_t n, const double *xy, uint64_t seed, double L, d
         E->L = L;
         E->tol = tol;
         E->cap_tol = cap_tol;
+        bnot_rule_init(&E->rule);
+        E->rule.epsilon = 0;
+        if (rule && rule->epsilon > 0) {
+            E->rule = *rule;
+            E->rng_seed = seed;
+            E->phase = COARSE;
+            E->max_newton = rule->max_newton;
+            E->gthr = 2 * 0.03 * rule->epsilon / (double)n;
+            E->res_tol = E->gthr;
+        }
         E->target = 1.0 / (double)n;
         E->margin = std::min(1.0, 3.0 / std::sqrt((double)n));
         E->xy.resize(2 * N);
@@ -356,13 +291,13 @@ static bnot_engine *make(int64_t n, const double *xy, uint64_t seed, double L, d
         E->diag.assign(N, 0.0);
         E->r.assign(N, 0.0);
         E->z = E->p = E->q = E->d = E->r;
-        build(E);
+        bnot_build(E);
         if (E->empty) {
             snprintf(err, errlen, "the start has %lld coinciding points", (long long)E->empty);
             delete E;
             return nullptr;
         }
-        solve(E);
+        bnot_solve(E);
         E->energy_moved = E->energy;
     } catch (const std::bad_alloc &) {
         snprintf(err, errlen, "out of memory for n = %lld", (long long)n);
@@ -378,19 +313,43 @@ bnot_engine *bnot_create(int64_t n, uint64_t seed, double tol, char *err, size_t
 {
     cfpo_grid G;
     if (cfpo_grid_init(&G, n, CFPO_VARIANT_PAPER, seed, err, errlen) != 0) return nullptr;
-    return make(n, nullptr, seed, G.L, tol, BNOT_CAP_TOL, err, errlen);
+    return make(n, nullptr, seed, G.L, tol, BNOT_CAP_TOL, nullptr, err, errlen);
+}
+
+bnot_engine *bnot_create_rule(int64_t n, const double *xy, uint64_t seed, double L, double tol,
+                              const bnot_rule *r, char *err, size_t errlen)
+{
+    bnot_rule def;
+    bnot_rule_init(&def);
+    if (!r) r = &def;
+    if (!(r->epsilon > 0) || r->max_rounds < 1 || r->round_iters < 1 || r->max_newton < 1 || r->max_teleport < 0 ||
+        !(r->jitter >= 0)) {
+        snprintf(err, errlen, "bad BNOT schedule (epsilon %g, rounds %d, round iterations %d, Newton steps %d)",
+                 r->epsilon, r->max_rounds, r->round_iters, r->max_newton);
+        return nullptr;
+    }
+    if (!(L > 0)) {
+        cfpo_grid G;
+        if (cfpo_grid_init(&G, n, CFPO_VARIANT_PAPER, seed, err, errlen) != 0) return nullptr;
+        L = G.L;
+    }
+    return make(n, xy, seed, L, tol, BNOT_CAP_TOL, r, err, errlen);
 }
 
 bnot_engine *bnot_create_from(int64_t n, const double *xy, double L, double tol, double cap_tol, char *err,
                               size_t errlen)
 {
-    return make(n, xy, 0, L, tol, cap_tol, err, errlen);
+    return make(n, xy, 0, L, tol, cap_tol, nullptr, err, errlen);
 }
 
 void bnot_free(bnot_engine *E) { delete E; }
 
 void bnot_iterate(bnot_engine *E, cfpo_iter_stats *s)
 {
+    if (E->phase != TOL_RUN) {
+        bnot_rule_iterate(E, s);
+        return;
+    }
     const double t0 = cli_now();
     const double tolL = E->tol * E->L;
     double maxd2 = 0, moved_energy = E->energy;
@@ -404,7 +363,7 @@ void bnot_iterate(bnot_engine *E, cfpo_iter_stats *s)
         E->xy[2 * i + 1] = cfpo_wrap01(E->xy[2 * i + 1] + dy);
     }
     E->energy_moved = moved_energy;
-    solve(E);
+    bnot_solve(E);
     s->moved = moved;
     s->solved = E->n;
     s->max_disp = std::sqrt(maxd2) / E->L;

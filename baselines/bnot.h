@@ -46,6 +46,33 @@
  * same for the same input (CGAL's spatial sort shuffles with a global
  * random state). Converged when no site's Lloyd move reaches tol * L, L =
  * cfpo's cell side (as CCDT and FPO), or nothing moved.
+ *
+ * The authors' schedule (bnot_rule, the default of cfpo-bnot; de Goes et
+ * al.'s code as the UTK project ships it), with the gradient norm
+ * |g| = sqrt(sum_i (2 A_i |c_i - x_i|)^2) (c_i the centroid of cell i)
+ * and tau = 0.03 epsilon / n:
+ *   coarse phase: the weights reset to 0 and solved until |A - 1/n|
+ *     (2-norm) < 2 tau (at most 20 Newton steps), one Lloyd step; until
+ *     |g| <= 2 tau, measured after the step on the weights it was taken
+ *     with;
+ *   fine phase: the weights solved from the current ones until
+ *     |A - 1/n| < tau, one gradient step x_i += a 2 A_i (c_i - x_i),
+ *     a = n/2, n/4, ... the first that keeps every cell and lowers
+ *     F = E - sum_i w_i (A_i - 1/n) by at least 1e-4 a |g|^2 (weights
+ *     fixed; a = n/2 is about a Lloyd step); until |g| <= tau;
+ *   at most round_iters iterations a round (the coarse phase hitting it
+ *     ends the run, as in the reference);
+ *   the regularity breaker, between rounds: a site is regular when the
+ *     mean |V_i - V_j| over its Delaunay neighbours j, V the cells' second
+ *     moments about their sites, is below n^-3 / 4 (a near-perfect
+ *     hexagonal patch); when any is, every regular site and its
+ *     neighbours move by a random vector of length up to jitter / n,
+ *     min(max_teleport, regular) of the regular sites (random) go to
+ *     uniform random positions, the weights reset, and a new round
+ *     starts with the coarse phase. At most max_rounds rounds. The
+ *     reference also perturbs after its last round and returns that set
+ *     unoptimised; here the last round ends the run without a
+ *     perturbation, so the output is always an optimised set.
  * A C interface over a C++ implementation. */
 #ifndef CFPO_BASELINES_BNOT_H
 #define CFPO_BASELINES_BNOT_H
@@ -63,6 +90,20 @@ typedef struct bnot_engine bnot_engine;
 
 #define BNOT_CAP_TOL 1e-8
 
+/* The authors' schedule (see above); epsilon 0: the run to a move
+ * tolerance (tol) with capacities to cap_tol instead. */
+typedef struct {
+    double epsilon;    /* default 0.2 */
+    int breaker;       /* the regularity breaker (default 1) */
+    int max_rounds;    /* rounds of optimisation (default 20) */
+    int max_teleport;  /* default 100 */
+    int round_iters;   /* iterations a round at most (default 20, as the UTK
+                        * project's driver runs the authors' code) */
+    int max_newton;    /* Newton steps a solve at most (default 20) */
+    double jitter;     /* largest jitter, times 1/n (default 1) */
+} bnot_rule;
+void bnot_rule_init(bnot_rule *r);
+
 /* Uniform random start; the capacities are solved before it returns.
  * NULL with a message. */
 bnot_engine *bnot_create(int64_t n, uint64_t seed, double tol, char *err, size_t errlen);
@@ -70,11 +111,40 @@ bnot_engine *bnot_create(int64_t n, uint64_t seed, double tol, char *err, size_t
  * capacity tolerance cap_tol (relative). For tests. */
 bnot_engine *bnot_create_from(int64_t n, const double *xy, double L, double tol, double cap_tol,
                               char *err, size_t errlen);
+/* The authors' schedule (r; NULL: its defaults): a given start xy (NULL:
+ * uniform random from seed), scale L (0: cfpo's cell side for n); seed
+ * also drives the breaker. tol only counts the moved sites of the stats. */
+bnot_engine *bnot_create_rule(int64_t n, const double *xy, uint64_t seed, double L, double tol,
+                              const bnot_rule *r, char *err, size_t errlen);
 void bnot_free(bnot_engine *E);
 
-/* One Lloyd step then the capacity solve. s->moved: sites that moved more
- * than tol * L; s->solved: n; s->max_disp: largest move / L. */
+/* One Lloyd step then the capacity solve (the authors' schedule: one
+ * iteration of its current phase, and the breaker when a round ends).
+ * s->moved: sites that moved more than tol * L; s->solved: n;
+ * s->max_disp: largest move / L; s->converged: the run is over. */
 void bnot_iterate(bnot_engine *E, cfpo_iter_stats *s);
+
+/* The authors' schedule's state: |g| measured in the last iteration (NAN
+ * before any), its threshold now (2 tau coarse, tau fine; 0 outside the
+ * schedule), the phase (0 move-tolerance run, 1 coarse, 2 fine, 3 done),
+ * the round (from 1), the breaker's perturbations so far and the regular
+ * sites it found last. */
+double bnot_grad_norm(const bnot_engine *E);
+double bnot_grad_threshold(const bnot_engine *E);
+int bnot_phase(const bnot_engine *E);
+/* the phase the last iteration's step was taken in (its |g| was judged
+ * against 2 tau when 1, tau when 2) */
+int bnot_step_phase(const bnot_engine *E);
+int bnot_round(const bnot_engine *E);
+int64_t bnot_breaks(const bnot_engine *E);
+int64_t bnot_last_regular(const bnot_engine *E);
+/* The regularity test on the current diagram: flag[i] = 1 for each
+ * regular site (flag may be NULL); returns their number. */
+int64_t bnot_regular_sites(bnot_engine *E, unsigned char *flag);
+/* The breaker once: when sites are regular, jitter, teleport, reset the
+ * weights and solve (coarse tolerance); returns the regular sites found
+ * (0: nothing done). */
+int64_t bnot_break_regularity(bnot_engine *E);
 
 /* The transport energy (capacities as solved), and that of the cells
  * before the last Lloyd step with the sites at their centroids (the

@@ -63,6 +63,7 @@ struct ccdt_engine {
     bool in_sync = false;          /* C is T's triangulation of xy (wrapped) */
     int sweeps = 0;
     int64_t new_edges = 0;
+    int ref_iters = 0, done_iters = 0; /* the reference schedule: ref_iters > 0 */
 };
 
 static inline double tri_area(const ccdt_engine *E, size_t t)
@@ -172,7 +173,7 @@ static int delaunay(ccdt_engine *E, int keep, char *err, size_t errlen)
 
 /* One Gauss-Seidel sweep over the vertices in id order; returns the
  * largest move. */
-static double sweep(ccdt_engine *E)
+static double sweep(ccdt_engine *E, bool full)
 {
     const Conn &C = E->C;
     double *X = E->xy.data();
@@ -206,7 +207,7 @@ static double sweep(ccdt_engine *E)
         if (deg > 64 || !(det > 1e-12 * (m00 * m11 + 1e-300))) continue;
         const double ux = (m11 * b0 - m01 * b1) / det, uy = (m00 * b1 - m01 * b0) / det;
         double s = 1;
-        for (int i = 0; i < deg; i++) { /* area A0 + s d: first zero at s = A0 / -d */
+        for (int i = 0; i < deg && !full; i++) { /* area A0 + s d: first zero at s = A0 / -d */
             const double d = G[i][0] * ux + G[i][1] * uy;
             if (d < 0) s = std::min(s, KEEP * A0[i] / -d);
         }
@@ -272,7 +273,7 @@ ccdt_engine *ccdt_create_from(int64_t n, const double *xy, double L, double tol,
 
 void ccdt_free(ccdt_engine *E) { delete E; }
 
-double ccdt_sweep(ccdt_engine *E) { return sweep(E) / E->L; }
+double ccdt_sweep(ccdt_engine *E) { return sweep(E, false) / E->L; }
 
 int64_t ccdt_delaunay(ccdt_engine *E)
 {
@@ -289,12 +290,13 @@ void ccdt_iterate(ccdt_engine *E, cfpo_iter_stats *s)
     E->start = E->xy;
     const double e0 = ccdt_energy(E);
     E->sweeps = 0;
-    while (E->sweeps < MAX_SWEEPS) {
+    const bool ref = E->ref_iters > 0;
+    while (E->sweeps < (ref ? 1 : MAX_SWEEPS)) {
         E->sweeps++;
-        if (sweep(E) < tolL) break;
+        if (sweep(E, ref) < tolL) break;
     }
     char err[256];
-    const double lam = E->lambda; /* the step: lam of the way to the phase's result */
+    const double lam = ref ? 1.0 : E->lambda; /* the step: lam of the way to the phase's result */
     if (lam < 1)
         for (size_t i = 0; i < 2 * (size_t)n; i++) E->xy[i] = E->start[i] + lam * (E->xy[i] - E->start[i]);
     E->step = lam;
@@ -303,7 +305,8 @@ void ccdt_iterate(ccdt_engine *E, cfpo_iter_stats *s)
         delaunay(E, 1, err, sizeof err);
         E->step = 0;
     }
-    E->lambda = ccdt_energy(E) > e0 ? SHRINK * lam : std::min(1.0, GROW * lam);
+    if (!ref) E->lambda = ccdt_energy(E) > e0 ? SHRINK * lam : std::min(1.0, GROW * lam);
+    E->done_iters++;
     int64_t moved = 0;
     double maxd2 = 0;
     for (int64_t i = 0; i < n; i++) {
@@ -315,12 +318,13 @@ void ccdt_iterate(ccdt_engine *E, cfpo_iter_stats *s)
     s->solved = n * E->sweeps;
     s->max_disp = std::sqrt(maxd2) / E->L;
     s->max_move = s->max_disp;
-    s->converged = cfpo_net_converged(moved, s->max_disp, E->tol);
+    s->converged = ref ? E->done_iters >= E->ref_iters : cfpo_net_converged(moved, s->max_disp, E->tol);
     ccdt_deltas(E, &s->delta_min, &s->delta_avg);
     s->seconds = cli_now() - t0;
 }
 
 double ccdt_step(const ccdt_engine *E) { return E->step; }
+void ccdt_set_reference(ccdt_engine *E, int iterations) { E->ref_iters = iterations > 0 ? iterations : 0; }
 int ccdt_sweeps(const ccdt_engine *E) { return E->sweeps; }
 int64_t ccdt_new_edges(const ccdt_engine *E) { return E->new_edges; }
 

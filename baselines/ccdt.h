@@ -41,6 +41,12 @@
  * degenerate triangle), the damping, re-triangulation instead of flips
  * (same triangulation), and the start (uniform random points).
  *
+ * The reference schedule (ccdt_set_reference; the comparison code of de
+ * Goes et al.'s BNOT paper runs CCDT so): an iteration is one Gauss-Seidel
+ * sweep with full steps (every point to its least-squares position, no
+ * guard against inversion), then the Delaunay phase; no damping; a fixed
+ * number K of iterations (converged after the K-th).
+ *
  * Monotonicity (what holds exactly, up to rounding): each vertex update
  * does not increase the energy of the fixed connectivity (the local sum is
  * a convex quadratic in the step, smallest at s = 1), so neither does a
@@ -85,6 +91,9 @@ void ccdt_iterate(ccdt_engine *E, cfpo_iter_stats *s);
 double ccdt_sweep(ccdt_engine *E);
 int64_t ccdt_delaunay(ccdt_engine *E);
 
+/* The reference schedule for K iterations from the next one on (K 0:
+ * the damped schedule to convergence, the default). */
+void ccdt_set_reference(ccdt_engine *E, int iterations);
 /* Sweeps, step taken (fraction of the geometry phase's moves; 0: none)
  * and new Delaunay edges of the last iteration. */
 int ccdt_sweeps(const ccdt_engine *E);

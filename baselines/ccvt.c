@@ -22,6 +22,8 @@
 struct ccvt_engine {
     int64_t n, m;
     double L, tol;
+    int update;         /* CCVT_UPDATE_PAIR or CCVT_UPDATE_PASS */
+    double *site0;      /* 2 n: the sites at the start of the pass */
     double *pts;        /* 2 n m: slot k of site i at 2 (i m + k) */
     double *site;       /* 2 n */
     double *r;          /* largest distance of each site to its points */
@@ -42,6 +44,18 @@ void ccvt_options_init(ccvt_options *o)
     memset(o, 0, sizeof *o);
     o->seed = 1;
     o->tol = CFPO_DEFAULT_TOL;
+    o->points = CCVT_POINTS_LATTICE;
+    o->update = CCVT_UPDATE_PAIR;
+}
+
+int ccvt_lattice_shape(int64_t N, int64_t *cols, int64_t *rows)
+{
+    int64_t a = (int64_t)floor(sqrt((double)N));
+    while (a > 1 && (a + 1) * (a + 1) <= N) a++;
+    while (a > 1 && N % a != 0) a--;
+    *rows = a;
+    *cols = N / a;
+    return a >= 1 && *cols <= 2 * a ? 0 : -1;
 }
 
 int64_t ccvt_default_m(int64_t n)
@@ -97,6 +111,7 @@ static ccvt_engine *alloc_engine(int64_t n, int64_t m, double L, double tol, cha
     E->tol = tol;
     E->pts = malloc((size_t)(2 * n * m) * sizeof *E->pts);
     E->site = malloc((size_t)(2 * n) * sizeof *E->site);
+    E->site0 = malloc((size_t)(2 * n) * sizeof *E->site0);
     E->r = malloc((size_t)n * sizeof *E->r);
     E->dirty_prev = malloc((size_t)n);
     E->dirty_cur = calloc((size_t)n, 1);
@@ -105,7 +120,7 @@ static ccvt_engine *alloc_engine(int64_t n, int64_t m, double L, double tol, cha
     E->ci = malloc((size_t)m * sizeof *E->ci);
     E->cj = malloc((size_t)m * sizeof *E->cj);
     E->nn = malloc((size_t)n * sizeof *E->nn);
-    if (!E->pts || !E->site || !E->r || !E->dirty_prev || !E->dirty_cur || !E->gi || !E->gj ||
+    if (!E->pts || !E->site || !E->site0 || !E->r || !E->dirty_prev || !E->dirty_cur || !E->gi || !E->gj ||
         !E->ci || !E->cj || !E->nn)
         goto oom;
     memset(E->dirty_prev, 1, (size_t)n);
@@ -172,14 +187,106 @@ static int cmp_u64(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* Discrete point k of the start: node (k mod cols, k div cols) of the
+ * cols x rows lattice from the origin (Balzer's), or uniform random. */
+static void start_point(const ccvt_options *o, int64_t cols, int64_t rows, int64_t k, double *xy)
+{
+    if (o->points == CCVT_POINTS_LATTICE) {
+        xy[0] = (double)(k % cols) / (double)cols;
+        xy[1] = (double)(k / cols) / (double)rows;
+    } else {
+        xy[0] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k);
+        xy[1] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k + 1);
+    }
+}
+
+/* Balzer's start: the sites uniform random in index order; the points,
+ * the last first (lattice: columns from the right, each from the top),
+ * each to the nearest site not yet full (periodic distance), found by
+ * rings of a grid of about 2 sites a cell, full sites taken out of it.
+ * 0, or -1 out of memory. */
+static int assign_nearest(ccvt_engine *E, const ccvt_options *o, int64_t cols, int64_t rows)
+{
+    const int64_t n = E->n, m = E->m, N = n * m;
+    int64_t g = (int64_t)floor(sqrt((double)n / 2.0));
+    if (g < 1) g = 1;
+    int64_t *start = calloc((size_t)(g * g + 1), sizeof *start), *fill = calloc((size_t)n, sizeof *fill);
+    int32_t *cs = malloc((size_t)n * sizeof *cs), *cnt = calloc((size_t)(g * g), sizeof *cnt);
+    if (!start || !fill || !cs || !cnt) {
+        free(start); free(fill); free(cs); free(cnt);
+        return -1;
+    }
+#define CELL(x, y) ((((int64_t)((y) * (double)g)) % g) * g + ((int64_t)((x) * (double)g)) % g)
+    for (int64_t i = 0; i < n; i++) start[CELL(E->site[2 * i], E->site[2 * i + 1]) + 1]++;
+    for (int64_t c = 0; c < g * g; c++) start[c + 1] += start[c];
+    for (int64_t i = 0; i < n; i++) {
+        const int64_t c = CELL(E->site[2 * i], E->site[2 * i + 1]);
+        cs[start[c] + cnt[c]++] = (int32_t)i;
+    }
+    const double side = 1.0 / (double)g;
+    for (int64_t t = N - 1; t >= 0; t--) {
+        double p[2];
+        if (o->points == CCVT_POINTS_LATTICE) { /* Balzer's order: x outer, y inner */
+            p[0] = (double)(t / rows) / (double)cols;
+            p[1] = (double)(t % rows) / (double)rows;
+        } else {
+            start_point(o, cols, rows, t, p);
+        }
+        const int64_t c0 = CELL(p[0], p[1]), cx = c0 % g, cy = c0 / g;
+        double best = INFINITY;
+        int64_t bi = -1;
+        for (int64_t r = 0; r <= g / 2 + 1; r++) {
+            if (bi >= 0 && (double)(r - 1) * side * ((double)(r - 1) * side) >= best) break;
+            for (int64_t dy = -r; dy <= r; dy++)
+                for (int64_t dx = -r; dx <= r; dx++) {
+                    if (dx > -r && dx < r && dy > -r && dy < r) continue; /* ring r only */
+                    const int64_t c = ((cy + dy) % g + g) % g * g + ((cx + dx) % g + g) % g;
+                    for (int32_t k = 0; k < cnt[c]; k++) {
+                        const int64_t i = cs[start[c] + k];
+                        const double d = d2(p, E->site + 2 * i);
+                        if (d < best || (d == best && i < bi)) { best = d; bi = i; }
+                    }
+                }
+        }
+        E->pts[2 * (bi * m + fill[bi])] = p[0];
+        E->pts[2 * (bi * m + fill[bi]) + 1] = p[1];
+        if (++fill[bi] == m) { /* full: out of its cell */
+            const int64_t c = CELL(E->site[2 * bi], E->site[2 * bi + 1]);
+            for (int32_t k = 0; k < cnt[c]; k++)
+                if (cs[start[c] + k] == bi) { cs[start[c] + k] = cs[start[c] + --cnt[c]]; break; }
+        }
+    }
+#undef CELL
+    free(start); free(fill); free(cs); free(cnt);
+    return 0;
+}
+
 ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t errlen)
 {
     cfpo_grid G;
     if (cfpo_grid_init(&G, n, CFPO_VARIANT_PAPER, o->seed, err, errlen) != 0) return NULL;
-    int64_t m = o->m > 0 ? o->m : ccvt_default_m(n);
+    int64_t m = o->m > 0 ? o->m : ccvt_default_m(n), cols = 0, rows = 0;
+    const int64_t N = n * m;
+    if (o->points == CCVT_POINTS_LATTICE && ccvt_lattice_shape(N, &cols, &rows) != 0) {
+        snprintf(err, errlen,
+                 "n m = %lld points have no lattice of nearly square cells (best %lld x %lld); "
+                 "choose another --points-per-site or --point-set random",
+                 (long long)N, (long long)cols, (long long)rows);
+        return NULL;
+    }
     ccvt_engine *E = alloc_engine(n, m, G.L, o->tol, err, errlen);
     if (!E) return NULL;
-    const int64_t N = n * m;
+    E->update = o->update;
+    if (o->assign == CCVT_ASSIGN_NEAREST) {
+        for (int64_t i = 0; i < 2 * n; i++) E->site[i] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, (uint64_t)i);
+        if (assign_nearest(E, o, cols, rows) != 0) {
+            ccvt_free(E);
+            snprintf(err, errlen, "out of memory for the start of %lld points", (long long)N);
+            return NULL;
+        }
+        for (int64_t i = 0; i < n; i++) E->r[i] = radius(E, i);
+        return E;
+    }
     uint64_t *key = malloc((size_t)(N > n ? N : n) * sizeof *key);
     if (!key) {
         ccvt_free(E);
@@ -202,16 +309,12 @@ ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t err
     }
     /* the points, in the order of the curve: run r of m goes to site r */
     for (int64_t k = 0; k < N; k++) {
-        double x = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k);
-        double y = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k + 1);
-        key[k] = (uint64_t)hilbert_key(x, y, ox, oy) << 32 | (uint64_t)k;
+        double xy[2];
+        start_point(o, cols, rows, k, xy);
+        key[k] = (uint64_t)hilbert_key(xy[0], xy[1], ox, oy) << 32 | (uint64_t)k;
     }
     qsort(key, (size_t)N, sizeof *key, cmp_u64);
-    for (int64_t s = 0; s < N; s++) {
-        uint64_t k = key[s] & 0xffffffffu;
-        E->pts[2 * s] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * k);
-        E->pts[2 * s + 1] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * k + 1);
-    }
+    for (int64_t s = 0; s < N; s++) start_point(o, cols, rows, (int64_t)(key[s] & 0xffffffffu), E->pts + 2 * s);
     free(key);
     for (int64_t i = 0; i < n; i++) E->r[i] = radius(E, i);
     return E;
@@ -222,6 +325,7 @@ void ccvt_free(ccvt_engine *E)
     if (!E) return;
     free(E->pts);
     free(E->site);
+    free(E->site0);
     free(E->r);
     free(E->dirty_prev);
     free(E->dirty_cur);
@@ -345,6 +449,16 @@ static int64_t candidates(const ccvt_engine *E, const double *g, double above, i
     return k;
 }
 
+/* Site i to the centroid of its points; its radius with it. */
+static void to_centroid(ccvt_engine *E, int64_t i)
+{
+    double c[2];
+    centroid(E, i, E->site + 2 * i, c);
+    E->site[2 * i] = c[0];
+    E->site[2 * i + 1] = c[1];
+    if (E->update == CCVT_UPDATE_PAIR) E->r[i] = radius(E, i);
+}
+
 /* Swaps while the best remaining point of i and of j gain together; returns
  * the swaps made and adds their total gain to *gain. */
 static int64_t swap_pair(ccvt_engine *E, int64_t i, int64_t j, double *gain)
@@ -387,6 +501,7 @@ void ccvt_iterate(ccvt_engine *E, cfpo_iter_stats *s)
     double gain = 0;
     E->swaps = 0;
     memset(E->dirty_cur, 0, (size_t)n);
+    memcpy(E->site0, E->site, (size_t)(2 * n) * sizeof *E->site);
     for (size_t k = 0; k < E->npairs; k++) {
         int64_t i = E->pairs[k] / n, j = E->pairs[k] % n;
         if (!(E->dirty_prev[i] || E->dirty_prev[j] || E->dirty_cur[i] || E->dirty_cur[j])) continue;
@@ -395,19 +510,20 @@ void ccvt_iterate(ccvt_engine *E, cfpo_iter_stats *s)
         if (w) {
             E->swaps += w;
             E->dirty_cur[i] = E->dirty_cur[j] = 1;
+            if (E->update == CCVT_UPDATE_PAIR) { /* Balzer's: both move now */
+                to_centroid(E, i);
+                to_centroid(E, j);
+            }
         }
     }
     E->energy_swapped = E->check ? ccvt_energy(E) : NAN;
-    /* the sites that swapped move to their centroids */
+    /* the sites that swapped move to their centroids (once a pass) */
     double maxd2 = 0;
     for (int64_t i = 0; i < n; i++) {
         if (!E->dirty_cur[i]) continue;
-        double c[2];
-        centroid(E, i, E->site + 2 * i, c);
-        double dd = d2(c, E->site + 2 * i);
+        if (E->update == CCVT_UPDATE_PASS) to_centroid(E, i);
+        double dd = d2(E->site0 + 2 * i, E->site + 2 * i);
         if (dd > maxd2) maxd2 = dd;
-        E->site[2 * i] = c[0];
-        E->site[2 * i + 1] = c[1];
         s->moved++;
     }
     unsigned char *t = E->dirty_prev;
@@ -415,12 +531,13 @@ void ccvt_iterate(ccvt_engine *E, cfpo_iter_stats *s)
     E->dirty_cur = t;
     s->max_disp = sqrt(maxd2) / E->L;
     s->max_move = s->max_disp;
-    s->converged = cfpo_net_converged(E->swaps, s->max_disp, E->tol);
+    s->converged = E->update == CCVT_UPDATE_PAIR ? E->swaps == 0 : cfpo_net_converged(E->swaps, s->max_disp, E->tol);
     ccvt_deltas(E, &s->delta_min, &s->delta_avg);
     s->seconds = cli_now() - t0;
 }
 
 int64_t ccvt_swaps(const ccvt_engine *E) { return E->swaps; }
+void ccvt_set_update(ccvt_engine *E, int update) { E->update = update; }
 void ccvt_set_check(ccvt_engine *E, int on) { E->check = on; }
 double ccvt_energy_after_swaps(const ccvt_engine *E) { return E->energy_swapped; }
 

@@ -1,11 +1,15 @@
 /* ccvt.h - capacity-constrained Voronoi tessellation by discrete point
  * swapping (Balzer, Schloemer, Deussen 2009) on the unit torus.
  *
- * Owns: the n sites and the n * m discrete points (m per site, uniform
+ * Owns: the n sites and the n * m discrete points (m per site; by default
+ * the nodes of a regular lattice, as Balzer's code lays them, else uniform
  * random), the assignment of points to sites (site i owns slots
  * i*m .. i*m+m-1, so every site owns exactly m points by construction and a
  * swap exchanges two slots), one iteration (the swap step over pairs of
- * sites, then every site that swapped moves to the centroid of its points),
+ * sites in increasing (i, j) order; by default, as in Balzer's code, both
+ * sites of a pair that swapped move to the centroids of their points at
+ * once, before the next pair; or, CCVT_UPDATE_PASS, every site that
+ * swapped moves once after the whole pass),
  * the energy (the sum over the points of the squared periodic distance to
  * their site) and the iteration statistics.
  * Does not own: the stopping loop, files or the command line (main_ccvt.c).
@@ -20,7 +24,19 @@
  * its points (pairs from a hash grid of the sites); and a pair whose two
  * sites are unchanged since it last made no swap cannot swap now (skipped).
  *
- * Start: n uniform random sites (the paper's). Their assignment is a
+ * The lattice: cols x rows nodes (k mod cols, k div cols) / (cols, rows)
+ * from the origin, cols x rows = n m, rows the largest divisor of n m up to
+ * sqrt(n m) (a square sqrt(nm) x sqrt(nm) lattice when n m is a square, as
+ * for every power-of-two n and m); refused when cols > 2 rows.
+ *
+ * Converged (CCVT_UPDATE_PAIR): a whole pass swapped nothing (Balzer's
+ * rule; --tol plays no part). CCVT_UPDATE_PASS: no swap, or no site moved
+ * tol * L (cfpo_net_converged).
+ *
+ * Start: n uniform random sites (the paper's). The assignment, by default
+ * Balzer's code's (CCVT_ASSIGN_NEAREST): the points, last first, each to
+ * the nearest site not yet full; the sites stay where they are until
+ * they swap. CCVT_ASSIGN_CURVE, the other: a
  * choice of this implementation (the paper assigns at random, which makes
  * every pair a candidate, O(n^2 m) per iteration): sites and points sorted
  * along one Hilbert curve laid at a random offset on the torus, the points
@@ -43,31 +59,44 @@
 
 #include "cfpo.h"
 
+enum { CCVT_POINTS_LATTICE = 0, CCVT_POINTS_RANDOM = 1 };
+enum { CCVT_UPDATE_PAIR = 0, CCVT_UPDATE_PASS = 1 };
+enum { CCVT_ASSIGN_NEAREST = 0, CCVT_ASSIGN_CURVE = 1 };
+
 typedef struct {
     uint64_t seed;
     int64_t m;    /* points per site; 0: ccvt_default_m(n) */
-    double tol;   /* relative to L, as cfpo's tol */
+    double tol;   /* relative to L, as cfpo's tol (CCVT_UPDATE_PASS only) */
+    int points;   /* CCVT_POINTS_LATTICE (default) or CCVT_POINTS_RANDOM */
+    int update;   /* CCVT_UPDATE_PAIR (default) or CCVT_UPDATE_PASS */
+    int assign;   /* CCVT_ASSIGN_NEAREST (default) or CCVT_ASSIGN_CURVE */
 } ccvt_options;
 
 void ccvt_options_init(ccvt_options *o);
 int64_t ccvt_default_m(int64_t n);
+/* The lattice of N points: cols x rows; -1 when cols > 2 rows. */
+int ccvt_lattice_shape(int64_t N, int64_t *cols, int64_t *rows);
 
 typedef struct ccvt_engine ccvt_engine;
 
-/* The random start. NULL with a message when out of memory or n * m is too
- * large (the caller checks n against cfpo's minimum). */
+/* The start (random sites, lattice or random points). NULL with a message
+ * when out of memory, n * m is too large or has no lattice (the caller
+ * checks n against cfpo's minimum). */
 ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t errlen);
 /* A given start: n * m points (xy interleaved, in [0,1)), site i owning
- * points i*m .. i*m+m-1; sites at their centroids; scale L. For tests. */
+ * points i*m .. i*m+m-1; sites at their centroids; scale L; the update
+ * CCVT_UPDATE_PAIR. For tests. */
 ccvt_engine *ccvt_create_from(int64_t n, int64_t m, const double *pts, double L, double tol,
                               char *err, size_t errlen);
 void ccvt_free(ccvt_engine *E);
 
 /* One iteration. s->moved: sites that moved (swapped points); s->solved:
  * pairs of sites compared; s->max_disp: the largest site move / L;
- * s->converged: no swap, or max_disp < tol (cfpo_net_converged). */
+ * s->converged: see above. */
 void ccvt_iterate(ccvt_engine *E, cfpo_iter_stats *s);
 
+/* CCVT_UPDATE_PAIR or CCVT_UPDATE_PASS from the next iteration on. */
+void ccvt_set_update(ccvt_engine *E, int update);
 /* Swaps of the last iteration. */
 int64_t ccvt_swaps(const ccvt_engine *E);
 /* The energy, recomputed from scratch (O(n m)). With checking on (for

@@ -2,6 +2,7 @@
  * tessellation (ccvt.h) with the iterative baselines' command line
  * (iter_main.h). The output is the sites. */
 #include <stdio.h>
+#include <string.h>
 
 #include "ccvt.h"
 #include "cli.h"
@@ -9,11 +10,27 @@
 
 typedef struct {
     int64_t m;
+    int points, update, assign;
 } ccvt_ctx;
 
+/* --points-per-site M, --point-set lattice|random, --update pair|pass,
+ * --assign nearest|curve */
 static int parse_m(void *ctx, int which, const char *arg, char *err, size_t errlen)
 {
-    (void)which; /* the one option: --points-per-site */
+    ccvt_ctx *c = ctx;
+    if (which >= 1) {
+        static const char *const name[] = {"", "point-set", "update", "assign"};
+        static const char *const first[] = {"", "lattice", "pair", "nearest"};
+        static const char *const second[] = {"", "random", "pass", "curve"};
+        int *v = which == 1 ? &c->points : which == 2 ? &c->update : &c->assign;
+        if (strcmp(arg, first[which]) == 0) *v = 0;
+        else if (strcmp(arg, second[which]) == 0) *v = 1;
+        else {
+            snprintf(err, errlen, "--%s: '%s' is neither %s nor %s", name[which], arg, first[which], second[which]);
+            return -1;
+        }
+        return 0;
+    }
     int64_t v;
     if (cli_parse_i64(arg, 1, 1 << 20, &v) != 0) {
         snprintf(err, errlen, "--points-per-site: '%s' is not a whole number in 1..2^20", arg);
@@ -39,6 +56,9 @@ static void *create(void *ctx, int64_t n, uint64_t seed, double tol, char *err, 
     o.seed = seed;
     o.tol = tol;
     o.m = ((ccvt_ctx *)ctx)->m;
+    o.points = ((ccvt_ctx *)ctx)->points;
+    o.update = ((ccvt_ctx *)ctx)->update;
+    o.assign = ((ccvt_ctx *)ctx)->assign;
     return ccvt_create(n, &o, err, errlen);
 }
 
@@ -58,13 +78,24 @@ int main(int argc, char **argv)
         .prog = "cfpo-ccvt",
         .method = "ccvt",
         .about = "Capacity-constrained Voronoi tessellation (Balzer, Schloemer, Deussen 2009) on the\n"
-                 "unit torus: every site owns m discrete points; points are swapped between\n"
-                 "neighbouring sites while that lowers the energy, and sites move to the\n"
-                 "centroids of their points. Prints one SUMMARY line on stdout.",
+                 "unit torus: every site owns m discrete points (by default the nodes of a\n"
+                 "regular lattice, as Balzer's code); points are swapped between neighbouring\n"
+                 "sites while that lowers the energy, and both sites of a pair that swapped move\n"
+                 "to the centroids of their points at once; converged when a whole pass swaps\n"
+                 "nothing (--tol plays no part unless --update pass). Prints one SUMMARY line\n"
+                 "on stdout.",
         .options_help =
             "      --points-per-site M  discrete points per site (default 1024 up to\n"
-            "                       n = 16384, then 2^24 / n, at least 16); memory 16 n M bytes\n",
-        .options = (const it_option[]){{"points-per-site", 1}, {NULL, 0}},
+            "                       n = 16384, then 2^24 / n, at least 16); memory 16 n M bytes\n"
+            "      --point-set P    lattice (default: a regular lattice of n M nodes) or random\n"
+            "                       (uniform random points)\n"
+            "      --update U       pair (default: sites move right after their pair swaps)\n"
+            "                       or pass (every site that swapped moves after the pass;\n"
+            "                       converged also when no site moves --tol * L)\n"
+            "      --assign A       nearest (default: the points, last first, each to the\n"
+            "                       nearest site not yet full, as Balzer's code) or curve (runs\n"
+            "                       of m points along a Hilbert curve to the sites in its order)\n",
+        .options = (const it_option[]){{"points-per-site", 1}, {"point-set", 1}, {"update", 1}, {"assign", 1}, {NULL, 0}},
         .trace_extra = "\tswaps",
         .parse_option = parse_m,
         .bytes = bytes,

@@ -5,6 +5,10 @@
 #   COMP_N        points per set in the comparison, evolution and convergence
 #   COMP_THREADS  threads of CFPO in the comparison (1: every method on one
 #                 core, so the seconds compare like for like)
+#   COMP_TOGETHER one-thread comparison runs of one method (successive
+#                 seeds) that start together, each pinned to its own core
+#                 (at most the cores; 1: every run alone, the seconds free of
+#                 a neighbour's use of the memory system)
 #   EVO_ITERS     iterations at which CFPO is stopped for the evolution figure
 #                 (the converged column reuses the comparison's CFPO sets)
 #   RT_REPS       seeds per configuration of the runtime experiment
@@ -26,6 +30,7 @@
 #                 of one n and seed start together, one per core, pinned
 #                 (taskset), in groups of as many as there are cores, in this
 #                 order; a run on several threads runs alone
+#   TTQ_CONFIGS_<n>  the configurations at n when they differ (unset: TTQ_CONFIGS)
 #
 # The runtime figure uses every uncapped run (comparison and runtime
 # experiments), so the runtime plan leaves out n = COMP_N on COMP_THREADS.
@@ -44,6 +49,7 @@ bench_profile() {
   # iteration, each waiting for a descheduled thread); see README.md
   export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
   COMP_THREADS=1
+  COMP_TOGETHER=$(nproc)
   EVO_ITERS="0 1 2 5 10"
   RT_THREADS=$(bench_threads_list)
   TTQ_TARGET_MIN=0.925; TTQ_TARGET_AVG=0.929
@@ -60,16 +66,21 @@ bench_profile() {
       ;;
     default)
       SETS=10; COMP_N=4096; RT_REPS=1
-      RT_SIZES_cfpo="1024 4096 16384 65536"; RT_SIZES_simplified="1024 4096 16384"
-      RT_SIZES_fpo="1024 16384"; RT_SIZES_lfpo="1024 16384"
-      RT_SIZES_ccvt="1024 16384"; RT_SIZES_ccdt="1024 16384"
-      RT_SIZES_bnot="1024 4096"
+      RT_SIZES_cfpo="1024 4096 16384"; RT_SIZES_simplified="1024 4096"
+      RT_SIZES_fpo="1024 16384"; RT_SIZES_lfpo="1024"
+      RT_SIZES_ccvt="1024"; RT_SIZES_ccdt="1024"
+      RT_SIZES_bnot="1024 4096 16384"
+      # at 65,536 points only the experiment the CFPO schedule is tuned
+      # on: adaptive CFPO on one and two threads against FPO (CFPO-paper
+      # and LFPO there: PROFILE=paper)
+      TTQ_CONFIGS_65536="adaptive:1 fpo:1 adaptive:2"
       RT_SIZES_dart="1024 4096 16384 65536 262144"
       RT_SIZES_bs="1024 4096 16384 65536 262144"
       RT_SIZES_bridson="1024 4096 16384 65536 262144"
       ;;
     paper)
       SETS=10; COMP_N=4096; RT_REPS=1
+      COMP_TOGETHER=1
       RT_SIZES_cfpo="1024 4096 16384 65536 262144 1048576"
       RT_SIZES_simplified="1024 4096 16384 65536 262144"
       RT_SIZES_fpo="1024 4096 16384 65536 262144"; RT_SIZES_lfpo="1024 4096 16384 65536"
@@ -99,9 +110,9 @@ bench_estimate() {
     a["simplified"] = 654; b["simplified"] = 0.35; cap["simplified"] = 1550; c["simplified"] = 0.75e-6
     a["fpo"] = 166; b["fpo"] = 0.33; cap["fpo"] = 5000; c["fpo"] = 2.5e-6
     a["lfpo"] = 239; b["lfpo"] = 0.55; cap["lfpo"] = 5000; c["lfpo"] = 2.5e-6
-    a["ccvt"] = 260; b["ccvt"] = 0; cap["ccvt"] = 5000; c["ccvt"] = 2e-5
-    a["ccdt"] = 130; b["ccdt"] = 0; cap["ccdt"] = 5000; c["ccdt"] = 3e-5
-    a["bnot"] = 1000; b["bnot"] = 0.5; cap["bnot"] = 10000; c["bnot"] = 7e-6
+    a["ccvt"] = 330; b["ccvt"] = 0; cap["ccvt"] = 5000; c["ccvt"] = 1.5e-5
+    a["ccdt"] = 120; b["ccdt"] = 0.1; cap["ccdt"] = 5000; c["ccdt"] = 1.5e-5
+    a["bnot"] = 20; b["bnot"] = 0; cap["bnot"] = 20; c["bnot"] = 1.05e-5
     it = a[k] * (n / 1024) ^ b[k]; if (it > cap[k]) it = cap[k]
     if (m != "-" && m + 0 < it) it = m + 0
     s = c[k] * n * it

@@ -71,7 +71,9 @@ T0=$(date +%s.%N)
 plan="$work/tmp/plan.tsv"
 : >"$plan"
 cores=$(nproc)
-add() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t-\t-\n' "$1" "$2" "$3" "$4" "$5" "$6" "$(bench_estimate "$2" "$3" "$5" "$6")" "$7" >>"$plan"; }
+# add EXP KEY N SEED THREADS MAXITER OUT [BATCH]
+add() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t-\t%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$(bench_estimate "$2" "$3" "$5" "$6")" "$7" "${8:--}" >>"$plan"; }
+batch=0
 for it in $EVO_ITERS; do
   for s in $(seq 1 "$SETS"); do add evolution cfpo "$COMP_N" "$s" "$cores" "$it" "sets/evolution-it$it-s$s.txt"; done
 done
@@ -80,9 +82,19 @@ CFPO_KEYS=" $(methods_keys cfpo) "
 PD_KEYS=" $(methods_keys pd) "
 is_cfpo() { [[ $CFPO_KEYS == *" $1 "* ]]; }
 is_pd() { [[ $PD_KEYS == *" $1 "* ]]; }
+# the comparison: one-thread runs of one method in groups of COMP_TOGETHER
+# (at most one per core) that start together, each pinned to its own core
+together=$COMP_TOGETHER
+[ "$together" -gt "$cores" ] && together=$cores
 for k in $COMP_KEYS; do
   t=1; is_cfpo "$k" && t=$COMP_THREADS
-  for s in $(seq 1 "$SETS"); do add comparison "$k" "$COMP_N" "$s" "$t" - "sets/comparison-$k-s$s.txt"; done
+  slot=0
+  for s in $(seq 1 "$SETS"); do
+    if [ "$t" -gt 1 ] || [ "$together" -le 1 ]; then add comparison "$k" "$COMP_N" "$s" "$t" - "sets/comparison-$k-s$s.txt"; continue; fi
+    [ "$slot" -eq 0 ] && batch=$((batch + 1))
+    add comparison "$k" "$COMP_N" "$s" "$t" - "sets/comparison-$k-s$s.txt" "$batch"
+    slot=$(((slot + 1) % together))
+  done
 done
 for k in $(methods_keys cfpo) $(methods_keys iter) $(methods_keys pd); do
   var="RT_SIZES_$k"
@@ -107,7 +119,6 @@ fi
 # Time to quality: per n and seed, the one-thread configurations in groups
 # of `cores` that start together (a batch), each pinned to its own core; a
 # configuration on several threads is a batch of its own.
-batch=0
 add_ttq() { # key n seed threads
   local lim
   lim=$(bench_ttq_limit "$2")
@@ -117,7 +128,8 @@ add_ttq() { # key n seed threads
 for n in $TTQ_SIZES; do
   for s in $(seq 1 "$TTQ_SEEDS"); do
     slot=0
-    for c in $TTQ_CONFIGS; do
+    cv="TTQ_CONFIGS_$n"
+    for c in ${!cv:-$TTQ_CONFIGS}; do
       key=${c%:*}; t=${c#*:}
       if [ "$t" -gt 1 ] || [ "$slot" -eq 0 ] || [ "$slot" -ge "$cores" ]; then batch=$((batch + 1)); slot=0; fi
       if [ "$t" -gt 1 ]; then slot=$cores; else slot=$((slot + 1)); fi
@@ -200,7 +212,7 @@ csv="$work/runs.csv"
   echo "# git commit: $commit"
   echo "# libraries: FFTW $(pkgver libfftw3-dev); CGAL $(pkgver libcgal-dev); OpenMPI $(pkgver libopenmpi-dev); GMP $(pkgver libgmp-dev); gnuplot $(gnuplot --version | cut -d' ' -f2-)"
   echo "# environment: $( (env | grep -E '^(OMP|GOMP)_' || echo 'no OMP_ or GOMP_ variables') | sort | tr '\n' ' ' | sed 's/ $//')"
-  echo "# plan: SETS=$SETS COMP_N=$COMP_N COMP_THREADS=$COMP_THREADS EVO_ITERS=$EVO_ITERS RT_REPS=$RT_REPS RT_THREADS=$RT_THREADS TTQ_SIZES=$(echo $TTQ_SIZES $TTQ_BIG | tr ' ' ,) TTQ_SEEDS=$TTQ_SEEDS TTQ_MAXITER=$TTQ_MAXITER TTQ_TARGET_MIN=$TTQ_TARGET_MIN TTQ_TARGET_AVG=$TTQ_TARGET_AVG TTQ_CONFIGS=$(echo $TTQ_CONFIGS | tr ' ' ,) TASKSET=$([ -n "$TASKSET" ] && echo yes || echo no); $NJOBS runs"
+  echo "# plan: SETS=$SETS COMP_N=$COMP_N COMP_THREADS=$COMP_THREADS COMP_TOGETHER=$together EVO_ITERS=$EVO_ITERS RT_REPS=$RT_REPS RT_THREADS=$RT_THREADS TTQ_SIZES=$(echo $TTQ_SIZES $TTQ_BIG | tr ' ' ,) TTQ_SEEDS=$TTQ_SEEDS TTQ_MAXITER=$TTQ_MAXITER TTQ_TARGET_MIN=$TTQ_TARGET_MIN TTQ_TARGET_AVG=$TTQ_TARGET_AVG TTQ_CONFIGS=$(echo $TTQ_CONFIGS | tr ' ' ,)$(for n in $TTQ_SIZES; do v=TTQ_CONFIGS_$n; [ -n "${!v:-}" ] && printf ' TTQ_CONFIGS_%s=%s' "$n" "$(echo ${!v} | tr ' ' ,)"; done) TASKSET=$([ -n "$TASKSET" ] && echo yes || echo no); $NJOBS runs"
   echo "# load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "# columns: seconds = the tool's own sampling time (start included, writing excluded); seconds_per_iteration = seconds / iterations; peak_bytes = peak resident memory of the process; n = points produced, n_target = points asked for; max_iter = iteration cap (- none); wall_seconds = the whole process as timed by this script; time_limit = --time-limit of a ttq run (- none); stop = the rule that ended the run (SUMMARY stop=); batch = runs with the same number started together, one per core (- alone)"
   echo "run,experiment,method,variant,n,n_target,seed,threads,ranks,max_iter,iterations,seconds,seconds_per_iteration,delta_min,delta_avg,peak_bytes,converged,wall_seconds,trace,time_limit,stop,batch"
@@ -225,13 +237,13 @@ for k in $(methods_keys); do
 done
 declare -a R_LABEL R_PID R_T1 R_T2 R_RC
 # launch I SLOT: starts plan line I (0-based; run I+1) in the background,
-# one-thread ttq runs pinned to the SLOT-th allowed CPU
+# the one-thread runs of a batch pinned to the SLOT-th allowed CPU
 launch() {
   local i=$1 slot=$2 exp key n seed t maxit est out lim bat id cmd
   IFS=$'\t' read -r exp key n seed t maxit est out lim bat <<<"${PLAN[$i]}"
   id=$(printf '%04d' $((i + 1)))
   cmd=()
-  if [ "$exp" = ttq ] && [ "$t" = 1 ] && [ -n "$TASKSET" ]; then
+  if [ "$bat" != - ] && [ "$t" = 1 ] && [ -n "$TASKSET" ]; then
     cmd=("$TASKSET" -c "${CPUS[$((slot % ${#CPUS[@]}))]}")
   fi
   if [ "$key" = cfpo-mpi ]; then

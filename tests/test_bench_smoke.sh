@@ -4,7 +4,8 @@
 # the folder and nothing else appears; runs.csv has the documented header and
 # columns, one well-formed row per planned run, every method and experiment;
 # the evolution snapshots are the states their traces say; the time-to-
-# quality runs are the planned configurations, batched one per core, each
+# quality runs are the planned configurations, batched one per core (and
+# the comparison's one-thread runs of a method two by two on 2 cores), each
 # stopped by the rule its own trace shows, with a quality.csv row each;
 # `--plan` lists exactly the runs made; every figure is a PNG (signature and
 # header checked); summary.md shows every figure and numbers that recompute
@@ -137,6 +138,13 @@ badb=$(grep -v '^#' "$csv" | awk -F, -v cores="$(nproc)" '$2 == "ttq" {
   END { for (b in c) if (bad[b] || c[b] > cores || ((b in multi) && c[b] > 1)) printf "%s ", b
         if (cores >= 2) for (b in ad) if (!(b in fp)) printf "%s(cfpo without fpo) ", b }')
 check "ttq batches well formed${badb:+ (bad: $badb)}" [ -z "$badb" ]
+# comparison batches (COMP_TOGETHER): one method and one thread each, at
+# most one run per core, every one-thread run in one when there are 2 cores
+badc=$(grep -v '^#' "$csv" | awk -F, -v cores="$(nproc)" '$2 == "comparison" {
+    b = $22; if (b == "-") { if (cores >= 2 && $8 == 1) printf "%s(alone) ", $1; next }
+    m = $3 "/" $4; c[b]++; if ((b in key) && key[b] != m) bad[b] = 1; key[b] = m; if ($8 > 1) bad[b] = 1 }
+  END { for (b in c) if (bad[b] || c[b] > cores) printf "%s ", b }')
+check "comparison batches well formed${badc:+ (bad: $badc)}" [ -z "$badc" ]
 # each run stopped by the rule its own trace shows
 badt=$(grep -v '^#' "$csv" | awk -F, -v R="$R" -v a="$tmin" -v b="$tavg" '$2 == "ttq" {
     f = R "/" $19; first = ""; last = ""; lel = ""; rows = 0

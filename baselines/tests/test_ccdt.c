@@ -13,7 +13,12 @@
  *    the Delaunay triangulation rose over an iteration, else 1.25 times it
  *    (at most 1); a run converges under tol and evens the areas out;
  *  - a perturbed lattice of equal triangles returns to equal areas;
- *  - the same seed gives the same points, another seed other points. */
+ *  - the same seed gives the same points, another seed other points;
+ *  - the reference schedule (ccdt_set_reference K): every iteration one
+ *    sweep at the full step 1, the run converged exactly at iteration K,
+ *    the triangulation valid after each, the areas evened out over the
+ *    run, the points other than the damped schedule's, and the same for
+ *    the same seed. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -170,6 +175,40 @@ static void determinism(void)
     ccdt_free(C);
 }
 
+static void reference(int64_t n, int K)
+{
+    char err[256];
+    ccdt_engine *A = ccdt_create(n, 3, 1e-4, err, sizeof err), *B = ccdt_create(n, 3, 1e-4, err, sizeof err);
+    ccdt_engine *D = ccdt_create(n, 3, 1e-4, err, sizeof err);
+    CHECK(A && B && D, "create: %s", err);
+    if (!A || !B || !D) return;
+    ccdt_set_reference(A, K);
+    ccdt_set_reference(B, K);
+    const double cv0 = ccdt_area_cv(A);
+    cfpo_iter_stats s, t;
+    memset(&s, 0, sizeof s);
+    memset(&t, 0, sizeof t);
+    int bad_step = 0, bad_conv = 0, bad_valid = 0;
+    for (int it = 1; it <= K; it++) {
+        ccdt_iterate(A, &s);
+        ccdt_iterate(B, &t);
+        ccdt_iterate(D, &t);
+        if (ccdt_sweeps(A) != 1 || ccdt_step(A) != 1) bad_step++;
+        if (s.converged != (it == K)) bad_conv++;
+        if (!ccdt_check(A)) bad_valid++;
+    }
+    CHECK(bad_step == 0, "reference n=%lld: %d iterations not one sweep at step 1", (long long)n, bad_step);
+    CHECK(bad_conv == 0, "reference n=%lld: %d iterations with converged != (iteration == %d)", (long long)n, bad_conv, K);
+    CHECK(bad_valid == 0, "reference n=%lld: %d invalid triangulations", (long long)n, bad_valid);
+    CHECK(ccdt_area_cv(A) < 0.5 * cv0, "reference n=%lld: area cv %.3f -> %.3f only", (long long)n, cv0, ccdt_area_cv(A));
+    CHECK(memcmp(ccdt_points(A), ccdt_points(B), 2 * (size_t)n * sizeof(double)) == 0, "reference: same seed, other points");
+    CHECK(memcmp(ccdt_points(A), ccdt_points(D), 2 * (size_t)n * sizeof(double)) != 0,
+          "reference: the same points as the damped schedule");
+    ccdt_free(A);
+    ccdt_free(B);
+    ccdt_free(D);
+}
+
 int main(void)
 {
     phases(300, 12, 4);
@@ -178,5 +217,6 @@ int main(void)
     lattice(8, 0.2);
     lattice(12, 0.3);
     determinism();
+    reference(500, 12);
     return test_report(passed_, failed_);
 }

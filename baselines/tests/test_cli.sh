@@ -104,7 +104,7 @@ for c in cfpo-ccvt cfpo-ccdt cfpo-bnot; do
   case $c in
     cfpo-ccvt) extra=$(printf '\tswaps') ;;
     cfpo-ccdt) extra=$(printf '\tsweeps\tstep\tnew_edges\tarea_cv') ;;
-    *) extra=$(printf '\tnewton\tcg\tcap_err\tenergy') ;;
+    *) extra=$(printf '\tnewton\tcg\tcap_err\tenergy\tgrad_norm\tphase\tround\tregular') ;;
   esac
   expect 0 "" "$X" -n 300 -q --max-iter 4 --trace "$T/f.tsv"
   [ "$(head -n 1 "$T/f.tsv")" = "$(printf 'iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed')$extra" ] \
@@ -126,13 +126,35 @@ expect 2 "^cfpo-ccvt: --points-per-site: '0' is not a whole number" "$B/cfpo-ccv
 expect 2 "^cfpo-ccvt: --points-per-site: 'x' is not" "$B/cfpo-ccvt" -n 300 --points-per-site x
 expect 2 "^cfpo-ccdt: unknown option '--points-per-site'" "$B/cfpo-ccdt" -n 300 --points-per-site 8
 expect 2 "^cfpo-bnot: unknown option '--points-per-site'" "$B/cfpo-bnot" -n 300 --points-per-site 8
-# BNOT's trace: every row's capacity error within 1e-6 (the solver aims at
-# 1e-8), the energy (normalised second moment) never rising after row 1.
-expect 0 "" "$B/cfpo-bnot" -n 300 -q --max-iter 40 --trace "$T/b.tsv"
+# BNOT run to a move tolerance (--epsilon 0): every row's capacity error
+# within 1e-6 (the solver aims at 1e-8), the energy (normalised second
+# moment) never rising after row 1.
+expect 0 "" "$B/cfpo-bnot" -n 300 -q --epsilon 0 --max-iter 40 --trace "$T/b.tsv"
 [ "$(awk -F'\t' 'NR > 1 && $11 + 0 > 1e-6' "$T/b.tsv" | wc -l)" = 0 ] && ok || bad "cfpo-bnot: a trace row with cap_err > 1e-6"
 [ "$(awk -F'\t' 'NR > 2 && $12 > e * (1 + 1e-7) { print } { e = $12 }' "$T/b.tsv" | wc -l)" = 0 ] && ok \
   || bad "cfpo-bnot: the energy column rises"
+# BNOT's default schedule: at n = 2048 the coarse phase meets the cap of
+# 20 iterations (every step's phase column 1) and the run ends there; with
+# --no-breaker one round only; the options' errors.
+expect 0 "" "$B/cfpo-bnot" -n 2048 -q --trace "$T/b.tsv"
+grep -q "iterations=20 .*converged=yes" "$T/out" && ok || bad "cfpo-bnot: the default schedule at n = 2048: $(cat "$T/out")"
+[ "$(awk -F'\t' 'NR > 2 && $14 != 1' "$T/b.tsv" | wc -l)" = 0 ] && ok || bad "cfpo-bnot: a capped run left the coarse phase"
+expect 0 "" "$B/cfpo-bnot" -n 300 -q --round-iters 500 --no-breaker --trace "$T/b.tsv"
+[ "$(awk -F'\t' 'NR > 1 { print $15 }' "$T/b.tsv" | sort -u)" = 1 ] && ok || bad "cfpo-bnot: --no-breaker ran a second round"
+expect 2 "^cfpo-bnot: --epsilon: 'x' is not a number" "$B/cfpo-bnot" -n 300 --epsilon x
+expect 2 "^cfpo-bnot: --round-iters: '0' is not a whole number" "$B/cfpo-bnot" -n 300 --round-iters 0
+expect 2 "^cfpo-bnot: --max-rounds: '-1' is not a whole number" "$B/cfpo-bnot" -n 300 --max-rounds -1
+# CCDT's reference schedule: exactly K iterations; CCVT's options.
+expect 0 "" "$B/cfpo-ccdt" -n 300 -q --reference 7
+grep -q "iterations=7 .*converged=yes" "$T/out" && ok || bad "cfpo-ccdt --reference 7: $(cat "$T/out")"
+expect 2 "^cfpo-ccdt: --reference: '0' is not a whole number" "$B/cfpo-ccdt" -n 300 --reference 0
+expect 2 "^cfpo-ccvt: --point-set: 'grid' is neither lattice nor random" "$B/cfpo-ccvt" -n 300 --point-set grid
+expect 2 "^cfpo-ccvt: --update: 'x' is neither pair nor pass" "$B/cfpo-ccvt" -n 300 --update x
+expect 2 "^cfpo-ccvt: --assign: 'x' is neither nearest nor curve" "$B/cfpo-ccvt" -n 300 --assign x
+expect 1 "^cfpo-ccvt: n m = 20180 points have no lattice" "$B/cfpo-ccvt" -n 20 --points-per-site 1009
+expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 8 --point-set random -o "$T/r8.txt"
 expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 8 -o "$T/m8.txt"
+cmp -s "$T/m8.txt" "$T/r8.txt" && bad "cfpo-ccvt: --point-set random has no effect" || ok
 expect 0 "" "$B/cfpo-ccvt" -n 300 -q --points-per-site 9 -o "$T/m9.txt"
 cmp -s "$T/m8.txt" "$T/m9.txt" && bad "cfpo-ccvt: --points-per-site has no effect" || ok
 
