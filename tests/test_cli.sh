@@ -102,9 +102,9 @@ expect 2 "are the same file" -n 100 --trace sub/t.tsv -o p.npy --checkpoint alia
 rm -r alias sub
 expect 2 "^cfpo: option '--no-skip' takes no value" -n 100 --no-skip=1
 expect 1 "^cfpo: nodir/ck.bin: cannot create file" -n 100 --checkpoint nodir/ck.bin --max-iter 0
-# a trace that cannot be written whole (file size limit) replaces no output
+# a trace that cannot be written whole (file size limit; 400 rows, about 30 KB) replaces no output
 echo old >keep.npy
-(trap '' XFSZ; ulimit -f 8; "$CFPO" -n 300 -q -o keep.npy --trace big.tsv) >/dev/null 2>xf.err
+(trap '' XFSZ; ulimit -f 8; "$CFPO" -n 300 -q --tol 1e-12 --max-iter 400 -o keep.npy --trace big.tsv) >/dev/null 2>xf.err
 rc=$?
 [ $rc -eq 1 ] && grep -q "big.tsv: write failed" xf.err && ok || bad "trace over the size limit: exit $rc, $(cat xf.err)"
 [ "$(cat keep.npy)" = old ] && ok || bad "a failed trace replaced the output"
