@@ -30,6 +30,13 @@ def real(name, v, lo, hi, open_lo=False):
     return v
 
 
+def flag(name, v):
+    """True or False (a Python or NumPy bool; anything else refused)."""
+    if not isinstance(v, (bool, np.bool_)):
+        raise TypeError(f"{name}: expected True or False, got {type(v).__name__}")
+    return bool(v)
+
+
 def seed(v):
     """A 64-bit unsigned seed."""
     return whole("seed", v, 0, 2**64 - 1)

@@ -63,6 +63,9 @@ PyObject *core_deltas(PyObject *self, PyObject *args);
 PyObject *core_spectrum(PyObject *self, PyObject *args);
 PyObject *core_certify(PyObject *self, PyObject *args);
 PyObject *core_poisson(PyObject *self, PyObject *args);
-PyObject *core_iterative(PyObject *self, PyObject *args);
+PyObject *core_iterative(PyObject *self, PyObject *args, PyObject *kw);
+/* Adds baseline_defaults (the iterative baselines' own options as their
+ * commands default them) to the module; 0, or -1 with an exception. */
+int core_baselines_defaults(PyObject *module);
 
 #endif

@@ -4,7 +4,10 @@
  * (baselines/pd_main.c, iter_main.c): the same radius from n, the same
  * minimum n, the same start, the same stop rules (src/stoprule.h) tried
  * after the start and after every iteration, so the points are the
- * commands' bytes. Ctrl-C and the caller's callback are seen after every
+ * commands' bytes. The methods' own options are their commands'
+ * (main_ccvt.c, main_ccdt.c, main_bnot.c), with the defaults of
+ * ccvt_options_init and bnot_rule_init, which cfpo/baselines.py reads from
+ * baseline_defaults. Ctrl-C and the caller's callback are seen after every
  * iteration (the Poisson-disk samplers, which are not iterative, at the
  * end of the call). */
 #include "core.h"
@@ -94,26 +97,39 @@ PyObject *core_poisson(PyObject *self, PyObject *args)
 
 /* ------------------------------------------------ the iterative baselines */
 
+/* The methods' own options, as their commands take them (main_fpo.c,
+ * main_ccvt.c, main_ccdt.c, main_bnot.c); it_args_init gives the
+ * commands' defaults (ccvt_options_init, bnot_rule_init). */
 typedef struct {
-    void *(*create)(const char *method, int64_t n, uint64_t seed, double tol, int local, int grid, long long m,
-                    char *err, size_t errlen);
+    int local, grid;     /* FPO: the 2-ring only; cfpo's stratified start */
+    ccvt_options ccvt;   /* m, points, update, assign (seed, tol: the call's) */
+    int reference;       /* CCDT: the reference schedule's iterations (0: off) */
+    bnot_rule rule;      /* BNOT: the authors' schedule (epsilon 0: the run to tol) */
+} it_args;
+
+static void it_args_init(it_args *a)
+{
+    memset(a, 0, sizeof *a);
+    ccvt_options_init(&a->ccvt);
+    bnot_rule_init(&a->rule);
+}
+
+typedef struct {
+    void *(*create)(const it_args *a, int64_t n, uint64_t seed, double tol, char *err, size_t errlen);
     void (*iterate)(void *E, cfpo_iter_stats *s);
     void (*deltas)(void *E, double *dmin, double *davg);
     const double *(*points)(void *E);
     void (*destroy)(void *E);
 } it_ops;
 
-static void *fpo_make(const char *method, int64_t n, uint64_t seed, double tol, int local, int grid, long long m,
-                      char *err, size_t errlen)
+static void *fpo_make(const it_args *a, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
 {
-    (void)method;
-    (void)m;
     fpo_options o;
     fpo_options_init(&o);
     o.seed = seed;
     o.tol = tol;
-    o.local = local;
-    o.start = grid ? FPO_START_GRID : FPO_START_RANDOM;
+    o.local = a->local;
+    o.start = a->grid ? FPO_START_GRID : FPO_START_RANDOM;
     return fpo_create(n, &o, err, errlen);
 }
 static void fpo_it(void *E, cfpo_iter_stats *s) { fpo_iterate(E, s); }
@@ -121,17 +137,11 @@ static void fpo_d(void *E, double *a, double *b) { fpo_deltas(E, a, b); }
 static const double *fpo_p(void *E) { return fpo_points(E); }
 static void fpo_f(void *E) { fpo_free(E); }
 
-static void *ccvt_make(const char *method, int64_t n, uint64_t seed, double tol, int local, int grid, long long m,
-                       char *err, size_t errlen)
+static void *ccvt_make(const it_args *a, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
 {
-    (void)method;
-    (void)local;
-    (void)grid;
-    ccvt_options o;
-    ccvt_options_init(&o);
+    ccvt_options o = a->ccvt;
     o.seed = seed;
     o.tol = tol;
-    o.m = m;
     return ccvt_create(n, &o, err, errlen);
 }
 static void ccvt_it(void *E, cfpo_iter_stats *s) { ccvt_iterate(E, s); }
@@ -139,27 +149,23 @@ static void ccvt_d(void *E, double *a, double *b) { ccvt_deltas(E, a, b); }
 static const double *ccvt_p(void *E) { return ccvt_sites(E); }
 static void ccvt_f(void *E) { ccvt_free(E); }
 
-static void *ccdt_make(const char *method, int64_t n, uint64_t seed, double tol, int local, int grid, long long m,
-                       char *err, size_t errlen)
+/* as main_ccdt.c: the damped schedule, or the reference one for K
+ * iterations */
+static void *ccdt_make(const it_args *a, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
 {
-    (void)method;
-    (void)local;
-    (void)grid;
-    (void)m;
-    return ccdt_create(n, seed, tol, err, errlen);
+    ccdt_engine *E = ccdt_create(n, seed, tol, err, errlen);
+    if (E) ccdt_set_reference(E, a->reference);
+    return E;
 }
 static void ccdt_it(void *E, cfpo_iter_stats *s) { ccdt_iterate(E, s); }
 static void ccdt_d(void *E, double *a, double *b) { ccdt_deltas(E, a, b); }
 static const double *ccdt_p(void *E) { return ccdt_points(E); }
 static void ccdt_f(void *E) { ccdt_free(E); }
 
-static void *bnot_make(const char *method, int64_t n, uint64_t seed, double tol, int local, int grid, long long m,
-                       char *err, size_t errlen)
+/* as main_bnot.c: the authors' schedule, or with epsilon 0 the run to tol */
+static void *bnot_make(const it_args *a, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
 {
-    (void)method;
-    (void)local;
-    (void)grid;
-    (void)m;
+    if (a->rule.epsilon > 0) return bnot_create_rule(n, NULL, seed, 0, tol, &a->rule, err, errlen);
     return bnot_create(n, seed, tol, err, errlen);
 }
 static void bnot_it(void *E, cfpo_iter_stats *s) { bnot_iterate(E, s); }
@@ -226,24 +232,75 @@ static int checkpoint_row(PyObject *callback, const cfpo_iter_stats *s, double e
     return stop != 0;
 }
 
-/* iterative(method, n, seed, tol, max_iter, tmin, tavg, tlimit, local,
- * grid_start, m, callback, trace) -> (points, iterations, seconds,
- * delta_min, delta_avg, converged, stop, trace). */
-PyObject *core_iterative(PyObject *self, PyObject *args)
+/* The names of ccvt's choices (the commands' words), by enum value. */
+static const char *const POINT_SET[] = {[CCVT_POINTS_LATTICE] = "lattice", [CCVT_POINTS_RANDOM] = "random"};
+static const char *const UPDATE[] = {[CCVT_UPDATE_PAIR] = "pair", [CCVT_UPDATE_PASS] = "pass"};
+static const char *const ASSIGN[] = {[CCVT_ASSIGN_NEAREST] = "nearest", [CCVT_ASSIGN_CURVE] = "curve"};
+
+/* *v from a choice given as a string, one of name[0], name[1] (the
+ * command's wording when it is neither); NULL: left as is. */
+static int choice(const char *what, PyObject *o, const char *const name[2], int *v)
+{
+    if (!o || o == Py_None) return 0;
+    const char *s = PyUnicode_Check(o) ? PyUnicode_AsUTF8(o) : NULL;
+    if (!s) {
+        if (!PyErr_Occurred()) PyErr_Format(PyExc_TypeError, "%s: expected a string, %s or %s", what, name[0], name[1]);
+        return -1;
+    }
+    for (int i = 0; i < 2; i++)
+        if (strcmp(s, name[i]) == 0) {
+            *v = i;
+            return 0;
+        }
+    PyErr_Format(PyExc_ValueError, "%s: '%s' is neither %s nor %s", what, s, name[0], name[1]);
+    return -1;
+}
+
+int core_baselines_defaults(PyObject *module)
+{
+    it_args a;
+    it_args_init(&a);
+    PyObject *d = Py_BuildValue("{s:d,s:O,s:i,s:i,s:s,s:s,s:s}", "epsilon", a.rule.epsilon, "breaker",
+                                a.rule.breaker ? Py_True : Py_False, "max_rounds", a.rule.max_rounds, "round_iters",
+                                a.rule.round_iters, "point_set", POINT_SET[a.ccvt.points], "update",
+                                UPDATE[a.ccvt.update], "assign", ASSIGN[a.ccvt.assign]);
+    if (!d || PyModule_AddObject(module, "baseline_defaults", d) == 0) return d ? 0 : -1;
+    Py_DECREF(d);
+    return -1;
+}
+
+/* iterative(method, n, seed, tol, max_iter, tmin, tavg, tlimit, callback,
+ * trace, *, local, grid, points_per_site, point_set, update, assign,
+ * reference, epsilon, breaker, max_rounds, round_iters) -> (points,
+ * iterations, seconds, delta_min, delta_avg, converged, stop, trace). The
+ * method's options left out keep its command's defaults; the numbers are
+ * checked by the caller (cfpo/baselines.py), the choices here. */
+PyObject *core_iterative(PyObject *self, PyObject *args, PyObject *kw)
 {
     (void)self;
+    static char *kwlist[] = {"method", "n", "seed", "tol", "max_iter", "tmin", "tavg", "tlimit", "callback",
+                             "trace", "local", "grid", "points_per_site", "point_set", "update", "assign",
+                             "reference", "epsilon", "breaker", "max_rounds", "round_iters", NULL};
     const char *method;
-    long long n, m;
+    long long n, m = 0;
     unsigned long long seed;
     double tol, tmin, tavg, tlimit;
-    int max_iter, local, grid, want_trace;
-    PyObject *callback;
-    if (!PyArg_ParseTuple(args, "sLKdidddppLOp", &method, &n, &seed, &tol, &max_iter, &tmin, &tavg, &tlimit,
-                          &local, &grid, &m, &callback, &want_trace))
+    int max_iter, want_trace;
+    PyObject *callback, *point_set = NULL, *update = NULL, *assign = NULL;
+    it_args a;
+    it_args_init(&a);
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "sLKdidddOp|$ppLOOOidpii", kwlist, &method, &n, &seed, &tol,
+                                     &max_iter, &tmin, &tavg, &tlimit, &callback, &want_trace, &a.local, &a.grid,
+                                     &m, &point_set, &update, &assign, &a.reference, &a.rule.epsilon,
+                                     &a.rule.breaker, &a.rule.max_rounds, &a.rule.round_iters))
+        return NULL;
+    a.ccvt.m = m;
+    if (choice("point_set", point_set, POINT_SET, &a.ccvt.points) || choice("update", update, UPDATE, &a.ccvt.update) ||
+        choice("assign", assign, ASSIGN, &a.ccvt.assign))
         return NULL;
     const it_ops *ops = ops_of(method);
     if (!ops) return PyErr_Format(PyExc_ValueError, "unknown method '%s'", method);
-    if (check_n(method, n, tol, local) != 0) return NULL;
+    if (check_n(method, n, tol, a.local) != 0) return NULL;
     cfpo_stop_rules rules = {.target_min = tmin, .target_avg = tavg, .time_limit = tlimit};
     char err[1024];
     core_trace trace = {0};
@@ -253,7 +310,7 @@ PyObject *core_iterative(PyObject *self, PyObject *args)
     const double t0 = cli_now();
     void *E;
     Py_BEGIN_ALLOW_THREADS
-    E = ops->create(method, n, seed, tol, local, grid, m, err, sizeof err);
+    E = ops->create(&a, n, seed, tol, err, sizeof err);
     Py_END_ALLOW_THREADS
     if (!E) return core_error(PyExc_ValueError, err);
     double el;

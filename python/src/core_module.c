@@ -174,7 +174,8 @@ static PyMethodDef methods[] = {
     {"spectrum", core_spectrum, METH_VARARGS, "Power spectrum and its measures (see cfpo.analysis.spectrum)."},
     {"certify", core_certify, METH_VARARGS, "FPD certificate (see cfpo.analysis.certify)."},
     {"poisson", core_poisson, METH_VARARGS, "Poisson-disk baselines (see cfpo.baselines)."},
-    {"iterative", core_iterative, METH_VARARGS, "Iterative baselines (see cfpo.baselines)."},
+    {"iterative", (PyCFunction)(void (*)(void))core_iterative, METH_VARARGS | METH_KEYWORDS,
+     "Iterative baselines (see cfpo.baselines)."},
     {"load", core_load, METH_VARARGS, "Reads a point file (see cfpo.load)."},
     {"save", core_save, METH_VARARGS, "Writes a point file (see cfpo.save)."},
     {"format_of", core_format_of, METH_VARARGS, "The point-file format of a file name."},
@@ -192,7 +193,8 @@ PyMODINIT_FUNC PyInit__core(void)
     if (PyModule_AddStringConstant(m, "version", CFPO_VERSION) != 0 ||
         PyModule_AddStringConstant(m, "extensions", PF_EXTENSIONS) != 0 ||
         PyModule_AddIntConstant(m, "default_max_iter", CFPO_DEFAULT_MAX_ITER) != 0 ||
-        PyModule_AddObject(m, "tol_max", PyFloat_FromDouble(CFPO_TOL_MAX)) != 0) {
+        PyModule_AddObject(m, "tol_max", PyFloat_FromDouble(CFPO_TOL_MAX)) != 0 ||
+        core_baselines_defaults(m) != 0) {
         Py_DECREF(m);
         return NULL;
     }

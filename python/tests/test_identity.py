@@ -97,6 +97,58 @@ def test_iterative_baselines_same_bytes(tmp_path, command, name, args, call):
     assert same_file(tmp_path, tmp_path / "c.npy", r.points)
 
 
+B = cfpo.baselines
+
+
+# Each method's own options (issue 24): the command's bytes, iterations and
+# stop reason; and the option changes the result (so the identity shows
+# that Python passes it on, not that both sides ignore it).
+@pytest.mark.parametrize("name,args,call,plain", [
+    ("cfpo-bnot", ["-n", 200, "--seed", 7, "--epsilon", 0, "--max-iter", 3],
+     lambda: B.bnot(200, seed=7, epsilon=0, max_iter=3), lambda: B.bnot(200, seed=7, max_iter=3)),
+    # epsilon 1 at n = 200, seed 3: 30 iterations in 7 rounds, the breaker
+    # finding regular sites after the first; the default (0.2) ends in its
+    # first round's coarse phase.
+    ("cfpo-bnot", ["-n", 200, "--seed", 3, "--epsilon", 1],
+     lambda: B.bnot(200, seed=3, epsilon=1), lambda: B.bnot(200, seed=3)),
+    ("cfpo-bnot", ["-n", 200, "--seed", 3, "--epsilon", 1, "--no-breaker"],
+     lambda: B.bnot(200, seed=3, epsilon=1, breaker=False), lambda: B.bnot(200, seed=3, epsilon=1)),
+    ("cfpo-bnot", ["-n", 200, "--seed", 3, "--epsilon", 1, "--max-rounds", 2],
+     lambda: B.bnot(200, seed=3, epsilon=1, max_rounds=2), lambda: B.bnot(200, seed=3, epsilon=1)),
+    ("cfpo-bnot", ["-n", 200, "--seed", 3, "--epsilon", 1, "--round-iters", 4],
+     lambda: B.bnot(200, seed=3, epsilon=1, round_iters=4), lambda: B.bnot(200, seed=3, epsilon=1)),
+    ("cfpo-ccvt", ["-n", 100, "--max-iter", 3, "--points-per-site", 64, "--point-set", "random"],
+     lambda: B.ccvt(100, max_iter=3, points_per_site=64, point_set="random"),
+     lambda: B.ccvt(100, max_iter=3, points_per_site=64)),
+    ("cfpo-ccvt", ["-n", 100, "--max-iter", 3, "--points-per-site", 64, "--update", "pass"],
+     lambda: B.ccvt(100, max_iter=3, points_per_site=64, update="pass"),
+     lambda: B.ccvt(100, max_iter=3, points_per_site=64)),
+    ("cfpo-ccvt", ["-n", 100, "--max-iter", 3, "--points-per-site", 64, "--assign", "curve"],
+     lambda: B.ccvt(100, max_iter=3, points_per_site=64, assign="curve"),
+     lambda: B.ccvt(100, max_iter=3, points_per_site=64)),
+    ("cfpo-ccdt", ["-n", 200, "--seed", 6, "--reference", 3],
+     lambda: B.ccdt(200, seed=6, reference=3), lambda: B.ccdt(200, seed=6, max_iter=3)),
+])
+def test_baseline_options_same_bytes(tmp_path, command, name, args, call, plain):
+    out = command(name, *args, "-o", "c.npy").stdout
+    r = call()
+    summary = dict(f.split("=") for f in out.split()[1:])
+    assert r.iterations == int(summary["iterations"]) and r.stop == summary["stop"]
+    assert same_file(tmp_path, tmp_path / "c.npy", r.points)
+    assert not np.array_equal(r.points, plain().points)
+
+
+def test_baseline_defaults_are_the_commands(tmp_path, command):
+    """The defaults given explicitly are the defaults: the same bytes as
+    the command run with none of its own options."""
+    command("cfpo-bnot", "-n", 200, "--seed", 5, "--round-iters", 3, "-o", "b.npy")
+    r = B.bnot(200, seed=5, epsilon=0.2, breaker=True, max_rounds=20, round_iters=3)
+    assert same_file(tmp_path, tmp_path / "b.npy", r.points)
+    command("cfpo-ccvt", "-n", 100, "--points-per-site", 64, "--max-iter", 2, "-o", "v.npy")
+    r = B.ccvt(100, points_per_site=64, max_iter=2, point_set="lattice", update="pair", assign="nearest")
+    assert same_file(tmp_path, tmp_path / "v.npy", r.points)
+
+
 def stats_json(command, tmp_path, points, *extra):
     cfpo.save(tmp_path / "p.npy", points)
     command("cfpo-analyze", *extra, "-o", "out", "p.npy")
