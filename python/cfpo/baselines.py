@@ -138,7 +138,7 @@ ccvt.__doc__ = """Capacity-constrained Voronoi tessellation (Balzer et al. 2009)
     assign: "nearest" (default: the points, last first, each to the
     nearest site not yet full) or "curve" (runs of m points along a
     Hilbert curve) (--assign).
-    A bad choice raises ValueError with the command's wording, a lattice
+    None for any of them: its default. A bad choice raises ValueError with the command's wording, a lattice
     that n * m does not allow ValueError.""" + _ITER_DOC
 ccdt.__doc__ = """Capacity-constrained Delaunay triangulation (Xu et al. 2011) (cfpo-ccdt).
 
@@ -159,4 +159,6 @@ bnot.__doc__ = """Blue noise through optimal transport (de Goes et al. 2012) (cf
     breaker: False stops after the first round (--no-breaker).
     max_rounds: rounds at most (--max-rounds, default 20, 1..1e6).
     round_iters: iterations a round at most (--round-iters, default 20,
-    1..1e6).""" + _ITER_DOC
+    1..1e6).
+    With epsilon > 0, tol only decides which sites count as moved in the
+    statistics.""" + _ITER_DOC

@@ -238,7 +238,8 @@ static const char *const UPDATE[] = {[CCVT_UPDATE_PAIR] = "pair", [CCVT_UPDATE_P
 static const char *const ASSIGN[] = {[CCVT_ASSIGN_NEAREST] = "nearest", [CCVT_ASSIGN_CURVE] = "curve"};
 
 /* *v from a choice given as a string, one of name[0], name[1] (the
- * command's wording when it is neither); NULL: left as is. */
+ * command's wording when it is neither); NULL or None: left as is (the
+ * default). */
 static int choice(const char *what, PyObject *o, const char *const name[2], int *v)
 {
     if (!o || o == Py_None) return 0;
