@@ -6,7 +6,10 @@
 # table row per group (sets, n, mean and spread of delta_min and
 # delta_avg per set, RAPS peak of the averaged spectrum, mean per-set
 # spike ratio) and writes OUT/raps.png, the groups' averaged RAPS overlaid
-# against |k| / sqrt(n), and OUT/table.md.
+# against |k| / sqrt(n), and OUT/table.md. FILES may instead name one
+# analysis folder that cfpo-analyze wrote for such a group (stats.json and
+# raps.txt, e.g. a `make bench` results folder's data/analysis/<group>):
+# it is used as it is.
 # Example: scripts/compare-sets.sh build cmp ours "sets/ours-*.txt" reference "/tmp/ref/*.txt"
 set -euo pipefail
 die() { echo "compare-sets: $*" >&2; exit 1; }
@@ -24,7 +27,14 @@ while [ $# -gt 0 ]; do
   files=($2)
   shift 2
   [ -e "${files[0]}" ] || die "$label: no file matches '${files[*]}'"
-  "$B/cfpo-analyze" -q -o "$OUT/$k.analysis" "${files[@]}" >/dev/null || die "$label: cfpo-analyze failed"
+  if [ "${#files[@]}" -eq 1 ] && [ -d "${files[0]}" ]; then
+    [ -f "${files[0]}/stats.json" ] && [ -f "${files[0]}/raps.txt" ] ||
+      die "$label: ${files[0]} is not an analysis folder (stats.json, raps.txt)"
+    rm -rf "$OUT/$k.analysis"
+    cp -R "${files[0]}" "$OUT/$k.analysis" || die "$label: cannot copy ${files[0]}"
+  else
+    "$B/cfpo-analyze" -q -o "$OUT/$k.analysis" "${files[@]}" >/dev/null || die "$label: cfpo-analyze failed"
+  fi
   awk -v label="$label" '
     function arr(s, a,   t) { t = s; sub(/.*\[/, "", t); sub(/\].*/, "", t); return split(t, a, /, */) }
     /"n":/ { n = $2; sub(/,/, "", n) }

@@ -72,7 +72,9 @@ bad_rows=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, -v mall="^($M_ALL)\$" -v m
   $3 ~ mit && $11 > 0 && ($13 - $12 / $11 > 1e-5 * $13 + 1e-9 || $12 / $11 - $13 > 1e-5 * $13 + 1e-9) { e = e " s/iter" }
   $3 ~ mit && $21 !~ /^(converged|target|time|max-iter)$/ { e = e " stop" }
   ($21 == "converged") != ($17 == "yes") || ($21 == "max-iter" && $11 != $10) { e = e " stop/converged/cap" }
-  $2 != "ttq" && ($20 != "-" || $22 != "-" || $21 == "target" || $21 == "time") { e = e " ttq fields outside ttq" }
+  $2 != "ttq" && ($20 != "-" || $21 == "target" || $21 == "time") { e = e " ttq fields outside ttq" }
+  $2 != "ttq" && $2 != "comparison" && $22 != "-" { e = e " batch outside ttq and comparison" }
+  $22 != "-" && !int_($22) { e = e " batch" }
   $2 == "ttq" && (!num($20) || !int_($22) || $3 ~ mpd) { e = e " ttq fields" }
   $10 != "-" && $2 != "ttq" && ($11 != $10 || $17 != "no") { e = e " capped" }
   $2 == "comparison" && $3 ~ mit && $17 != "yes" { e = e " not converged" }
