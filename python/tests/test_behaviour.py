@@ -50,6 +50,15 @@ def test_progress_callback_sees_each_iteration_and_stops():
     assert np.array_equal(ref.points, r.points)  # the same run up to the stop
 
 
+@pytest.mark.parametrize("method", ["fpo", "lfpo", "ccvt", "ccdt", "bnot"])
+def test_baseline_progress_callback_stops(method):
+    f = getattr(cfpo.baselines, method)
+    seen = []
+    r = f(150, progress=lambda s: seen.append(s["iteration"]) or s["iteration"] == 2)
+    assert r.stop == "caller" and r.iterations == 2 and seen == [0, 1, 2]
+    assert np.array_equal(r.points, f(150, max_iter=2).points)
+
+
 def test_progress_callback_exception_propagates():
     def cb(s):
         if s["iteration"] == 2:
