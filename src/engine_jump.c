@@ -204,6 +204,7 @@ static int64_t block_of(int64_t c, int64_t g, int64_t nb)
 static void by_block(jcand *a, jcand *tmp, size_t n, int64_t *first, int64_t g, int64_t nb)
 {
     memset(first, 0, (size_t)(nb * nb + 1) * sizeof *first);
+    if (n == 0) return; /* a may be NULL */
     for (size_t i = 0; i < n; i++) first[block_of(a[i].cell, g, nb) + 1]++;
     for (int64_t b = 0; b < nb * nb; b++) first[b + 1] += first[b];
     for (size_t i = 0; i < n; i++) tmp[first[block_of(a[i].cell, g, nb)]++] = a[i];
