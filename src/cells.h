@@ -186,6 +186,21 @@ static inline int wrap_offset(int64_t d, int64_t g)
     return (int)d;
 }
 
+/* Whether the 3x3 block around own cell (lx, ly) is own cells that do
+ * not wrap: inside the tile, and away from the torus's seam (the column
+ * or row of cells that crosses coordinate 0: cell g - 1 when the grid is
+ * shifted, and the pair g - 1, 0 always). Its points then lie in three
+ * runs of slots, one a row (cells lx - 1 .. lx + 1 of rows ly - 1 .. ly + 1),
+ * and, with 8 or more cells a side, periodic differences between them are
+ * plain differences (|difference| < 3 L <= 0.5). */
+static inline int eng_plain_block(const cfpo_engine *E, int64_t lx, int64_t ly)
+{
+    const int64_t last = E->G.g - (E->G.shift != 0 ? 3 : 2);
+    const int64_t cx = E->x0 + lx, cy = E->y0 + ly;
+    return E->G.g >= 8 && lx >= 1 && lx < E->w - 1 && ly >= 1 && ly < E->h - 1 && cx >= 1 && cx <= last &&
+           cy >= 1 && cy <= last;
+}
+
 /* Is cell e's mask bit for the neighbour at offset (dx, dy) set? */
 static inline int sends_to(unsigned mk, int dx, int dy) { return mk >> ((dy + 1) * 3 + (dx + 1)) & 1u; }
 

@@ -24,6 +24,18 @@ static double nn2_block(const cfpo_engine *E, int64_t lx, int64_t ly, uint32_t k
     double edge = fmin(fmin(ex, L - ex), fmin(ey, L - ey));
     if (edge < 0) edge = 0;
     double best = INFINITY;
+    if (eng_plain_block(E, lx, ly)) { /* three runs of slots; |differences| < 0.5, so no wrapping */
+        const int64_t c = ly * E->w + lx;
+        const uint32_t *st = E->start;
+        const double *X = E->px, *Y = E->py;
+        for (int dy = -1; dy <= 1; dy++) {
+            const int64_t r = c + dy * E->w;
+            for (uint32_t j = st[r - 1]; j < st[r + 2]; j++) {
+                const double ddx = x - X[j], ddy = y - Y[j], d2 = ddx * ddx + ddy * ddy;
+                if (j != k && d2 < best) best = d2;
+            }
+        }
+    } else
     for (int dy = -1; dy <= 1; dy++)
         for (int dx = -1; dx <= 1; dx++) {
             const int64_t e = locate(E, lx + dx, ly + dy);
