@@ -65,8 +65,16 @@ static inline void mark_cell(cfpo_engine *E, int64_t x, int64_t y)
 void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly)
 {
     if (lx >= 1 && lx < E->w - 1 && ly >= 1 && ly < E->h - 1) { /* inside: no wrap, no halo */
-        for (int64_t y = ly - 1; y <= ly + 1; y++)
-            for (int64_t x = lx - 1; x <= lx + 1; x++) mark_cell(E, x, y);
+        const int64_t b0 = (lx - 1) / SB, b1 = (lx + 1) / SB; /* the block columns it touches */
+        for (int64_t y = ly - 1; y <= ly + 1; y++) {
+            uint16_t *mk = E->mask + y * E->w + lx;
+            mk[-1] |= NEED_BIT;
+            mk[0] |= NEED_BIT;
+            mk[1] |= NEED_BIT;
+            uint8_t *bd = E->bdirty + (y / SB) * E->nbx;
+            bd[b0] = 1;
+            bd[b1] = 1;
+        }
         return;
     }
     for (int dy = -1; dy <= 1; dy++)

@@ -154,6 +154,13 @@ static int fill_cell(cfpo_engine *E, int64_t c, int a_, int b_)
  * MOVED_BIT): returns its end (c itself when cell c changed). */
 static int64_t unchanged_run(const cfpo_engine *E, int64_t c, int64_t c1)
 {
+    const uint64_t moved4 = MOVED_BIT * 0x0001000100010001ull; /* four masks at a time */
+    while (c + 4 <= c1) {
+        uint64_t m4;
+        memcpy(&m4, E->mask + c, sizeof m4);
+        if (m4 & moved4) break;
+        c += 4;
+    }
     while (c < c1 && !(E->mask[c] & MOVED_BIT)) c++;
     return c;
 }

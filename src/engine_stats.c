@@ -8,6 +8,20 @@
 
 /* ---- statistics ---- */
 
+/* min(a, b) for numbers that are not NaN (fmin is a library call). */
+static inline double min2(double a, double b) { return a < b ? a : b; }
+
+/* A distance d (in units of Delta) in the exact sum's units: llround of
+ * min(d, 1e6) 2^24, without the library calls. v + 0.5 rounds only where
+ * its exponent exceeds v's, which for v >= 0.5 cannot carry it past the
+ * next integer; below 0.5 the answer is 0. (NaN counts as 1e6, as fmin
+ * had it.) */
+static inline uint64_t sum_units(double d)
+{
+    const double v = (d < 1e6 ? d : 1e6) * SUM_SCALE;
+    return v < 0.5 ? 0 : (uint64_t)(v + 0.5);
+}
+
 typedef struct {
     double x, y, best;
     uint64_t id;
@@ -21,7 +35,7 @@ static double nn2_block(const cfpo_engine *E, int64_t lx, int64_t ly, uint32_t k
 {
     const double L = E->G.L, x = E->px[k], y = E->py[k];
     const double ex = cell_offset(E, x, E->x0 + lx), ey = cell_offset(E, y, E->y0 + ly);
-    double edge = fmin(fmin(ex, L - ex), fmin(ey, L - ey));
+    double edge = min2(min2(ex, L - ex), min2(ey, L - ey));
     if (edge < 0) edge = 0;
     double best = INFINITY;
     if (eng_plain_block(E, lx, ly)) { /* three runs of slots; |differences| < 0.5, so no wrapping */
@@ -133,7 +147,7 @@ static inline __attribute__((always_inline)) int block_pass(cfpo_engine *E, int6
                     continue;
                 }
                 const double d = sqrt(d2) * inv;
-                bs += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
+                bs += sum_units(d);
                 if (d < bm) bm = d;
             }
         }
@@ -179,7 +193,7 @@ static void resolve_unsure(cfpo_engine *E, const nn_query *Q, size_t nq, double 
             done[i] = 1;
             if (Q[i].owner != E->rank) continue;
             const double d = sqrt(res[i]) * inv;
-            *sum += (uint64_t)llround(fmin(d, 1e6) * SUM_SCALE);
+            *sum += sum_units(d);
             if (d < *mn) *mn = d;
         }
     }
