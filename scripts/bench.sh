@@ -48,6 +48,9 @@ work="$ROOT/.$name.tmp.$$"
 ticker=""
 children=()
 cleanup() {
+  # no errexit in here: killing a run that has just ended fails, and that
+  # must not end the cleanup before the folder goes
+  set +e
   [ -n "$ticker" ] && kill "$ticker" 2>/dev/null
   local p
   for p in "${children[@]}"; do kill "$p" 2>/dev/null; done
@@ -57,7 +60,17 @@ cleanup() {
   for p in "${children[@]}"; do
     for ((k = 0; k < 100; k++)); do kill -0 "$p" 2>/dev/null || break; sleep 0.05; done
   done
-  if [ "${CFPO_BENCH_KEEP:-0}" = 1 ] && [ -d "$work" ]; then echo "bench: kept $work (CFPO_BENCH_KEEP=1)" >&2; else rm -rf "$work"; fi
+  if [ "${CFPO_BENCH_KEEP:-0}" = 1 ] && [ -d "$work" ]; then
+    echo "bench: kept $work (CFPO_BENCH_KEEP=1)" >&2
+    return
+  fi
+  # a run that is still ending can add or remove a file while rm walks the
+  # folder, and rm then leaves it behind: try again for up to 5 s
+  for ((k = 0; k < 50; k++)); do
+    rm -rf "$work" 2>/dev/null
+    [ -e "$work" ] || break
+    sleep 0.1
+  done
 }
 trap cleanup EXIT
 trap 'exit 130' INT
