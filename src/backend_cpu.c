@@ -104,6 +104,33 @@ static int square_for(const cfpo_engine *E, double thr, cfpo_square *Sx)
     return 1;
 }
 
+/* Over-relaxation, the adaptive variant's only (docs/method.md): the
+ * solver's spot (*nx, *ny) is pushed on along the move, to x + w (spot - x)
+ * for w = 1.8, else w = 1.4: the first that lies in the square and is
+ * farther than the floor from every other point of the block replaces the
+ * spot; else the spot stays. Such a spot raises x's distance to all of X
+ * just as the solver's does (the square keeps it at least thr from the
+ * points outside the block), so delta(X) still never falls and the
+ * iteration still cannot cycle. Pushing past the farthest spot gives up
+ * some of x's own gain to leave room for its crowded neighbours, whose
+ * moves come later in the sweep: like over-relaxed Gauss-Seidel, it
+ * carries a move across many points in one sweep where exact moves need
+ * many sweeps. */
+static void over_relax(const cfpo_square *Sx, const double *lxs, const double *lys, int m, int gi, double x, double y,
+                       double floor2, double *nx, double *ny)
+{
+    static const double w[2] = {1.8, 1.4};
+    for (int q = 0; q < 2; q++) {
+        const double rx = x + w[q] * (*nx - x), ry = y + w[q] * (*ny - y);
+        if (rx >= Sx->x0 && rx <= Sx->x1 && ry >= Sx->y0 && ry <= Sx->y1 &&
+            cfpo_min_dist2(rx, ry, lxs, lys, m, gi) > floor2) {
+            *nx = rx;
+            *ny = ry;
+            return;
+        }
+    }
+}
+
 /* Point slot k moved by (ddx, ddy) in the frame of the cell at global
  * (cx, cy), to local (nx, ny): stores it, adds to its net displacement and
  * returns the mask bit of the cell that now holds it. */
@@ -147,6 +174,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
         const double v = cfpo_local_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol);
         (*solved)++;
         if (!(v > floor2)) continue;
+        if (E->G.variant == CFPO_VARIANT_ADAPTIVE) over_relax(&Sx, lxs, lys, m, gi, x, y, floor2, &nx, &ny);
         lxs[gi] = nx;
         lys[gi] = ny;
         const double ddx = nx - x, ddy = ny - y, mv = ddx * ddx + ddy * ddy;

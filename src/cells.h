@@ -264,11 +264,6 @@ int eng_ensure_cap(cfpo_engine *E, size_t need);
  * each: the canonical order of Y. Returns the count; *centre is the index
  * of the centre cell's first point (backend_cpu.c). */
 int eng_gather_block(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre);
-/* The adaptive variant's hole jumps (engine_jump.c): whether the iteration
- * under way starts with them; the jumps, on the host arrays (0, or -1
- * when out of memory). */
-int eng_jump_due(const cfpo_engine *E);
-int eng_jump(cfpo_engine *E);
 void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly);
 void eng_sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi);
 int eng_build_neighbours(cfpo_engine *E);

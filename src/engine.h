@@ -78,8 +78,7 @@ uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads);
 
 /* Prepares the coming iteration from the set as it stands: the net
  * displacements cleared and, in the adaptive variant, the margin (from
- * delta(X) as last measured by cfpo_engine_deltas), the grid shift and, in
- * iterations 2-5, the hole jumps. Call before the phases of an iteration
+ * delta(X) as last measured by cfpo_engine_deltas) and the grid shift. Call before the phases of an iteration
  * (cfpo_engine_iterate does). */
 void cfpo_engine_begin(cfpo_engine *E);
 

@@ -134,8 +134,7 @@ static void move_grid(cfpo_engine *E, double shift)
  * convergence argument allows while delta(X) is large, and no more than
  * L - theta Delta(n) early on (delta(X) taken a hair high, so rounding
  * can only shrink S); the grid shift; then the backend's start of an
- * iteration and, in iterations JUMP_FIRST..JUMP_LAST, the hole jumps
- * (engine_jump.c) on the host arrays. */
+ * iteration. */
 void cfpo_engine_begin(cfpo_engine *E)
 {
     E->cur++;
@@ -146,15 +145,6 @@ void cfpo_engine_begin(cfpo_engine *E)
         if (sh != E->G.shift) move_grid(E, sh);
     }
     E->be->begin(E);
-    if (eng_jump_due(E)) {
-        sync_host(E);
-        if (eng_jump(E) != 0) eng_fatal(E, "moving points into holes");
-        sync_device(E);
-        if (E->cfg.check) {
-            eng_check_migration(E);
-            eng_check_halo(E);
-        }
-    }
 }
 
 void cfpo_engine_sweep(cfpo_engine *E, int64_t *moved, int64_t *solved)
