@@ -115,7 +115,11 @@ static int square_for(const cfpo_engine *E, double thr, cfpo_square *Sx)
  * some of x's own gain to leave room for its crowded neighbours, whose
  * moves come later in the sweep: like over-relaxed Gauss-Seidel, it
  * carries a move across many points in one sweep where exact moves need
- * many sweeps. */
+ * many sweeps. Not in the first RELAX_FROM - 1 iterations: their long
+ * moves, pushed on, print the grid on the set (a spike at frequency (g, 0)
+ * that the later iterations take long to wash out). */
+#define RELAX_FROM 4 /* the first iteration whose moves are over-relaxed */
+
 static void over_relax(const cfpo_square *Sx, const double *lxs, const double *lys, int m, int gi, double x, double y,
                        double floor2, double *nx, double *ny)
 {
@@ -174,7 +178,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
         const double v = cfpo_local_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol);
         (*solved)++;
         if (!(v > floor2)) continue;
-        if (E->G.variant == CFPO_VARIANT_ADAPTIVE) over_relax(&Sx, lxs, lys, m, gi, x, y, floor2, &nx, &ny);
+        if (E->G.variant == CFPO_VARIANT_ADAPTIVE && E->cur >= RELAX_FROM) over_relax(&Sx, lxs, lys, m, gi, x, y, floor2, &nx, &ny);
         lxs[gi] = nx;
         lys[gi] = ny;
         const double ddx = nx - x, ddy = ny - y, mv = ddx * ddx + ddy * ddy;
