@@ -12,6 +12,9 @@
  *                                         the plain and the AVX2 solver: ns per
  *                                         call, and a non-zero exit if any
  *                                         call's bits differ
+ *   cfpo-bench plain    -n N -k K [-o FILE]  K iterations of the paper's CFPO
+ *                                         in a plain engine (bench_plain.c):
+ *                                         the yardstick for the engine's work
  *
  * Protocol (after the Parallel Research Kernels): one untimed warm-up sweep,
  * then K timed sweeps; the median is reported. Sweep timings exclude the
@@ -22,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_plain.h"
 #include "bench_solver.h"
 #include "cfpo.h"
 #include "cli.h"
@@ -126,7 +130,7 @@ static int converge(int64_t n, int threads, uint64_t seed)
 static int is_mode(const char *a)
 {
     return strcmp(a, "sweep") == 0 || strcmp(a, "converge") == 0 || strcmp(a, "capture") == 0 ||
-           strcmp(a, "replay") == 0;
+           strcmp(a, "replay") == 0 || strcmp(a, "plain") == 0;
 }
 
 /* "2,20,200" into its[] (at most 16). Returns the count, -1 if bad. */
@@ -151,10 +155,11 @@ int main(int argc, char **argv)
         if (argc >= 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
             printf("Usage: cfpo-bench sweep|converge -n N [-t THREADS] [-k SWEEPS] [-s SEED]\n"
                    "       cfpo-bench capture -n N -i IT[,IT...] -o FILE [-s SEED]\n"
-                   "       cfpo-bench replay -o FILE [-k ROUNDS] [-p plain|avx2]\n");
+                   "       cfpo-bench replay -o FILE [-k ROUNDS] [-p plain|avx2]\n"
+                   "       cfpo-bench plain -n N -k ITERATIONS [-s SEED] [-o FILE]\n");
             return 0;
         }
-        cli_usage_error(prog, "first argument must be 'sweep', 'converge', 'capture' or 'replay'");
+        cli_usage_error(prog, "first argument must be 'sweep', 'converge', 'capture', 'replay' or 'plain'");
     }
     int64_t n = 65536, v;
     int threads = omp_get_num_procs(), k = 5, its[16], nits = 0;
@@ -196,6 +201,7 @@ int main(int argc, char **argv)
         if (!file || !nits) cli_usage_error(prog, "capture needs -i ITERATIONS and -o FILE");
         return bench_capture(prog, n, seed, its, nits, file);
     }
+    if (strcmp(argv[1], "plain") == 0) return bench_plain(prog, n, seed, k, file);
     if (strcmp(argv[1], "replay") == 0) {
         if (!file) cli_usage_error(prog, "replay needs -o FILE");
         return bench_replay(prog, file, only, k);
