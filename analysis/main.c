@@ -11,6 +11,7 @@
 #include "certify.h"
 #include "cfpo.h"
 #include "cli.h"
+#include "../src/grid.h" /* cfpo's grid (analysis/grid.h is another) */
 #include "hsd.h"
 #include "nnhist.h"
 #include "omp_compat.h"
@@ -25,6 +26,7 @@ static const char *prog = "cfpo-analyze";
 typedef struct {
     const char *out;
     int K, width, exact, check, certify, quiet, threads;
+    int64_t grid; /* --grid: cells a side for the lattice ratio; -1: cfpo's for n */
     double cert_tol;
     char **files;
     int nfiles;
@@ -49,6 +51,9 @@ static void usage(void)
            "      --certify        FPD certificate: can any single point be moved to\n"
            "                       increase its distance to the rest? (exact)\n"
            "      --cert-tol T     certificate tolerance relative to Delta(n) (default %g)\n"
+           "      --grid G         the grid whose imprint lattice_ratio looks for: G cells\n"
+           "                       a side, colours of period 3 (G a multiple of 3), else 2\n"
+           "                       (G even), else 1 (default: cfpo's grid for n; 0: none)\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "  -q, --quiet          no progress line\n"
            "  -h, --help           this help\n"
@@ -62,16 +67,18 @@ static void usage(void)
 
 static void parse(int argc, char **argv, options *o)
 {
-    enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL };
+    enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL, OPT_GRID };
     static const struct option longs[] = {
         {"output", required_argument, 0, 'o'},  {"kmax", required_argument, 0, 'K'},
         {"exact", no_argument, 0, OPT_EXACT},   {"check", no_argument, 0, OPT_CHECK},
         {"width", required_argument, 0, OPT_WIDTH}, {"certify", no_argument, 0, OPT_CERTIFY},
         {"cert-tol", required_argument, 0, OPT_CERT_TOL}, {"threads", required_argument, 0, 't'},
+        {"grid", required_argument, 0, OPT_GRID},
         {"quiet", no_argument, 0, 'q'},         {"help", no_argument, 0, 'h'},
         {"version", no_argument, 0, 'V'},       {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->cert_tol = AN_CERT_TOL;
+    o->grid = -1;
     int c;
     int64_t v;
     opterr = 0;
@@ -95,6 +102,10 @@ static void parse(int argc, char **argv, options *o)
             if (cli_parse_double(optarg, 0, 1, &o->cert_tol) != 0)
                 cli_usage_error(prog, "bad --cert-tol '%s' (a number in [0, 1])", optarg);
             break;
+        case OPT_GRID:
+            if (cli_parse_i64(optarg, 0, 1 << 20, &o->grid) != 0)
+                cli_usage_error(prog, "bad --grid '%s' (an integer in [0, %d])", optarg, 1 << 20);
+            break;
         case 't':
             if (cli_parse_i64(optarg, 1, 4096, &v) != 0)
                 cli_usage_error(prog, "bad --threads '%s' (an integer in [1, 4096])", optarg);
@@ -116,6 +127,16 @@ static int default_K(size_t n)
 {
     double K = ceil(6 * sqrt((double)n));
     return K < 8 ? 8 : (K > 2048 ? 2048 : (int)K);
+}
+
+/* The grid of the lattice ratio: --grid, or the one cfpo uses for n (the
+ * paper's and the adaptive variant's; 0 when n is too small for one). */
+static int lattice_g(const options *o, size_t n)
+{
+    if (o->grid >= 0) return (int)o->grid;
+    cfpo_grid G;
+    char err[256];
+    return cfpo_grid_init(&G, (int64_t)n, CFPO_VARIANT_ADAPTIVE, 1, err, sizeof err) == 0 ? (int)G.g : 0;
 }
 
 /* NAME.analysis in the current folder for one file NAME.EXT. */
@@ -303,6 +324,9 @@ int main(int argc, char **argv)
     an_hsd hsd;
     if (an_rings_compute(R.Psum, R.K, &rings) != 0 || an_hsd_compute(R.Psum, R.K, R.n, &rings, &hsd) != 0)
         fail("out of memory");
+    an_lattice lattice;
+    const int lg = lattice_g(&R.opt, R.n);
+    an_lattice_compute(R.Psum, &rings, lg, lg % 3 == 0 ? 3 : (lg % 2 == 0 ? 2 : 1), &lattice);
     char *outname = strdup(R.out.final);
     if (!outname) fail("out of memory");
     an_report rep = {
@@ -312,7 +336,7 @@ int main(int argc, char **argv)
         .delta_min_mean = R.n >= 2 ? mean_of(R.dmin, sets) : NAN,
         .delta_avg_mean = R.n >= 2 ? mean_of(R.davg, sets) : NAN,
         .nn_hist = R.n >= 2 ? R.hist : NULL, .rings = &rings, .hsd = &hsd,
-        .spike = R.spike, .spike_k = R.spike_k, .spike_mean = mean_of(R.spike, sets),
+        .spike = R.spike, .spike_k = R.spike_k, .spike_mean = mean_of(R.spike, sets), .lattice = &lattice,
         .cert = R.opt.certify ? &R.cert : NULL, .threads = omp_get_max_threads(),
         .spectrum_seconds = R.spectrum_seconds, .out = outname};
     rep.seconds = cli_now() - t0;

@@ -198,6 +198,16 @@ static void json_spectrum(FILE *f, const an_report *r)
     fputc(']', f);
     jkey(f, "spike_ratio_set_mean", 0);
     jnum(f, r->spike_mean);
+    jkey(f, "lattice", 0);
+    fprintf(f, "{\"g\": %d, \"period\": %d, \"frequencies\": %d, \"ratio\": ", r->lattice->g, r->lattice->period,
+            r->lattice->count);
+    jnum(f, r->lattice->ratio);
+    if (r->lattice->count) fprintf(f, ", \"kx\": %d, \"ky\": %d", r->lattice->kx, r->lattice->ky);
+    fputs(", \"P\": ", f);
+    jnum(f, r->lattice->P);
+    fputs(", \"ring_mean\": ", f);
+    jnum(f, r->lattice->mean);
+    fputc('}', f);
     jkey(f, "effective_nyquist", 0);
     jnum(f, h->eff_nyquist);
     jkey(f, "effective_nyquist_detail", 0);
@@ -340,6 +350,9 @@ void an_print_summary(FILE *f, const an_report *r)
     if (g->spike_ring > 0) fprintf(f, " spike_k=%d,%d", g->spike_kx, g->spike_ky);
     else fputs(" spike_k=-", f);
     kv(f, "spike_ratio_set_mean", "%.6g", r->spike_mean);
+    kv(f, "lattice_ratio", "%.6g", r->lattice->ratio);
+    if (r->lattice->count) fprintf(f, " lattice_k=%d,%d", r->lattice->kx, r->lattice->ky);
+    else fputs(" lattice_k=-", f);
     if (r->cert) {
         const an_certificate *c = r->cert;
         fprintf(f, " certify=%s", c->fpd ? "pass" : "fail");

@@ -36,6 +36,7 @@ typedef struct {
     const double *spike;       /* per set: the set's own spike ratio (NAN: none) */
     const int *spike_k;        /* per set: its kx, ky */
     double spike_mean;         /* mean of the per-set spike ratios */
+    const an_lattice *lattice; /* of the averaged spectrum; g 0: not asked */
     const an_certificate *cert; /* NULL without --certify */
     int threads;
     double seconds, spectrum_seconds;

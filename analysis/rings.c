@@ -85,6 +85,34 @@ static void spike(const double *P, int K, an_rings *r)
         }
 }
 
+int an_lattice_compute(const double *P, const an_rings *r, int g, int period, an_lattice *out)
+{
+    memset(out, 0, sizeof *out);
+    out->g = g;
+    out->period = period;
+    out->ratio = out->P = out->mean = NAN;
+    if (g < 1 || period < 1) return 0;
+    for (int j = 1; j <= 2 * period; j++) {
+        if ((int64_t)j * g % period) continue;
+        const int64_t f = (int64_t)j * g / period;
+        const int i = an_ring_of(f * f);
+        if (f > r->K || i > r->K || r->count[i] < AN_SPIKE_MIN_COUNT || !(r->mean[i] > 0)) continue;
+        for (int axis = 0; axis < 2; axis++) {
+            const int kx = axis ? 0 : (int)f, ky = axis ? (int)f : 0; /* in the half plane */
+            const double q = P[an_pidx(r->K, kx, ky)] / r->mean[i];
+            out->count++;
+            if (!(q <= out->ratio)) { /* also the first (NAN) */
+                out->ratio = q;
+                out->P = P[an_pidx(r->K, kx, ky)];
+                out->mean = r->mean[i];
+                out->kx = kx;
+                out->ky = ky;
+            }
+        }
+    }
+    return out->count;
+}
+
 int an_rings_compute(const double *P, int K, an_rings *r)
 {
     memset(r, 0, sizeof *r);

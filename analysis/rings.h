@@ -39,6 +39,20 @@ typedef struct {
     int peak_ring;
 } an_rings;
 
+/* The lattice ratio: the largest P(k) / mean of its ring over the axis
+ * frequencies of a grid of g cells a side coloured with period p, k =
+ * (j g / p, 0) and (0, j g / p) for j = 1..2p where j g / p is a whole
+ * number, |k| <= K and the ring qualifies as for the spike ratio: where
+ * the cells (j = p) and their colours (j < p) would print a grid on a set.
+ * Returns the number of frequencies looked at; 0 (ratio NAN) when none
+ * qualifies or g < 1. */
+typedef struct {
+    int g, period, count;
+    double ratio, P, mean;
+    int kx, ky;
+} an_lattice;
+int an_lattice_compute(const double *P, const an_rings *r, int g, int period, an_lattice *out);
+
 /* Ring index of a frequency with |k|^2 = r2. */
 int an_ring_of(int64_t r2);
 

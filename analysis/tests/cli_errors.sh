@@ -69,6 +69,8 @@ expect 2 "K = 0" -K 0 good.txt
 expect 2 "K not a number" -K abc good.txt
 expect 2 "K too large" -K 100000 good.txt
 expect 2 "bad tolerance" --cert-tol 2 good.txt
+expect 2 "negative grid" --grid -3 good.txt
+expect 2 "grid not a number" --grid x good.txt
 expect 2 "unknown option" --bogus good.txt
 expect 2 "^cfpo-analyze: option '--quiet' takes no value" --quiet=1 good.txt
 expect 2 "missing value" good.txt -K

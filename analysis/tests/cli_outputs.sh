@@ -71,6 +71,18 @@ rc=$?
 check '[ $rc -eq 1 ] && [ "$(wc -l <err.txt)" -eq 1 ]' "disk full: exit $rc, $(cat err.txt)"
 check 'grep -q "full.analysis/" err.txt && ! grep -q "\.tmp\." err.txt' "disk-full message names the temporary: $(cat err.txt)"
 check '[ -z "$(ls -d full.analysis* 2>/dev/null)" ]' "disk full left $(ls -d full.analysis* 2>/dev/null)"
+# the lattice ratio: cfpo's grid for n = 1024 (g = 27, period 3: the axis
+# frequencies 9, 18, ..., 54), a value of P over its ring's mean that
+# spectrum.txt and raps.txt give back; --grid 0 turns it off
+lr=$(field "$out" lattice_ratio); lk=$(field "$out" lattice_k)
+check 'echo "$lk" | grep -Eq "^(0,(9|18|27|36|45|54)|(9|18|27|36|45|54),0)$"' "lattice_k $lk not an axis frequency of g = 27"
+lw=$(awk -v k="$lk" 'BEGIN { split(k, a, ","); kx = a[1]; ky = a[2]; f = kx + ky }
+  FNR == 1 { fi++ } fi == 1 && !/^#/ && $1 == f { m = $3; next }
+  fi == 2 && FNR == 1 { for (i = 2; i <= NF; i++) if ($i == kx) col = i; next }
+  fi == 2 && $1 == ky { p = $col } END { printf "%.4g", p / m }' set.analysis/raps.txt set.analysis/spectrum.txt)
+check "awk -v a=$lr -v b=$lw 'BEGIN { d = a - b; if (d < 0) d = -d; exit d > 1e-3 * b }'" "lattice_ratio $lr, recomputed $lw"
+out0=$("$A" set.npy -q --grid 0 -o g0)
+check 'echo "$out0" | grep -q " lattice_ratio=- lattice_k=- "' "--grid 0: $out0"
 # a foreign folder is never replaced
 mkdir mine && touch mine/notes
 "$A" set.npy -q -o mine >/dev/null 2>err.txt

@@ -1,7 +1,8 @@
 /* test_rings.c - ring statistics and the HSD measures on spectra whose
  * answers are known: ring membership against its floating definition;
  * RAPS and anisotropy of P(k) = |k|^2 and of a constant; a planted spike is
- * found with its k and ratio; a step spectrum (0 inside radius a, 1
+ * found with its k and ratio, and one at a grid's frequency by the lattice
+ * ratio; a step spectrum (0 inside radius a, 1
  * outside) gives a <= 2 nu_eff <= a / sqrt(0.9) (where the disk mean
  * crosses 0.1) and oscillation 0, and a RAPS of 1 + 0.1 sin gives
  * oscillation about 10 * 0.1 / sqrt(2); the RAPS of averaged spectra is
@@ -95,6 +96,33 @@ static void spike(void)
     free(P);
 }
 
+/* The lattice ratio looks at the axis frequencies j g / p only: a spike
+ * there (a colour frequency, 2g/3, on the ky axis) is found with its
+ * ratio; a larger spike off those frequencies is not; the frequencies
+ * counted are those within K; g 0 gives none. */
+static void lattice(void)
+{
+    const int K = 64, g = 30;
+    double *P = make(K, flat);
+    P[an_pidx(K, 0, 20)] = P[an_pidx(K, 0, -20)] = 9;  /* (0, 2g/3) */
+    P[an_pidx(K, 17, 5)] = P[an_pidx(K, -17, -5)] = 50; /* no lattice frequency */
+    an_rings r;
+    an_rings_compute(P, K, &r);
+    an_lattice L;
+    const int cnt = an_lattice_compute(P, &r, g, 3, &L);
+    const double mean = (r.count[20] - 2 + 18.0) / r.count[20];
+    /* j g / 3 = 10, 20, 30, 40, 50, 60 on both axes, all within K = 64 */
+    CHECK(cnt == 12 && L.count == 12, "lattice: %d frequencies, want 12", cnt);
+    CHECK(L.kx == 0 && L.ky == 20 && fabs(L.ratio - 9 / mean) < 1e-9, "lattice: %g at (%d,%d), want %g at (0,20)",
+          L.ratio, L.kx, L.ky, 9 / mean);
+    CHECK(r.spike_kx == 17 && r.spike_ky == 5, "spike at (%d,%d), want (17,5)", r.spike_kx, r.spike_ky);
+    CHECK(an_lattice_compute(P, &r, 44, 2, &L) == 4 && fabs(L.ratio - 1) < 1e-12,
+          "g 44, period 2: %d frequencies (22 and 44 on both axes; 66 > K), ratio %g", L.count, L.ratio);
+    CHECK(an_lattice_compute(P, &r, 0, 3, &L) == 0 && isnan(L.ratio), "g 0: %d frequencies", L.count);
+    an_rings_free(&r);
+    free(P);
+}
+
 static double step_a;
 static double step(int kx, int ky) { return radius2(kx, ky) < step_a * step_a ? 0 : 1; }
 static double wavy(int kx, int ky)
@@ -158,6 +186,7 @@ int main(void)
     ring_membership();
     raps_and_anisotropy();
     spike();
+    lattice();
     hsd_measures();
     averaging_is_linear();
     return test_report(passed_, failed_);

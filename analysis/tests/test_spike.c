@@ -5,7 +5,9 @@
  * at a vector of its reciprocal lattice; the value and its k equal a brute
  * force computation of P(k), the rings and the maximum from their
  * definitions; a spike planted on a ring too small to count is ignored, the
- * same spike on the first ring that counts is found. */
+ * same spike on the first ring that counts is found. The lattice ratio
+ * (P at a grid's axis frequencies over the ring's mean) finds the lattice
+ * when given its size and stays in the noise's band otherwise. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,6 +31,23 @@ static int spike_of(const double *xy, size_t n, int K, an_rings *r)
     return 0;
 }
 
+/* The lattice ratio of the set for a grid of g cells, period p. */
+static an_lattice lattice_of(const double *xy, size_t n, int K, int g, int p)
+{
+    char err[256];
+    double *P = malloc(an_side(K) * an_side(K) * sizeof *P);
+    an_rings r;
+    an_lattice L;
+    if (!P || an_power_nufft(xy, n, K, 0, P, NULL, err, sizeof err) != 0 || an_rings_compute(P, K, &r) != 0) {
+        fprintf(stderr, "spectrum failed\n");
+        exit(1);
+    }
+    an_lattice_compute(P, &r, g, p, &L);
+    an_rings_free(&r);
+    free(P);
+    return L;
+}
+
 /* White noise, n = 4,096, the default K = 6 sqrt(n) = 384: about 2.3e5
  * independent exponential values over their ring means, whose largest is
  * ln(2.3e5) + 0.58 = 13 give or take 1.3 (Gumbel). */
@@ -47,6 +66,11 @@ static void white_noise(void)
               (int)seed, r.spike_ratio);
         CHECK(r.spike_ring >= 3 && r.count[r.spike_ring] >= AN_SPIKE_MIN_COUNT, "white noise: spike on ring %d",
               r.spike_ring);
+        /* 12 exponential values over their ring means: above 12 with
+         * probability about 12 e^-12 = 7e-5 */
+        const an_lattice L = lattice_of(xy, n, K, 57, 3);
+        CHECK(L.count == 12 && L.ratio < 12, "white noise seed %d: lattice ratio %g over %d frequencies", (int)seed,
+              L.ratio, L.count);
         an_rings_free(&r);
         free(xy);
     }
@@ -72,6 +96,12 @@ static void jittered_lattice(void)
         CHECK(r.spike_ratio > 150, "lattice: spike ratio %g", r.spike_ratio);
         CHECK(r.spike_kx % m == 0 && r.spike_ky % m == 0 && (r.spike_kx || r.spike_ky),
               "lattice: spike at (%d, %d), not on the reciprocal lattice", r.spike_kx, r.spike_ky);
+        /* The lattice ratio for its own grid finds it on an axis; for a
+         * grid of another size it sees nothing. */
+        const an_lattice L = lattice_of(xy, n, K, m, 1), M = lattice_of(xy, n, K, 57, 3);
+        CHECK(L.ratio > 150 && (L.kx == 0 || L.ky == 0) && (L.kx + L.ky) % m == 0,
+              "lattice: lattice ratio %g at (%d, %d)", L.ratio, L.kx, L.ky);
+        CHECK(M.ratio < 12, "lattice: lattice ratio %g for a grid of 57", M.ratio);
         an_rings_free(&r);
         free(xy);
     }
