@@ -11,7 +11,6 @@
 #include "certify.h"
 #include "cfpo.h"
 #include "cli.h"
-#include "../src/grid.h" /* cfpo's grid (analysis/grid.h is another) */
 #include "hsd.h"
 #include "nnhist.h"
 #include "omp_compat.h"
@@ -127,16 +126,6 @@ static int default_K(size_t n)
 {
     double K = ceil(6 * sqrt((double)n));
     return K < 8 ? 8 : (K > 2048 ? 2048 : (int)K);
-}
-
-/* The grid of the lattice ratio: --grid, or the one cfpo uses for n (the
- * paper's and the adaptive variant's; 0 when n is too small for one). */
-static int lattice_g(const options *o, size_t n)
-{
-    if (o->grid >= 0) return (int)o->grid;
-    cfpo_grid G;
-    char err[256];
-    return cfpo_grid_init(&G, (int64_t)n, CFPO_VARIANT_ADAPTIVE, 1, err, sizeof err) == 0 ? (int)G.g : 0;
 }
 
 /* NAME.analysis in the current folder for one file NAME.EXT. */
@@ -325,8 +314,8 @@ int main(int argc, char **argv)
     if (an_rings_compute(R.Psum, R.K, &rings) != 0 || an_hsd_compute(R.Psum, R.K, R.n, &rings, &hsd) != 0)
         fail("out of memory");
     an_lattice lattice;
-    const int lg = lattice_g(&R.opt, R.n);
-    an_lattice_compute(R.Psum, &rings, lg, lg % 3 == 0 ? 3 : (lg % 2 == 0 ? 2 : 1), &lattice);
+    const int lg = R.opt.grid >= 0 ? (int)R.opt.grid : an_lattice_default_g(R.n);
+    an_lattice_compute(R.Psum, &rings, lg, an_lattice_period(lg), &lattice);
     char *outname = strdup(R.out.final);
     if (!outname) fail("out of memory");
     an_report rep = {

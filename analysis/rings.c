@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../src/grid.h" /* cfpo's grid (analysis/grid.h is another) */
 #include "power.h"
 
 int an_ring_of(int64_t r2)
@@ -84,6 +85,15 @@ static void spike(const double *P, int K, an_rings *r)
             }
         }
 }
+
+int an_lattice_default_g(size_t n)
+{
+    cfpo_grid G;
+    char err[256];
+    return cfpo_grid_init(&G, (int64_t)n, CFPO_VARIANT_ADAPTIVE, 1, err, sizeof err) == 0 ? (int)G.g : 0;
+}
+
+int an_lattice_period(int g) { return g % 3 == 0 ? 3 : (g % 2 == 0 ? 2 : 1); }
 
 int an_lattice_compute(const double *P, const an_rings *r, int g, int period, an_lattice *out)
 {

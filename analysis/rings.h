@@ -11,6 +11,7 @@
 #ifndef AN_RINGS_H
 #define AN_RINGS_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 /* Rings with fewer frequencies than this are left out of the spike ratio:
@@ -52,6 +53,11 @@ typedef struct {
     int kx, ky;
 } an_lattice;
 int an_lattice_compute(const double *P, const an_rings *r, int g, int period, an_lattice *out);
+/* The grid cfpo uses for n points (the paper's and the adaptive variant's;
+ * 0 when n is too small for one), and the colour period assumed for a
+ * grid of g cells: 3 when 3 divides g, else 2 when g is even, else 1. */
+int an_lattice_default_g(size_t n);
+int an_lattice_period(int g);
 
 /* Ring index of a frequency with |k|^2 = r2. */
 int an_ring_of(int64_t r2);

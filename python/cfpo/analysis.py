@@ -47,7 +47,10 @@ class Spectrum:
     spike_P, spike_ring_mean: the largest P(k) over the mean of its ring;
     raps_peak_ring, raps_peak; effective_nyquist (r_01 / sqrt(n)), r_01,
     r_half; oscillation (with its rings and whether they were clipped by K);
-    nufft: (kernel width, grid, beta) or None for the exact sum."""
+    nufft: (kernel width, grid, beta) or None for the exact sum;
+    lattice_ratio, lattice_k, lattice_g, lattice_period: the largest P(k)
+    over its ring's mean at the axis frequencies j g / p of a grid of g
+    cells (cfpo-analyze --grid; nan when none counts)."""
     K: int
     power: np.ndarray = field(repr=False)
     ring_count: np.ndarray = field(repr=False)
@@ -67,6 +70,10 @@ class Spectrum:
     oscillation_rings: tuple = (0, 0)
     oscillation_clipped: bool = False
     nufft: tuple = None
+    lattice_ratio: float = math.nan
+    lattice_k: tuple = (0, 0)
+    lattice_g: int = 0
+    lattice_period: int = 0
 
 
 def default_K(n):
@@ -75,23 +82,27 @@ def default_K(n):
     return 8 if K < 8 else min(K, 2048)
 
 
-def spectrum(points, K=None, *, exact=False, width=None):
+def spectrum(points, K=None, *, exact=False, width=None, grid=None):
     """Power spectrum P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / n and its measures.
 
     K: frequencies in [-K, K]^2 (default default_K(n), at most 4096);
     exact: direct summation instead of the NUFFT (O(n K^2)); width: NUFFT
-    kernel width 4..16 (default 12). Returns a Spectrum with the same
-    numbers as `cfpo-analyze -K K FILE` for one set. FFTW's planner is
+    kernel width 4..16 (default 12); grid: cells a side of the grid whose
+    imprint the lattice ratio looks for (default cfpo's grid for n; 0:
+    none). Returns a Spectrum with the same numbers as `cfpo-analyze -K K
+    FILE` (with `--grid G`) for one set. FFTW's planner is
     guarded, so several threads may call this at once.
     """
     a = _args.as_points(points)
     K = default_K(a.shape[0]) if K is None else _args.whole("K", K, 1, KMAX)
     w = 0 if width is None else _args.whole("width", width, 4, 16)
-    P, cnt, raps, aniso, spike, peak, hsd, nufft = _core.spectrum(a, K, bool(exact), w)
+    g = -1 if grid is None else _args.whole("grid", grid, 0, 1 << 20)
+    P, cnt, raps, aniso, spike, peak, hsd, nufft, lat = _core.spectrum(a, K, bool(exact), w, g)
     s_ratio, s_P, kx, ky, s_ring, s_mean = spike
     eff, r_half, r_01, osc, ofrom, oto, clipped = hsd
     return Spectrum(K, P, cnt, raps, aniso, s_ratio, s_P, (kx, ky), s_ring, s_mean, peak[0], peak[1], eff,
-                    r_half, r_01, osc, (ofrom, oto), bool(clipped), nufft)
+                    r_half, r_01, osc, (ofrom, oto), bool(clipped), nufft, lat[0], (lat[1], lat[2]), lat[3],
+                    lat[4])
 
 
 @dataclass

@@ -66,16 +66,17 @@ static PyObject *double_array(const double *v, npy_intp len)
     return a;
 }
 
-/* spectrum(points, K, exact, width) -> (P, ring counts, RAPS, anisotropy,
- * spike (ratio, kx, ky, ring, P, ring mean), peak (ring, mean), hsd
- * (eff_nyquist, r_half, r_01, oscillation, from, to, clipped), nufft
- * (width, grid, beta) or None). */
+/* spectrum(points, K, exact, width, grid) -> (P, ring counts, RAPS,
+ * anisotropy, spike (ratio, kx, ky, ring, P, ring mean), peak (ring, mean),
+ * hsd (eff_nyquist, r_half, r_01, oscillation, from, to, clipped), nufft
+ * (width, grid, beta) or None, lattice (ratio, kx, ky, g, period,
+ * frequencies, P, ring mean)); grid -1: cfpo's grid for n. */
 PyObject *core_spectrum(PyObject *self, PyObject *args)
 {
     (void)self;
     PyObject *obj;
-    int K, exact, width;
-    if (!PyArg_ParseTuple(args, "Oipi", &obj, &K, &exact, &width)) return NULL;
+    int K, exact, width, grid;
+    if (!PyArg_ParseTuple(args, "Oipii", &obj, &K, &exact, &width, &grid)) return NULL;
     size_t n;
     PyArrayObject *a = core_points_in(obj, &n);
     if (!a) return NULL;
@@ -93,12 +94,17 @@ PyObject *core_spectrum(PyObject *self, PyObject *args)
     an_nufft_info info = {0};
     an_rings rings = {0};
     an_hsd hsd = {0};
+    an_lattice lat = {0};
     char err[1024];
     int rc, ring_rc = -1;
     Py_BEGIN_ALLOW_THREADS
     rc = exact ? an_power_exact((const double *)PyArray_DATA(a), n, K, p, NULL, NULL, err, sizeof err)
                : an_power_nufft((const double *)PyArray_DATA(a), n, K, width, p, &info, err, sizeof err);
     if (rc == 0 && an_rings_compute(p, K, &rings) == 0) ring_rc = an_hsd_compute(p, K, n, &rings, &hsd);
+    if (ring_rc == 0) {
+        const int g = grid >= 0 ? grid : an_lattice_default_g(n);
+        an_lattice_compute(p, &rings, g, an_lattice_period(g), &lat);
+    }
     Py_END_ALLOW_THREADS
     Py_DECREF(a);
     if (rc != 0) {
@@ -116,12 +122,13 @@ PyObject *core_spectrum(PyObject *self, PyObject *args)
         return NULL;
     }
     PyObject *nufft = exact ? Py_NewRef(Py_None) : Py_BuildValue("(iid)", info.width, info.grid, info.beta);
-    PyObject *r = Py_BuildValue("(NNNN(ddiiid)(id)(ddddiii)N)", P, int64_array(rings.count, K + 1),
+    PyObject *r = Py_BuildValue("(NNNN(ddiiid)(id)(ddddiii)N(diiiiidd))", P, int64_array(rings.count, K + 1),
                                 double_array(rings.mean, K + 1), double_array(rings.aniso_db, K + 1),
                                 rings.spike_ratio, rings.spike_P, rings.spike_kx, rings.spike_ky,
                                 rings.spike_ring, rings.spike_mean, rings.peak_ring, rings.peak_mean,
                                 hsd.eff_nyquist, hsd.r_half, hsd.r_01, hsd.oscillation, hsd.osc_from,
-                                hsd.osc_to, hsd.osc_clipped, nufft);
+                                hsd.osc_to, hsd.osc_clipped, nufft, lat.ratio, lat.kx, lat.ky, lat.g, lat.period,
+                                lat.count, lat.P, lat.mean);
     an_rings_free(&rings);
     return r;
 }

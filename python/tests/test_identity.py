@@ -171,6 +171,12 @@ def test_analysis_numbers_match_command(tmp_path, command):
     assert list(s.oscillation_rings) == js["oscillation_rings"]
     assert g12(s.spike_ratio) == js["spike"]["ratio"]
     assert [*s.spike_k] == [js["spike"]["kx"], js["spike"]["ky"]]
+    assert g12(s.lattice_ratio) == js["lattice"]["ratio"] and s.lattice_g == js["lattice"]["g"] == 18
+    assert [*s.lattice_k] == [js["lattice"]["kx"], js["lattice"]["ky"]]
+    s30 = cfpo.analysis.spectrum(pts, grid=30)
+    js30 = stats_json(command, tmp_path, pts, "--grid", "30")
+    assert g12(s30.lattice_ratio) == js30["lattice"]["ratio"] and s30.lattice_period == js30["lattice"]["period"] == 3
+    assert np.isnan(cfpo.analysis.spectrum(pts, grid=0).lattice_ratio)
     assert s.raps_peak_ring == js["raps_peak"]["ring"] and g12(s.raps_peak) == js["raps_peak"]["raps"]
     assert g12(s.r_01) == js["effective_nyquist_detail"]["r_01"]
     c = cfpo.analysis.certify(pts)
