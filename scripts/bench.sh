@@ -14,7 +14,7 @@
 #               one-thread runs start together, one per core
 # Output: $CFPO_RESULTS (default results/)/<date>-<time>-<host>/ with runs.csv
 # (one row per run, machine and build in # lines), spectra.csv (one row per
-# averaged spectrum, naming its runs), quality.csv (certificate and spike
+# averaged spectrum, naming its runs), quality.csv (certificate, spike and lattice
 # ratio of every ttq run's final set), data/ (traces, seed-1 point sets,
 # averaged spectra), plotdata/, fig-*.png and summary.md. The folder is built
 # under a temporary name and renamed when complete: a failure or Ctrl-C leaves
@@ -354,18 +354,19 @@ while [ "$i" -lt "$NJOBS" ]; do
   i=$j
 done
 
-# ---- quality of the ttq runs' final sets: certificate and spike ratio --------
+# ---- quality of the ttq runs' final sets: certificate, spike and lattice ratio
 qcsv="$work/quality.csv"
-echo "run,n,K,certify,cert_pass,cert_max_violation,lct_pass,spike_ratio,spike_k" >"$qcsv"
+echo "run,n,K,certify,cert_pass,cert_max_violation,lct_pass,spike_ratio,spike_k,lattice_ratio,lattice_k" >"$qcsv"
 nq=$(wc -l <"$work/tmp/ttq-sets.tsv")
 q=0
 while IFS=$'\t' read -r run out; do
   q=$((q + 1))
   progress "$NJOBS" "final-set analysis $q of $nq (run $run)" 1 1 0
   sum=$("$B/cfpo-analyze" -q --certify -o "$work/tmp/an-q" "$work/$out") || die "cfpo-analyze --certify failed on $out (run $run)"
-  printf '%s,%s,%s,%s,%s,%s,%s,%s,%s\n' "$run" "$(field n "$sum")" "$(field K "$sum")" "$(field certify "$sum")" \
+  printf '%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n' "$run" "$(field n "$sum")" "$(field K "$sum")" "$(field certify "$sum")" \
     "$(field cert_pass "$sum")" "$(field cert_max_violation "$sum")" "$(field lct_pass "$sum")" \
-    "$(field spike_ratio "$sum")" "$(field spike_k "$sum" | tr , ';')" >>"$qcsv"
+    "$(field spike_ratio "$sum")" "$(field spike_k "$sum" | tr , ';')" \
+    "$(field lattice_ratio "$sum")" "$(field lattice_k "$sum" | tr , ';')" >>"$qcsv"
   rm -rf "$work/tmp/an-q" "${work:?}/$out"
 done <"$work/tmp/ttq-sets.tsv"
 

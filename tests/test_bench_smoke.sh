@@ -162,10 +162,11 @@ badt=$(grep -v '^#' "$csv" | awk -F, -v R="$R" -v a="$tmin" -v b="$tavg" '$2 == 
 check "ttq runs stop where their traces say${badt:+ (bad: $badt)}" [ -z "$badt" ]
 check "a ttq run reaches the target in smoke" grep -Eq '^[0-9]+,ttq,.*,target,[0-9]+$' "$csv"
 q="$R/quality.csv"
-check "quality.csv header" [ "$(head -n 1 "$q")" = "run,n,K,certify,cert_pass,cert_max_violation,lct_pass,spike_ratio,spike_k" ]
+check "quality.csv header" [ "$(head -n 1 "$q")" = "run,n,K,certify,cert_pass,cert_max_violation,lct_pass,spike_ratio,spike_k,lattice_ratio,lattice_k" ]
 badq=$(awk -F, 'FNR == NR { if ($2 == "ttq") { want[$1] = $5 } next }
-  FNR > 1 { if (!($1 in want) || $2 != want[$1] || NF != 9 || $4 !~ /^(pass|fail)$/ || !($5 >= 0 && $5 <= 1) || !($7 >= 0 && $7 <= 1) ||
-      !($8 > 1 && $8 < 1000) || $9 !~ /^-?[0-9]+;-?[0-9]+$/) printf "%s ", $1; seen[$1]++ }
+  FNR > 1 { if (!($1 in want) || $2 != want[$1] || NF != 11 || $4 !~ /^(pass|fail)$/ || !($5 >= 0 && $5 <= 1) || !($7 >= 0 && $7 <= 1) ||
+      !($8 > 1 && $8 < 1000) || $9 !~ /^-?[0-9]+;-?[0-9]+$/ ||
+      !($10 == "-" && $11 == "-" || $10 >= 0 && $10 <= $8 && $11 ~ /^(0;[0-9]+|[0-9]+;0)$/)) printf "%s ", $1; seen[$1]++ }
   END { for (r in want) if (seen[r] != 1) printf "missing:%s ", r }' <(grep -v '^#' "$csv") "$q")
 check "quality.csv: one well-formed row per ttq run${badq:+ (bad: $badq)}" [ -z "$badq" ]
 # summary.md: a table per n, a row per configuration, and the FPO row's
