@@ -84,6 +84,7 @@ FILENAME ~ /ttq-runs\.tsv$/ {
   qfd[c] = qfd[c] " " a[13]; qfa[c] = qfa[c] " " a[14]
   if (a[16] != "-") qcp[c] = qcp[c] " " a[16]
   if (a[17] != "-") qsr[c] = qsr[c] " " a[17]
+  if (a[20] != "" && a[20] != "-") qlr[c] = qlr[c] " " a[20]
   next
 }
 FILENAME ~ /runtime\.tsv$/ {
@@ -213,7 +214,9 @@ function ttq_section(   i, j, c, a, n, k, t, lv, f, fc, cc, r, st, x) {
   print "there (\"k of m\": the seeds that did). Final δ: the last trace row. Certificate pass: the fraction"
   print "of the final set's points that are farthest points of the rest (`cfpo-analyze --certify`); spike"
   print "ratio: the largest P(k) over its ring's mean for the final set (white noise: 10-15; a lattice"
-  print "imprint: far more), both from `quality.csv`, medians. FPO / this: FPO's median seconds over this"
+  print "imprint: far more); lattice ratio: the largest P(k) over its ring's mean at the axis frequencies of"
+  print "cfpo's grid for n (white noise: below 5 in most sets; a trace of the grid: more), all from"
+  print "`quality.csv`, medians. FPO / this: FPO's median seconds over this"
   print "row's at each level, same n (above 1: this row is faster); - where either never got there."
   print "Per run: `plotdata/ttq-runs.tsv`."
   # configurations in order
@@ -226,8 +229,8 @@ function ttq_section(   i, j, c, a, n, k, t, lv, f, fc, cc, r, st, x) {
     n = qsizes[j]
     print ""
     printf "### n = %s (time limit %s s)\n\n", n, qlim[n]
-    printf "| method | threads | runs.csv rows | δ_avg ≥ 0.929 (s) | δ_min ≥ 0.90 (s) | δ_min ≥ 0.92 (s) | target (s) | stopped by | final δ_min | final δ_avg | certificate pass | spike ratio | FPO / this: δ_avg ≥ 0.929 | δ_min ≥ 0.90 | δ_min ≥ 0.92 | target |\n"
-    print "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+    printf "| method | threads | runs.csv rows | δ_avg ≥ 0.929 (s) | δ_min ≥ 0.90 (s) | δ_min ≥ 0.92 (s) | target (s) | stopped by | final δ_min | final δ_avg | certificate pass | spike ratio | lattice ratio | FPO / this: δ_avg ≥ 0.929 | δ_min ≥ 0.90 | δ_min ≥ 0.92 | target |\n"
+    print "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
     f = n SUBSEP "fpo" SUBSEP 1
     for (i = 1; i <= nq; i++) {
       c = qconf[i]; split(c, a, SUBSEP)
@@ -235,9 +238,10 @@ function ttq_section(   i, j, c, a, n, k, t, lv, f, fc, cc, r, st, x) {
       k = a[2]; t = a[3]
       st = ""; split("target converged time max-iter", stn, " ")
       for (r = 1; r <= 4; r++) if ((c, stn[r]) in qst) st = st (st == "" ? "" : ", ") stn[r] " " qst[c, stn[r]]
-      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s", ttqlabel(k), t, ranges(qid[c]), tcell(qta[c]), tcell(q90[c]),
+      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s", ttqlabel(k), t, ranges(qid[c]), tcell(qta[c]), tcell(q90[c]),
         tcell(q92[c]), tcell(qtt[c]), st, sprintf("%.4f", med(qfd[c])), sprintf("%.4f", med(qfa[c])),
-        (c in qcp) ? sprintf("%.4f", med(qcp[c])) : "-", (c in qsr) ? sprintf("%.1f", med(qsr[c])) : "-"
+        (c in qcp) ? sprintf("%.4f", med(qcp[c])) : "-", (c in qsr) ? sprintf("%.1f", med(qsr[c])) : "-",
+        (c in qlr) ? sprintf("%.1f", med(qlr[c])) : "-"
       for (r = 1; r <= 4; r++) {
         fc = (f in qn) ? med(r == 1 ? qta[f] : r == 2 ? q90[f] : r == 3 ? q92[f] : qtt[f]) : "never"
         cc = med(r == 1 ? qta[c] : r == 2 ? q90[c] : r == 3 ? q92[c] : qtt[c])

@@ -28,11 +28,11 @@ FILENAME ~ /runs\.csv$/ {
 }
 FILENAME ~ /quality\.csv$/ {
   if ($1 == "run") next
-  cp[$1] = $5; sr[$1] = $8; sk[$1] = $9
+  cp[$1] = $5; sr[$1] = $8; sk[$1] = $9; lr[$1] = $10
   next
 }
 END {
-  print "# run\tkey\tthreads\tn\tseed\ttime_limit\tstop\tt_avg929\tt_min90\tt_min92\tt_target\tfinal_elapsed\tfinal_dmin\tfinal_davg\titerations\tcert_pass\tspike_ratio\tspike_k\tmedian_run"
+  print "# run\tkey\tthreads\tn\tseed\ttime_limit\tstop\tt_avg929\tt_min90\tt_min92\tt_target\tfinal_elapsed\tfinal_dmin\tfinal_davg\titerations\tcert_pass\tspike_ratio\tspike_k\tmedian_run\tlattice_ratio"
   for (r = 1; r <= nr; r++) {
     f = dir "/" trace[r]
     ta[r] = t90[r] = t92[r] = tt[r] = "never"; rows = 0
@@ -59,9 +59,10 @@ END {
     med[o[int((m + 1) / 2)]] = 1
   }
   for (r = 1; r <= nr; r++)
-    printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%d\n", run[r], k[r], th[r], n[r], seed[r],
+    printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%d\t%s\n", run[r], k[r], th[r], n[r], seed[r],
       lim[r], stop[r], ta[r], t90[r], t92[r], tt[r], fe[r], fd[r], fa[r], iters[r],
-      (run[r] in cp) ? cp[run[r]] : "-", (run[r] in sr) ? sr[run[r]] : "-", (run[r] in sk) ? sk[run[r]] : "-", (r in med)
+      (run[r] in cp) ? cp[run[r]] : "-", (run[r] in sr) ? sr[run[r]] : "-", (run[r] in sk) ? sk[run[r]] : "-", (r in med),
+      (run[r] in lr && lr[run[r]] != "") ? lr[run[r]] : "-"
   # the figure: panels by n, curves by configuration in rank order
   np = 0
   for (r = 1; r <= nr; r++) if (!(n[r] in pidx)) { pidx[n[r]] = 1; pn[++np] = n[r] }

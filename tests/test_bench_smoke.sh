@@ -175,8 +175,8 @@ check "quality.csv: one well-formed row per ttq run${badq:+ (bad: $badq)}" [ -z 
 for n in $ttq_sizes; do
   check "summary.md: time-to-quality table for n = $n" grep -q "^### n = $n (time limit [0-9.]* s)" "$R/summary.md"
   rows_n=$(awk -v n="$n" '/^### n = / { on = ($4 == n) } on && /^\| (CFPO|FPO|LFPO)/' "$R/summary.md")
-  check "summary.md: $(echo "$ttq_configs" | wc -w) rows of 16 cells for n = $n" \
-    [ "$(grep -c . <<<"$rows_n")" -eq "$(echo "$ttq_configs" | wc -w)" ] && [ -z "$(awk -F' [|] ' 'NF != 16' <<<"$rows_n")" ]
+  check "summary.md: $(echo "$ttq_configs" | wc -w) rows of 17 cells for n = $n" \
+    [ "$(grep -c . <<<"$rows_n")" -eq "$(echo "$ttq_configs" | wc -w)" ] && [ -z "$(awk -F' [|] ' 'NF != 17' <<<"$rows_n")" ]
   t_of() { grep -v '^#' "$csv" | awk -F, -v R="$R" -v n="$n" -v k="$1" '$2 == "ttq" && $6 == n && $7 == 1 && ($3 == "cfpo" ? $4 : $3) == k && $8 == 1 {
       f = R "/" $19; while ((getline line < f) > 0) { split(line, t, "\t"); if (t[1] ~ /^[0-9]+$/ && t[3] >= 0.929) { print t[8]; exit } } }'; }
   tf=$(t_of fpo); tc=$(t_of adaptive)
@@ -184,7 +184,11 @@ for n in $ttq_sizes; do
   rcell=$(awk -v f="$tf" -v c="$tc" 'BEGIN { if (f == "" || c == "") print "-"; else printf "%.2f", f / c }')
   check "summary.md: FPO reaches delta_avg 0.929 at $fcell s (trace)" grep -q "^| FPO | 1 | [0-9]* | $fcell |" <<<"$rows_n"
   check "summary.md: CFPO (adaptive) 1 thread, FPO / this at delta_avg 0.929 = $rcell" \
-    awk -F' [|] ' -v r="$rcell" '$1 == "| CFPO (adaptive)" && $2 == 1 { found = 1; if ($13 != r) exit 1 } END { exit !found }' <<<"$rows_n"
+    awk -F' [|] ' -v r="$rcell" '$1 == "| CFPO (adaptive)" && $2 == 1 { found = 1; if ($14 != r) exit 1 } END { exit !found }' <<<"$rows_n"
+  crun=$(grep -v '^#' "$csv" | awk -F, -v n="$n" '$2 == "ttq" && $6 == n && $7 == 1 && $3 == "cfpo" && $4 == "adaptive" && $8 == 1 { print $1; exit }')
+  lcell=$(awk -F, -v r="$crun" '$1 == r { if ($10 == "-") print "-"; else printf "%.1f", $10 }' "$q")
+  check "summary.md: CFPO (adaptive) 1 thread, lattice ratio $lcell (quality.csv, run $crun)" \
+    awk -F' [|] ' -v l="$lcell" '$1 == "| CFPO (adaptive)" && $2 == 1 { found = 1; if ($13 != l || l == "") exit 1 } END { exit !found }' <<<"$rows_n"
 done
 # the plan lists exactly these runs, the ttq ones with their limit and batch
 scripts/bench.sh "$B" smoke --plan >"$T/plan" 2>&1
