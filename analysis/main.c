@@ -314,7 +314,7 @@ int main(int argc, char **argv)
     if (an_rings_compute(R.Psum, R.K, &rings) != 0 || an_hsd_compute(R.Psum, R.K, R.n, &rings, &hsd) != 0)
         fail("out of memory");
     an_lattice lattice;
-    const int lg = R.opt.grid >= 0 ? (int)R.opt.grid : an_lattice_default_g(R.n);
+    const int lg = an_lattice_grid(R.opt.grid, R.n);
     an_lattice_compute(R.Psum, &rings, lg, an_lattice_period(lg), &lattice);
     char *outname = strdup(R.out.final);
     if (!outname) fail("out of memory");

@@ -86,8 +86,9 @@ static void spike(const double *P, int K, an_rings *r)
         }
 }
 
-int an_lattice_default_g(size_t n)
+int an_lattice_grid(int64_t asked, size_t n)
 {
+    if (asked >= 0) return (int)asked;
     cfpo_grid G;
     char err[256];
     return cfpo_grid_init(&G, (int64_t)n, CFPO_VARIANT_ADAPTIVE, 1, err, sizeof err) == 0 ? (int)G.g : 0;

@@ -53,10 +53,11 @@ typedef struct {
     int kx, ky;
 } an_lattice;
 int an_lattice_compute(const double *P, const an_rings *r, int g, int period, an_lattice *out);
-/* The grid cfpo uses for n points (the paper's and the adaptive variant's;
- * 0 when n is too small for one), and the colour period assumed for a
- * grid of g cells: 3 when 3 divides g, else 2 when g is even, else 1. */
-int an_lattice_default_g(size_t n);
+/* The grid of the lattice ratio: `asked` when it is 0 or more (--grid),
+ * else the grid cfpo uses for n points (the paper's and the adaptive
+ * variant's; 0 when n is too small for one); and the colour period assumed
+ * for a grid of g cells: 3 when 3 divides g, else 2 when g is even, else 1. */
+int an_lattice_grid(int64_t asked, size_t n);
 int an_lattice_period(int g);
 
 /* Ring index of a frequency with |k|^2 = r2. */

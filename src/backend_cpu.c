@@ -104,6 +104,8 @@ static int square_for(const cfpo_engine *E, double thr, cfpo_square *Sx)
     return 1;
 }
 
+#define RELAX_FROM 4 /* the first iteration whose moves are over-relaxed */
+
 /* Over-relaxation, the adaptive variant's only (docs/method.md): the
  * solver's spot (*nx, *ny) is pushed on along the move, to x + w (spot - x)
  * for w = 1.8, else w = 1.4: the first that lies in the square and is
@@ -118,8 +120,6 @@ static int square_for(const cfpo_engine *E, double thr, cfpo_square *Sx)
  * many sweeps. Not in the first RELAX_FROM - 1 iterations: their long
  * moves, pushed on, print the grid on the set (a spike at frequency (g, 0)
  * that the later iterations take long to wash out). */
-#define RELAX_FROM 4 /* the first iteration whose moves are over-relaxed */
-
 static void over_relax(const cfpo_square *Sx, const double *lxs, const double *lys, int m, int gi, double x, double y,
                        double floor2, double *nx, double *ny)
 {
@@ -178,7 +178,8 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
         const double v = cfpo_local_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol);
         (*solved)++;
         if (!(v > floor2)) continue;
-        if (E->G.variant == CFPO_VARIANT_ADAPTIVE && E->cur >= RELAX_FROM) over_relax(&Sx, lxs, lys, m, gi, x, y, floor2, &nx, &ny);
+        if (E->G.variant == CFPO_VARIANT_ADAPTIVE && E->cur >= RELAX_FROM)
+            over_relax(&Sx, lxs, lys, m, gi, x, y, floor2, &nx, &ny);
         lxs[gi] = nx;
         lys[gi] = ny;
         const double ddx = nx - x, ddy = ny - y, mv = ddx * ddx + ddy * ddy;

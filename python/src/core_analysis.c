@@ -102,7 +102,7 @@ PyObject *core_spectrum(PyObject *self, PyObject *args)
                : an_power_nufft((const double *)PyArray_DATA(a), n, K, width, p, &info, err, sizeof err);
     if (rc == 0 && an_rings_compute(p, K, &rings) == 0) ring_rc = an_hsd_compute(p, K, n, &rings, &hsd);
     if (ring_rc == 0) {
-        const int g = grid >= 0 ? grid : an_lattice_default_g(n);
+        const int g = an_lattice_grid(grid, n);
         an_lattice_compute(p, &rings, g, an_lattice_period(g), &lat);
     }
     Py_END_ALLOW_THREADS

@@ -51,6 +51,8 @@ import cfpo
     (lambda: cfpo.baselines.bs(100, radius=0.01, rel_radius=0.5), ValueError, "not both"),
     (lambda: cfpo.analysis.spectrum(np.full((5, 2), 0.5), K=0), ValueError, "K: '0'"),
     (lambda: cfpo.analysis.spectrum(np.full((5, 2), 0.5), width=3), ValueError, "width"),
+    (lambda: cfpo.analysis.spectrum(np.full((5, 2), 0.5), grid=-1), ValueError, "grid: '-1'"),
+    (lambda: cfpo.analysis.spectrum(np.full((5, 2), 0.5), grid=1.5), TypeError, "grid"),
     (lambda: cfpo.analysis.certify(np.full((5, 2), 0.5), tol=2), ValueError, "tol"),
 ])
 def test_bad_arguments(call, exc, msg):
