@@ -175,7 +175,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
         cfpo_square Sx;
         if (!square_for(E, thr, &Sx)) continue;
         double nx, ny;
-        const double v = cfpo_local_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol);
+        const double v = (E->near ? cfpo_near_solve : cfpo_local_solve)(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol);
         (*solved)++;
         if (!(v > floor2)) continue;
         if (E->G.variant == CFPO_VARIANT_ADAPTIVE && E->cur >= RELAX_FROM)

@@ -115,6 +115,8 @@ struct cfpo_engine {
     size_t scratch_m; /* points the scratch is sized for */
     int iter0;        /* iteration the engine stands at */
     int resumed_converged;
+    int near;         /* 1 while the adaptive variant's near phase runs:
+                         cfpo_near_solve, until a sweep moves nothing */
     double max_move;  /* largest single move this iteration */
     double t_born;    /* when cfpo_engine_create_ex began */
     int shifting;     /* inside move_grid: cells hold points of the old grid */

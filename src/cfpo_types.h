@@ -41,6 +41,8 @@ typedef struct {
     double seconds;    /* wall time of this iteration, statistics included */
     int converged;     /* max_disp < tol */
     double max_move;   /* largest single move in the iteration / cell side */
+    int near;          /* 1: solved by the near solve (the adaptive variant's
+                          first phase, docs/method.md), 0: by LocalCFPO */
 } cfpo_iter_stats;
 
 /* Called after every iteration (and once with iteration 0); returning

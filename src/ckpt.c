@@ -44,8 +44,8 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
     uint64_t variant, converged, n;
     if (memcmp(h, MAGIC_V2, 8) == 0) {
         c->version = (int)get32(h + 8);
-        if (get32(h + 8) != CKPT_VERSION) {
-            snprintf(err, errlen, "%s: checkpoint version %lu is not one this cfpo reads (1 or 2)", path,
+        if (get32(h + 8) != 2 && get32(h + 8) != CKPT_VERSION) {
+            snprintf(err, errlen, "%s: checkpoint version %lu is not one this cfpo reads (1, 2 or 3)", path,
                      (unsigned long)get32(h + 8));
             return -1;
         }
@@ -61,10 +61,17 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
         uint64_t tb = get64(h + 40);
         memcpy(&c->tol, &tb, 8);
         c->iteration = (int64_t)(get64(h + 48) > CKPT_ITER_MAX ? -1 : (int64_t)get64(h + 48));
-        if (get32(h + 56) != 0) {
-            snprintf(err, errlen, "%s: corrupt checkpoint: reserved field is not zero", path);
+        const uint32_t near = get32(h + 56);
+        if (c->version == 2 && near != 0) {
+            snprintf(err, errlen, "%s: corrupt version-2 checkpoint: reserved field is not zero", path);
             return -1;
         }
+        if (near > 1) {
+            snprintf(err, errlen, "%s: corrupt checkpoint: field near = %lu is not 0 or 1", path,
+                     (unsigned long)near);
+            return -1;
+        }
+        c->near = (int)near;
         c->crc = get32(h + 60);
     } else if (memcmp(h, MAGIC_V1, 8) == 0) {
         c->version = 1;
@@ -95,6 +102,11 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
         return -1;
     }
     c->converged = (int)converged;
+    if (c->near && (c->converged || c->variant != CFPO_VARIANT_ADAPTIVE)) {
+        snprintf(err, errlen, "%s: corrupt checkpoint: field near = 1 with %s", path,
+                 c->converged ? "converged = 1" : "a variant that has no near phase");
+        return -1;
+    }
     if (!(c->tol >= 0 && c->tol <= CFPO_TOL_MAX)) {
         snprintf(err, errlen, "%s: corrupt checkpoint: field tol = %g is outside [0, %g]", path, c->tol,
                  CFPO_TOL_MAX);
@@ -139,6 +151,7 @@ void ckpt_encode(const ckpt_header *c, unsigned char *h)
     memcpy(&tb, &c->tol, 8);
     put64(h + 40, tb);
     put64(h + 48, (uint64_t)c->iteration);
+    put32(h + 56, (uint32_t)c->near);
     put32(h + 60, c->crc);
 }
 

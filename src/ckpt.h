@@ -1,9 +1,9 @@
 /* ckpt.h - the checkpoint file format: its 64-byte header, read and
  * written, every field validated, and its checksum.
  *
- * Version 2 (written now), little-endian:
+ * Version 3 (written now), little-endian:
  *    0  magic "CFPOCKPT"       8 bytes
- *    8  version = 2            u32
+ *    8  version = 3            u32
  *   12  header bytes = 64      u32
  *   16  n                      u64   points (id order after the header)
  *   24  seed                   u64
@@ -11,10 +11,14 @@
  *   36  converged              u32   0 or 1
  *   40  tol                    f64   in [0, CFPO_TOL_MAX]
  *   48  iteration              u64   in [0, 1e9]
- *   56  reserved = 0           u32
+ *   56  near                   u32   1 while the adaptive variant's near
+ *                                    phase runs (never with converged),
+ *                                    else 0
  *   60  crc32                  u32   zlib's crc32 of the header (this
  *                                    field as 0) followed by the points
  * then n points of 16 bytes (x, y as little-endian float64).
+ * Version 2: the same, with 0 at 56 (written before the near phase
+ * existed: its runs solved exactly throughout, so it reads as near = 0).
  * Version 1 (magic "CFPOCKP1", no checksum): n, seed, variant, tol,
  * iteration, converged as u64 / f64 at 8, 16, ..., 48, then 8 zero bytes;
  * still read, its fields validated the same way.
@@ -29,18 +33,19 @@
 #include <stdint.h>
 
 #define CKPT_HEADER 64
-#define CKPT_VERSION 2
+#define CKPT_VERSION 3
 #define CKPT_ITER_MAX 1000000000
 
 typedef struct {
-    int version; /* 1 or 2 */
+    int version; /* 1, 2 or 3 */
     int64_t n;
     uint64_t seed;
     int variant;
     double tol;
     int64_t iteration;
     int converged;
-    uint32_t crc; /* version 2 only */
+    int near;     /* version 3 only (else 0) */
+    uint32_t crc; /* versions 2 and 3 */
 } ckpt_header;
 
 /* Validates the header h of a checkpoint file of `size` bytes. 0, or -1
@@ -48,10 +53,10 @@ typedef struct {
 int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_header *out, char *err,
                 size_t errlen);
 
-/* A version-2 header of c (c->crc goes into its field). */
+/* A version-3 header of c (c->crc goes into its field). */
 void ckpt_encode(const ckpt_header *c, unsigned char *h);
 
-/* The checksum of a version-2 file: ckpt_crc_header over the header's
+/* The checksum of a version-2 or -3 file: ckpt_crc_header over the header's
  * bytes (its crc field taken as 0), continued by ckpt_crc_more over the
  * point bytes in order; pieces computed apart join with ckpt_crc_join
  * (zlib's crc32_combine). */

@@ -121,6 +121,7 @@ static int load_points(cfpo_engine *E, char *err, size_t errlen)
     E->cur = E->iter0;
     E->G.shift = eng_shift_of(&E->G, E->iter0);
     E->resumed_converged = info.converged;
+    E->near = info.near;
     return eng_load_checkpoint(E, err, errlen);
 }
 
@@ -157,6 +158,7 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         cfpo_engine_free(E);
         return NULL;
     }
+    E->near = o->variant == CFPO_VARIANT_ADAPTIVE; /* a checkpoint says otherwise */
     int rc = load_points(E, err, errlen);
     if (!comm_all(rc == 0)) {
         if (rc == 0) snprintf(err, errlen, "another rank failed to make its points");

@@ -130,6 +130,7 @@ typedef struct {
     int64_t n, iteration;
     uint64_t seed;
     int variant, converged;
+    int near; /* the run was still in its near phase */
     double tol;
 } cfpo_checkpoint_info;
 int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err, size_t errlen);

@@ -35,6 +35,7 @@ int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err
     info->tol = c.tol;
     info->iteration = c.iteration;
     info->converged = c.converged;
+    info->near = c.near;
     return 0;
 }
 
@@ -355,7 +356,8 @@ int eng_write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err
     char *tmp = E->rank == 0 && comm_file_tmpname(f) ? strdup(comm_file_tmpname(f)) : NULL;
     if (tmp) cli_guard_tmp(tmp);
     ckpt_header c = {.version = CKPT_VERSION, .n = E->n, .seed = E->o.seed, .variant = E->o.variant,
-                     .tol = E->o.tol, .iteration = iteration, .converged = converged ? 1 : 0, .crc = 0};
+                     .tol = E->o.tol, .iteration = iteration, .converged = converged ? 1 : 0, .near = E->near,
+                     .crc = 0};
     unsigned char h[CKPT_HEADER];
     ckpt_encode(&c, h);
     int ok = E->rank != 0 || comm_file_write_at(f, 0, h, sizeof h) == 0;

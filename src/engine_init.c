@@ -22,15 +22,17 @@ static int make_initial_adaptive(cfpo_engine *E, char *err, size_t errlen)
     cfpo_start_pt *pt = NULL;
     if (!rowsum) goto oom;
     int64_t r0 = g * E->rank / E->nranks, r1 = g * (E->rank + 1) / E->nranks;
-    int64_t m = cfpo_start_band(&E->G, r0, r1, &pt);
+    int64_t m = cfpo_start_band(&E->G, r0, r1, E->nthreads, &pt);
     if (m < 0) goto oom;
     for (int64_t i = 0; i < m; i++) rowsum[pt[i].cell / g]++;
-    free(pt);
-    pt = NULL;
     comm_sum_i64(rowsum, (int)g); /* rows are disjoint: the sum gathers them */
     int64_t id = 0;
     for (int64_t y = 0; y < E->y0; y++) id += rowsum[y];
-    m = cfpo_start_band(&E->G, E->y0, E->y0 + E->h, &pt);
+    if (r0 != E->y0 || r1 != E->y0 + E->h) { /* else the band made is the tile's */
+        free(pt);
+        pt = NULL;
+        m = cfpo_start_band(&E->G, E->y0, E->y0 + E->h, E->nthreads, &pt);
+    }
     if (m < 0) goto oom;
     int64_t nloc = 0;
     for (int64_t i = 0; i < m; i++) {

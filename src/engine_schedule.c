@@ -173,6 +173,15 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
     s->max_disp = sqrt(mx[0]) / E->G.L;
     s->max_move = sqrt(mx[1]) / E->G.L;
     s->converged = cfpo_net_converged(v[0], s->max_disp, E->o.tol);
+    s->near = E->near;
+    /* The near phase ends when its sweep moves no point by tol: the exact
+     * solver takes over, every cell solved again, and only its sweeps can
+     * end the run as converged (the same decision on every rank). */
+    if (E->near && s->converged) {
+        E->near = 0;
+        s->converged = 0;
+        for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    }
     cfpo_engine_deltas(E, &s->delta_min, &s->delta_avg);
     double el = now() - t0;
     comm_max_d(&el, 1);

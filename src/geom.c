@@ -19,6 +19,12 @@ double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int ski
     return cfpo_local_solve_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
 }
 
+double cfpo_near_solve_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                             double hy, double floor2, double *cx, double *cy, double *scratch)
+{
+    return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, CFPO_NEAR_CELLS);
+}
+
 void (*cfpo_solve_observer)(const double *, const double *, int, int, cfpo_square, double, double, double);
 
 /* 1: the AVX2 solver, 0: the plain one (see cfpo_solver_name). */
@@ -53,4 +59,13 @@ double cfpo_local_solve(const double *yx, const double *yy, int m, int skip, cfp
     if (CFPO_SOLVER_AVX2 && use_avx2())
         return cfpo_local_solve_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
     return cfpo_local_solve_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
+}
+
+double cfpo_near_solve(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
+                       double floor2, double *cx, double *cy, double *scratch)
+{
+    if (cfpo_solve_observer) cfpo_solve_observer(yx, yy, m, skip, S, hx, hy, floor2);
+    if (CFPO_SOLVER_AVX2 && use_avx2())
+        return cfpo_near_solve_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
+    return cfpo_near_solve_plain(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
 }

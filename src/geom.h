@@ -64,4 +64,20 @@ double cfpo_local_solve(const double *yx, const double *yy, int m, int skip, cfp
                         double hx, double hy, double floor2, double *cx, double *cy,
                         double *scratch);
 
+/* How many Voronoi cells the near solve searches. */
+#define CFPO_NEAR_CELLS 1
+
+/* The near solve: LocalCFPO searching only the Voronoi cell (in Y, clipped
+ * to S) of the point of Y nearest to the hint. With the hint at x, that is
+ * the cell x lies in, so x goes to the farthest vertex of its own region;
+ * the spot LocalCFPO finds elsewhere in S (a hole beyond the next points)
+ * is not looked for. The same arguments, value and tie rules as
+ * cfpo_local_solve; its answer is LocalCFPO's whenever LocalCFPO's
+ * maximiser lies in that cell, and never larger (both up to rounding: a
+ * vertex clipped from another cell may differ in the last bits). About
+ * half the work: proving that no other cell holds a farther spot is most
+ * of LocalCFPO's cost. */
+double cfpo_near_solve(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
+                       double floor2, double *cx, double *cy, double *scratch);
+
 #endif

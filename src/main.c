@@ -126,9 +126,9 @@ static int on_iteration(const cfpo_iter_stats *s, void *user)
     if (comm_rank() != 0) return 0;
     double el = cli_now() - c->t0;
     if (c->trace)
-        fprintf(c->trace, "%d\t%.9f\t%.9f\t%lld\t%lld\t%.6g\t%.6f\t%.6f\t%.6g\n", s->iteration,
+        fprintf(c->trace, "%d\t%.9f\t%.9f\t%lld\t%lld\t%.6g\t%.6f\t%.6f\t%.6g\t%d\n", s->iteration,
                 s->delta_min, s->delta_avg, (long long)s->moved, (long long)s->solved,
-                s->max_disp, s->seconds, el, s->max_move);
+                s->max_disp, s->seconds, el, s->max_move, s->near);
     double eta = eta_seconds(c, s);
     char etas[32] = "?";
     if (eta >= 0) snprintf(etas, sizeof etas, "~%.0fs", eta);

@@ -126,7 +126,7 @@ cfpo_runfiles *cfpo_runfiles_open(const char *out, const char *trace, const char
             return NULL;
         }
         if (comm_rank() == 0)
-            fprintf(f->tr.f, "iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed\tmax_move\n");
+            fprintf(f->tr.f, "iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed\tmax_move\tnear\n");
     }
     if (checkpoint && probe_checkpoint(checkpoint, err, errlen) != 0) {
         cfpo_runfiles_abort(f);

@@ -229,8 +229,9 @@ TGT static int cell_empty(const double *px, const double *py, int k, double ax, 
     return 0;
 }
 
-TGT double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                                 double hy, double floor2, double *cx, double *cy, double *scratch)
+/* cfpo_solve_cells_hd of solver_impl.h, bit for bit. */
+static TGT double solve_cells_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                                   double hy, double floor2, double *cx, double *cy, double *scratch, int cells)
 {
     const size_t cap = 2 * ((size_t)m + 8), half = (size_t)m + 8;
     double *px = scratch, *py = px + m, *key = py + m;
@@ -248,7 +249,8 @@ TGT double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int 
     int found = 0;
     double sxa[SMALL] = {0}, sya[SMALL] = {0}, sxb[SMALL] = {0}, syb[SMALL] = {0};
 
-    for (int i = 0; i < k; i++) {
+    const int kc = cells < k ? cells : k;
+    for (int i = 0; i < kc; i++) {
         const double ax = px[i], ay = py[i];
         const double ub = cfpo_corner_far2_hd(corner, ax, ay);
         if (ub <= best) continue;
@@ -313,6 +315,18 @@ TGT double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int 
     return cfpo_solve_finish_hd(bx, by, S, yx, yy, m, skip, cx, cy);
 }
 
+double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                             double hy, double floor2, double *cx, double *cy, double *scratch)
+{
+    return solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, m);
+}
+
+double cfpo_near_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                            double hy, double floor2, double *cx, double *cy, double *scratch)
+{
+    return solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, CFPO_NEAR_CELLS);
+}
+
 int cfpo_solver_avx2_usable(void) { return __builtin_cpu_supports("avx2"); }
 
 #else
@@ -321,6 +335,12 @@ double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip
                              double hy, double floor2, double *cx, double *cy, double *scratch)
 {
     return cfpo_local_solve_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
+}
+
+double cfpo_near_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                            double hy, double floor2, double *cx, double *cy, double *scratch)
+{
+    return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, CFPO_NEAR_CELLS);
 }
 
 int cfpo_solver_avx2_usable(void) { return 0; }

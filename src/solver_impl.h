@@ -105,9 +105,12 @@ CFPO_HD static inline double cfpo_solve_finish_hd(double bx, double by, cfpo_squ
     return cfpo_min_dist2_hd(bx, by, yx, yy, m, skip);
 }
 
-CFPO_HD static inline double cfpo_local_solve_hd(const double *yx, const double *yy, int m, int skip,
-                                                cfpo_square S, double hx, double hy, double floor2,
-                                                double *cx, double *cy, double *scratch)
+/* LocalCFPO over the Voronoi cells of the first `cells` points of Y in
+ * hint order (all of them: the exact solver; one: the near solve, see
+ * geom.h). */
+CFPO_HD static inline double cfpo_solve_cells_hd(const double *yx, const double *yy, int m, int skip,
+                                                 cfpo_square S, double hx, double hy, double floor2,
+                                                 double *cx, double *cy, double *scratch, int cells)
 {
     const size_t cap = 2 * ((size_t)m + 8);
     double *px = scratch, *py = px + m, *key = py + m;
@@ -123,7 +126,8 @@ CFPO_HD static inline double cfpo_local_solve_hd(const double *yx, const double 
     double bx = *cx, by = *cy;
     int found = 0;
 
-    for (int i = 0; i < k; i++) {
+    const int kc = cells < k ? cells : k;
+    for (int i = 0; i < kc; i++) {
         const double ax = px[i], ay = py[i];
         const double ub = cfpo_corner_far2_hd(corner, ax, ay);
         if (ub <= best) continue;
@@ -192,6 +196,13 @@ CFPO_HD static inline double cfpo_local_solve_hd(const double *yx, const double 
     }
     if (!found) return -1.0;
     return cfpo_solve_finish_hd(bx, by, S, yx, yy, m, skip, cx, cy);
+}
+
+CFPO_HD static inline double cfpo_local_solve_hd(const double *yx, const double *yy, int m, int skip,
+                                                cfpo_square S, double hx, double hy, double floor2,
+                                                double *cx, double *cy, double *scratch)
+{
+    return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, m);
 }
 
 #endif

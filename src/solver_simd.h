@@ -36,7 +36,13 @@ double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int ski
 double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                              double hy, double floor2, double *cx, double *cy, double *scratch);
 
-/* Where not NULL, called by cfpo_local_solve with every call's inputs
+/* The near solve (geom.h), plain and AVX2: the same bits. */
+double cfpo_near_solve_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                             double hy, double floor2, double *cx, double *cy, double *scratch);
+double cfpo_near_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                            double hy, double floor2, double *cx, double *cy, double *scratch);
+
+/* Where not NULL, called by cfpo_local_solve and cfpo_near_solve with every call's inputs
  * before it solves (cfpo-bench capture; set only while one thread runs). */
 extern void (*cfpo_solve_observer)(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                                    double hy, double floor2);

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "geom.h"
 #include "rng.h"
@@ -96,7 +97,7 @@ static int cmp_pt(const void *a, const void *b)
     return p->key < q->key ? -1 : (p->key > q->key);
 }
 
-int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, cfpo_start_pt **out)
+int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads, cfpo_start_pt **out)
 {
     start_params p;
     params(G, &p);
@@ -109,12 +110,22 @@ int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, cfpo_start_p
     int64_t jhi = (int64_t)ceil((double)y1 * G->L * (double)p.h + reach) + 1;
     if (jhi - jlo > p.h) { jlo = 0; jhi = p.h; }
     const uint64_t per = 1 + p.extra / (uint64_t)(p.h * p.h) + 1;
-    size_t cap = (size_t)((jhi - jlo) * p.h) * (size_t)per, m = 0;
+    const size_t row = (size_t)p.h * (size_t)per, cap = (size_t)(jhi - jlo) * row;
     cfpo_start_pt *pts = malloc((cap ? cap : 1) * sizeof *pts);
-    if (!pts) return -1;
+    size_t *kept = malloc((size_t)(jhi - jlo + 1) * sizeof *kept);
+    if (!pts || !kept) {
+        free(pts);
+        free(kept);
+        return -1;
+    }
     const uint64_t seed = G->seed ^ START_SALT;
+    /* Start rows in parallel, each into its own run of slots; every point
+     * is a pure function of its start cell, so the result (sorted below)
+     * does not depend on the thread count. */
+#pragma omp parallel for schedule(dynamic, 4) num_threads(threads > 0 ? threads : 1)
     for (int64_t jj = jlo; jj < jhi; jj++) {
         const int64_t j = (jj % p.h + p.h) % p.h;
+        size_t m = (size_t)(jj - jlo) * row;
         for (int64_t i = 0; i < p.h; i++) {
             const uint64_t cnt = start_count(G, &p, i, j), sc = (uint64_t)(j * p.h + i);
             for (uint64_t k = 0; k < cnt; k++) {
@@ -130,7 +141,14 @@ int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, cfpo_start_p
                 m++;
             }
         }
+        kept[jj - jlo] = m - (size_t)(jj - jlo) * row;
     }
+    size_t m = 0;
+    for (int64_t r = 0; r < jhi - jlo; r++) {
+        memmove(pts + m, pts + (size_t)r * row, kept[r] * sizeof *pts);
+        m += kept[r];
+    }
+    free(kept);
     qsort(pts, m, sizeof *pts, cmp_pt);
     *out = pts;
     return (int64_t)m;

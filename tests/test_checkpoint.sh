@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # test_checkpoint.sh BUILD_DIR - checkpoints are checked, not trusted: a
-# version-2 header with a checksum over header and points (one flipped bit
+# version-3 header with a checksum over header and points (one flipped bit
 # anywhere is refused), every header field validated with a one-line error
-# naming the file and the field, version-1 files still read, states no run
-# of cfpo can reach refused before any work, and no temporary left behind
-# by a signal that arrives while a checkpoint is being written.
+# naming the file and the field, version-1 and -2 files still read (as runs
+# past their near phase), a resume on either side of the switch from the
+# near phase to exact solves the same bytes as the run never stopped,
+# states no run of cfpo can reach refused before any work, and no
+# temporary left behind by a signal that arrives while a checkpoint is
+# being written.
 set -u
 B=$(cd "$1" && pwd)
 CFPO="$B/cfpo"
@@ -47,10 +50,35 @@ flip() {
 N=4096
 "$CFPO" -q -n $N --max-iter 20 -o ref.bin >/dev/null || bad "reference run"
 "$CFPO" -q -n $N --max-iter 10 --checkpoint ck.bin --checkpoint-every 10 >/dev/null || bad "checkpointed run"
-[ "$(head -c 8 ck.bin)" = CFPOCKPT ] && [ "$(od -An -tu4 -j8 -N4 ck.bin | tr -d ' ')" = 2 ] && ok ||
-  bad "checkpoint is not version 2 ($(head -c 8 ck.bin | od -c | head -1))"
+[ "$(head -c 8 ck.bin)" = CFPOCKPT ] && [ "$(od -An -tu4 -j8 -N4 ck.bin | tr -d ' ')" = 3 ] && ok ||
+  bad "checkpoint is not version 3 ($(head -c 8 ck.bin | od -c | head -1))"
+[ "$(od -An -tu4 -j56 -N4 ck.bin | tr -d ' ')" = 1 ] && ok || bad "a checkpoint in the near phase has near != 1"
 "$CFPO" -q --max-iter 20 --resume ck.bin -o res.bin >/dev/null && cmp -s res.bin ref.bin && ok ||
-  bad "resume from a version-2 checkpoint differs from the uninterrupted run"
+  bad "resume from a version-3 checkpoint differs from the uninterrupted run"
+
+# rehead IN OUT VERSION NEAR: IN with another version and near field, its
+# checksum made right again.
+rehead() {
+  python3 - "$@" <<'PY'
+import struct, sys, zlib
+d = bytearray(open(sys.argv[1], 'rb').read())
+struct.pack_into('<I', d, 8, int(sys.argv[3]))
+struct.pack_into('<I', d, 56, int(sys.argv[4]))
+struct.pack_into('<I', d, 60, 0)
+struct.pack_into('<I', d, 60, zlib.crc32(bytes(d)) & 0xffffffff)
+open(sys.argv[2], 'wb').write(d)
+PY
+}
+# Version 2 (and 1, below) came from runs that solved exactly throughout:
+# they resume as near = 0, the same bytes as a version-3 file saying so.
+rehead ck.bin exact.ck 3 0
+rehead ck.bin old2.ck 2 0
+"$CFPO" -q --max-iter 20 --resume exact.ck -o res0.bin >/dev/null || bad "resume from near = 0"
+cmp -s res0.bin res.bin && bad "near = 0 resumed as the near phase" || ok
+"$CFPO" -q --max-iter 20 --resume old2.ck -o res2.bin >/dev/null 2>e.log && cmp -s res2.bin res0.bin && ok ||
+  bad "version-2 checkpoint not read as near = 0: $(cat e.log)"
+rehead ck.bin res2.ck 2 1;                      refused res2.ck "reserved"
+rehead ck.bin near7.ck 3 7;                     refused near7.ck "near = 7"
 
 # One flipped bit anywhere is refused: a point, the seed, the iteration,
 # the checksum itself.
@@ -67,7 +95,7 @@ v1() { # v1 FILE N VARIANT TOL_BITS_HEX ITER CONVERGED [RESERVED]: header + ck.b
 }
 TOL=$(od -An -tx1 -j40 -N8 ck.bin | tr -d ' \n' | sed 's/../\\x&/g') # this run's tol, as bytes
 v1 good.v1 $N 2 "$TOL" 10 0
-"$CFPO" -q --max-iter 20 --resume good.v1 -o res1.bin >/dev/null 2>e.log && cmp -s res1.bin ref.bin && ok ||
+"$CFPO" -q --max-iter 20 --resume good.v1 -o res1.bin >/dev/null 2>e.log && cmp -s res1.bin res0.bin && ok ||
   bad "version-1 checkpoint not read as before: $(cat e.log)"
 v1 var.v1 $N $((2 + (1 << 32))) "$TOL" 10 0;  refused var.v1 "variant"
 v1 conv.v1 $N 2 "$TOL" 10 7;                   refused conv.v1 "converged"
@@ -78,8 +106,10 @@ v1 small.v1 5 2 "$TOL" 10 0;                   refused small.v1 "n = 5"
 v1 big.v1 $((N + 1)) 2 "$TOL" 10 0;            refused big.v1 "truncated"
 v1 long.v1 $((N - 1)) 2 "$TOL" 10 0;           refused long.v1 "trailing"
 # Version 2 fields: a version this cfpo does not know, converged = 7.
-cp ck.bin ver.ck; patch ver.ck 8 '\x03';        refused ver.ck "version 3"
+cp ck.bin ver.ck; patch ver.ck 8 '\x04';        refused ver.ck "version 4"
 cp ck.bin conv.ck; patch conv.ck 36 '\x07';     refused conv.ck "converged"
+cp ck.bin nconv.ck; patch nconv.ck 36 '\x01';   refused nconv.ck "near = 1 with converged"
+cp ck.bin nvar.ck; patch nvar.ck 32 '\x00';     refused nvar.ck "near = 1 with a variant"
 cp ck.bin var.ck; patch var.ck 32 '\x02\x00\x00\x01'; refused var.ck "variant"
 printf 'CFPOCKPT' >short.ck;                    refused short.ck "not a cfpo checkpoint"
 
@@ -88,7 +118,7 @@ printf 'CFPOCKPT' >short.ck;                    refused short.ck "not a cfpo che
 # after minutes of solving one crowded cell.
 { for i in $(seq 2000); do tail -c +$((64 + 16 * 7 + 1)) ck.bin | head -c 16; done; tail -c +$((64 + 16 * 2000 + 1)) ck.bin; } >pts.raw
 { printf CFPOCKP1; le 8 $N; le 8 1; le 8 2; printf "$TOL"; le 8 10; le 8 0; le 8 0; cat pts.raw; } >crowd.v1
-refused crowd.v1 "puts 2000 points in cell"
+refused crowd.v1 "puts 20[0-9][0-9] points in cell"
 # Two points on one spot, nothing crowded: the distance itself is refused.
 { tail -c +$((64 + 16 * 7 + 1)) ck.bin | head -c 16; tail -c +$((64 + 16 + 1)) ck.bin; } >pts2.raw
 { printf CFPOCKP1; le 8 $N; le 8 1; le 8 2; printf "$TOL"; le 8 10; le 8 0; le 8 0; cat pts2.raw; } >twin.v1
@@ -108,6 +138,24 @@ hdr = b'CFPOCKP1' + struct.pack('<QQQdQQQ', N, 1, 2, 0.0, 10, 0, 0)
 open(sys.argv[2], 'wb').write(hdr + b''.join(struct.pack('<dd', *p) for p in lat + rest[:N - len(lat)]))
 PY
 refused clump.v1 "more than 64 is refused"
+
+# Across the switch from the near phase to exact solves (S, the first
+# trace row with near = 0; the switch comes at the end of iteration S - 1,
+# whose near sweep moved nothing): checkpoints at S - 2 and S - 1 (near =
+# 1, then 0) resume to the bytes of the uninterrupted run.
+"$CFPO" -q -n $N --max-iter 2000 --trace sw.tsv >/dev/null || bad "run to convergence"
+S=$(awk -F'\t' 'NR > 2 && $10 == 0 { print $1; exit }' sw.tsv)
+if [ -n "$S" ] && [ "$S" -gt 2 ]; then
+  "$CFPO" -q -n $N --max-iter $((S + 3)) -o sw.bin >/dev/null || bad "run past the switch"
+  for k in $((S - 2)) $((S - 1)); do
+    "$CFPO" -q -n $N --max-iter $k --checkpoint sw$k.ck --checkpoint-every $k >/dev/null || bad "checkpoint at $k"
+    [ "$(od -An -tu4 -j56 -N4 sw$k.ck | tr -d ' ')" = $((k < S - 1)) ] && ok || bad "checkpoint at $k: near field wrong"
+    "$CFPO" -q --max-iter $((S + 3)) --resume sw$k.ck -o swr$k.bin >/dev/null && cmp -s swr$k.bin sw.bin && ok ||
+      bad "resume from iteration $k (switch at $S) differs from the uninterrupted run"
+  done
+else
+  bad "no switch to exact solves in the trace (S='$S')"
+fi
 
 # A signal while a checkpoint is written leaves no temporary behind: the
 # first fsync (the first checkpoint's commit) raises SIGTERM.

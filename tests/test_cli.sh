@@ -138,7 +138,7 @@ rm -f d.txt clump.txt i1.npy i2.npy i1.tsv i1.out
 [ "$(wc -l <s.txt)" -eq 1 ] && grep -Eq '^SUMMARY method=cfpo variant=adaptive n=1000 seed=7 threads=[0-9]+ ranks=1 iterations=[0-9]+ seconds=[0-9.]+ delta_min=0\.9[0-9]+ delta_avg=0\.9[0-9]+ converged=yes peak_bytes=[0-9]+ bytes_per_point=[0-9.]+ stop=converged$' s.txt && ok || bad "summary line: $(cat s.txt)"
 [ "$(stat -c %s p.bin)" -eq 16000 ] && ok || bad "p.bin has $(stat -c %s p.bin) bytes"
 iters=$(sed -n 's/.* iterations=\([0-9]*\).*/\1/p' s.txt)
-[ "$(head -1 t.tsv)" = "$(printf 'iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed\tmax_move')" ] && ok || bad "trace header: $(head -1 t.tsv)"
+[ "$(head -1 t.tsv)" = "$(printf 'iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed\tmax_move\tnear')" ] && ok || bad "trace header: $(head -1 t.tsv)"
 [ "$(($(wc -l <t.tsv) - 2))" -eq "$iters" ] && ok || bad "trace has $(wc -l <t.tsv) lines for $iters iterations"
 "$CFPO" -n 1000 --seed 7 -o p.npy -q >/dev/null && ok || bad "npy run"
 cmp -s <(tail -c 16000 p.npy) p.bin && [ "$(stat -c %s p.npy)" -eq 16128 ] && ok || bad ".npy data differs from .bin"

@@ -9,7 +9,11 @@
  * plain one, bit for bit (value and point), on all of these and on
  * 200,000 more: random, lattices with jitter down to 1e-15, many-sided
  * cells (polygons past the 8 vertices of the branch-free cut), points
- * on S's corners and edges, far and huge coordinates, every floor mode. */
+ * on S's corners and edges, far and huge coordinates, every floor mode.
+ * The near solve (cfpo_near_solve) on the same configurations against an
+ * exact enumeration of the vertices of the one Voronoi cell it searches,
+ * never above LocalCFPO, equal to it when LocalCFPO's point lies in that
+ * cell, and AVX2 against plain bit for bit too. */
 #include "geom.h"
 #include "solver_simd.h"
 #include "testutil.h"
@@ -75,22 +79,127 @@ enum { MAXM = 40 };
 
 static int avx2_ok, same_calls;
 
-/* The AVX2 and the plain solver on the same call: the same bits? */
+typedef double (*solve_fn)(const double *, const double *, int, int, cfpo_square, double, double, double, double *,
+                           double *, double *);
+
+/* The AVX2 and the plain solver (LocalCFPO, then the near solve) on the
+ * same call: the same bits? */
 static int same_bits(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
                      double floor2, const char *kind)
 {
     if (!avx2_ok) return 0;
-    double sa[10 * (MAXM + 8)], sb[10 * (MAXM + 8)];
-    double ax, ay, bx, by;
-    double va = cfpo_local_solve_plain(yx, yy, m, skip, S, hx, hy, floor2, &ax, &ay, sa);
-    double vb = cfpo_local_solve_avx2(yx, yy, m, skip, S, hx, hy, floor2, &bx, &by, sb);
-    same_calls++;
-    if (memcmp(&va, &vb, 8) || memcmp(&ax, &bx, 8) || memcmp(&ay, &by, 8)) {
-        fprintf(stderr, "%s: AVX2 solver %.17g at (%.17g, %.17g), plain %.17g at (%.17g, %.17g), m=%d skip=%d floor2=%.17g\n",
-                kind, vb, bx, by, va, ax, ay, m, skip, floor2);
-        return 1;
+    static const solve_fn plain[2] = {cfpo_local_solve_plain, cfpo_near_solve_plain};
+    static const solve_fn avx2[2] = {cfpo_local_solve_avx2, cfpo_near_solve_avx2};
+    for (int w = 0; w < 2; w++) {
+        double sa[10 * (MAXM + 8)], sb[10 * (MAXM + 8)];
+        double ax, ay, bx, by;
+        double va = plain[w](yx, yy, m, skip, S, hx, hy, floor2, &ax, &ay, sa);
+        double vb = avx2[w](yx, yy, m, skip, S, hx, hy, floor2, &bx, &by, sb);
+        same_calls++;
+        if (memcmp(&va, &vb, 8) || memcmp(&ax, &bx, 8) || memcmp(&ay, &by, 8)) {
+            fprintf(stderr, "%s: AVX2 %s %.17g at (%.17g, %.17g), plain %.17g at (%.17g, %.17g), m=%d skip=%d floor2=%.17g\n",
+                    kind, w ? "near solve" : "solver", vb, bx, by, va, ax, ay, m, skip, floor2);
+            return 1;
+        }
     }
     return 0;
+}
+
+/* The index of the point of Y nearest to (hx, hy), the first on ties. */
+static int nearest(const double *yx, const double *yy, int m, double hx, double hy)
+{
+    int b = 0;
+    for (int j = 1; j < m; j++)
+        if (f2(hx, hy, yx + j, yy + j, 1) < f2(hx, hy, yx + b, yy + b, 1)) b = j;
+    return b;
+}
+
+/* Whether c lies in S and in the closed Voronoi cell of y_a (up to tol,
+ * squared distances). */
+static int in_cell(const double *yx, const double *yy, int m, int a, cfpo_square S, double cx, double cy, double tol)
+{
+    const double e = tol * (S.x1 - S.x0);
+    if (cx < S.x0 - e || cx > S.x1 + e || cy < S.y0 - e || cy > S.y1 + e) return 0;
+    return f2(cx, cy, yx + a, yy + a, 1) <= f2(cx, cy, yx, yy, m) + tol * (S.x1 - S.x0) * (S.x1 - S.x0);
+}
+
+/* The farthest point from y_a of its Voronoi cell clipped to S, by
+ * enumeration: S's corners, each bisector (y_a, y_j) met with S's edges,
+ * each two bisectors met; the largest |c - y_a|^2 over those in the cell.
+ * Shares no code with the clipping solvers. -1 when no candidate is. */
+static double brute_cell(const double *yx, const double *yy, int m, int a, cfpo_square S)
+{
+    double best = -1;
+    const double ax = yx[a], ay = yy[a];
+    double cand[2 * MAXM * MAXM + 64][2];
+    int nc = 0;
+    const double cx4[4] = {S.x0, S.x1, S.x1, S.x0}, cy4[4] = {S.y0, S.y0, S.y1, S.y1};
+    for (int c = 0; c < 4; c++) cand[nc][0] = cx4[c], cand[nc][1] = cy4[c], nc++;
+    /* bisector j: n . c = d with n = y_j - y_a, d = (|y_j|^2 - |y_a|^2) / 2 */
+    double bn[MAXM][2], bd[MAXM];
+    int nb = 0;
+    for (int j = 0; j < m; j++) {
+        const double nx = yx[j] - ax, ny = yy[j] - ay;
+        if (nx == 0 && ny == 0) continue;
+        bn[nb][0] = nx, bn[nb][1] = ny;
+        bd[nb++] = 0.5 * ((yx[j] * yx[j] + yy[j] * yy[j]) - (ax * ax + ay * ay));
+    }
+    for (int j = 0; j < nb; j++) {
+        if (bn[j][1] != 0) /* meets x = S.x0 and x = S.x1 */
+            for (int e = 0; e < 2; e++) {
+                const double x = e ? S.x1 : S.x0;
+                cand[nc][0] = x, cand[nc][1] = (bd[j] - bn[j][0] * x) / bn[j][1], nc++;
+            }
+        if (bn[j][0] != 0)
+            for (int e = 0; e < 2; e++) {
+                const double y = e ? S.y1 : S.y0;
+                cand[nc][0] = (bd[j] - bn[j][1] * y) / bn[j][0], cand[nc][1] = y, nc++;
+            }
+        for (int k = j + 1; k < nb; k++) {
+            const double det = bn[j][0] * bn[k][1] - bn[j][1] * bn[k][0];
+            if (det == 0) continue;
+            cand[nc][0] = (bd[j] * bn[k][1] - bd[k] * bn[j][1]) / det;
+            cand[nc][1] = (bn[j][0] * bd[k] - bn[k][0] * bd[j]) / det;
+            nc++;
+        }
+    }
+    for (int c = 0; c < nc; c++) {
+        if (!in_cell(yx, yy, m, a, S, cand[c][0], cand[c][1], 1e-9)) continue;
+        const double v = f2(cand[c][0], cand[c][1], yx + a, yy + a, 1);
+        if (v > best) best = v;
+    }
+    return best;
+}
+
+/* The near solve on one configuration (no point skipped, no floor) with
+ * LocalCFPO's answer v at (cx, cy). */
+static int check_near(const double *yx, const double *yy, int m, cfpo_square S, double hx, double hy, double v,
+                      double cx, double cy, const char *kind)
+{
+    if (m == 0) return 0;
+    double scratch[10 * (MAXM + 8)], nx, ny;
+    const double vn = cfpo_near_solve(yx, yy, m, -1, S, hx, hy, -1.0, &nx, &ny, scratch);
+    const int a = nearest(yx, yy, m, hx, hy);
+    const double scale = (S.x1 - S.x0) * (S.x1 - S.x0), ref = brute_cell(yx, yy, m, a, S);
+    int bad = 0;
+    if (vn > v + 1e-12 * scale) { /* rounding: the same vertex, clipped from another cell */
+        fprintf(stderr, "%s: near solve %.17g above LocalCFPO's %.17g\n", kind, vn, v);
+        bad = 1;
+    }
+    if (!in_cell(yx, yy, m, a, S, nx, ny, 1e-12) || vn != f2(nx, ny, yx, yy, m)) {
+        fprintf(stderr, "%s: near solve's point (%.17g, %.17g) not in the searched cell, or value %.17g != %.17g\n",
+                kind, nx, ny, vn, f2(nx, ny, yx, yy, m));
+        bad = 1;
+    }
+    if (fabs(vn - ref) > 1e-9 * scale) {
+        fprintf(stderr, "%s: near solve %.17g, enumeration of the cell %.17g, m=%d\n", kind, vn, ref, m);
+        bad = 1;
+    }
+    if (in_cell(yx, yy, m, a, S, cx, cy, 0) && vn < v - 1e-12 * scale) {
+        fprintf(stderr, "%s: LocalCFPO's point is in the near cell, but near solve %.17g < %.17g\n", kind, vn, v);
+        bad = 1;
+    }
+    return bad;
 }
 
 /* Every floor mode and a skipped index: the same bits? */
@@ -143,6 +252,7 @@ static int check(const double *yx, const double *yy, int m, cfpo_square S, doubl
         bad = 1;
     }
     bad |= same_all(yx, yy, m, S, hx, hy, v, kind);
+    bad |= check_near(yx, yy, m, S, hx, hy, v, cx, cy, kind);
     return bad;
 }
 

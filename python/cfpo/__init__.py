@@ -27,7 +27,7 @@ __all__ = ["sample", "run", "Result", "load", "save", "analysis", "baselines", "
 
 STOP_REASONS = ("converged", "target", "time", "max-iter", "caller")
 TRACE_COLUMNS = ("iteration", "delta_min", "delta_avg", "moved", "solved", "max_disp", "seconds",
-                 "elapsed", "max_move")
+                 "elapsed", "max_move", "near")
 
 
 @dataclass
@@ -40,7 +40,7 @@ class Result:
     stop: which rule ended the run, one of "converged", "target", "time",
     "max-iter", "caller"; trace: dict of numpy arrays, one entry a row of the
     command's --trace file (columns TRACE_COLUMNS; the baselines have no
-    max_move).
+    max_move and no near solves: both 0).
     """
     points: np.ndarray
     iterations: int
@@ -101,7 +101,7 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
     variant's start. progress: True for a progress line with an ETA on
     stderr, or a callable receiving each iteration's statistics as a dict
     (iteration, delta_min, delta_avg, moved, solved, max_disp, seconds,
-    elapsed, max_move, converged) that stops the run (stop="caller") by
+    elapsed, max_move, near, converged) that stops the run (stop="caller") by
     returning True.
 
     The points are the same bytes as `cfpo -n N --seed S ... -o x.npy`

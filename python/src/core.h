@@ -51,7 +51,7 @@ typedef struct {
     size_t rows, cap;
     int oom;
 } core_trace;
-#define TRACE_COLS 9
+#define TRACE_COLS 10
 void core_trace_add(core_trace *t, const double *row);
 /* The columns as a tuple of arrays (int64 for iteration, moved, solved;
  * float64 otherwise), in the order of `cfpo --trace`. Frees t->v. */

@@ -326,7 +326,7 @@ PyObject *core_iterative(PyObject *self, PyObject *args, PyObject *kw)
         el = cli_now() - t0;
         if (want_trace) {
             const double row[TRACE_COLS] = {s.iteration, s.delta_min, s.delta_avg, (double)s.moved,
-                                            (double)s.solved, s.max_disp, s.seconds, el, 0};
+                                            (double)s.solved, s.max_disp, s.seconds, el, 0, 0};
             core_trace_add(&trace, row);
         }
         why = cfpo_stop_check(&rules, &s, el, max_iter);

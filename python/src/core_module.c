@@ -90,7 +90,7 @@ PyObject *core_trace_take(core_trace *t, int cols)
     }
     PyObject *tup = PyTuple_New(cols);
     for (int c = 0; tup && c < cols; c++) {
-        const int whole = c == 0 || c == 3 || c == 4; /* iteration, moved, solved */
+        const int whole = c == 0 || c == 3 || c == 4 || c == 9; /* iteration, moved, solved, near */
         npy_intp dim = (npy_intp)t->rows;
         PyObject *a = PyArray_SimpleNew(1, &dim, whole ? NPY_INT64 : NPY_DOUBLE);
         if (!a) {

@@ -23,11 +23,11 @@ typedef struct {
 
 static PyObject *stats_dict(const cfpo_iter_stats *s, double elapsed)
 {
-    return Py_BuildValue("{s:i,s:d,s:d,s:L,s:L,s:d,s:d,s:d,s:d,s:O}", "iteration", s->iteration,
+    return Py_BuildValue("{s:i,s:d,s:d,s:L,s:L,s:d,s:d,s:d,s:d,s:i,s:O}", "iteration", s->iteration,
                          "delta_min", s->delta_min, "delta_avg", s->delta_avg, "moved",
                          (long long)s->moved, "solved", (long long)s->solved, "max_disp", s->max_disp,
                          "seconds", s->seconds, "elapsed", elapsed, "max_move", s->max_move,
-                         "converged", s->converged ? Py_True : Py_False);
+                         "near", s->near, "converged", s->converged ? Py_True : Py_False);
 }
 
 /* Called by the engine after every iteration, on the calling thread with
@@ -38,7 +38,7 @@ static int on_iteration(const cfpo_iter_stats *s, void *user)
     const double el = cli_now() - c->t0;
     if (c->want_trace) {
         const double row[TRACE_COLS] = {s->iteration, s->delta_min, s->delta_avg, (double)s->moved,
-                                        (double)s->solved, s->max_disp, s->seconds, el, s->max_move};
+                                        (double)s->solved, s->max_disp, s->seconds, el, s->max_move, s->near};
         core_trace_add(&c->trace, row);
     }
     PyEval_RestoreThread(c->ts);
