@@ -236,7 +236,7 @@ static TGT double solve_cells_avx2(const double *yx, const double *yy, int m, in
     const size_t cap = 2 * ((size_t)m + 8), half = (size_t)m + 8;
     double *px = scratch, *py = px + m, *key = py + m;
     double *bufa = key + m + 8, *bufb = bufa + cap, *sd = bufb + cap;
-    int k = cfpo_order_by_hint_hd(yx, yy, m, skip, hx, hy, px, py, key);
+    int k = cfpo_order_by_hint_hd(yx, yy, m, skip, hx, hy, px, py, key, bufa);
 
     *cx = 0.5 * (S.x0 + S.x1);
     *cy = 0.5 * (S.y0 + S.y1);
@@ -254,7 +254,7 @@ static TGT double solve_cells_avx2(const double *yx, const double *yy, int m, in
         const double ax = px[i], ay = py[i];
         const double ub = cfpo_corner_far2_hd(corner, ax, ay);
         if (ub <= best) continue;
-        if (cell_empty(px, py, k, ax, ay, corner, A)) continue;
+        if (cells > 1 && cell_empty(px, py, k, ax, ay, corner, A)) continue;
 
         /* The polygon: small (<= 8 vertices) in sx, sy; else in the
          * scratch buffers (x at 0, y at half). */

@@ -41,16 +41,39 @@ CFPO_HD static inline double cfpo_min_dist2_hd(double cx, double cy, const doubl
 }
 
 /* Copies Y (minus skip) into px/py ordered by distance to the hint; ties
- * keep the given order (insertion sort is stable). Returns the count. */
+ * keep the given order (a stable sort). Returns the count. tmp: 2 m
+ * doubles. Each point's place is counted (the keys below it, and the equal
+ * keys before it): no data-dependent branches, where an insertion sort
+ * mispredicts on most moves. If NaN keys make the places no permutation,
+ * an insertion sort decides, as it did alone before; both give the same
+ * order whenever the keys are numbers. */
 CFPO_HD static inline int cfpo_order_by_hint_hd(const double *yx, const double *yy, int m, int skip, double hx, double hy,
-                         double *px, double *py, double *key)
+                         double *px, double *py, double *key, double *tmp)
 {
     int k = 0;
     for (int j = 0; j < m; j++) {
         if (j == skip) continue;
         double dx = yx[j] - hx, dy = yy[j] - hy;
-        double d2 = dx * dx + dy * dy;
-        int t = k++;
+        key[k] = dx * dx + dy * dy;
+        tmp[k] = yx[j];
+        tmp[m + k] = yy[j];
+        k++;
+    }
+    if (k <= 64) {
+        unsigned long long used = 0;
+        for (int i = 0; i < k; i++) {
+            const double ki = key[i];
+            int r = 0;
+            for (int j = 0; j < k; j++) r += (key[j] < ki) | ((key[j] == ki) & (j < i));
+            px[r] = tmp[i];
+            py[r] = tmp[m + i];
+            used |= 1ULL << r;
+        }
+        if (used == (k == 64 ? ~0ULL : (1ULL << k) - 1)) return k;
+    }
+    for (int i = 0; i < k; i++) {
+        const double d2 = key[i];
+        int t = i;
         while (t > 0 && key[t - 1] > d2) {
             key[t] = key[t - 1];
             px[t] = px[t - 1];
@@ -58,8 +81,8 @@ CFPO_HD static inline int cfpo_order_by_hint_hd(const double *yx, const double *
             t--;
         }
         key[t] = d2;
-        px[t] = yx[j];
-        py[t] = yy[j];
+        px[t] = tmp[i];
+        py[t] = tmp[m + i];
     }
     return k;
 }
@@ -115,7 +138,7 @@ CFPO_HD static inline double cfpo_solve_cells_hd(const double *yx, const double 
     const size_t cap = 2 * ((size_t)m + 8);
     double *px = scratch, *py = px + m, *key = py + m;
     double *bufa = key + m + 8, *bufb = bufa + cap, *sd = bufb + cap;
-    int k = cfpo_order_by_hint_hd(yx, yy, m, skip, hx, hy, px, py, key);
+    int k = cfpo_order_by_hint_hd(yx, yy, m, skip, hx, hy, px, py, key, bufa);
 
     *cx = 0.5 * (S.x0 + S.x1);
     *cy = 0.5 * (S.y0 + S.y1);
