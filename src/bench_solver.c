@@ -2,7 +2,9 @@
  * solver's calls of a real run, recorded and played back through the plain
  * and the AVX2 solver (solver_simd.h), which must give the same bits on
  * every call. Never a test: the benchmark of the solver alone. Times are
- * the replaying thread's CPU time, the best of the rounds.
+ * the replaying thread's CPU time, the best of the rounds. Calls made in
+ * the adaptive variant's near phase (cfpo_near_solve) are captured too,
+ * and replayed, like every call, as full LocalCFPO problems.
  *
  * File: "CFPOCALLS1\n", then per call: int32 m, int32 skip, 7 doubles
  * (S.x0, S.y0, S.x1, S.y1, hx, hy, floor2), then m doubles x, m doubles y. */
