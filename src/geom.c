@@ -13,16 +13,16 @@ double cfpo_min_dist2(double cx, double cy, const double *yx, const double *yy, 
     return cfpo_min_dist2_hd(cx, cy, yx, yy, m, skip);
 }
 
+double cfpo_solve_cells_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                              double hy, double floor2, double *cx, double *cy, double *scratch, int cells)
+{
+    return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells);
+}
+
 double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                               double hy, double floor2, double *cx, double *cy, double *scratch)
 {
     return cfpo_local_solve_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
-}
-
-double cfpo_near_solve_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                             double hy, double floor2, double *cx, double *cy, double *scratch)
-{
-    return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, CFPO_NEAR_CELLS);
 }
 
 void (*cfpo_solve_observer)(const double *, const double *, int, int, cfpo_square, double, double, double);
@@ -50,22 +50,26 @@ const char *cfpo_solver_name(void)
     return use_avx2() ? "avx2" : "plain";
 }
 
-/* The AVX2 solver (same bits, solver_avx2.c) or the plain one. */
+/* The AVX2 solver (same bits, solver_avx2.c) or the plain one, over the
+ * first `cells` cells in the hint's order. */
+static double solve(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
+                    double floor2, double *cx, double *cy, double *scratch, int cells)
+{
+    if (cfpo_solve_observer) cfpo_solve_observer(yx, yy, m, skip, S, hx, hy, floor2);
+    if (CFPO_SOLVER_AVX2 && use_avx2())
+        return cfpo_solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells);
+    return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells);
+}
+
 double cfpo_local_solve(const double *yx, const double *yy, int m, int skip, cfpo_square S,
                         double hx, double hy, double floor2, double *cx, double *cy,
                         double *scratch)
 {
-    if (cfpo_solve_observer) cfpo_solve_observer(yx, yy, m, skip, S, hx, hy, floor2);
-    if (CFPO_SOLVER_AVX2 && use_avx2())
-        return cfpo_local_solve_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
-    return cfpo_local_solve_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
+    return solve(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, m);
 }
 
 double cfpo_near_solve(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
                        double floor2, double *cx, double *cy, double *scratch)
 {
-    if (cfpo_solve_observer) cfpo_solve_observer(yx, yy, m, skip, S, hx, hy, floor2);
-    if (CFPO_SOLVER_AVX2 && use_avx2())
-        return cfpo_near_solve_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
-    return cfpo_near_solve_plain(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
+    return solve(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, CFPO_NEAR_CELLS);
 }

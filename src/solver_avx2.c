@@ -230,8 +230,8 @@ TGT static int cell_empty(const double *px, const double *py, int k, double ax, 
 }
 
 /* cfpo_solve_cells_hd of solver_impl.h, bit for bit. */
-static TGT double solve_cells_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                                   double hy, double floor2, double *cx, double *cy, double *scratch, int cells)
+TGT double cfpo_solve_cells_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                                 double hy, double floor2, double *cx, double *cy, double *scratch, int cells)
 {
     const size_t cap = 2 * ((size_t)m + 8), half = (size_t)m + 8;
     double *px = scratch, *py = px + m, *key = py + m;
@@ -315,34 +315,22 @@ static TGT double solve_cells_avx2(const double *yx, const double *yy, int m, in
     return cfpo_solve_finish_hd(bx, by, S, yx, yy, m, skip, cx, cy);
 }
 
-double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                             double hy, double floor2, double *cx, double *cy, double *scratch)
-{
-    return solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, m);
-}
-
-double cfpo_near_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                            double hy, double floor2, double *cx, double *cy, double *scratch)
-{
-    return solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, CFPO_NEAR_CELLS);
-}
-
 int cfpo_solver_avx2_usable(void) { return __builtin_cpu_supports("avx2"); }
 
 #else
 
-double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                             double hy, double floor2, double *cx, double *cy, double *scratch)
+double cfpo_solve_cells_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                             double hy, double floor2, double *cx, double *cy, double *scratch, int cells)
 {
-    return cfpo_local_solve_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch);
-}
-
-double cfpo_near_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                            double hy, double floor2, double *cx, double *cy, double *scratch)
-{
-    return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, CFPO_NEAR_CELLS);
+    return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells);
 }
 
 int cfpo_solver_avx2_usable(void) { return 0; }
 
 #endif
+
+double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                             double hy, double floor2, double *cx, double *cy, double *scratch)
+{
+    return cfpo_solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, m);
+}

@@ -36,11 +36,13 @@ double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int ski
 double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                              double hy, double floor2, double *cx, double *cy, double *scratch);
 
-/* The near solve (geom.h), plain and AVX2: the same bits. */
-double cfpo_near_solve_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                             double hy, double floor2, double *cx, double *cy, double *scratch);
-double cfpo_near_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
-                            double hy, double floor2, double *cx, double *cy, double *scratch);
+/* Both solvers over the Voronoi cells of the first `cells` points in the
+ * hint's order (m: LocalCFPO; CFPO_NEAR_CELLS: the near solve of geom.h),
+ * plain and AVX2 (call the latter only where usable): the same bits. */
+double cfpo_solve_cells_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                              double hy, double floor2, double *cx, double *cy, double *scratch, int cells);
+double cfpo_solve_cells_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                             double hy, double floor2, double *cx, double *cy, double *scratch, int cells);
 
 /* Where not NULL, called by cfpo_local_solve and cfpo_near_solve with every call's inputs
  * before it solves (cfpo-bench capture; set only while one thread runs). */

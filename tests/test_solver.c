@@ -79,22 +79,18 @@ enum { MAXM = 40 };
 
 static int avx2_ok, same_calls;
 
-typedef double (*solve_fn)(const double *, const double *, int, int, cfpo_square, double, double, double, double *,
-                           double *, double *);
-
 /* The AVX2 and the plain solver (LocalCFPO, then the near solve) on the
  * same call: the same bits? */
 static int same_bits(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
                      double floor2, const char *kind)
 {
     if (!avx2_ok) return 0;
-    static const solve_fn plain[2] = {cfpo_local_solve_plain, cfpo_near_solve_plain};
-    static const solve_fn avx2[2] = {cfpo_local_solve_avx2, cfpo_near_solve_avx2};
     for (int w = 0; w < 2; w++) {
+        const int cells = w ? CFPO_NEAR_CELLS : m;
         double sa[10 * (MAXM + 8)], sb[10 * (MAXM + 8)];
         double ax, ay, bx, by;
-        double va = plain[w](yx, yy, m, skip, S, hx, hy, floor2, &ax, &ay, sa);
-        double vb = avx2[w](yx, yy, m, skip, S, hx, hy, floor2, &bx, &by, sb);
+        double va = cfpo_solve_cells_plain(yx, yy, m, skip, S, hx, hy, floor2, &ax, &ay, sa, cells);
+        double vb = cfpo_solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, &bx, &by, sb, cells);
         same_calls++;
         if (memcmp(&va, &vb, 8) || memcmp(&ax, &bx, 8) || memcmp(&ay, &by, 8)) {
             fprintf(stderr, "%s: AVX2 %s %.17g at (%.17g, %.17g), plain %.17g at (%.17g, %.17g), m=%d skip=%d floor2=%.17g\n",

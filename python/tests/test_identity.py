@@ -62,7 +62,16 @@ def test_run_statistics_and_trace_match_command(tmp_path, command):
         assert row[1] == f"{r.trace['delta_min'][i]:.9f}" and row[2] == f"{r.trace['delta_avg'][i]:.9f}"
         assert int(row[3]) == r.trace["moved"][i] and int(row[4]) == r.trace["solved"][i]
         assert row[5] == f"{r.trace['max_disp'][i]:.6g}" and row[8] == f"{r.trace['max_move'][i]:.6g}"
+        assert int(row[9]) == r.trace["near"][i]
     assert same_file(tmp_path, tmp_path / "c.npy", r.points)
+
+
+def test_near_phase_then_exact_until_converged():
+    r = cfpo.run(300, seed=8)
+    near = list(r.trace["near"])
+    assert r.converged and r.stop == "converged"
+    switch = near.index(0, 1)  # the first iteration of exact solves
+    assert switch > 1 and near[0] == 0 and all(near[1:switch]) and not any(near[switch:])
 
 
 @pytest.mark.parametrize("name,args,call", [
