@@ -104,11 +104,19 @@ static int square_for(const cfpo_engine *E, double thr, cfpo_square *Sx)
     return 1;
 }
 
-#define RELAX_FROM 4 /* the first iteration whose moves are over-relaxed */
+/* The adaptive variant's schedule (docs/method.md items 5 and 6), by
+ * iteration: the near solves of iterations 1 to NEAR_TWO_UNTIL - 1 search
+ * two Voronoi cells, later ones one; moves are over-relaxed from
+ * RELAX_FROM on, with the strong weights before RELAX_STRONG_UNTIL and the
+ * mild ones after. */
+#define NEAR_TWO_UNTIL 7
+#define RELAX_FROM 4
+#define RELAX_STRONG_UNTIL 20
+static const double relax_strong[2] = {3.0, 1.8}, relax_mild[2] = {1.8, 1.4};
 
 /* Over-relaxation, the adaptive variant's only (docs/method.md): the
  * solver's spot (*nx, *ny) is pushed on along the move, to x + w (spot - x)
- * for w = 1.8, else w = 1.4: the first that lies in the square and is
+ * for w = w[0], else w = w[1]: the first that lies in the square and is
  * farther than the floor from every other point of the block replaces the
  * spot; else the spot stays. Such a spot raises x's distance to all of X
  * just as the solver's does (the square keeps it at least thr from the
@@ -119,11 +127,13 @@ static int square_for(const cfpo_engine *E, double thr, cfpo_square *Sx)
  * carries a move across many points in one sweep where exact moves need
  * many sweeps. Not in the first RELAX_FROM - 1 iterations: their long
  * moves, pushed on, print the grid on the set (a spike at frequency (g, 0)
- * that the later iterations take long to wash out). */
-static void over_relax(const cfpo_square *Sx, const double *lxs, const double *lys, int m, int gi, double x, double y,
-                       double floor2, double *nx, double *ny)
+ * that the later iterations take long to wash out). The strong pushes
+ * (w = 3.0, else 1.8) carry the near phase's short moves further while
+ * the set is far from converged; the mild ones (1.8, else 1.4) after
+ * them converge in fewer iterations, to a higher delta_min. */
+static void over_relax(const double *w, const cfpo_square *Sx, const double *lxs, const double *lys, int m, int gi,
+                       double x, double y, double floor2, double *nx, double *ny)
 {
-    static const double w[2] = {1.8, 1.4};
     for (int q = 0; q < 2; q++) {
         const double rx = x + w[q] * (*nx - x), ry = y + w[q] * (*ny - y);
         if (rx >= Sx->x0 && rx <= Sx->x1 && ry >= Sx->y0 && ry <= Sx->y1 &&
@@ -164,6 +174,11 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     int off = 0;
     const int m = eng_gather_block(E, lx, ly, lxs, lys, &off);
     const double tolL = E->o.tol * E->G.L;
+    const int adaptive = E->G.variant == CFPO_VARIANT_ADAPTIVE;
+    const int near_cells = E->cur < NEAR_TWO_UNTIL ? 2 : 1;
+    const double *relax = !adaptive || E->cur < RELAX_FROM ? NULL
+                          : E->cur < RELAX_STRONG_UNTIL    ? relax_strong
+                                                           : relax_mild;
     int64_t moves = 0;
     unsigned mask = 0;
     for (uint32_t k = 0; k < e - s; k++) {
@@ -175,11 +190,11 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
         cfpo_square Sx;
         if (!square_for(E, thr, &Sx)) continue;
         double nx, ny;
-        const double v = (E->near ? cfpo_near_solve : cfpo_local_solve)(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol);
+        const double v = E->near ? cfpo_near_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol, near_cells)
+                                 : cfpo_local_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol);
         (*solved)++;
         if (!(v > floor2)) continue;
-        if (E->G.variant == CFPO_VARIANT_ADAPTIVE && E->cur >= RELAX_FROM)
-            over_relax(&Sx, lxs, lys, m, gi, x, y, floor2, &nx, &ny);
+        if (relax) over_relax(relax, &Sx, lxs, lys, m, gi, x, y, floor2, &nx, &ny);
         lxs[gi] = nx;
         lys[gi] = ny;
         const double ddx = nx - x, ddy = ny - y, mv = ddx * ddx + ddy * ddy;

@@ -69,7 +69,7 @@ double cfpo_local_solve(const double *yx, const double *yy, int m, int skip, cfp
 }
 
 double cfpo_near_solve(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
-                       double floor2, double *cx, double *cy, double *scratch)
+                       double floor2, double *cx, double *cy, double *scratch, int cells)
 {
-    return solve(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, CFPO_NEAR_CELLS);
+    return solve(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells < 1 ? 1 : cells);
 }

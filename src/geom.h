@@ -64,20 +64,19 @@ double cfpo_local_solve(const double *yx, const double *yy, int m, int skip, cfp
                         double hx, double hy, double floor2, double *cx, double *cy,
                         double *scratch);
 
-/* How many Voronoi cells the near solve searches. */
-#define CFPO_NEAR_CELLS 1
-
-/* The near solve: LocalCFPO searching only the Voronoi cell (in Y, clipped
- * to S) of the point of Y nearest to the hint. With the hint at x, that is
- * the cell x lies in, so x goes to the farthest vertex of its own region;
- * the spot LocalCFPO finds elsewhere in S (a hole beyond the next points)
- * is not looked for. The same arguments, value and tie rules as
- * cfpo_local_solve; its answer is LocalCFPO's whenever LocalCFPO's
- * maximiser lies in that cell, and never larger (both up to rounding: a
- * vertex clipped from another cell may differ in the last bits). About
- * half the work: proving that no other cell holds a farther spot is most
- * of LocalCFPO's cost. */
+/* The near solve: LocalCFPO searching only the Voronoi cells (in Y,
+ * clipped to S) of the first `cells` points of Y (cells >= 1) in the
+ * hint's order, nearest to the hint first. With the hint at x, the first
+ * is the cell x lies in: with cells = 1, x goes to the farthest vertex of
+ * its own region; with 2, of its own region or its second-nearest
+ * neighbour's. A spot LocalCFPO finds in another cell (a hole beyond the
+ * next points) is not looked for. The same arguments, value and tie rules
+ * as cfpo_local_solve; its answer is LocalCFPO's whenever LocalCFPO's
+ * maximiser lies in a searched cell, and never larger (both up to
+ * rounding: a vertex clipped from another cell may differ in the last
+ * bits). One cell is about a third of LocalCFPO's work: proving that no
+ * other cell holds a farther spot is most of its cost. */
 double cfpo_near_solve(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
-                       double floor2, double *cx, double *cy, double *scratch);
+                       double floor2, double *cx, double *cy, double *scratch, int cells);
 
 #endif

@@ -37,7 +37,7 @@ double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip
                              double hy, double floor2, double *cx, double *cy, double *scratch);
 
 /* Both solvers over the Voronoi cells of the first `cells` points in the
- * hint's order (m: LocalCFPO; CFPO_NEAR_CELLS: the near solve of geom.h),
+ * hint's order (m: LocalCFPO; fewer: the near solve of geom.h),
  * plain and AVX2 (call the latter only where usable): the same bits. */
 double cfpo_solve_cells_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                               double hy, double floor2, double *cx, double *cy, double *scratch, int cells);

@@ -55,6 +55,15 @@ N=4096
 [ "$(od -An -tu4 -j56 -N4 ck.bin | tr -d ' ')" = 1 ] && ok || bad "a checkpoint in the near phase has near != 1"
 "$CFPO" -q --max-iter 20 --resume ck.bin -o res.bin >/dev/null && cmp -s res.bin ref.bin && ok ||
   bad "resume from a version-3 checkpoint differs from the uninterrupted run"
+# The schedule steps by iteration (two-cell near solves before 7, strong
+# over-relaxation from 4 and before 20): checkpoints just before each step
+# resume to the uninterrupted run's bytes.
+"$CFPO" -q -n $N --max-iter 22 -o ref22.bin >/dev/null || bad "reference run to 22"
+for k in 3 6 19; do
+  "$CFPO" -q -n $N --max-iter $k --checkpoint st$k.ck --checkpoint-every $k >/dev/null || bad "checkpoint at $k"
+  "$CFPO" -q --max-iter 22 --resume st$k.ck -o str$k.bin >/dev/null && cmp -s str$k.bin ref22.bin && ok ||
+    bad "resume from iteration $k differs from the uninterrupted run"
+done
 
 # rehead IN OUT VERSION NEAR: IN with another version and near field, its
 # checksum made right again.

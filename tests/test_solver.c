@@ -10,10 +10,11 @@
  * 200,000 more: random, lattices with jitter down to 1e-15, many-sided
  * cells (polygons past the 8 vertices of the branch-free cut), points
  * on S's corners and edges, far and huge coordinates, every floor mode.
- * The near solve (cfpo_near_solve) on the same configurations against an
- * exact enumeration of the vertices of the one Voronoi cell it searches,
- * never above LocalCFPO, equal to it when LocalCFPO's point lies in that
- * cell, and AVX2 against plain bit for bit too. */
+ * The near solve (cfpo_near_solve), searching one and two cells, on the
+ * same configurations against an exact enumeration of the vertices of the
+ * Voronoi cells it searches, never above LocalCFPO, equal to it when
+ * LocalCFPO's point lies in a searched cell, and AVX2 against plain bit
+ * for bit too. */
 #include "geom.h"
 #include "solver_simd.h"
 #include "testutil.h"
@@ -79,34 +80,35 @@ enum { MAXM = 40 };
 
 static int avx2_ok, same_calls;
 
-/* The AVX2 and the plain solver (LocalCFPO, then the near solve) on the
- * same call: the same bits? */
+/* The AVX2 and the plain solver (LocalCFPO, then the near solve of one
+ * and of two cells) on the same call: the same bits? */
 static int same_bits(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
                      double floor2, const char *kind)
 {
     if (!avx2_ok) return 0;
-    for (int w = 0; w < 2; w++) {
-        const int cells = w ? CFPO_NEAR_CELLS : m;
+    for (int w = 0; w < 3; w++) {
+        const int cells = w ? w : m;
         double sa[10 * (MAXM + 8)], sb[10 * (MAXM + 8)];
         double ax, ay, bx, by;
         double va = cfpo_solve_cells_plain(yx, yy, m, skip, S, hx, hy, floor2, &ax, &ay, sa, cells);
         double vb = cfpo_solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, &bx, &by, sb, cells);
         same_calls++;
         if (memcmp(&va, &vb, 8) || memcmp(&ax, &bx, 8) || memcmp(&ay, &by, 8)) {
-            fprintf(stderr, "%s: AVX2 %s %.17g at (%.17g, %.17g), plain %.17g at (%.17g, %.17g), m=%d skip=%d floor2=%.17g\n",
-                    kind, w ? "near solve" : "solver", vb, bx, by, va, ax, ay, m, skip, floor2);
+            fprintf(stderr, "%s: AVX2 %s (%d cells) %.17g at (%.17g, %.17g), plain %.17g at (%.17g, %.17g), m=%d skip=%d floor2=%.17g\n",
+                    kind, w ? "near solve" : "solver", cells, vb, bx, by, va, ax, ay, m, skip, floor2);
             return 1;
         }
     }
     return 0;
 }
 
-/* The index of the point of Y nearest to (hx, hy), the first on ties. */
-static int nearest(const double *yx, const double *yy, int m, double hx, double hy)
+/* The index of the point of Y nearest to (hx, hy) other than `not`, the
+ * first on ties; -1 if there is none. */
+static int nearest(const double *yx, const double *yy, int m, double hx, double hy, int not)
 {
-    int b = 0;
-    for (int j = 1; j < m; j++)
-        if (f2(hx, hy, yx + j, yy + j, 1) < f2(hx, hy, yx + b, yy + b, 1)) b = j;
+    int b = -1;
+    for (int j = 0; j < m; j++)
+        if (j != not && (b < 0 || f2(hx, hy, yx + j, yy + j, 1) < f2(hx, hy, yx + b, yy + b, 1))) b = j;
     return b;
 }
 
@@ -167,32 +169,40 @@ static double brute_cell(const double *yx, const double *yy, int m, int a, cfpo_
     return best;
 }
 
-/* The near solve on one configuration (no point skipped, no floor) with
- * LocalCFPO's answer v at (cx, cy). */
+/* The near solve of `cells` cells (1 or 2) on one configuration (no point
+ * skipped, no floor) with LocalCFPO's answer v at (cx, cy). The cells
+ * searched are those of the nearest and the second-nearest point of Y to
+ * the hint (the first on ties). */
 static int check_near(const double *yx, const double *yy, int m, cfpo_square S, double hx, double hy, double v,
-                      double cx, double cy, const char *kind)
+                      double cx, double cy, int cells, const char *kind)
 {
     if (m == 0) return 0;
     double scratch[10 * (MAXM + 8)], nx, ny;
-    const double vn = cfpo_near_solve(yx, yy, m, -1, S, hx, hy, -1.0, &nx, &ny, scratch);
-    const int a = nearest(yx, yy, m, hx, hy);
-    const double scale = (S.x1 - S.x0) * (S.x1 - S.x0), ref = brute_cell(yx, yy, m, a, S);
+    const double vn = cfpo_near_solve(yx, yy, m, -1, S, hx, hy, -1.0, &nx, &ny, scratch, cells);
+    const int a = nearest(yx, yy, m, hx, hy, -1), b = cells > 1 ? nearest(yx, yy, m, hx, hy, a) : -1;
+    const double scale = (S.x1 - S.x0) * (S.x1 - S.x0);
+    double ref = brute_cell(yx, yy, m, a, S);
+    if (b >= 0) ref = fmax(ref, brute_cell(yx, yy, m, b, S));
     int bad = 0;
     if (vn > v + 1e-12 * scale) { /* rounding: the same vertex, clipped from another cell */
-        fprintf(stderr, "%s: near solve %.17g above LocalCFPO's %.17g\n", kind, vn, v);
+        fprintf(stderr, "%s: near solve (%d cells) %.17g above LocalCFPO's %.17g\n", kind, cells, vn, v);
         bad = 1;
     }
-    if (!in_cell(yx, yy, m, a, S, nx, ny, 1e-12) || vn != f2(nx, ny, yx, yy, m)) {
-        fprintf(stderr, "%s: near solve's point (%.17g, %.17g) not in the searched cell, or value %.17g != %.17g\n",
+    if (!(in_cell(yx, yy, m, a, S, nx, ny, 1e-12) || (b >= 0 && in_cell(yx, yy, m, b, S, nx, ny, 1e-12))) ||
+        vn != f2(nx, ny, yx, yy, m)) {
+        fprintf(stderr, "%s: near solve's point (%.17g, %.17g) not in a searched cell, or value %.17g != %.17g\n",
                 kind, nx, ny, vn, f2(nx, ny, yx, yy, m));
         bad = 1;
     }
     if (fabs(vn - ref) > 1e-9 * scale) {
-        fprintf(stderr, "%s: near solve %.17g, enumeration of the cell %.17g, m=%d\n", kind, vn, ref, m);
+        fprintf(stderr, "%s: near solve (%d cells) %.17g, enumeration of the cells %.17g, m=%d\n", kind, cells, vn,
+                ref, m);
         bad = 1;
     }
-    if (in_cell(yx, yy, m, a, S, cx, cy, 0) && vn < v - 1e-12 * scale) {
-        fprintf(stderr, "%s: LocalCFPO's point is in the near cell, but near solve %.17g < %.17g\n", kind, vn, v);
+    if ((in_cell(yx, yy, m, a, S, cx, cy, 0) || (b >= 0 && in_cell(yx, yy, m, b, S, cx, cy, 0))) &&
+        vn < v - 1e-12 * scale) {
+        fprintf(stderr, "%s: LocalCFPO's point is in a near cell, but near solve (%d cells) %.17g < %.17g\n", kind,
+                cells, vn, v);
         bad = 1;
     }
     return bad;
@@ -248,7 +258,7 @@ static int check(const double *yx, const double *yy, int m, cfpo_square S, doubl
         bad = 1;
     }
     bad |= same_all(yx, yy, m, S, hx, hy, v, kind);
-    bad |= check_near(yx, yy, m, S, hx, hy, v, cx, cy, kind);
+    for (int cells = 1; cells <= 2; cells++) bad |= check_near(yx, yy, m, S, hx, hy, v, cx, cy, cells, kind);
     return bad;
 }
 
