@@ -97,6 +97,47 @@ static int cmp_pt(const void *a, const void *b)
     return p->key < q->key ? -1 : (p->key > q->key);
 }
 
+/* pts[0, m) by (cell, key), cells in [c0, c0 + ncell): a stable counting
+ * sort by cell, applied in place by following the permutation's cycles,
+ * then each cell's run by key (an insertion sort: the runs are short and
+ * in key order already, but where the band's start rows wrap the torus).
+ * The keys are unique, so this is the order cmp_pt gives. Returns -1 (and
+ * leaves pts as they were) if the work arrays cannot be had. */
+static int sort_by_cell(cfpo_start_pt *pts, size_t m, int64_t c0, int64_t ncell)
+{
+    if (m >= UINT32_MAX || ncell < 1) return -1;
+    uint32_t *pos = calloc((size_t)ncell + 1, sizeof *pos), *dest = malloc((m ? m : 1) * sizeof *dest);
+    if (!pos || !dest) {
+        free(pos);
+        free(dest);
+        return -1;
+    }
+    for (size_t i = 0; i < m; i++) pos[pts[i].cell - c0 + 1]++;
+    for (int64_t c = 0; c < ncell; c++) pos[c + 1] += pos[c];
+    for (size_t i = 0; i < m; i++) dest[i] = pos[pts[i].cell - c0]++;
+    for (size_t i = 0; i < m; i++)
+        while (dest[i] != i) {
+            const uint32_t d = dest[i];
+            const cfpo_start_pt t = pts[d];
+            pts[d] = pts[i];
+            pts[i] = t;
+            dest[i] = dest[d];
+            dest[d] = d;
+        }
+    for (size_t i = 1; i < m; i++) {
+        const cfpo_start_pt t = pts[i];
+        size_t j = i;
+        while (j > 0 && pts[j - 1].cell == t.cell && pts[j - 1].key > t.key) {
+            pts[j] = pts[j - 1];
+            j--;
+        }
+        pts[j] = t;
+    }
+    free(pos);
+    free(dest);
+    return 0;
+}
+
 int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads, cfpo_start_pt **out)
 {
     start_params p;
@@ -149,7 +190,7 @@ int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads,
         m += kept[r];
     }
     free(kept);
-    qsort(pts, m, sizeof *pts, cmp_pt);
+    if (sort_by_cell(pts, m, y0 * G->g, (y1 - y0) * G->g) != 0) qsort(pts, m, sizeof *pts, cmp_pt);
     *out = pts;
     return (int64_t)m;
 }
