@@ -8,8 +8,9 @@
  *                                         and convergence; bytes per point
  *   cfpo-bench capture  -n N -i IT,IT,.. -o FILE   records the local solves
  *                                         of those iterations (one thread)
- *   cfpo-bench replay   -o FILE [-k K] [-p plain|avx2]  replays them through
- *                                         the plain and the AVX2 solver: ns per
+ *   cfpo-bench replay   -o FILE [-k K] [-p plain|avx2|avx512]  replays them
+ *                                         through the plain solver and the AVX2
+ *                                         and AVX-512 ones the CPU runs: ns per
  *                                         call, and a non-zero exit if any
  *                                         call's bits differ
  *   cfpo-bench plain    -n N -k K [-o FILE]  K iterations of the paper's CFPO
@@ -155,7 +156,7 @@ int main(int argc, char **argv)
         if (argc >= 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
             printf("Usage: cfpo-bench sweep|converge -n N [-t THREADS] [-k SWEEPS] [-s SEED]\n"
                    "       cfpo-bench capture -n N -i IT[,IT...] -o FILE [-s SEED]\n"
-                   "       cfpo-bench replay -o FILE [-k ROUNDS] [-p plain|avx2]\n"
+                   "       cfpo-bench replay -o FILE [-k ROUNDS] [-p plain|avx2|avx512]\n"
                    "       cfpo-bench plain -n N -k ITERATIONS [-s SEED] [-o FILE]\n");
             return 0;
         }
@@ -190,8 +191,8 @@ int main(int argc, char **argv)
             break;
         case 'o': file = optarg; break;
         case 'p':
-            if (strcmp(optarg, "plain") != 0 && strcmp(optarg, "avx2") != 0)
-                cli_usage_error(prog, "-p: bad solver '%s' (plain or avx2)", optarg);
+            if (strcmp(optarg, "plain") != 0 && strcmp(optarg, "avx2") != 0 && strcmp(optarg, "avx512") != 0)
+                cli_usage_error(prog, "-p: bad solver '%s' (plain, avx2 or avx512)", optarg);
             only = optarg;
             break;
         default: cli_usage_error(prog, "unknown or incomplete option '%s'", argv[optind - 1]);

@@ -158,30 +158,42 @@ int bench_replay(const char *prog, const char *path, const char *only, int round
     for (long i = 0; i < n; i++)
         if (c[i].m > maxm) maxm = c[i].m;
     double *scratch = malloc(cfpo_solver_scratch((size_t)maxm) * sizeof(double));
-    double *r = malloc(6 * (size_t)(n + 1) * sizeof(double));
+    double *r = malloc(9 * (size_t)(n + 1) * sizeof(double));
     if (!scratch || !r) cli_fail(prog, "out of memory");
-    const int avx = cfpo_solver_avx2_usable();
-    const int do_plain = !only || strcmp(only, "plain") == 0, do_avx = avx && (!only || strcmp(only, "avx2") == 0);
-    double tp = 1e300, ta = 1e300;
-    for (int k = 0; k < rounds; k++) {
-        if (do_plain) {
-            double t = run_all(cfpo_local_solve_plain, c, n, scratch, r, r + n, r + 2 * n);
-            if (t < tp) tp = t;
-        }
-        if (do_avx) {
-            double t = run_all(cfpo_local_solve_avx2, c, n, scratch, r + 3 * n, r + 4 * n, r + 5 * n);
-            if (t < ta) ta = t;
-        }
-    }
+    /* The routes: each one's results in r[3 n q ...], its best time in t[q]. */
+    const solver_fn fn[3] = {cfpo_local_solve_plain, cfpo_local_solve_avx2, cfpo_local_solve_avx512};
+    static const char *const name[3] = {"plain", "avx2", "avx512"};
+    const int usable[3] = {1, cfpo_solver_avx2_usable(), cfpo_solver_avx512_usable()};
+    int run[3];
+    double t[3] = {1e300, 1e300, 1e300};
+    for (int q = 0; q < 3; q++) run[q] = usable[q] && (!only || strcmp(only, name[q]) == 0);
+    for (int k = 0; k < rounds; k++)
+        for (int q = 0; q < 3; q++)
+            if (run[q]) {
+                double *rq = r + 3 * (size_t)n * (size_t)q;
+                double s = run_all(fn[q], c, n, scratch, rq, rq + n, rq + 2 * n);
+                if (s < t[q]) t[q] = s;
+            }
+    /* Every route run against the first one run: the same bits? */
     long differ = 0;
-    if (do_plain && do_avx)
+    int first = -1;
+    for (int q = 0; q < 3; q++) {
+        if (!run[q]) continue;
+        if (first < 0) {
+            first = q;
+            continue;
+        }
+        const double *a = r + 3 * (size_t)n * (size_t)first, *b = r + 3 * (size_t)n * (size_t)q;
         for (long i = 0; i < n; i++)
-            differ += memcmp(&r[i], &r[3 * n + i], 8) || memcmp(&r[n + i], &r[4 * n + i], 8) ||
-                      memcmp(&r[2 * n + i], &r[5 * n + i], 8);
-    printf("RESULT replay calls=%ld avx2=%s plain_ns_per_call=%.1f avx2_ns_per_call=%.1f speedup=%.3f "
-           "differing_calls=%ld\n",
-           n, avx ? "yes" : "no", do_plain ? tp / (double)n * 1e9 : 0.0, do_avx ? ta / (double)n * 1e9 : 0.0,
-           do_plain && do_avx ? tp / ta : 0.0, differ);
+            differ += memcmp(&a[i], &b[i], 8) || memcmp(&a[n + i], &b[n + i], 8) ||
+                      memcmp(&a[2 * n + i], &b[2 * n + i], 8);
+    }
+    double ns[3];
+    for (int q = 0; q < 3; q++) ns[q] = run[q] ? t[q] / (double)n * 1e9 : 0.0;
+    printf("RESULT replay calls=%ld avx2=%s avx512=%s plain_ns_per_call=%.1f avx2_ns_per_call=%.1f "
+           "avx512_ns_per_call=%.1f speedup=%.3f speedup_avx512=%.3f differing_calls=%ld\n",
+           n, usable[1] ? "yes" : "no", usable[2] ? "yes" : "no", ns[0], ns[1], ns[2],
+           run[0] && run[1] ? t[0] / t[1] : 0.0, run[0] && run[2] ? t[0] / t[2] : 0.0, differ);
     for (long i = 0; i < n; i++) free((void *)c[i].x);
     free(c);
     free(scratch);

@@ -27,37 +27,51 @@ double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int ski
 
 void (*cfpo_solve_observer)(const double *, const double *, int, int, cfpo_square, double, double, double);
 
-/* 1: the AVX2 solver, 0: the plain one (see cfpo_solver_name). */
-static int choose_avx2(void)
+enum { ROUTE_PLAIN, ROUTE_AVX2, ROUTE_AVX512 };
+static const char *const route_name[] = {"plain", "avx2", "avx512"};
+
+/* The widest route the CPU runs, at most the one CFPO_SOLVER names (see
+ * cfpo_solver_name). */
+static int choose_route(void)
 {
     const char *e = getenv("CFPO_SOLVER");
-    return cfpo_solver_avx2_usable() && !(e && strcmp(e, "plain") == 0);
+    int most = ROUTE_AVX512;
+    if (e && strcmp(e, "plain") == 0) most = ROUTE_PLAIN;
+    if (e && strcmp(e, "avx2") == 0) most = ROUTE_AVX2;
+    if (most >= ROUTE_AVX512 && cfpo_solver_avx512_usable()) return ROUTE_AVX512;
+    if (most >= ROUTE_AVX2 && cfpo_solver_avx2_usable()) return ROUTE_AVX2;
+    return ROUTE_PLAIN;
 }
 
 /* Chosen on the first call; every thread stores the same value. */
-static int use_avx2(void)
+static int route(void)
 {
     static int use = -1;
     int u = __atomic_load_n(&use, __ATOMIC_RELAXED);
-    if (u < 0) __atomic_store_n(&use, u = choose_avx2(), __ATOMIC_RELAXED);
+    if (u < 0) __atomic_store_n(&use, u = choose_route(), __ATOMIC_RELAXED);
     return u;
 }
 
 const char *cfpo_solver_name(void)
 {
     const char *e = getenv("CFPO_SOLVER");
-    if (e && strcmp(e, "plain") != 0 && strcmp(e, "auto") != 0) return NULL;
-    return use_avx2() ? "avx2" : "plain";
+    if (e && strcmp(e, "plain") != 0 && strcmp(e, "avx2") != 0 && strcmp(e, "avx512") != 0 && strcmp(e, "auto") != 0)
+        return NULL;
+    return route_name[route()];
 }
 
-/* The AVX2 solver (same bits, solver_avx2.c) or the plain one, over the
- * first `cells` cells in the hint's order. */
+/* The AVX-512 or AVX2 solver (same bits, solver_avx512.c and
+ * solver_avx2.c) or the plain one, over the first `cells` cells in the
+ * hint's order. */
 static double solve(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
                     double floor2, double *cx, double *cy, double *scratch, int cells)
 {
     if (cfpo_solve_observer) cfpo_solve_observer(yx, yy, m, skip, S, hx, hy, floor2);
-    if (CFPO_SOLVER_AVX2 && use_avx2())
-        return cfpo_solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells);
+    if (CFPO_SOLVER_AVX2) switch (route()) {
+        case ROUTE_AVX512: return cfpo_solve_cells_avx512(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells);
+        case ROUTE_AVX2: return cfpo_solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells);
+        default: break;
+        }
     return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells);
 }
 

@@ -402,7 +402,7 @@ int main(int argc, char **argv)
 {
     comm_init(&argc, &argv);
     cli_set_exit(comm_rank() != 0, comm_finalize);
-    if (!cfpo_solver_name()) cli_usage_error(prog, "CFPO_SOLVER: bad value '%s' (plain or auto)", getenv("CFPO_SOLVER"));
+    if (!cfpo_solver_name()) cli_usage_error(prog, "CFPO_SOLVER: bad value '%s' (plain, avx2, avx512 or auto)", getenv("CFPO_SOLVER"));
     cmdline c = {0};
     parse(argc, argv, &c);
     settle_options(&c);

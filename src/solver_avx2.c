@@ -50,9 +50,9 @@
 
 /* The plain cut (solver_impl.h's loop) on a polygon stored as x[], y[]:
  * writes the kept part into ox, oy, returns its count; *smax, *smin as the
- * plain loop has them. */
-static int cut_plain(const double *x, const double *y, int nv, double mx, double my, double nx, double ny,
-                     double *sd, double *ox, double *oy, double *smax_, double *smin_)
+ * plain loop has them. Also the AVX-512 route's cut of large polygons. */
+int cfpo_simd_cut_plain(const double *x, const double *y, int nv, double mx, double my, double nx, double ny,
+                        double *sd, double *ox, double *oy, double *smax_, double *smin_)
 {
     double smax = -INFINITY, smin = INFINITY;
     for (int v = 0; v < nv; v++) {
@@ -201,9 +201,10 @@ TGT static int cut_small(double *x, double *y, int nv, double mx, double my, dou
 }
 
 /* Does some bisector of (ax, ay) with another point put all of S strictly,
- * by the margin, on the other point's side? (See the proof above.) */
-TGT static int cell_empty(const double *px, const double *py, int k, double ax, double ay,
-                          const double corner[4][2], double A)
+ * by the margin, on the other point's side? (See the proof above.) The
+ * AVX-512 route's prefilter too. */
+TGT int cfpo_simd_cell_empty(const double *px, const double *py, int k, double ax, double ay,
+                         const double corner[4][2], double A)
 {
     const __m256d AX = _mm256_set1_pd(ax), AY = _mm256_set1_pd(ay), H = _mm256_set1_pd(0.5);
     const __m256d AA = _mm256_set1_pd(A), EPS = _mm256_set1_pd(1e-12);
@@ -254,7 +255,7 @@ TGT double cfpo_solve_cells_avx2(const double *yx, const double *yy, int m, int 
         const double ax = px[i], ay = py[i];
         const double ub = cfpo_corner_far2_hd(corner, ax, ay);
         if (ub <= best) continue;
-        if (cells > 1 && cell_empty(px, py, k, ax, ay, corner, A)) continue;
+        if (cells > 1 && cfpo_simd_cell_empty(px, py, k, ax, ay, corner, A)) continue;
 
         /* The polygon: small (<= 8 vertices) in sx, sy; else in the
          * scratch buffers (x at 0, y at half). */
@@ -277,7 +278,7 @@ TGT double cfpo_solve_cells_avx2(const double *yx, const double *yy, int m, int 
                 if (nn == 0) { alive = 0; break; }
             } else {
                 double smax, smin;
-                nn = cut_plain(x, y, nv, mx, my, nx, ny, sd, ox, oy, &smax, &smin);
+                nn = cfpo_simd_cut_plain(x, y, nv, mx, my, nx, ny, sd, ox, oy, &smax, &smin);
                 if (smax <= 0) continue;
                 if (smin > 0) { alive = 0; break; }
                 far2 = 0;

@@ -20,29 +20,47 @@
  * solver under another name). */
 int cfpo_solver_avx2_usable(void);
 
-/* The solver cfpo_local_solve runs, "avx2" or "plain", chosen once: AVX2
- * where the CPU has it, unless the environment says CFPO_SOLVER=plain
- * (the tests compare the two routes on whole runs). NULL when
- * CFPO_SOLVER holds anything but "plain" or "auto" (cfpo reports it; the
- * choice is then as if unset). */
+/* 1 where the CPU has AVX-512 (F and DQ), AVX2 and BMI2, so that the
+ * AVX-512 route (solver_avx512.c) can run. */
+int cfpo_solver_avx512_usable(void);
+
+/* The solver cfpo_local_solve runs, "avx512", "avx2" or "plain", chosen
+ * once: the widest route the CPU runs, unless the environment says
+ * CFPO_SOLVER=plain or avx2 (the tests compare the routes on whole runs;
+ * a route the CPU lacks gives the next narrower one). NULL when
+ * CFPO_SOLVER holds anything but "plain", "avx2", "avx512" or "auto" (cfpo
+ * reports it; the choice is then as if unset). */
 const char *cfpo_solver_name(void);
 
 /* The plain solver (solver_impl.h), whatever the CPU. */
 double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                               double hy, double floor2, double *cx, double *cy, double *scratch);
 
-/* The AVX2 solver: the same arguments and the same bits as the plain one.
- * Call only where cfpo_solver_avx2_usable() says 1. */
+/* The AVX2 and AVX-512 solvers: the same arguments and the same bits as
+ * the plain one. Call each only where its _usable() says 1. */
 double cfpo_local_solve_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                              double hy, double floor2, double *cx, double *cy, double *scratch);
+double cfpo_local_solve_avx512(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                               double hy, double floor2, double *cx, double *cy, double *scratch);
 
-/* Both solvers over the Voronoi cells of the first `cells` points in the
- * hint's order (m: LocalCFPO; fewer: the near solve of geom.h),
- * plain and AVX2 (call the latter only where usable): the same bits. */
+/* The solvers over the Voronoi cells of the first `cells` points in the
+ * hint's order (m: LocalCFPO; fewer: the near solve of geom.h), plain,
+ * AVX2 and AVX-512 (call the last two only where usable): the same bits. */
 double cfpo_solve_cells_plain(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                               double hy, double floor2, double *cx, double *cy, double *scratch, int cells);
 double cfpo_solve_cells_avx2(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
                              double hy, double floor2, double *cx, double *cy, double *scratch, int cells);
+double cfpo_solve_cells_avx512(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                               double hy, double floor2, double *cx, double *cy, double *scratch, int cells);
+
+#if CFPO_SOLVER_AVX2
+/* Pieces of solver_avx2.c that the AVX-512 route shares: the plain cut of
+ * a polygon in arrays (its large polygons) and the AVX2 prefilter. */
+int cfpo_simd_cut_plain(const double *x, const double *y, int nv, double mx, double my, double nx, double ny,
+                        double *sd, double *ox, double *oy, double *smax_, double *smin_);
+int cfpo_simd_cell_empty(const double *px, const double *py, int k, double ax, double ay, const double corner[4][2],
+                         double A);
+#endif
 
 /* Where not NULL, called by cfpo_local_solve and cfpo_near_solve with every call's inputs
  * before it solves (cfpo-bench capture; set only while one thread runs). */

@@ -157,17 +157,27 @@ for t in 1 2 3 4; do "$CFPO" -n 3000 --seed 9 -t $t -q -o d$t.bin >/dev/null || 
 "$CFPO" -n 3000 --seed 9 -t 2 --no-skip -q -o dn.bin >/dev/null
 cmp -s d1.bin d2.bin && cmp -s d1.bin d3.bin && cmp -s d1.bin d4.bin && ok || bad "thread counts give different bytes"
 cmp -s d1.bin dn.bin && ok || bad "--no-skip gives different bytes"
-# --- the AVX2 solver (chosen where the CPU has it) and the plain one
-# (CFPO_SOLVER=plain) give the same bytes, every variant, 1 and 2 threads
+# --- the AVX-512 or AVX2 solver (the widest the CPU has) and the narrower
+# ones (CFPO_SOLVER=avx2, CFPO_SOLVER=plain) give the same bytes, every
+# variant, 1 and 2 threads
+routes="plain"
 if [ "$(uname -m)" = x86_64 ] && grep -qw avx2 /proc/cpuinfo; then
-  "$CFPO" --version | grep -q "(LocalCFPO: avx2)" && ok || bad "AVX2 CPU, but --version says: $("$CFPO" --version)"
+  routes="plain avx2"
+  if grep -qw avx512f /proc/cpuinfo && grep -qw avx512dq /proc/cpuinfo && grep -qw bmi2 /proc/cpuinfo; then
+    "$CFPO" --version | grep -q "(LocalCFPO: avx512)" && ok || bad "AVX-512 CPU, but --version says: $("$CFPO" --version)"
+  else
+    "$CFPO" --version | grep -q "(LocalCFPO: avx2)" && ok || bad "AVX2 CPU, but --version says: $("$CFPO" --version)"
+  fi
+  CFPO_SOLVER=avx2 "$CFPO" --version | grep -q "(LocalCFPO: avx2)" && ok || bad "CFPO_SOLVER=avx2 not taken: $(CFPO_SOLVER=avx2 "$CFPO" --version)"
 fi
 CFPO_SOLVER=plain "$CFPO" --version | grep -q "(LocalCFPO: plain)" && ok || bad "CFPO_SOLVER=plain not taken: $(CFPO_SOLVER=plain "$CFPO" --version)"
 for v in adaptive paper simplified; do
   for t in 1 2; do
     "$CFPO" -n 3000 --seed 9 --variant $v -t $t -q -o r$v$t.bin >/dev/null
-    CFPO_SOLVER=plain "$CFPO" -n 3000 --seed 9 --variant $v -t $t -q -o p$v$t.bin >/dev/null
-    cmp -s r$v$t.bin p$v$t.bin && ok || bad "$v, $t threads: the plain solver gives other bytes"
+    for r in $routes; do
+      CFPO_SOLVER=$r "$CFPO" -n 3000 --seed 9 --variant $v -t $t -q -o p$v$t$r.bin >/dev/null
+      cmp -s r$v$t.bin p$v$t$r.bin && ok || bad "$v, $t threads: the $r solver gives other bytes"
+    done
   done
 done
 CFPO_SOLVER=fast expect 2 "CFPO_SOLVER: bad value 'fast'" -n 100 -o x.npy

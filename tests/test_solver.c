@@ -78,10 +78,10 @@ static double brute(const double *yx, const double *yy, int m, cfpo_square S, do
 
 enum { MAXM = 40 };
 
-static int avx2_ok, same_calls;
+static int avx2_ok, avx512_ok, same_calls;
 
-/* The AVX2 and the plain solver (LocalCFPO, then the near solve of one
- * and of two cells) on the same call: the same bits? */
+/* The AVX2 and AVX-512 solvers against the plain one (LocalCFPO, then the
+ * near solve of one and of two cells) on the same call: the same bits? */
 static int same_bits(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx, double hy,
                      double floor2, const char *kind)
 {
@@ -91,12 +91,18 @@ static int same_bits(const double *yx, const double *yy, int m, int skip, cfpo_s
         double sa[10 * (MAXM + 8)], sb[10 * (MAXM + 8)];
         double ax, ay, bx, by;
         double va = cfpo_solve_cells_plain(yx, yy, m, skip, S, hx, hy, floor2, &ax, &ay, sa, cells);
-        double vb = cfpo_solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, &bx, &by, sb, cells);
-        same_calls++;
-        if (memcmp(&va, &vb, 8) || memcmp(&ax, &bx, 8) || memcmp(&ay, &by, 8)) {
-            fprintf(stderr, "%s: AVX2 %s (%d cells) %.17g at (%.17g, %.17g), plain %.17g at (%.17g, %.17g), m=%d skip=%d floor2=%.17g\n",
-                    kind, w ? "near solve" : "solver", cells, vb, bx, by, va, ax, ay, m, skip, floor2);
-            return 1;
+        for (int route = 0; route < 1 + avx512_ok; route++) {
+            double vb = route ? cfpo_solve_cells_avx512(yx, yy, m, skip, S, hx, hy, floor2, &bx, &by, sb, cells)
+                              : cfpo_solve_cells_avx2(yx, yy, m, skip, S, hx, hy, floor2, &bx, &by, sb, cells);
+            same_calls++;
+            if (memcmp(&va, &vb, 8) || memcmp(&ax, &bx, 8) || memcmp(&ay, &by, 8)) {
+                fprintf(stderr,
+                        "%s: %s %s (%d cells) %.17g at (%.17g, %.17g), plain %.17g at (%.17g, %.17g), m=%d skip=%d "
+                        "floor2=%.17g\n",
+                        kind, route ? "AVX-512" : "AVX2", w ? "near solve" : "solver", cells, vb, bx, by, va, ax, ay,
+                        m, skip, floor2);
+                return 1;
+            }
         }
     }
     return 0;
@@ -338,6 +344,7 @@ int main(void)
     double yx[MAXM], yy[MAXM];
     int failures = 0, total = 0;
     avx2_ok = cfpo_solver_avx2_usable();
+    avx512_ok = avx2_ok && cfpo_solver_avx512_usable();
     double worst_gap = 0;
     const double L = 1.0;
     for (int it = 0; it < 12000; it++) {
@@ -464,7 +471,9 @@ int main(void)
         total += more;
         failures += bad;
     }
-    if (avx2_ok) printf("AVX2 solver vs plain solver: %d calls compared bit for bit\n", same_calls);
+    if (avx2_ok)
+        printf("AVX2%s solver vs plain solver: %d calls compared bit for bit\n", avx512_ok ? " and AVX-512" : "",
+               same_calls);
     else printf("AVX2 solver vs plain solver: not compared (no AVX2 on this CPU or build)\n");
     printf("solver vs brute force: %d configurations, worst solver-minus-brute gap %.3g (relative to |S|^2)\n",
            total, worst_gap);

@@ -1,0 +1,227 @@
+/* solver_avx512.c - LocalCFPO with AVX-512 (host only, x86-64): the same
+ * answer, bit for bit, as cfpo_local_solve_hd of solver_impl.h and as the
+ * AVX2 route of solver_avx2.c, whose proof of the bits this route shares.
+ * geom.c picks it at run time where the CPU has AVX-512 F and DQ, AVX2
+ * and BMI2.
+ *
+ * What differs from the AVX2 route is where a small polygon (up to 8
+ * vertices) lives: in two 8-lane registers, x and y, from the first cut
+ * of a cell to its last, instead of in memory. The AVX2 cut writes its
+ * output vertex by vertex and the next cut reads it back a register at a
+ * time, a load that cannot take its value from those narrower stores and
+ * waits for them to reach the cache; on the cut's critical path that wait
+ * costs about as much as the arithmetic. Here the output is assembled in
+ * registers: the kept vertices and the crossings are interleaved in
+ * vertex order (v0, crossing of edge 0, v1, ...) by two lane permutations,
+ * each half compressed to its set lanes, and the upper half expanded in
+ * after the lower. A polygon that grows past 8 vertices (rare) goes to
+ * memory and the plain cut, as in the AVX2 route.
+ *
+ * The bits: every lane computes the side values, the crossing parameter
+ * and the crossing point by the same operations in the same order as the
+ * plain loop (no fused multiply-add: the build uses -ffp-contract=off and
+ * these intrinsics are separate multiplies and adds), with the same tests
+ * (<= 0 keeps a vertex, a strict sign change makes a crossing) and the
+ * same output order, so every polygon is the same list of doubles. The
+ * farthest vertex is a maximum of numbers that are never NaN (a NaN
+ * distance leaves the running maximum as it was, as in the AVX2 route),
+ * so its order does not matter; the final choice of the best vertex is
+ * the plain loop's, in vertex order. */
+#include "geom.h"
+
+#include "solver_impl.h"
+#include "solver_simd.h"
+
+#if CFPO_SOLVER_AVX2
+
+#include <immintrin.h>
+#include <string.h>
+
+#define T512 __attribute__((target("avx2,avx512f,avx512dq,bmi2,popcnt")))
+
+/* Bits v < n of an 8-lane mask (n <= 8). */
+static inline __mmask8 first_lanes(int n) { return (__mmask8)((1u << n) - 1u); }
+
+T512 static inline __m512d side8(__m512d X, __m512d Y, __m512d MX, __m512d MY, __m512d NX, __m512d NY)
+{
+    return _mm512_add_pd(_mm512_mul_pd(_mm512_sub_pd(X, MX), NX), _mm512_mul_pd(_mm512_sub_pd(Y, MY), NY));
+}
+
+/* The squared distance of each lane's point from (AX, AY). */
+T512 static inline __m512d dist2_8(__m512d X, __m512d Y, __m512d AX, __m512d AY)
+{
+    const __m512d dx = _mm512_sub_pd(X, AX), dy = _mm512_sub_pd(Y, AY);
+    return _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+}
+
+/* The cut of the polygon of nv <= 8 vertices in lanes 0..nv-1 of *PX,
+ * *PY by the bisector (m, n). Returns -1 when the bisector misses the
+ * polygon, 0 when it removes all of it, else the output's vertex count:
+ * up to 8 in *PX, *PY; more (at most 16) written to spx, spy (24 slots
+ * each) instead. *far2: the output's largest squared distance from
+ * (ax, ay). */
+T512 static int cut8(__m512d *PX, __m512d *PY, int nv, double mx, double my, double nx, double ny, double ax,
+                     double ay, double *spx, double *spy, double *far2)
+{
+    const __m512d MX = _mm512_set1_pd(mx), MY = _mm512_set1_pd(my);
+    const __m512d NX = _mm512_set1_pd(nx), NY = _mm512_set1_pd(ny), Z = _mm512_setzero_pd();
+    const __m512d X = *PX, Y = *PY;
+    const __m512d S = side8(X, Y, MX, MY, NX, NY);
+    const __mmask8 valid = first_lanes(nv);
+    const __mmask8 pos = _mm512_cmp_pd_mask(S, Z, _CMP_GT_OQ) & valid;
+    if (!pos) return -1; /* smax <= 0 */
+    /* smin > 0: no side value at or below 0 (a NaN is neither) */
+    const __mmask8 keep = _mm512_cmp_pd_mask(S, Z, _CMP_LE_OQ) & valid;
+    if (!keep) return 0;
+    const __mmask8 neg = _mm512_cmp_pd_mask(S, Z, _CMP_LT_OQ) & valid;
+    /* Lane v: vertex v + 1, and vertex 0 in lane nv - 1. */
+    const __m512i next = _mm512_maskz_mov_epi64(first_lanes(nv - 1), _mm512_set_epi64(8, 7, 6, 5, 4, 3, 2, 1));
+    const __m512d W = _mm512_permutexvar_pd(next, X), V = _mm512_permutexvar_pd(next, Y);
+    /* The next vertex's side, computed again from its coordinates: the
+     * same operations on the same numbers as the plain loop's sd[w]. */
+    const __m512d T = side8(W, V, MX, MY, NX, NY);
+    const __mmask8 pos1 = _mm512_cmp_pd_mask(T, Z, _CMP_GT_OQ), neg1 = _mm512_cmp_pd_mask(T, Z, _CMP_LT_OQ);
+    const __mmask8 cross = ((neg & pos1) | (pos & neg1)) & valid;
+    const __m512d Q = _mm512_div_pd(S, _mm512_sub_pd(S, T));
+    const __m512d I = _mm512_add_pd(X, _mm512_mul_pd(Q, _mm512_sub_pd(W, X)));
+    const __m512d J = _mm512_add_pd(Y, _mm512_mul_pd(Q, _mm512_sub_pd(V, Y)));
+    /* The farthest output vertex: max(d2, acc) keeps acc when d2 is NaN. */
+    const __m512d AX = _mm512_set1_pd(ax), AY = _mm512_set1_pd(ay);
+    __m512d acc = _mm512_mask_max_pd(Z, keep, dist2_8(X, Y, AX, AY), Z);
+    acc = _mm512_mask_max_pd(acc, cross, dist2_8(I, J, AX, AY), acc);
+    *far2 = _mm512_reduce_max_pd(acc);
+    /* The output in vertex order: the 16 candidates v0, i0, v1, i1, ...
+     * in two registers, each compressed to its kept lanes. */
+    const unsigned both = _pdep_u32(keep, 0x5555u) | _pdep_u32(cross, 0xAAAAu);
+    const __mmask8 mlo = (__mmask8)(both & 0xFFu), mhi = (__mmask8)(both >> 8);
+    const int nlo = __builtin_popcount(mlo), nhi = __builtin_popcount(mhi);
+    const __m512i lo = _mm512_set_epi64(11, 3, 10, 2, 9, 1, 8, 0), hi = _mm512_set_epi64(15, 7, 14, 6, 13, 5, 12, 4);
+    const __m512d LX = _mm512_maskz_compress_pd(mlo, _mm512_permutex2var_pd(X, lo, I));
+    const __m512d HX = _mm512_maskz_compress_pd(mhi, _mm512_permutex2var_pd(X, hi, I));
+    const __m512d LY = _mm512_maskz_compress_pd(mlo, _mm512_permutex2var_pd(Y, lo, J));
+    const __m512d HY = _mm512_maskz_compress_pd(mhi, _mm512_permutex2var_pd(Y, hi, J));
+    if (nlo + nhi <= 8) {
+        const __mmask8 upper = (__mmask8)(first_lanes(nhi) << nlo);
+        *PX = _mm512_mask_expand_pd(LX, upper, HX);
+        *PY = _mm512_mask_expand_pd(LY, upper, HY);
+    } else {
+        _mm512_storeu_pd(spx, LX);
+        _mm512_storeu_pd(spx + nlo, HX);
+        _mm512_storeu_pd(spy, LY);
+        _mm512_storeu_pd(spy + nlo, HY);
+    }
+    return nlo + nhi;
+}
+
+/* cfpo_solve_cells_hd of solver_impl.h, bit for bit (the structure of
+ * cfpo_solve_cells_avx2, the small polygon in registers). */
+T512 double cfpo_solve_cells_avx512(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                                   double hy, double floor2, double *cx, double *cy, double *scratch, int cells)
+{
+    const size_t cap = 2 * ((size_t)m + 8), half = (size_t)m + 8;
+    double *px = scratch, *py = px + m, *key = py + m;
+    double *bufa = key + m + 8, *bufb = bufa + cap, *sd = bufb + cap;
+    int k = cfpo_order_by_hint_hd(yx, yy, m, skip, hx, hy, px, py, key, bufa);
+
+    *cx = 0.5 * (S.x0 + S.x1);
+    *cy = 0.5 * (S.y0 + S.y1);
+    if (k == 0) return INFINITY;
+
+    const double corner[4][2] = {{S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1}};
+    const double A = fmax(fmax(fabs(S.x0), fabs(S.x1)), fmax(fabs(S.y0), fabs(S.y1)));
+    const __m512d SX = _mm512_set_pd(0, 0, 0, 0, S.x0, S.x1, S.x1, S.x0);
+    const __m512d SY = _mm512_set_pd(0, 0, 0, 0, S.y1, S.y1, S.y0, S.y0);
+    double best = floor2;
+    double bx = *cx, by = *cy;
+    int found = 0;
+    double spx[24], spy[24];
+
+    const int kc = cells < k ? cells : k;
+    for (int i = 0; i < kc; i++) {
+        const double ax = px[i], ay = py[i];
+        const double ub = cfpo_corner_far2_hd(corner, ax, ay);
+        if (ub <= best) continue;
+        if (cells > 1 && cfpo_simd_cell_empty(px, py, k, ax, ay, corner, A)) continue;
+
+        /* The polygon: small (<= 8 vertices) in PX, PY; else in the
+         * scratch buffers (x at 0, y at half). */
+        __m512d PX = SX, PY = SY;
+        double *x = bufa, *y = bufa + half, *ox = bufb, *oy = bufb + half;
+        int small = 1, nv = 4, alive = 1;
+        double far2 = ub;
+        for (int j = 0; j < k && alive; j++) {
+            if (j == i) continue;
+            double nx, ny, mx, my;
+            if (!cfpo_bisector_hd(px[j], py[j], ax, ay, far2, &nx, &ny, &mx, &my)) continue;
+            int nn;
+            if (small) {
+                nn = cut8(&PX, &PY, nv, mx, my, nx, ny, ax, ay, spx, spy, &far2);
+                if (nn < 0) continue;
+                if (nn == 0) { alive = 0; break; }
+                if (nn > 8) { /* move to the large buffers */
+                    memcpy(x, spx, (size_t)nn * sizeof *spx);
+                    memcpy(y, spy, (size_t)nn * sizeof *spy);
+                    small = 0;
+                }
+            } else {
+                double smax, smin;
+                nn = cfpo_simd_cut_plain(x, y, nv, mx, my, nx, ny, sd, ox, oy, &smax, &smin);
+                if (smax <= 0) continue;
+                if (smin > 0) { alive = 0; break; }
+                far2 = 0;
+                for (int v = 0; v < nn; v++) {
+                    double dx = ox[v] - ax, dy = oy[v] - ay;
+                    double d2 = dx * dx + dy * dy;
+                    if (d2 > far2) far2 = d2;
+                }
+                double *t = x; x = ox; ox = t;
+                t = y; y = oy; oy = t;
+            }
+            nv = nn;
+            if (far2 <= best) alive = 0;
+        }
+        if (!alive) continue;
+        if (small) {
+            _mm512_storeu_pd(spx, PX);
+            _mm512_storeu_pd(spy, PY);
+            x = spx;
+            y = spy;
+        }
+        for (int v = 0; v < nv; v++) {
+            double dx = x[v] - ax, dy = y[v] - ay;
+            double d2 = dx * dx + dy * dy;
+            if (d2 > best) {
+                best = d2;
+                bx = x[v];
+                by = y[v];
+                found = 1;
+            }
+        }
+    }
+    if (!found) return -1.0;
+    return cfpo_solve_finish_hd(bx, by, S, yx, yy, m, skip, cx, cy);
+}
+
+int cfpo_solver_avx512_usable(void)
+{
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx2") && __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt");
+}
+
+#else
+
+double cfpo_solve_cells_avx512(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                               double hy, double floor2, double *cx, double *cy, double *scratch, int cells)
+{
+    return cfpo_solve_cells_hd(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, cells);
+}
+
+int cfpo_solver_avx512_usable(void) { return 0; }
+
+#endif
+
+double cfpo_local_solve_avx512(const double *yx, const double *yy, int m, int skip, cfpo_square S, double hx,
+                               double hy, double floor2, double *cx, double *cy, double *scratch)
+{
+    return cfpo_solve_cells_avx512(yx, yy, m, skip, S, hx, hy, floor2, cx, cy, scratch, m);
+}
