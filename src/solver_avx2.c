@@ -1,7 +1,9 @@
 /* solver_avx2.c - LocalCFPO with AVX2 (host only, x86-64): the same
  * answer, bit for bit, as cfpo_local_solve_hd of solver_impl.h, which stays
  * the reference and the only code of the device and of other CPUs.
- * geom.c picks this one at run time where the CPU has AVX2.
+ * geom.c picks this one at run time where the CPU has AVX2 but not the
+ * AVX-512 route's instructions (solver_avx512.c, which shares this file's
+ * proof, its plain cut of large polygons and its prefilter).
  *
  * What changes, and why the bits do not:
  *

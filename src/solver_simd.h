@@ -1,15 +1,16 @@
-/* solver_simd.h - layer 1, host only: the AVX2 LocalCFPO (solver_avx2.c)
- * beside the plain one, for geom.c's choice and for the tests and the
- * benchmark that compare them. Everyone else calls cfpo_local_solve.
+/* solver_simd.h - layer 1, host only: the AVX2 and AVX-512 LocalCFPO
+ * (solver_avx2.c, solver_avx512.c) beside the plain one, for geom.c's
+ * choice and for the tests and the benchmark that compare them. Everyone
+ * else calls cfpo_local_solve.
  * May include geom.h. */
 #ifndef CFPO_SOLVER_SIMD_H
 #define CFPO_SOLVER_SIMD_H
 
 #include "geom.h"
 
-/* The AVX2 code is compiled on x86-64 by GCC or Clang (function by
- * function, with the target attribute, whatever -march says), and chosen
- * at run time where the CPU has AVX2. */
+/* The AVX2 and AVX-512 code is compiled on x86-64 by GCC or Clang
+ * (function by function, with the target attribute, whatever -march says),
+ * and chosen at run time by what the CPU has. */
 #if (defined(__x86_64__) || defined(_M_X64)) && (defined(__GNUC__) || defined(__clang__)) && !defined(CFPO_NO_AVX2)
 #define CFPO_SOLVER_AVX2 1
 #else
