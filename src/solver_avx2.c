@@ -52,9 +52,9 @@
 
 /* The plain cut (solver_impl.h's loop) on a polygon stored as x[], y[]:
  * writes the kept part into ox, oy, returns its count; *smax, *smin as the
- * plain loop has them. Also the AVX-512 route's cut of large polygons. */
-int cfpo_simd_cut_plain(const double *x, const double *y, int nv, double mx, double my, double nx, double ny,
-                        double *sd, double *ox, double *oy, double *smax_, double *smin_)
+ * plain loop has them. */
+static int cut_plain(const double *x, const double *y, int nv, double mx, double my, double nx, double ny,
+                     double *sd, double *ox, double *oy, double *smax_, double *smin_)
 {
     double smax = -INFINITY, smin = INFINITY;
     for (int v = 0; v < nv; v++) {
@@ -82,6 +82,23 @@ int cfpo_simd_cut_plain(const double *x, const double *y, int nv, double mx, dou
             nn++;
         }
     }
+    return nn;
+}
+
+int cfpo_simd_cut_large(const double *x, const double *y, int nv, double mx, double my, double nx, double ny,
+                        double ax, double ay, double *sd, double *ox, double *oy, double *far2)
+{
+    double smax, smin;
+    const int nn = cut_plain(x, y, nv, mx, my, nx, ny, sd, ox, oy, &smax, &smin);
+    if (smax <= 0) return -1;
+    if (smin > 0) return 0;
+    double f = 0;
+    for (int v = 0; v < nn; v++) {
+        double dx = ox[v] - ax, dy = oy[v] - ay;
+        double d2 = dx * dx + dy * dy;
+        if (d2 > f) f = d2;
+    }
+    *far2 = f;
     return nn;
 }
 
@@ -279,16 +296,9 @@ TGT double cfpo_solve_cells_avx2(const double *yx, const double *yy, int m, int 
                 if (nn < 0) continue;
                 if (nn == 0) { alive = 0; break; }
             } else {
-                double smax, smin;
-                nn = cfpo_simd_cut_plain(x, y, nv, mx, my, nx, ny, sd, ox, oy, &smax, &smin);
-                if (smax <= 0) continue;
-                if (smin > 0) { alive = 0; break; }
-                far2 = 0;
-                for (int v = 0; v < nn; v++) {
-                    double dx = ox[v] - ax, dy = oy[v] - ay;
-                    double d2 = dx * dx + dy * dy;
-                    if (d2 > far2) far2 = d2;
-                }
+                nn = cfpo_simd_cut_large(x, y, nv, mx, my, nx, ny, ax, ay, sd, ox, oy, &far2);
+                if (nn < 0) continue;
+                if (nn == 0) { alive = 0; break; }
             }
             if (small && nn > 8) { /* move to the large buffers */
                 memcpy(bufa, ox, (size_t)nn * sizeof *ox);
@@ -303,16 +313,7 @@ TGT double cfpo_solve_cells_avx2(const double *yx, const double *yy, int m, int 
             if (far2 <= best) alive = 0;
         }
         if (!alive) continue;
-        for (int v = 0; v < nv; v++) {
-            double dx = x[v] - ax, dy = y[v] - ay;
-            double d2 = dx * dx + dy * dy;
-            if (d2 > best) {
-                best = d2;
-                bx = x[v];
-                by = y[v];
-                found = 1;
-            }
-        }
+        found |= cfpo_simd_best_vertex(x, y, nv, ax, ay, &best, &bx, &by);
     }
     if (!found) return -1.0;
     return cfpo_solve_finish_hd(bx, by, S, yx, yy, m, skip, cx, cy);

@@ -164,16 +164,9 @@ T512 double cfpo_solve_cells_avx512(const double *yx, const double *yy, int m, i
                     small = 0;
                 }
             } else {
-                double smax, smin;
-                nn = cfpo_simd_cut_plain(x, y, nv, mx, my, nx, ny, sd, ox, oy, &smax, &smin);
-                if (smax <= 0) continue;
-                if (smin > 0) { alive = 0; break; }
-                far2 = 0;
-                for (int v = 0; v < nn; v++) {
-                    double dx = ox[v] - ax, dy = oy[v] - ay;
-                    double d2 = dx * dx + dy * dy;
-                    if (d2 > far2) far2 = d2;
-                }
+                nn = cfpo_simd_cut_large(x, y, nv, mx, my, nx, ny, ax, ay, sd, ox, oy, &far2);
+                if (nn < 0) continue;
+                if (nn == 0) { alive = 0; break; }
                 double *t = x; x = ox; ox = t;
                 t = y; y = oy; oy = t;
             }
@@ -187,16 +180,7 @@ T512 double cfpo_solve_cells_avx512(const double *yx, const double *yy, int m, i
             x = spx;
             y = spy;
         }
-        for (int v = 0; v < nv; v++) {
-            double dx = x[v] - ax, dy = y[v] - ay;
-            double d2 = dx * dx + dy * dy;
-            if (d2 > best) {
-                best = d2;
-                bx = x[v];
-                by = y[v];
-                found = 1;
-            }
-        }
+        found |= cfpo_simd_best_vertex(x, y, nv, ax, ay, &best, &bx, &by);
     }
     if (!found) return -1.0;
     return cfpo_solve_finish_hd(bx, by, S, yx, yy, m, skip, cx, cy);

@@ -55,12 +55,37 @@ double cfpo_solve_cells_avx512(const double *yx, const double *yy, int m, int sk
                                double hy, double floor2, double *cx, double *cy, double *scratch, int cells);
 
 #if CFPO_SOLVER_AVX2
-/* Pieces of solver_avx2.c that the AVX-512 route shares: the plain cut of
- * a polygon in arrays (its large polygons) and the AVX2 prefilter. */
-int cfpo_simd_cut_plain(const double *x, const double *y, int nv, double mx, double my, double nx, double ny,
-                        double *sd, double *ox, double *oy, double *smax_, double *smin_);
+/* Pieces the AVX2 and AVX-512 routes share. The plain cut of a polygon
+ * held in arrays (one of more than 8 vertices) by the bisector (m, n):
+ * -1 when it misses the polygon, 0 when it removes all of it, else the
+ * count written to ox, oy and, in *far2, their largest squared distance
+ * from (ax, ay) (solver_avx2.c). */
+int cfpo_simd_cut_large(const double *x, const double *y, int nv, double mx, double my, double nx, double ny,
+                        double ax, double ay, double *sd, double *ox, double *oy, double *far2);
+/* The AVX2 prefilter: does some bisector of (ax, ay) with another point
+ * put all of S beyond it by the margin? (solver_avx2.c, with the proof.) */
 int cfpo_simd_cell_empty(const double *px, const double *py, int k, double ax, double ay, const double corner[4][2],
                          double A);
+
+/* The plain loop's last step for a cell that survived its cuts: each
+ * vertex in order that lies farther than *best from (ax, ay) (squared)
+ * replaces *best and (*bx, *by); returns whether one did. */
+static inline int cfpo_simd_best_vertex(const double *x, const double *y, int nv, double ax, double ay, double *best,
+                                        double *bx, double *by)
+{
+    int found = 0;
+    for (int v = 0; v < nv; v++) {
+        double dx = x[v] - ax, dy = y[v] - ay;
+        double d2 = dx * dx + dy * dy;
+        if (d2 > *best) {
+            *best = d2;
+            *bx = x[v];
+            *by = y[v];
+            found = 1;
+        }
+    }
+    return found;
+}
 #endif
 
 /* Where not NULL, called by cfpo_local_solve and cfpo_near_solve with every call's inputs
