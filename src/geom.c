@@ -27,17 +27,26 @@ double cfpo_local_solve_plain(const double *yx, const double *yy, int m, int ski
 
 void (*cfpo_solve_observer)(const double *, const double *, int, int, cfpo_square, double, double, double);
 
-enum { ROUTE_PLAIN, ROUTE_AVX2, ROUTE_AVX512 };
-static const char *const route_name[] = {"plain", "avx2", "avx512"};
+enum { ROUTE_PLAIN, ROUTE_AVX2, ROUTE_AVX512, ROUTES };
+static const char *const route_name[ROUTES] = {"plain", "avx2", "avx512"};
 
-/* The widest route the CPU runs, at most the one CFPO_SOLVER names (see
- * cfpo_solver_name). */
-static int choose_route(void)
+/* The widest route CFPO_SOLVER allows: the one it names, every route
+ * when it is unset or "auto"; -1 when it names none. */
+static int allowed_route(void)
 {
     const char *e = getenv("CFPO_SOLVER");
-    int most = ROUTE_AVX512;
-    if (e && strcmp(e, "plain") == 0) most = ROUTE_PLAIN;
-    if (e && strcmp(e, "avx2") == 0) most = ROUTE_AVX2;
+    if (!e || strcmp(e, "auto") == 0) return ROUTE_AVX512;
+    for (int q = 0; q < ROUTES; q++)
+        if (strcmp(e, route_name[q]) == 0) return q;
+    return -1;
+}
+
+/* The widest route the CPU runs, at most the one CFPO_SOLVER allows (all
+ * when it holds a bad value: cfpo_solver_name reports that). */
+static int choose_route(void)
+{
+    int most = allowed_route();
+    if (most < 0) most = ROUTE_AVX512;
     if (most >= ROUTE_AVX512 && cfpo_solver_avx512_usable()) return ROUTE_AVX512;
     if (most >= ROUTE_AVX2 && cfpo_solver_avx2_usable()) return ROUTE_AVX2;
     return ROUTE_PLAIN;
@@ -54,10 +63,7 @@ static int route(void)
 
 const char *cfpo_solver_name(void)
 {
-    const char *e = getenv("CFPO_SOLVER");
-    if (e && strcmp(e, "plain") != 0 && strcmp(e, "avx2") != 0 && strcmp(e, "avx512") != 0 && strcmp(e, "auto") != 0)
-        return NULL;
-    return route_name[route()];
+    return allowed_route() < 0 ? NULL : route_name[route()];
 }
 
 /* The AVX-512 or AVX2 solver (same bits, solver_avx512.c and

@@ -170,6 +170,10 @@ if [ "$(uname -m)" = x86_64 ] && grep -qw avx2 /proc/cpuinfo; then
   fi
   CFPO_SOLVER=avx2 "$CFPO" --version | grep -q "(LocalCFPO: avx2)" && ok || bad "CFPO_SOLVER=avx2 not taken: $(CFPO_SOLVER=avx2 "$CFPO" --version)"
 fi
+# avx512 and auto allow every route: the default's choice
+for r in avx512 auto; do
+  [ "$(CFPO_SOLVER=$r "$CFPO" --version)" = "$("$CFPO" --version)" ] && ok || bad "CFPO_SOLVER=$r: $(CFPO_SOLVER=$r "$CFPO" --version)"
+done
 CFPO_SOLVER=plain "$CFPO" --version | grep -q "(LocalCFPO: plain)" && ok || bad "CFPO_SOLVER=plain not taken: $(CFPO_SOLVER=plain "$CFPO" --version)"
 for v in adaptive paper simplified; do
   for t in 1 2; do
