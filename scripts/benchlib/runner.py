@@ -283,10 +283,14 @@ class Bench:
                 cpu = cpus[(m - lo) % len(cpus)]
             tmp = f"{self.work}/tmp/run-{m + 1:04d}"
             out, err = open(tmp + ".out", "w"), open(tmp + ".err", "w")
-            pre = (lambda c=cpu: os.sched_setaffinity(0, {c})) if cpu is not None else None
             t1 = time.time()
             pr = subprocess.Popen(self.command(r, m, cores, mpirun), stdin=subprocess.DEVNULL, stdout=out,
-                                  stderr=err, preexec_fn=pre)
+                                  stderr=err)
+            if cpu is not None:  # pinned at once, before its work starts (as taskset -c would)
+                try:
+                    os.sched_setaffinity(pr.pid, {cpu})
+                except OSError:
+                    pass
             out.close()
             err.close()
             self.children.append(pr)
@@ -419,9 +423,9 @@ class Bench:
         write(f"{self.work}/spectra.csv", spectra)
         shutil.rmtree(f"{self.work}/sets")
         took = time.time() - self.t0
-        head.append("# load average after: %s; runs and analyses took %s" % (
-            " ".join(open("/proc/loadavg").read().split()[:3]), S.hms(took)))
-        write(f"{self.work}/runs.csv", head + [COLUMNS_NOTE, COLUMNS] + rows)
+        after = "# load average after: %s; runs and analyses took %s" % (
+            " ".join(open("/proc/loadavg").read().split()[:3]), S.hms(took))
+        write(f"{self.work}/runs.csv", head + [COLUMNS_NOTE, after, COLUMNS] + rows)
         self.end_ticker()
         print(f"bench: {N} runs done in {S.hms(took)}; drawing the figures", file=sys.stderr)
         from . import plotdata
