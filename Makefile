@@ -43,17 +43,17 @@ fuzz: deps
 	cmake --build $(FUZZ_BUILD) -j $(JOBS)
 	scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
-# The method comparison and the paper's figures (scripts/bench.sh).
+# The method comparison and the paper's figures (scripts/bench.py run).
 bench: build
-	scripts/bench.sh $(BUILD) $(PROFILE)
+	python3 scripts/bench.py run $(BUILD) $(PROFILE)
 
 # Redraw figures and summary.md of a results folder (default: the newest).
 replot: deps
-	scripts/replot.sh $(RESULTS)
+	python3 scripts/bench.py replot $(RESULTS)
 
 # The core CFPO benchmark: sweep and convergence figures (core.txt).
 bench-core: build
-	scripts/bench-core.sh $(BUILD) $(PROFILE)
+	python3 scripts/bench.py core $(BUILD) $(PROFILE)
 
 help:
 	@echo "Targets:"

@@ -25,6 +25,7 @@ static const char *prog = "cfpo-analyze";
 typedef struct {
     const char *out;
     int K, width, exact, check, certify, quiet, threads;
+    int any_n; /* --any-n: the sets may differ in n (maximal Poisson-disk sets) */
     int64_t grid; /* --grid: cells a side for the lattice ratio; -1: cfpo's for n */
     double cert_tol;
     char **files;
@@ -36,7 +37,8 @@ static void usage(void)
     printf("Usage: cfpo-analyze [options] FILE...\n"
            "Power spectrum, radially averaged power spectrum (RAPS), anisotropy, distance\n"
            "statistics and an optional FPD certificate of point sets on the unit torus.\n"
-           "Several files (all with the same n) are averaged, as the paper averages 10 sets.\n"
+           "Several files (all with the same n, unless --any-n) are averaged, as the paper\n"
+           "averages 10 sets.\n"
            "Writes an output folder and prints one SUMMARY line on stdout.\n\n"
            "  -o, --output DIR     output folder (default: NAME.analysis for one file\n"
            "                       NAME.EXT, avg.analysis for several); an earlier output\n"
@@ -50,6 +52,9 @@ static void usage(void)
            "      --certify        FPD certificate: can any single point be moved to\n"
            "                       increase its distance to the rest? (exact)\n"
            "      --cert-tol T     certificate tolerance relative to Delta(n) (default %g)\n"
+           "      --any-n          average sets whose n differ (maximal Poisson-disk sets):\n"
+           "                       n of the frequency scale |k| / sqrt(n) and of the\n"
+           "                       measures that use it is the sets' mean, rounded\n"
            "      --grid G         the grid whose imprint lattice_ratio looks for: G cells\n"
            "                       a side, colours of period 3 (G a multiple of 3), else 2\n"
            "                       (G even), else 1 (default: cfpo's grid for n; 0: none)\n"
@@ -66,13 +71,13 @@ static void usage(void)
 
 static void parse(int argc, char **argv, options *o)
 {
-    enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL, OPT_GRID };
+    enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL, OPT_GRID, OPT_ANY_N };
     static const struct option longs[] = {
         {"output", required_argument, 0, 'o'},  {"kmax", required_argument, 0, 'K'},
         {"exact", no_argument, 0, OPT_EXACT},   {"check", no_argument, 0, OPT_CHECK},
         {"width", required_argument, 0, OPT_WIDTH}, {"certify", no_argument, 0, OPT_CERTIFY},
         {"cert-tol", required_argument, 0, OPT_CERT_TOL}, {"threads", required_argument, 0, 't'},
-        {"grid", required_argument, 0, OPT_GRID},
+        {"grid", required_argument, 0, OPT_GRID}, {"any-n", no_argument, 0, OPT_ANY_N},
         {"quiet", no_argument, 0, 'q'},         {"help", no_argument, 0, 'h'},
         {"version", no_argument, 0, 'V'},       {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -97,6 +102,7 @@ static void parse(int argc, char **argv, options *o)
             o->width = (int)v;
             break;
         case OPT_CERTIFY: o->certify = 1; break;
+        case OPT_ANY_N: o->any_n = 1; break;
         case OPT_CERT_TOL:
             if (cli_parse_double(optarg, 0, 1, &o->cert_tol) != 0)
                 cli_usage_error(prog, "bad --cert-tol '%s' (a number in [0, 1])", optarg);
@@ -149,6 +155,7 @@ typedef struct {
     int out_begun;
     cli_progress progress;
     size_t n;
+    double nsum; /* the sets' n summed (--any-n: R.n becomes their mean) */
     int K, set;
     double *P, *Psum, *Pref;
     double *dmin, *davg, *spike; /* per set */
@@ -256,9 +263,11 @@ static void analyze_set(const char *file)
     size_t n;
     if (pf_read(file, &xy, &n, err, sizeof err) != 0) fail("%s", err);
     if (R.set == 0) start(file, n);
-    else if (n != R.n)
+    else if (n != R.n && !R.opt.any_n)
         fail("%s: has %zu points, but %s has %zu; averaged sets must have the same n", file, n,
              R.opt.files[0], R.n);
+    if (R.opt.any_n && n < 2) fail("%s: --any-n needs at least 2 points a set", file);
+    R.nsum += (double)n;
     if (R.opt.certify && n < 2) fail("%s: the certificate needs at least 2 points", file);
     cli_progress_line(&R.progress, 1, "set %d/%d: spectrum", R.set + 1, R.opt.nfiles);
     spectrum(file, xy, n);
@@ -307,6 +316,7 @@ int main(int argc, char **argv)
     cli_progress_end(&R.progress);
 
     const int sets = R.opt.nfiles;
+    if (R.opt.any_n) R.n = (size_t)floor(R.nsum / sets + 0.5);
     const size_t N = an_side(R.K) * an_side(R.K);
     for (size_t t = 0; t < N; t++) R.Psum[t] /= sets;
     an_rings rings;

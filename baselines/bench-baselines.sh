@@ -22,11 +22,11 @@
 # several partial runs) without running anything.
 # Example (quick): REPS=1 SIZES=4096 PD_SIZES=65536 baselines/bench-baselines.sh build
 set -euo pipefail
-# the methods: scripts/methods.tsv (kinds iter and pd), plus cfpo on 1 and 2 threads
-# shellcheck source=../scripts/methods.sh
-. "$(cd "$(dirname "$0")/../scripts" && pwd)/methods.sh"
-ITER_KEYS=$(methods_keys iter)
-PD_KEYS=$(methods_keys pd)
+# the methods: scripts/methods.tsv (kinds iter and pd, read by scripts/bench.py),
+# plus cfpo on 1 and 2 threads
+BENCH_PY="$(cd "$(dirname "$0")/../scripts" && pwd)/bench.py"
+ITER_KEYS=$(python3 "$BENCH_PY" methods iter)
+PD_KEYS=$(python3 "$BENCH_PY" methods pd)
 
 # print_table RAW...: medians and ratios of the rows in the raw files.
 print_table() {
@@ -104,7 +104,7 @@ PD_SIZES=${PD_SIZES-"65536 1048576"}
 SEED=${SEED:-1}
 METHODS=${METHODS:-"cfpo-t1 cfpo-t2 $ITER_KEYS"}
 PD_METHODS=${PD_METHODS:-"$PD_KEYS"}
-for c in cfpo $(methods_binaries iter pd); do
+for c in cfpo $(python3 "$BENCH_PY" methods --binaries iter pd); do
   [ -x "$B/$c" ] || { echo "bench-baselines: $B/$c not found (build first)" >&2; exit 1; }
 done
 mkdir -p "$OUT"
@@ -139,7 +139,7 @@ cmd_for() {
     cfpo-t1) echo "$B/cfpo -n $2 -s $SEED -t 1" ;;
     cfpo-t2) echo "$B/cfpo -n $2 -s $SEED -t 2" ;;
     *) local c
-       c=$(method_get "$1" command)
+       c=$(python3 "$BENCH_PY" methods --get "$1" command)
        [ -n "$c" ] || { echo "bench-baselines: unknown method $1" >&2; exit 2; }
        echo "$B/$c -n $2 -s $SEED" ;;
   esac

@@ -4,7 +4,7 @@
 #   2. the power spectrum P(k) averaged over the sets, greyscale, |k| <= SPAN
 #   3. RAPS (red, left axis) and anisotropy (blue, right axis, dB) against
 #      frequency |k| / sqrt(n)
-# Expects (from the including script and the vars file written by replot.sh):
+# Expects (from the including script and the vars file written by scripts/bench.py replot):
 #   OUT, TITLE, NC, DIR (results folder), N (points), SPAN (half-width of the
 #   spectrum shown, in k), CBMAX, ZOOM, SETS, arrays GRP[NC] (group names
 #   under DIR/data/analysis and DIR/data/points) and LBL[NC] (column titles).

@@ -1,7 +1,7 @@
 # fig-convergence.gp - the paper's figure 7: delta_min and delta_avg (relative
 # to Delta(n)) against iterations for the iterative methods, mean of the sets
 # (line) with the range over the sets (band). A set that has converged keeps
-# its last value. Data: DIR/plotdata/convergence-KEY.dat (replot.sh), columns
+# its last value. Data: DIR/plotdata/convergence-KEY.dat (scripts/bench.py replot), columns
 # iteration, delta_min mean/min/max, delta_avg mean/min/max, sets running.
 #   gnuplot -e "VARS='DIR/plotdata/fig-convergence.vars.gp'; OUT='x.png'" scripts/fig-convergence.gp
 load VARS

@@ -1,7 +1,7 @@
 # fig-runtime.gp - the paper's figure 8: runtime against n, log-log, one line
 # per method, thread count and rank count (median over seeds). Left: seconds
 # until the result (iterative methods: until converged); right: seconds per
-# iteration. Data: DIR/plotdata/runtime.dat (replot.sh), one block per line:
+# iteration. Data: DIR/plotdata/runtime.dat (scripts/bench.py replot), one block per line:
 # n_target, median seconds, median seconds per iteration, runs, median
 # iterations.
 #   gnuplot -e "VARS='DIR/plotdata/fig-runtime.vars.gp'; OUT='x.png'" scripts/fig-runtime.gp

@@ -3,7 +3,7 @@
 # configuration, same n and method. Left: against the cores used (threads x
 # ranks), one line per method, n and rank count, with the ideal line; right:
 # against n, one line per configuration. Data: DIR/plotdata/speedup-cores.dat
-# and speedup-n.dat (replot.sh).
+# and speedup-n.dat (scripts/bench.py replot).
 #   gnuplot -e "VARS='DIR/plotdata/fig-speedup.vars.gp'; OUT='x.png'" scripts/fig-speedup.gp
 load VARS
 set terminal pngcairo size 1500, 760 font "DejaVu Sans,13" enhanced

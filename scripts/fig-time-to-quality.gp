@@ -3,7 +3,7 @@
 # of the run (the trace's elapsed column), log x; one column of panels per
 # n, one curve per method and thread count (its median run over the seeds);
 # dashed grey lines: the quality target. Data: DIR/plotdata/ttq-nN.dat
-# (bench-ttq.awk), one block per curve: elapsed, delta_min, delta_avg.
+# (scripts/benchlib/ttq.py), one block per curve: elapsed, delta_min, delta_avg.
 #   gnuplot -e "VARS='DIR/plotdata/fig-time-to-quality.vars.gp'; OUT='x.png'" scripts/fig-time-to-quality.gp
 load VARS
 set terminal pngcairo size (NP > 1 ? 760 * NP : 900), 1100 font "DejaVu Sans,13" enhanced

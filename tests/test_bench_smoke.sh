@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # test_bench_smoke.sh BUILD_DIR - `make bench PROFILE=smoke` end to end
-# (scripts/bench.sh, scripts/replot.sh) into a temporary results root:
+# (scripts/bench.py run, scripts/bench.py replot) into a temporary results root:
 # the folder and nothing else appears; runs.csv has the documented header and
 # columns, one well-formed row per planned run, every method and experiment;
 # the evolution snapshots are the states their traces say; the time-to-
@@ -25,7 +25,9 @@ cd "$SRC" || exit 1
 # the methods (scripts/methods.tsv): SUMMARY method names as regular
 # expressions, all / not iterative / iterative, and the comparison's keys
 # as runs.csv shows them (cfpo's variant for cfpo's rows)
-. scripts/methods.sh
+BENCH="python3 scripts/bench.py"
+methods_keys() { $BENCH methods "$@"; }
+method_get() { $BENCH methods --get "$1" "$2"; }
 mre() { local k; for k in $(methods_keys "$@"); do method_get "$k" method; done | sort -u | paste -sd'|'; }
 M_ALL=$(mre); M_PD=$(mre pd); M_IT=$(mre iter cfpo ttq)
 COMP_SEEN=$(for k in $(methods_keys pd iter cfpo); do m=$(method_get "$k" method); [ "$m" = cfpo ] && m=$(method_get "$k" variant); echo "$m"; done | sort -u | tr '\n' ' ')
@@ -33,8 +35,8 @@ N_COMP=$(methods_keys pd iter cfpo | wc -w)
 
 # ---- the smoke run ----------------------------------------------------------
 export CFPO_RESULTS="$T/res"
-if ! scripts/bench.sh "$B" smoke >"$T/out" 2>"$T/err"; then
-  echo "FAIL: bench.sh smoke exited non-zero:"; tail -n 5 "$T/err"; echo "0 passed, 1 failed"; exit 1
+if ! $BENCH run "$B" smoke >"$T/out" 2>"$T/err"; then
+  echo "FAIL: bench.py run smoke exited non-zero:"; tail -n 5 "$T/err"; echo "0 passed, 1 failed"; exit 1
 fi
 ok
 n_dirs=$(find "$T/res" -mindepth 1 -maxdepth 1 | wc -l)
@@ -95,7 +97,7 @@ for k in $(methods_keys iter); do
 done
 for g in comparison-ccvt comparison-ccdt comparison-bnot; do check "spectra.csv has the group $g" grep -q "^$g," "$R/spectra.csv"; done
 threads=$(grep -v '^#' "$csv" | awk -F, '$2 == "runtime" && $3 == "cfpo" { print $8 }' | sort -un | tr '\n' ' ')
-want=$(. scripts/bench-profiles.sh && bench_threads_list | tr ' ' '\n' | sort -un | tr '\n' ' ')
+want=$($BENCH profile smoke | sed -n 's/^rt_threads=//p' | tr ' ' '\n' | sort -un | tr '\n' ' ')
 check "runtime has CFPO on $want threads (found: $threads)" [ "$threads" = "$want" ]
 if command -v mpirun >/dev/null && [ "$(nproc)" -ge 2 ]; then
   # CFPO on several ranks: present, and the same set as on one rank (the
@@ -126,9 +128,9 @@ mism=$(grep -v '^#' "$csv" | awk -F, -v R="$R" '
 check "evolution rows match the comparison traces${mism:+ (rows: $mism)}" [ -z "$mism" ]
 
 # ---- time to quality ---------------------------------------------------------------
-prof() { (. scripts/bench-profiles.sh && bench_profile smoke && eval "echo \"\$$1\""); }
-ttq_sizes=$(prof TTQ_SIZES); ttq_seeds=$(prof TTQ_SEEDS); ttq_configs=$(prof TTQ_CONFIGS)
-tmin=$(prof TTQ_TARGET_MIN); tavg=$(prof TTQ_TARGET_AVG)
+prof() { $BENCH profile smoke | sed -n "s/^$1=//p"; }
+ttq_sizes=$(prof ttq_sizes); ttq_seeds=$(prof ttq_seeds); ttq_configs=$(prof ttq_configs)
+tmin=$(prof ttq_target_min); tavg=$(prof ttq_target_avg)
 want_ttq=$(for n in $ttq_sizes; do for s in $(seq 1 "$ttq_seeds"); do for c in $ttq_configs; do echo "$n/$s/${c%:*}/${c#*:}"; done; done; done | sort | tr '\n' ' ')
 got_ttq=$(grep -v '^#' "$csv" | awk -F, '$2 == "ttq" { print $6 "/" $7 "/" ($3 == "cfpo" ? $4 : $3) "/" $8 }' | sort | tr '\n' ' ')
 check "ttq runs are the planned configurations (want: $want_ttq; got: $got_ttq)" [ "$want_ttq" = "$got_ttq" ]
@@ -181,7 +183,9 @@ for n in $ttq_sizes; do
       f = R "/" $19; while ((getline line < f) > 0) { split(line, t, "\t"); if (t[1] ~ /^[0-9]+$/ && t[3] >= 0.929) { print t[8]; exit } } }'; }
   tf=$(t_of fpo); tc=$(t_of adaptive)
   fcell=$(awk -v x="$tf" 'BEGIN { if (x == "") print "never"; else if (x >= 100) printf "%.0f", x; else if (x >= 10) printf "%.1f", x; else if (x >= 1) printf "%.2f", x; else printf "%.3g", x }')
-  rcell=$(awk -v f="$tf" -v c="$tc" 'BEGIN { if (f == "" || c == "") print "-"; else printf "%.2f", f / c }')
+  # FPO short of the level: "-", or "≥ x" (x: FPO's seconds at its stop over CFPO's) when its time limit stopped it
+  fstop=$(grep -v '^#' "$csv" | awk -F, -v R="$R" -v n="$n" '$2 == "ttq" && $6 == n && $3 == "fpo" { f = R "/" $19; while ((getline line < f) > 0) { split(line, t, "\t"); e = t[8] } print $21 "," e; exit }')
+  rcell=$(awk -v f="$tf" -v c="$tc" -v s="${fstop%,*}" -v e="${fstop#*,}" 'BEGIN { if (c == "") print "-"; else if (f != "") printf "%.2f", f / c; else if (s == "time") printf "≥ %.2f", e / c; else print "-" }')
   check "summary.md: FPO reaches delta_avg 0.929 at $fcell s (trace)" grep -q "^| FPO | 1 | [0-9]* | $fcell |" <<<"$rows_n"
   check "summary.md: CFPO (adaptive) 1 thread, FPO / this at delta_avg 0.929 = $rcell" \
     awk -F' [|] ' -v r="$rcell" '$1 == "| CFPO (adaptive)" && $2 == 1 { found = 1; if ($14 != r) exit 1 } END { exit !found }' <<<"$rows_n"
@@ -191,7 +195,7 @@ for n in $ttq_sizes; do
     awk -F' [|] ' -v l="$lcell" '$1 == "| CFPO (adaptive)" && $2 == 1 { found = 1; if ($13 != l || l == "") exit 1 } END { exit !found }' <<<"$rows_n"
 done
 # the plan lists exactly these runs, the ttq ones with their limit and batch
-scripts/bench.sh "$B" smoke --plan >"$T/plan" 2>&1
+$BENCH run "$B" smoke --plan >"$T/plan" 2>&1
 check "--plan lists one line per run made ($(grep -c '^[a-z]' "$T/plan") lines for $rows runs)" \
   [ "$(grep -Ec '^(evolution|comparison|runtime|ttq) ' "$T/plan")" -eq "$rows" ]
 check "--plan: ttq runs with time_limit and batch" \
@@ -201,7 +205,7 @@ check "--plan: the total" grep -Eq "^bench: profile smoke: $rows runs, about [0-
 # ---- spectra.csv ------------------------------------------------------------------
 groups=$(tail -n +2 "$R/spectra.csv" | cut -d, -f1 | tr '\n' ' ')
 ng=$(tail -n +2 "$R/spectra.csv" | wc -l)
-n_evo=$(prof EVO_ITERS | wc -w)
+n_evo=$(prof evo_iters | wc -w)
 check "spectra.csv: $n_evo evolution + $N_COMP comparison groups (found $ng: $groups)" [ "$ng" -eq $((n_evo + N_COMP)) ]
 for g in $groups; do
   check "analysis of $g (spectrum, raps)" [ -s "$R/data/analysis/$g/spectrum.txt" ] && [ -s "$R/data/analysis/$g/raps.txt" ]
@@ -210,8 +214,13 @@ done
 check "spectra.csv: 19 columns, spike ratio (average and per-set mean) and its k" \
   awk -F, 'NR == 1 { exit !($17 == "spike_ratio" && $18 == "spike_k" && $19 == "spike_ratio_set_mean" && NF == 19) }
     NF != 19 || !($17 > 1 && $17 < 1000) || $18 !~ /^-?[0-9]+;-?[0-9]+$/ || !($19 > 1 && $19 < 1000) { exit 1 }' "$R/spectra.csv"
-check "BS and Bridson averaged by bench-average.awk, same-n groups by cfpo-analyze" \
-  awk -F, 'NR > 1 && (($3 == "bs" || $3 == "bridson") != ($16 == "bench-average.awk")) { exit 1 }' "$R/spectra.csv"
+check "BS and Bridson averaged by cfpo-analyze --any-n, same-n groups by plain cfpo-analyze" \
+  awk -F, 'NR > 1 && (($3 == "bs" || $3 == "bridson") != ($16 == "cfpo-analyze --any-n") || $16 !~ /^cfpo-analyze/) { exit 1 }' "$R/spectra.csv"
+# the BS and Bridson rows: n is the mean of their runs' n (runs.csv column n)
+badn=$(awk -F, 'FNR == NR { if ($2 == "comparison") { s[$3] += $5; c[$3]++ } next }
+  FNR > 1 && ($3 == "bs" || $3 == "bridson") { m = sprintf("%.1f", s[$3] / c[$3]); if ($5 != m) printf "%s(%s, runs %s) ", $1, $5, m }' \
+  <(grep -v '^#' "$csv") "$R/spectra.csv")
+check "spectra.csv: n of BS and Bridson is their runs' mean${badn:+ (bad: $badn)}" [ -z "$badn" ]
 
 # ---- figures ----------------------------------------------------------------------
 png_ok() { # PNG signature, then an IHDR chunk with a non-zero width and height
@@ -248,17 +257,17 @@ sum_before=$(md5sum "$csv" "$R/spectra.csv")
 cp "$R/summary.md" "$T/summary.before"
 rm -f "$R"/fig-*.png "$R/summary.md"
 rm -rf "$R/plotdata"
-if scripts/replot.sh "$R" >"$T/rout" 2>"$T/rerr"; then ok; else bad "replot.sh failed: $(tail -n 1 "$T/rerr")"; fi
+if $BENCH replot "$R" >"$T/rout" 2>"$T/rerr"; then ok; else bad "bench.py replot failed: $(tail -n 1 "$T/rerr")"; fi
 for f in $FIGS; do check "replot redrew fig-$f.png" png_ok "$R/fig-$f.png"; done
 check "replot rewrote the same summary.md" cmp -s "$R/summary.md" "$T/summary.before"
 check "replot left runs.csv and spectra.csv alone" [ "$(md5sum "$csv" "$R/spectra.csv")" = "$sum_before" ]
 # a folder without time-to-quality runs (written before they existed)
 old="$T/old"; cp -r "$R" "$old"
 awk -F, '/^#/ || $2 != "ttq"' "$R/runs.csv" >"$old/runs.csv"; rm -f "$old/quality.csv" "$old/fig-time-to-quality.png"
-if scripts/replot.sh "$old" >/dev/null 2>"$T/rerr2"; then ok; else bad "replot of a folder without ttq runs: $(tail -n 1 "$T/rerr2")"; fi
+if $BENCH replot "$old" >/dev/null 2>"$T/rerr2"; then ok; else bad "replot of a folder without ttq runs: $(tail -n 1 "$T/rerr2")"; fi
 check "no ttq runs: no time-to-quality figure or section" [ ! -e "$old/fig-time-to-quality.png" ] && ! grep -q "Time to quality" "$old/summary.md"
 rm -rf "$old"
-(cd "$T/res/.." && mkdir -p results && cp -r "$R" results/ && "$SRC/scripts/replot.sh" >/dev/null 2>&1)
+(cd "$T/res/.." && mkdir -p results && cp -r "$R" results/ && python3 "$SRC/scripts/bench.py" replot >/dev/null 2>&1)
 check "replot without an argument takes the newest folder under results/" [ -s "$T/results/$(basename "$R")/fig-speedup.png" ]
 
 # ---- errors: one line, non-zero, nothing left --------------------------------------------
@@ -268,13 +277,14 @@ one_line_err() { # expected-rc cmd...: exit status and one "prog: ..." line
   [ "$rc" -eq "$want" ] && [ "$(wc -l <"$T/e.err")" -eq 1 ] && grep -Eq '^(bench|replot): ' "$T/e.err"
 }
 export CFPO_RESULTS="$T/res2"
-check "unknown profile: exit 2, one line" one_line_err 2 scripts/bench.sh "$B" huge
-check "missing build: exit 1, one line" one_line_err 1 scripts/bench.sh "$T/nobuild" smoke
+check "unknown profile: exit 2, one line" one_line_err 2 $BENCH run "$B" huge
+check "missing build: exit 1, one line" one_line_err 1 $BENCH run "$T/nobuild" smoke
+check "bad sub-command: exit 2, one line" one_line_err 2 $BENCH bogus
 check "failed runs leave no folder" [ ! -e "$T/res2" ] || [ -z "$(ls -A "$T/res2")" ]
 mkdir -p "$T/notres"
-check "replot of a folder without runs.csv: exit 1, one line" one_line_err 1 scripts/replot.sh "$T/notres"
+check "replot of a folder without runs.csv: exit 1, one line" one_line_err 1 $BENCH replot "$T/notres"
 # SIGTERM in the middle of the runs: neither the folder nor its temporary
-scripts/bench.sh "$B" smoke >/dev/null 2>&1 &
+$BENCH run "$B" smoke >/dev/null 2>&1 &
 pid=$!
 for _ in $(seq 1 50); do [ -n "$(ls -A "$T/res2" 2>/dev/null)" ] && break; sleep 0.1; done
 sleep 1

@@ -37,4 +37,17 @@ check "[ \"\$(field \"\$avg\" spike_ratio)\" != \"$a\" ]" "spike ratio of the av
 "$A" -q -K 24 -o same s1.txt s1.txt s1.txt >/dev/null
 check "paste one1/raps.txt same/raps.txt | awk '!/^#/ { d = \$3 - \$8; if (d < 0) d = -d; if (d > 1e-9 * (\$3 > 1 ? \$3 : 1)) exit 1 }'" \
   "one file averaged three times differs from itself"
+# sets of different n: refused, unless --any-n; then P is still the mean of
+# the single spectra and n the sets' mean, rounded
+"$B/cfpo" -n 300 --seed 4 -t 1 -q -o s4.txt >/dev/null || bad "cfpo n=300"
+"$A" -q -K 24 -o one4 s4.txt >/dev/null || bad "single 4"
+"$A" -q -K 24 -o mixed s1.txt s4.txt >/dev/null 2>&1
+check '[ $? -eq 1 ]' "sets of different n averaged without --any-n"
+mixed=$("$A" -q -K 24 --any-n -o mixed s1.txt s4.txt)
+check '[ $? -eq 0 ] && [ "$(field "$mixed" n)" = 278 ] && [ "$(field "$mixed" sets)" = 2 ]' "--any-n run: $mixed"
+check "paste one1/spectrum.txt one4/spectrum.txt mixed/spectrum.txt | awk 'NR > 1 {
+    w = NF / 3
+    for (i = 2; i <= w; i++) { m = (\$i + \$(i + w)) / 2; d = m - \$(i + 2 * w); if (d < 0) d = -d
+      if (d > 1e-8 * (m > 1 ? m : 1)) exit 1 } }'" \
+  "--any-n: averaged spectrum is not the mean of the single spectra"
 finish

@@ -25,9 +25,9 @@ expect() {
 }
 
 # the baseline commands: scripts/methods.tsv, kinds pd and iter
-. "$(cd "$(dirname "$0")/../../scripts" && pwd)/methods.sh"
-ITER_BIN=" $(methods_binaries iter) "
-for c in $(methods_binaries pd iter); do
+BENCH_PY="$(cd "$(dirname "$0")/../../scripts" && pwd)/bench.py"
+ITER_BIN=" $(python3 "$BENCH_PY" methods --binaries iter) "
+for c in $(python3 "$BENCH_PY" methods --binaries pd iter); do
   X="$B/$c"
   # iterative methods: capped, so the format and determinism runs stay short
   cap=(); [[ $ITER_BIN == *" $c "* ]] && cap=(--max-iter 30)

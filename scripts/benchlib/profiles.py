@@ -1,0 +1,155 @@
+"""profiles - the plans of `make bench PROFILE=...` (smoke, default, paper)
+as data, and the rough cost model behind `--plan` and the time-left display.
+
+  sets          point sets per spectrum (comparison and evolution figures)
+  comp_n        points per set in the comparison, evolution and convergence
+  comp_threads  threads of CFPO in the comparison (1: like for like)
+  comp_together one-thread comparison runs of one method (successive seeds)
+                that start together, each pinned to its own core (at most
+                the cores; 1: every run alone)
+  evo_iters     iterations at which CFPO is stopped for the evolution figure
+  rt_reps       seeds per configuration of the runtime experiment
+  rt_threads    thread counts of CFPO there: 1, powers of two, all cores
+  rt_sizes      n of the runtime experiment per method key (absent: none);
+                CFPO also runs on as many MPI ranks as cores at rt_sizes
+                ['cfpo'] when mpirun is installed
+  ttq_sizes     n of the time-to-quality experiment: the configurations run
+                with --trace until the target (ttq_target_min, _avg) holds,
+                they converge, or their time limit (ttq_limit) passes
+  ttq_configs   its configurations per n, (key, threads) (adaptive: cfpo's
+                default variant, paper: cfpo --variant paper); the one-thread
+                runs of one n and seed start together, one per core, in
+                groups of as many as there are cores, in this order; a run on
+                several threads runs alone
+  ttq_limits    time limits that differ from ttq_limit(n): {(key, n): s}
+  ttq_big       n at which only CFPO (adaptive, 2 threads) runs it
+  ttq_seeds     seeds per configuration; ttq_maxiter: iteration cap (None)
+
+The runtime figure uses every uncapped run (comparison and runtime), so the
+runtime plan leaves out n = comp_n on comp_threads.
+"""
+import os
+
+NAMES = ("smoke", "default", "paper")
+TTQ_ALL = [("adaptive", 1), ("fpo", 1), ("paper", 1), ("lfpo", 1), ("adaptive", 2)]
+
+
+def threads_list(cores):
+    out, t = [], 1
+    while t < cores:
+        out.append(t)
+        t *= 2
+    return out + [cores]
+
+
+def profile(name, cores):
+    """The plan of a profile as a dict; None for an unknown name."""
+    if name not in NAMES:
+        return None
+    p = dict(comp_threads=1, comp_together=cores, evo_iters=[0, 1, 2, 5, 10],
+             rt_threads=threads_list(cores), ttq_target_min="0.925", ttq_target_avg="0.929",
+             ttq_sizes=[4096, 65536], ttq_big=[], ttq_seeds=3, ttq_maxiter=None, ttq_limits={})
+    if name == "smoke":
+        p.update(sets=2, comp_n=1024, rt_reps=1, ttq_sizes=[1024], ttq_seeds=1, ttq_maxiter=80,
+                 rt_sizes=dict(cfpo=[256, 512], simplified=[256], fpo=[256], lfpo=[256], ccvt=[256],
+                               ccdt=[256], bnot=[256], dart=[4096], bs=[4096], bridson=[4096]))
+    elif name == "default":
+        p.update(sets=10, comp_n=4096, rt_reps=1,
+                 rt_sizes=dict(cfpo=[1024, 4096, 16384], simplified=[1024, 4096], fpo=[1024, 16384],
+                               lfpo=[1024], ccvt=[1024], ccdt=[1024], bnot=[1024, 4096, 16384],
+                               dart=[1024, 4096, 16384, 65536, 262144],
+                               bs=[1024, 4096, 16384, 65536, 262144],
+                               bridson=[1024, 4096, 16384, 65536, 262144]))
+        # at 65,536 points only the experiment the CFPO schedule is tuned
+        # on: adaptive CFPO on one and two threads against FPO (CFPO-paper
+        # and LFPO there: the paper profile). FPO stopped at 35 s there
+        # instead of 150 s: on the 2-core machines of the results pages its
+        # median seed passes delta_min 0.92 after 16 s (AMD EPYC) and 31 s
+        # (Intel Xeon) and reaches the target on one seed of three after
+        # 48-110 s, the others running to the limit; so the table keeps its
+        # times to delta_avg 0.929, delta_min 0.90 and 0.92 and, for the
+        # target, shows a lower bound on the ratio (>= FPO's 35 s over
+        # CFPO's seconds); 3 x 115 s less on the Xeon
+        p["ttq_configs_at"] = {65536: [("adaptive", 1), ("fpo", 1), ("adaptive", 2)]}
+        p["ttq_limits"] = {("fpo", 65536): 35}
+    else:
+        p.update(sets=10, comp_n=4096, rt_reps=1, comp_together=1, ttq_big=[1048576],
+                 rt_sizes=dict(cfpo=[1024, 4096, 16384, 65536, 262144, 1048576],
+                               simplified=[1024, 4096, 16384, 65536, 262144],
+                               fpo=[1024, 4096, 16384, 65536, 262144], lfpo=[1024, 4096, 16384, 65536],
+                               ccvt=[1024, 4096, 16384, 65536], ccdt=[1024, 4096, 16384, 65536],
+                               bnot=[1024, 4096, 16384],
+                               dart=[1024, 4096, 16384, 65536, 262144, 1048576],
+                               bs=[1024, 4096, 16384, 65536, 262144, 1048576],
+                               bridson=[1024, 4096, 16384, 65536, 262144, 1048576]))
+    p.setdefault("ttq_configs_at", {})
+    p["ttq_configs"] = TTQ_ALL
+    p["comp_together"] = min(p["comp_together"], cores)
+    return p
+
+
+def ttq_configs(p, n):
+    return p["ttq_configs_at"].get(n, p["ttq_configs"])
+
+
+def ttq_limit(p, key, n):
+    """Time limit (s) of a time-to-quality run: generous by n (FPO needs
+    about 65 s at 65,536 points to reach the target on the AMD EPYC of the
+    results pages; LFPO several times that and stops at the limit), unless
+    the profile sets one for the key and n."""
+    if (key, n) in p["ttq_limits"]:
+        return p["ttq_limits"][(key, n)]
+    return 10 if n <= 1024 else 30 if n <= 4096 else 150 if n <= 65536 else 900
+
+
+def omp_env():
+    """OpenMP threads sleep at barriers instead of spinning (unless the caller
+    set OMP_WAIT_POLICY): with spinning, any other busy process on a 2-core
+    machine makes a 2-thread CFPO run 10-100x slower."""
+    os.environ.setdefault("OMP_WAIT_POLICY", "passive")
+
+
+# iterations to converge ~ a (n/1024)^b (capped), seconds per point and
+# iteration on one core; single runs on a 2-core machine
+_MODEL = dict(cfpo=(230, 0.5, 1250, 1.1e-6), simplified=(654, 0.35, 1550, 0.75e-6),
+              fpo=(166, 0.33, 5000, 2.5e-6), lfpo=(239, 0.55, 5000, 2.5e-6),
+              ccvt=(330, 0, 5000, 1.5e-5), ccdt=(120, 0.1, 5000, 1.5e-5), bnot=(20, 0, 20, 1.05e-5))
+_PD = dict(dart=8e-6, bs=1.5e-6, bridson=5e-6)
+
+
+def estimate(key, n, threads, maxiter):
+    """Rough seconds of one run (progress display and --plan only)."""
+    if key == "cfpo-mpi":
+        key, threads = "cfpo", 2
+    if key in _PD:
+        return _PD[key] * n + 0.01
+    a, b, cap, c = _MODEL[key]
+    it = min(a * (n / 1024) ** b, cap)
+    if maxiter is not None and maxiter < it:
+        it = maxiter
+    s = c * n * it
+    if key in ("cfpo", "simplified") and threads > 1:
+        s /= 0.95 * threads
+    return s + 0.01
+
+
+def ttq_estimate(key, n, threads, maxiter, limit):
+    """Rough seconds of a time-to-quality run: adaptive CFPO reaches the target
+    in about 72 (n/4096)^1.1 iterations (at most 350) at 2.2e-6 s per point and
+    iteration on one thread; paper CFPO converges first; FPO reaches it in about
+    0.78 (n/4096)^1.6 s, LFPO 4.75 (n/4096)^1.64 s; never past the limit."""
+    r = n / 4096
+    if key == "adaptive":
+        it = min(72 * r ** 1.1, 350)
+        if maxiter is not None and maxiter < it:
+            it = maxiter
+        s = 2.2e-6 * n * it
+        if threads > 1:
+            s /= 0.95 * threads
+    elif key == "paper":
+        s = estimate("cfpo", n, threads, maxiter)
+    else:
+        s = 0.78 * r ** 1.6 if key == "fpo" else 4.75 * r ** 1.64
+        if maxiter is not None and 2.5e-6 * n * maxiter < s:
+            s = 2.5e-6 * n * maxiter
+    return min(s, limit) + 0.01
