@@ -114,7 +114,9 @@ cat >"$T/self/e.c" <<'EOF'
 int d_fn(int);
 int e_fn(int x) { return d_fn(x); }
 EOF
-if for f in a b c d e; do "$CC" -c -o "$T/self/$f.o" "$T/self/$f.c" || exit 1; done; then
+built=1
+for f in a b c d e; do "$CC" -c -o "$T/self/$f.o" "$T/self/$f.c" || built=0; done
+if [ $built -eq 1 ]; then
   printf 'a.c %s\nb.c %s\nc.c %s\n' "$T/self/a.o" "$T/self/b.o" "$T/self/c.o" >"$T/self/cyc.list"
   printf 'c.c %s\nd.c %s\ne.c %s\n' "$T/self/c.o" "$T/self/d.o" "$T/self/e.o" >"$T/self/chain.list"
   symbols "$T/self/cyc.list" | cycles >"$T/self/cyc.out"
@@ -194,8 +196,7 @@ done <"$T/sources"
 [ $unchecked -eq 0 ] && ok
 
 nsrc=$(cut -d' ' -f1 "$T/objects" | sort -u | wc -l)
-symbols "$T/objects" | cycles >"$T/cycles.out"
-if [ $? -eq 0 ]; then ok
+if symbols "$T/objects" | cycles >"$T/cycles.out"; then ok
 else
   if command -v c++filt >/dev/null 2>&1; then c++filt <"$T/cycles.out" >&2; else cat "$T/cycles.out" >&2; fi
   bad "$(grep -c '^cycle:' "$T/cycles.out") call cycle(s) between files (move the shared piece down a layer)"
