@@ -9,12 +9,25 @@ FUZZ_SECONDS ?= 60
 FUZZ_BUILD   ?= build-fuzz
 CMAKE_ARGS = -DCMAKE_BUILD_TYPE=$(TYPE) -DCFPO_NATIVE=$(NATIVE)
 
-.PHONY: all build test test-sanitize fuzz bench bench-core replot help clean deps python
+.PHONY: all build test test-sanitize fuzz bench bench-core replot help clean deps deps-fuzz deps-python deps-bench deps-test python
 
 all: build
 
+# Missing Debian packages, by group (scripts/install-deps.sh: installed
+# as root on Debian, only reported anywhere else). Plain `make` needs the
+# core group only; fuzzing, the Python package and the benchmark add theirs.
 deps:
-	@scripts/install-deps.sh
+	@scripts/install-deps.sh core
+deps-fuzz:
+	@scripts/install-deps.sh core fuzz
+deps-python:
+	@scripts/install-deps.sh core python
+deps-bench:
+	@scripts/install-deps.sh core bench
+# Every test: the Python package's (label python) and the benchmark's smoke
+# run (label bench) among them.
+deps-test:
+	@scripts/install-deps.sh core python bench
 
 $(BUILD)/CMakeCache.txt: | deps
 	cmake -S . -B $(BUILD) $(CMAKE_ARGS) >/dev/null
@@ -22,12 +35,12 @@ $(BUILD)/CMakeCache.txt: | deps
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
-test: build
+test: deps-test build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The Python package in a virtual environment $(BUILD)/venv (pip install
 # of this checkout through scikit-build-core; see README.md, "Python").
-python: deps
+python: deps-python
 	scripts/python-venv.sh $(BUILD)
 
 # Unit tests under AddressSanitizer + UndefinedBehaviorSanitizer.
@@ -38,26 +51,27 @@ test-sanitize: deps
 
 # libFuzzer harnesses (fuzz/) in their own clang build folder, each run
 # FUZZ_SECONDS (default 60); fails on any crash, sanitizer report or time-out.
-fuzz: deps
+fuzz: deps-fuzz
 	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCFPO_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 	cmake --build $(FUZZ_BUILD) -j $(JOBS)
 	scripts/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 # The method comparison and the paper's figures (scripts/bench.py run).
-bench: build
+bench: deps-bench build
 	python3 scripts/bench.py run $(BUILD) $(PROFILE)
 
 # Redraw figures and summary.md of a results folder (default: the newest).
-replot: deps
+replot: deps-bench
 	python3 scripts/bench.py replot $(RESULTS)
 
 # The core CFPO benchmark: sweep and convergence figures (core.txt).
-bench-core: build
+bench-core: deps-bench build
 	python3 scripts/bench.py core $(BUILD) $(PROFILE)
 
 help:
 	@echo "Targets:"
-	@echo "  make               optimised build into $(BUILD)/ (installs missing Debian packages first)"
+	@echo "  make               optimised build into $(BUILD)/ (installs missing Debian packages first, as root;"
+	@echo "                     elsewhere only reports them: scripts/install-deps.sh, CFPO_NO_APT=1)"
 	@echo "  make test          build, then run every CTest test"
 	@echo "  make test-sanitize unit tests in an ASan+UBSan build (build-asan/)"
 	@echo "  make fuzz          libFuzzer harnesses, FUZZ_SECONDS each (default 60), in $(FUZZ_BUILD)/"
@@ -65,6 +79,7 @@ help:
 	@echo "  make bench         method comparison and figures (PROFILE=smoke|default|paper); results/<date>-<host>/"
 	@echo "  make replot        redraw figures and summary.md of RESULTS=results/... (default: newest)"
 	@echo "  make bench-core    core CFPO benchmark, sweeps and convergence (PROFILE=smoke|default)"
+	@echo "  make deps-GROUP    missing Debian packages of GROUP = fuzz, python, bench (with core)"
 	@echo "  make clean         remove build folders"
 	@echo "Build settings:"
 	@echo "  build type   $(TYPE)   (TYPE=Debug|Release|RelWithDebInfo)"

@@ -5,13 +5,13 @@
 #include <stdlib.h>
 
 #include "geom.h"
-#include "grid.h"
+#include "cellgrid.h"
 #include "stats.h"
 
 /* Through the tree (T, or one built here), summed in G's order: the
  * core's, a sum per row of cells, then the rows. */
-static int tree_stats(const double *xy, size_t n, const an_grid *G, const an_ptree *T, double *nn, double *delta_min,
-                      double *delta_avg)
+static int tree_stats(const double *xy, size_t n, const an_cellgrid *G, const an_ptree *T, double *nn,
+                      double *delta_min, double *delta_avg)
 {
     an_ptree own = {0};
     double *d = nn ? nn : malloc(n * sizeof *d);
@@ -47,9 +47,9 @@ done:
 int an_nn_stats(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg)
 {
     if (n < 2) return -1;
-    an_grid G;
+    an_cellgrid G;
     int status = -1;
-    if (an_grid_build(xy, n, &G) == 0) {
+    if (an_cellgrid_build(xy, n, &G) == 0) {
         size_t most = 0; /* the most points in one cell */
         for (size_t c = 0; c < G.g * G.g; c++)
             if (G.start[c + 1] - G.start[c] > most) most = G.start[c + 1] - G.start[c];
@@ -58,16 +58,16 @@ int an_nn_stats(const double *xy, size_t n, const an_ptree *T, double *nn, doubl
         status = most <= AN_NN_CROWDED ? cfpo_nn_stats(xy, n, nn, delta_min, delta_avg)
                                        : tree_stats(xy, n, &G, T, nn, delta_min, delta_avg);
     }
-    an_grid_free(&G);
+    an_cellgrid_free(&G);
     return status;
 }
 
 int an_nn_stats_tree(const double *xy, size_t n, const an_ptree *T, double *nn, double *delta_min, double *delta_avg)
 {
     if (n < 2) return -1;
-    an_grid G;
-    const int status = an_grid_build(xy, n, &G) == 0 ? tree_stats(xy, n, &G, T, nn, delta_min, delta_avg) : -1;
-    an_grid_free(&G);
+    an_cellgrid G;
+    const int status = an_cellgrid_build(xy, n, &G) == 0 ? tree_stats(xy, n, &G, T, nn, delta_min, delta_avg) : -1;
+    an_cellgrid_free(&G);
     return status;
 }
 

@@ -1,7 +1,8 @@
 /* ptree.h - a static 2-d tree over the points of a set on the unit torus,
- * for the certificate's queries that would otherwise scan every point:
- * the nearest point to a place (all periodic images), and the images of
- * the points in a disk, nearest first.
+ * for the queries that would otherwise scan every point: the nearest
+ * point to a place (all periodic images), and the images of the points in
+ * a disk, nearest first. Used by the certificate (certify/) and by the
+ * distance statistics of crowded sets (nnhist.c), so it lives beside both.
  *
  * Split at the median of each box's wider side, so the depth stays about
  * log2(n / leaf) however the points crowd (clusters, lines, repeats). */

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../src/grid.h" /* cfpo's grid (analysis/grid.h is another) */
+#include "grid.h"
 #include "power.h"
 
 int an_ring_of(int64_t r2)

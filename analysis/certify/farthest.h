@@ -90,21 +90,6 @@ double an_far_prep_solve(const an_far_prep *P, cfpo_square S, int exclude, doubl
 double an_far_prep_nearest(const an_far_prep *P, double x, double y, int exclude, double ex, double ey);
 void an_far_prep_free(an_far_prep *P);
 
-/* The polygon p of n vertices cut to the side where the signed distances
- * sd[v] of its vertices are <= 0 (a half-plane), into q; the new count
- * (at most n + 1). Shared with the certificate's own clipping. */
-int an_clip_sd(const double *p, int n, double *q, const double *sd);
-/* Polygon p (n vertices) cut to the side of the bisector of a and b
- * nearer a, into q: the new count, or -1 when no vertex is cut off (q
- * untouched). sd: room for n values. */
-int an_clip_bisector(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by);
-/* The convex polygon P (nv vertices) split among the k points (qx, qy)
- * (each point's part: P cut by its bisectors with the others): the
- * largest squared distance from a point to a vertex of its part, at
- * (*bx, *by), or -1 when every part is empty. R, U: room for polygons of
- * nv + k vertices; sd: for nv + k values. */
-double an_split_farthest(const double *P, int nv, const double *qx, const double *qy, size_t k, double *R,
-                         double *U, double *sd, double *bx, double *by);
 /* qsort's order of (x, y) pairs of doubles: by x, then by y. */
 int an_cmp_pair(const void *a, const void *b);
 

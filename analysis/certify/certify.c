@@ -38,121 +38,19 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "certify_int.h"
+#include "cellradius.h"
+#include "certwork.h"
 #include "farthest.h"
+#include "lct.h"
 #include "geom.h"
 #include "nnhist.h"
 #include "ptree.h"
 #include "stats.h"
+#include "vmax.h"
 
 typedef an_cert_ctx ctx;
 typedef an_cert_work work;
 
-int an_cert_reserve(work *w, size_t m)
-{
-    if (m <= w->cap) return 0;
-    size_t cap = w->cap ? w->cap : 64;
-    while (cap < m) cap *= 2;
-    double *x = realloc(w->x, cap * sizeof *x);
-    if (x) w->x = x;
-    double *y = realloc(w->y, cap * sizeof *y);
-    if (y) w->y = y;
-    double *sx = realloc(w->sx, cap * sizeof *sx);
-    if (sx) w->sx = sx;
-    double *sy = realloc(w->sy, cap * sizeof *sy);
-    if (sy) w->sy = sy;
-    size_t *id = realloc(w->id, cap * sizeof *id);
-    if (id) w->id = id;
-    double *sc = realloc(w->scratch, cfpo_solver_scratch(cap) * sizeof *sc);
-    if (sc) w->scratch = sc;
-    double *pa = realloc(w->pa, 2 * (cap + 8) * sizeof *pa);
-    if (pa) w->pa = pa;
-    double *pb = realloc(w->pb, 2 * (cap + 8) * sizeof *pb);
-    if (pb) w->pb = pb;
-    double *sd = realloc(w->sd, 2 * (cap + 8) * sizeof *sd);
-    if (sd) w->sd = sd;
-    double *fr2 = realloc(w->fr2, (cap + 8) * sizeof *fr2);
-    if (fr2) w->fr2 = fr2;
-    if (!x || !y || !sx || !sy || !id || !sc || !pa || !pb || !sd || !fr2) return -1;
-    w->cap = cap;
-    return 0;
-}
-
-static void work_free(work *w)
-{
-    free(w->x); free(w->y); free(w->sx); free(w->sy); free(w->id); free(w->scratch);
-    free(w->pa); free(w->pb); free(w->sd); free(w->fr2); free(w->mark); free(w->marked);
-    free(w->cand); free(w->cand_id);
-    an_far_free(&w->far);
-    for (int k = 0; k < AN_PREP_SLOTS; k++) an_far_prep_free(&w->prep[k]);
-    an_pwalk_free(&w->walk);
-}
-
-static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-
-/* All images of points within Chebyshev distance H of (cx, cy), in a fixed
- * order (cells by rows, points by index inside a cell). */
-int an_cert_collect(const ctx *C, double cx, double cy, double H, work *w)
-{
-    const long g = (long)C->G.g;
-    const long ix0 = (long)floor((cx - H) * g), ix1 = (long)floor((cx + H) * g);
-    const long iy0 = (long)floor((cy - H) * g), iy1 = (long)floor((cy + H) * g);
-    w->m = 0;
-    for (long iy = iy0; iy <= iy1; iy++) {
-        const long oy = floordiv(iy, g), wy = iy - oy * g;
-        for (long ix = ix0; ix <= ix1; ix++) {
-            const long ox = floordiv(ix, g), wx = ix - ox * g;
-            const size_t cell = (size_t)(wy * g + wx);
-            for (size_t q = C->G.start[cell]; q < C->G.start[cell + 1]; q++) {
-                const size_t j = C->G.idx[q];
-                const double X = C->xy[2 * j] + (double)ox, Y = C->xy[2 * j + 1] + (double)oy;
-                if (fabs(X - cx) > H || fabs(Y - cy) > H) continue;
-                if (an_cert_reserve(w, w->m + 1) != 0) return -1;
-                w->x[w->m] = X;
-                w->y[w->m] = Y;
-                w->id[w->m] = j;
-                w->m++;
-            }
-        }
-    }
-    return 0;
-}
-
-
-double an_cell_bound(const ctx *C, size_t c, size_t skip)
-{
-    const size_t g = C->G.g;
-    const double L = C->G.L, cx = ((double)(c % g) + 0.5) * L, cy = ((double)(c / g) + 0.5) * L;
-    return (sqrt(an_ptree_nearest(C->tree, cx, cy, skip)) + 0.5 * L * sqrt(2.0)) * (1 + 1e-9) + 1e-15;
-}
-
-/* For p in the cell, d(p, X) <= d(centre, X) + |p - centre| <= ub, so
- * p's nearest point lies within ub + the cell's half-diagonal of the
- * centre: only those points are needed. */
-int an_cell_radius(const ctx *C, size_t c, double ub, size_t skip, work *w, double *out, double *arg)
-{
-    const size_t g = C->G.g;
-    const double L = C->G.L, x0 = (double)(c % g) * L, y0 = (double)(c / g) * L;
-    const cfpo_square S = {x0, y0, x0 + L, y0 + L};
-    const double cx = x0 + 0.5 * L, cy = y0 + 0.5 * L;
-    const double R = (ub + 0.5 * L * sqrt(2.0)) * (1 + 1e-9) + 1e-15;
-    if (an_cert_collect(C, cx, cy, R, w) != 0) return -1;
-    size_t m = 0;
-    for (size_t t = 0; t < w->m; t++) {
-        const double dx = w->x[t] - cx, dy = w->y[t] - cy;
-        if (w->id[t] == skip || dx * dx + dy * dy > R * R) continue;
-        w->x[m] = w->x[t];
-        w->y[m] = w->y[t];
-        m++;
-    }
-    double px, py;
-    const double r2 = an_farthest(w->x, w->y, m, S, cx, cy, &px, &py, &w->far);
-    if (r2 < 0 || m == 0) return -2;
-    *out = sqrt(r2);
-    arg[0] = cfpo_wrap01(px);
-    arg[1] = cfpo_wrap01(py);
-    return 0;
-}
 
 typedef struct {
     double fp, p1, p2; /* violations, absolute */
@@ -179,13 +77,6 @@ static int check_point(const ctx *C, size_t i, work *w, point_result *res)
 
     /* Local Characterization Theorem (lct.c). */
     return an_lct(C, i, w, h, &res->p1, &res->p2);
-}
-
-int an_cell_key_desc(const void *a, const void *b)
-{
-    const an_cell_key *p = a, *q = b;
-    if (p->r != q->r) return p->r > q->r ? -1 : 1;
-    return p->c < q->c ? -1 : (p->c > q->c);
 }
 
 typedef int (*item_fn)(const ctx *C, size_t t, work *w, void *out);
@@ -216,7 +107,7 @@ static int parallel_over(const ctx *C, size_t count, item_fn fn, void *out)
             if (mine == 0) mine = fn(C, t, &w, out);
 #pragma omp critical(an_certify_status)
         if (mine < 0 && status == 0) status = mine;
-        work_free(&w);
+        an_cert_work_free(&w);
     }
     return status;
 }
@@ -312,7 +203,7 @@ int an_certify_points(const double *xy, size_t n, double tol_rel, an_certificate
     size_t *order = NULL;
     int status = 0;
     double dmin, davg;
-    if (an_ptree_build(&tree, xy, n) != 0 || !nn || !pr || an_grid_build(xy, n, &C.G) != 0 ||
+    if (an_ptree_build(&tree, xy, n) != 0 || !nn || !pr || an_cellgrid_build(xy, n, &C.G) != 0 ||
         an_nn_stats(xy, n, &tree, nn, &dmin, &davg) != 0) {
         status = -1;
         goto done;
@@ -338,7 +229,7 @@ done:
     if (status == -1) snprintf(err, errlen, "certificate: out of memory");
     if (status == -2) snprintf(err, errlen, "certificate: the local solver found no candidate");
     free(nn); free(pr); free(rho_cell); free(arg_cell); free(order); free(ub);
-    an_grid_free(&C.G);
+    an_cellgrid_free(&C.G);
     an_ptree_free(&tree);
     return status < 0 ? -1 : 0;
 }

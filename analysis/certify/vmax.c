@@ -2,12 +2,17 @@
  * of the set over the Voronoi cell V(x) of x (certify.c says why that
  * decides the test), found through the points' tree, so that a point of
  * a cluster costs about log n and not one scan of every image. */
+#include "vmax.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "certify_int.h"
+#include "cellradius.h"
+#include "certwork.h"
+#include "farthest.h"
 #include "geom.h"
+#include "polygon.h"
 
 #define VMAX_DIRECT 64 /* touching points (or sides of V(x)) solved by clipping; more: hole_radius */
 #define VMAX_CAND 1024 /* images met by the cell's walk since its last cut; more: hole_radius */
@@ -40,25 +45,6 @@ static void set_filter(an_cert_work *w, const double *P, int nv, double x, doubl
         w->fr2[v] = (dx * dx + dy * dy) * (1 + 1e-9) + slack + 1e-300;
     }
     an_pwalk_filter(&w->walk, P, w->fr2, nv);
-}
-
-double an_touch_eps(const double *P, int nv, double x, double y)
-{
-    double ext = 0;
-    for (int v = 0; v < nv; v++) {
-        const double ax = fabs(P[2 * v] - x), ay = fabs(P[2 * v + 1] - y), e = ax > ay ? ax : ay;
-        ext = e > ext ? e : ext;
-    }
-    return 1e-9 * (ext + 1e-300);
-}
-
-int an_touches(const double *P, int nv, double x, double y, double px, double py, double eps)
-{
-    const double nx = px - x, ny = py - y, mx = 0.5 * (px + x), my = 0.5 * (py + y);
-    const double scale = sqrt(nx * nx + ny * ny);
-    for (int v = 0; v < nv; v++)
-        if ((P[2 * v] - mx) * nx + (P[2 * v + 1] - my) * ny >= -eps * scale) return 1;
-    return 0;
 }
 
 /* The rounding slack of the touching test for polygon P (eps: an_touch_eps);

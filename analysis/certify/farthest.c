@@ -1,6 +1,7 @@
 /* farthest.c - see farthest.h. */
 #include "farthest.h"
 #include "farthest_int.h"
+#include "polygon.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -44,58 +45,6 @@ int an_cmp_pair(const void *a, const void *b)
     const double *p = a, *q = b;
     if (p[0] != q[0]) return p[0] < q[0] ? -1 : 1;
     return p[1] < q[1] ? -1 : (p[1] > q[1]);
-}
-
-int an_clip_sd(const double *p, int n, double *q, const double *sd)
-{
-    int k = 0;
-    for (int v = 0; v < n; v++) {
-        const int u = v + 1 == n ? 0 : v + 1;
-        if (sd[v] <= 0) { q[2 * k] = p[2 * v]; q[2 * k + 1] = p[2 * v + 1]; k++; }
-        if ((sd[v] < 0 && sd[u] > 0) || (sd[v] > 0 && sd[u] < 0)) {
-            const double t = sd[v] / (sd[v] - sd[u]);
-            q[2 * k] = p[2 * v] + t * (p[2 * u] - p[2 * v]);
-            q[2 * k + 1] = p[2 * v + 1] + t * (p[2 * u + 1] - p[2 * v + 1]);
-            k++;
-        }
-    }
-    return k;
-}
-
-int an_clip_bisector(const double *p, int n, double *q, double *sd, double ax, double ay, double bx, double by)
-{
-    const double nx = bx - ax, ny = by - ay, mx = 0.5 * (ax + bx), my = 0.5 * (ay + by);
-    int out = 0;
-    for (int v = 0; v < n; v++) {
-        sd[v] = (p[2 * v] - mx) * nx + (p[2 * v + 1] - my) * ny;
-        out |= sd[v] > 0;
-    }
-    return out ? an_clip_sd(p, n, q, sd) : -1;
-}
-
-double an_split_farthest(const double *P, int nv, const double *qx, const double *qy, size_t k, double *R,
-                         double *U, double *sd, double *bx, double *by)
-{
-    double best = -1;
-    double *const r0 = R, *const u0 = U;
-    for (size_t a = 0; a < k; a++) {
-        memcpy(R, P, 2 * (size_t)nv * sizeof *R);
-        int nr = nv;
-        for (size_t b = 0; b < k && nr > 0; b++) {
-            if (b == a) continue;
-            const int cut = an_clip_bisector(R, nr, U, sd, qx[a], qy[a], qx[b], qy[b]);
-            if (cut < 0) continue;
-            nr = cut;
-            double *tmp = R; R = U; U = tmp;
-        }
-        for (int v = 0; v < nr; v++) {
-            const double dx = R[2 * v] - qx[a], dy = R[2 * v + 1] - qy[a], e2 = dx * dx + dy * dy;
-            if (e2 > best) { best = e2; *bx = R[2 * v]; *by = R[2 * v + 1]; }
-        }
-        R = r0;
-        U = u0;
-    }
-    return best;
 }
 
 /* Drops repeated positions from [lo, hi), keeping the first of each;

@@ -1,5 +1,5 @@
-/* grid.c - see grid.h. */
-#include "grid.h"
+/* cellgrid.c - see cellgrid.h. */
+#include "cellgrid.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -10,7 +10,7 @@ static size_t coord(double v, size_t g)
     return c >= g ? g - 1 : c;
 }
 
-int an_grid_build(const double *xy, size_t n, an_grid *G)
+int an_cellgrid_build(const double *xy, size_t n, an_cellgrid *G)
 {
     size_t g = (size_t)floor(sqrt((double)n / 2.0));
     G->g = g = g < 1 ? 1 : g;
@@ -26,7 +26,7 @@ int an_grid_build(const double *xy, size_t n, an_grid *G)
     return 0;
 }
 
-void an_grid_free(an_grid *G)
+void an_cellgrid_free(an_cellgrid *G)
 {
     free(G->start);
     free(G->idx);

@@ -11,10 +11,12 @@
 #include <math.h>
 #include <string.h>
 
-#include "certify_int.h"
+#include "certwork.h"
 #include "farthest.h"
 #include "farthest_int.h"
 #include "geom.h"
+#include "lct.h"
+#include "polygon.h"
 #include "ptree.h"
 
 /* Copies into sx/sy the collected images within Chebyshev H of (cx, cy),

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "farthest_int.h"
+#include "polygon.h"
 
 /* (x, y, index) triples, by x, then y. */
 static int by_xy(const void *a, const void *b)
