@@ -216,7 +216,7 @@ static int sampler_option(cmdline *c, int ch, char *arg)
         c->given_variant = 1;
         break;
     case 't': c->o.threads = (int)whole("--threads", arg, 1, 4096, "1..4096"); break;
-    case 'm': c->o.max_iter = (int)whole("--max-iter", arg, 0, 1000000000, "0..1e9"); break;
+    case 'm': c->o.max_iter = (int)whole("--max-iter", arg, 0, CFPO_MAX_ITER_MAX, "0..1e9"); break;
     case 'T':
         if (cli_parse_double(arg, 0, CFPO_TOL_MAX, &c->o.tol) != 0)
             cli_usage_error(prog, "--tol: '%s' is not a number in [0, %g]", arg, CFPO_TOL_MAX);
