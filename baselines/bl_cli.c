@@ -12,9 +12,6 @@
 #include "pointfile.h"
 #include "stoprule.h"
 
-/* The common options' ranges (cfpo's). */
-#define MAX_ITER_HI 1000000000
-
 static void usage(const bl_method *m)
 {
     printf("Usage: %s -n N [options]\n%s\n\n"
@@ -109,7 +106,7 @@ int bl_iter_main(int argc, char **argv, const bl_method *m)
         case 'n': a.n = cli_arg_points(prog, optarg); break;
         case 's': a.seed = cli_arg_seed(prog, optarg); break;
         case 'm':
-            if (cli_parse_i64(optarg, 0, MAX_ITER_HI, &iv) != 0)
+            if (cli_parse_i64(optarg, 0, CFPO_MAX_ITER_MAX, &iv) != 0)
                 cli_usage_error(prog, "--max-iter: '%s' is not a whole number in 0..1e9", optarg);
             a.max_iter = (int)iv;
             break;
