@@ -43,8 +43,9 @@ typedef struct {
                            * value, e.g. "is not a whole number in 1..1e6" */
     const char *choices[BL_MAX_CHOICES]; /* BL_CHOICE: the words, NULL-ended */
     const char *cli_off;  /* BL_FLAG: the command's option that clears it */
-    const char *help;     /* the command's help lines, a printf format that
-                           * may show the default (%g); "" for none */
+    const char *help;     /* the iterative command's help lines, a printf
+                           * format that may show the default (%g); the
+                           * Poisson-disk command writes its own (pd_main.c) */
 } bl_option;
 
 /* An option's value, by the option's type: BL_REAL in d, else in i (a
