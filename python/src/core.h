@@ -27,6 +27,10 @@
 
 #include "tracecols.h"
 
+/* Loads NumPy's C API (whose table core_util.c holds); 0, or -1 with
+ * an exception. */
+int core_import_numpy(void);
+
 /* Raises the exception that fits a library message: MemoryError for "out
  * of memory" / "too large for memory", else `type`. Returns NULL. */
 PyObject *core_error(PyObject *type, const char *msg);

@@ -2,7 +2,6 @@
  * its constants, and the point files (load, save) through the suite's one
  * point-file module (src/pointfile.h). The shared helpers of core.h are
  * core_util.c. */
-#define CFPO_PY_IMPORT_ARRAY
 #include "core.h"
 
 #include <stdlib.h>
@@ -122,7 +121,7 @@ static int add_tables(PyObject *m)
 
 PyMODINIT_FUNC PyInit__core(void)
 {
-    import_array();
+    if (core_import_numpy() != 0) return NULL;
     PyObject *m = PyModule_Create(&module);
     if (!m) return NULL;
     if (PyModule_AddStringConstant(m, "version", CFPO_VERSION) != 0 ||

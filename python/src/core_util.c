@@ -1,10 +1,17 @@
 /* core_util.c - the helpers of core.h that the module's files share:
  * error mapping, point arrays in and out, the interruption check and the
  * trace grown row by row. Calls nothing of the module's other files. */
+#define CFPO_PY_IMPORT_ARRAY /* NumPy's C API table lives here */
 #include "core.h"
 
 #include <stdlib.h>
 #include <string.h>
+
+int core_import_numpy(void)
+{
+    import_array1(-1);
+    return 0;
+}
 
 PyObject *core_error(PyObject *type, const char *msg)
 {
