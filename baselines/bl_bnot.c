@@ -82,15 +82,8 @@ const bl_method bl_bnot = {
              "regularity breaker jitters near-perfect hexagonal patches, teleports up to 100\n"
              "of their sites and runs a new round, at most 20 rounds. Prints one SUMMARY line\n"
              "on stdout.",
-    .options = OPTS,
-    .noptions = 4,
-    .columns = COLUMNS,
-    .ncolumns = 8,
-    .check_n = check_n,
-    .create = create,
-    .iterate = iterate,
-    .deltas = deltas,
+    BL_OPTIONS(OPTS),
+    BL_COLUMNS(COLUMNS),
+    BL_ENGINE,
     .column_values = column_values,
-    .points = points,
-    .destroy = destroy,
 };

@@ -56,15 +56,8 @@ const bl_method bl_ccdt = {
              "phase (re-triangulation); the step is damped against cycling, guarded against\n"
              "inversions, and the run goes to convergence (--tol). Prints one SUMMARY line on\n"
              "stdout.",
-    .options = OPTS,
-    .noptions = 1,
-    .columns = COLUMNS,
-    .ncolumns = 4,
-    .check_n = check_n,
-    .create = create,
-    .iterate = iterate,
-    .deltas = deltas,
+    BL_OPTIONS(OPTS),
+    BL_COLUMNS(COLUMNS),
+    BL_ENGINE,
     .column_values = column_values,
-    .points = points,
-    .destroy = destroy,
 };

@@ -72,15 +72,8 @@ const bl_method bl_ccvt = {
              "to the centroids of their points at once; converged when a whole pass swaps\n"
              "nothing (--tol plays no part unless --update pass). Prints one SUMMARY line\n"
              "on stdout.",
-    .options = OPTS,
-    .noptions = 4,
-    .columns = COLUMNS,
-    .ncolumns = 1,
-    .check_n = check_n,
-    .create = create,
-    .iterate = iterate,
-    .deltas = deltas,
+    BL_OPTIONS(OPTS),
+    BL_COLUMNS(COLUMNS),
+    BL_ENGINE,
     .column_values = column_values,
-    .points = points,
-    .destroy = destroy,
 };

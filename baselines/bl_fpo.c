@@ -57,8 +57,7 @@ static void destroy(void *E) { fpo_free(E); }
     {.name = row_name, .prog = row_prog, .kind = BL_ITERATIVE,                                                   \
      .about = "Farthest Point Optimization (Schloemer, Heck, Deussen 2011) on the unit torus,\n"                 \
               "on CGAL's periodic Delaunay triangulation. Prints one SUMMARY line on stdout.",                   \
-     .options = opts, .noptions = 2, .method_name = method_name, .check_n = check_n, .create = create,           \
-     .iterate = iterate, .deltas = deltas, .points = points, .destroy = destroy}
+     BL_OPTIONS(opts), BL_ENGINE, .method_name = method_name}
 
 const bl_method bl_fpo = FPO_ROW("fpo", "cfpo-fpo", FPO_OPTS);
 const bl_method bl_lfpo = FPO_ROW("lfpo", "cfpo-lfpo", LFPO_OPTS);

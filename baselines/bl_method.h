@@ -92,6 +92,14 @@ struct bl_method {
     void (*destroy)(void *E);
 };
 
+/* A row's pieces: the options' table, the trace columns' table, and the
+ * engine's functions under their usual names in a bl_<method>.c. */
+#define BL_OPTIONS(opts) .options = (opts), .noptions = (int)(sizeof(opts) / sizeof(opts)[0])
+#define BL_COLUMNS(cols) .columns = (cols), .ncolumns = (int)(sizeof(cols) / sizeof(cols)[0])
+#define BL_ENGINE                                                                                                \
+    .check_n = check_n, .create = create, .iterate = iterate, .deltas = deltas, .points = points,                \
+    .destroy = destroy
+
 /* The methods, in the order of scripts/methods.tsv; NULL-ended. */
 extern const bl_method *const bl_methods[];
 

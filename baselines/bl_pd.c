@@ -29,17 +29,17 @@ const bl_method bl_dart = {
     .name = "dart", .prog = "cfpo-dart", .kind = BL_POISSON,
     .about = "Dart throwing (Cook 1986): uniform darts, each kept when no earlier point\n"
              "lies within r.",
-    .options = DART_OPTS, .noptions = 3, .pd_kind = PD_DART, .pd_rel = PD_DART_REL,
+    BL_OPTIONS(DART_OPTS), .pd_kind = PD_DART, .pd_rel = PD_DART_REL,
 };
 const bl_method bl_bs = {
     .name = "bs", .prog = "cfpo-bs", .kind = BL_POISSON,
     .about = "Boundary sampling (Dunbar & Humphreys 2006): a maximal Poisson-disk set grown\n"
              "on the uncovered boundary arcs of the samples' disks.",
-    .options = BS_OPTS, .noptions = 2, .pd_kind = PD_BS, .pd_rel = PD_BS_REL,
+    BL_OPTIONS(BS_OPTS), .pd_kind = PD_BS, .pd_rel = PD_BS_REL,
 };
 const bl_method bl_bridson = {
     .name = "bridson", .prog = "cfpo-bridson", .kind = BL_POISSON,
     .about = "Bridson's fast Poisson-disk sampling (2007), made maximal by an exact check\n"
              "of a sample's free boundary arcs before it is retired.",
-    .options = BRIDSON_OPTS, .noptions = 4, .pd_kind = PD_BRIDSON, .pd_rel = PD_BRIDSON_REL,
+    BL_OPTIONS(BRIDSON_OPTS), .pd_kind = PD_BRIDSON, .pd_rel = PD_BRIDSON_REL,
 };
