@@ -3,12 +3,26 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "geom.h"
 #include "pdgrid.h"
 
 const pd_names pd_cli_names = {"-n N", "--radius", "--radius R", "--rel-radius", "--max-fails"};
 const pd_names pd_py_names = {"n", "radius", "radius", "rel_radius", "max_fails"};
+
+void pd_params_of(const bl_method *m, const bl_value *v, uint64_t seed, pd_params *p, double *radius, double *rel)
+{
+    const int ifails = bl_option_index(m, "max-fails"), ik = bl_option_index(m, "candidates");
+    const int iplain = bl_option_index(m, "plain");
+    memset(p, 0, sizeof *p);
+    p->seed = seed;
+    p->k = ik >= 0 ? (int)v[ik].i : 0;
+    p->plain = iplain >= 0 ? (int)v[iplain].i : 0;
+    p->max_fails = ifails >= 0 ? (uint64_t)v[ifails].i : 0;
+    *radius = v[bl_option_index(m, "radius")].d;
+    *rel = v[bl_option_index(m, "rel-radius")].d;
+}
 
 int pd_check_args(int kind, int64_t n, double radius, double rel, const pd_names *w, char *err, size_t errlen)
 {

@@ -11,6 +11,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "bl_method.h"
 #include "pd.h"
 
 enum { PD_DART = 0, PD_BS = 1, PD_BRIDSON = 2 };
@@ -33,6 +34,10 @@ typedef struct {
 } pd_names;
 
 extern const pd_names pd_cli_names, pd_py_names;
+
+/* The sampler's parameters from a Poisson-disk method's option values v
+ * (bl_pd.c) and the seed; *radius and *rel as given (-1: not given). */
+void pd_params_of(const bl_method *m, const bl_value *v, uint64_t seed, pd_params *p, double *radius, double *rel);
 
 /* The checks of the arguments before the radius: n (-1: not given),
  * radius and rel (-1: not given). 0, or -1 with the message. */

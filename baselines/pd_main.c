@@ -146,18 +146,11 @@ int pd_main(int argc, char **argv, const bl_method *m)
         }
     }
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
-    const int ir = bl_option_index(m, "radius"), irel = bl_option_index(m, "rel-radius");
-    const int ifails = bl_option_index(m, "max-fails"), ik = bl_option_index(m, "candidates");
-    const int iplain = bl_option_index(m, "plain");
-    const double radius = v[ir].d, rel = v[irel].d;
+    pd_params p;
+    double radius, rel;
+    pd_params_of(m, v, seed, &p, &radius, &rel);
     if (pd_check_args(kind, n, radius, rel, &pd_cli_names, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
     bl_check_output_name(prog, out);
-    pd_params p;
-    memset(&p, 0, sizeof p);
-    p.seed = seed;
-    p.k = (int)(ik >= 0 ? v[ik].i : 0);
-    p.plain = iplain >= 0 ? (int)v[iplain].i : 0;
-    p.max_fails = ifails >= 0 ? (uint64_t)v[ifails].i : 0;
     if (pd_setup(kind, n, radius, rel, m->pd_rel, &pd_cli_names, &p, err, sizeof err) != 0)
         cli_usage_error(prog, "%s", err);
 

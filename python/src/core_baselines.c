@@ -124,16 +124,10 @@ PyObject *core_poisson(PyObject *self, PyObject *args)
     const bl_method *m = method_values(name, BL_POISSON, values, v);
     if (!m) return NULL;
     const int kind = m->pd_kind;
-    const int ifails = bl_option_index(m, "max-fails"), ik = bl_option_index(m, "candidates");
-    const int iplain = bl_option_index(m, "plain");
-    const double radius = v[bl_option_index(m, "radius")].d, rel = v[bl_option_index(m, "rel-radius")].d;
     char err[1024];
     pd_params p;
-    memset(&p, 0, sizeof p);
-    p.seed = seed;
-    p.k = ik >= 0 ? (int)v[ik].i : 0;
-    p.plain = iplain >= 0 ? (int)v[iplain].i : 0;
-    p.max_fails = ifails >= 0 ? (uint64_t)v[ifails].i : 0;
+    double radius, rel;
+    pd_params_of(m, v, seed, &p, &radius, &rel);
     if (pd_check_args(kind, n, radius, rel, &pd_py_names, err, sizeof err) != 0 ||
         pd_setup(kind, n, radius, rel, m->pd_rel, &pd_py_names, &p, err, sizeof err) != 0)
         return core_error(PyExc_ValueError, err);
