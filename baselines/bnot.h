@@ -90,6 +90,12 @@ typedef struct bnot_engine bnot_engine;
 
 #define BNOT_CAP_TOL 1e-8
 
+/* The defaults of the schedule's options that the command and Python
+ * offer (bl_bnot.c), as bnot_rule_init sets them. */
+#define BNOT_DEFAULT_EPSILON 0.2
+#define BNOT_DEFAULT_MAX_ROUNDS 20
+#define BNOT_DEFAULT_ROUND_ITERS 20
+
 /* The authors' schedule (see above); epsilon 0: the run to a move
  * tolerance (tol) with capacities to cap_tol instead. */
 typedef struct {

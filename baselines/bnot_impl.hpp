@@ -1,7 +1,7 @@
-/* bnot_impl.hpp - the inside of bnot.h's engine, shared by bnot.cpp (the
- * power diagram, the capacity solve, the run to a move tolerance) and
- * bnot_rule.cpp (the authors' two-phase stopping rule and the regularity
- * breaker). Not a public header. */
+/* bnot_impl.hpp - the inside of bnot.h's engine, shared by bnot_power.cpp
+ * (the power diagram and the capacity solve), bnot.cpp (the engine, the
+ * run to a move tolerance) and bnot_rule.cpp (the authors' two-phase
+ * stopping rule and the regularity breaker). Not a public header. */
 #ifndef CFPO_BASELINES_BNOT_IMPL_HPP
 #define CFPO_BASELINES_BNOT_IMPL_HPP
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -98,10 +98,10 @@ struct bnot_engine {
     std::vector<uint32_t> pick;
 };
 
-/* The diagram for E->w and everything derived from it (bnot.cpp). */
+/* The diagram for E->w and everything derived from it (bnot_power.cpp). */
 void bnot_build(bnot_engine *E);
 /* Damped Newton on the weights from the current ones (0 when a cell is
- * empty) until the capacity tolerance holds (bnot.cpp). */
+ * empty) until the capacity tolerance holds (bnot_power.cpp). */
 void bnot_solve(bnot_engine *E);
 /* One iteration of the authors' schedule (bnot_rule.cpp). */
 void bnot_rule_iterate(bnot_engine *E, cfpo_iter_stats *s);

@@ -1,6 +1,6 @@
 /* bnot_rule.cpp - the authors' schedule of BNOT (bnot.h): the two-phase
  * stopping rule on the gradient norm and the regularity breaker between
- * rounds. The diagram and the capacity solve are bnot.cpp's.
+ * rounds. The diagram and the capacity solve are bnot_power.cpp's.
  *
  * One iteration here is one position step of the current phase with the
  * solve that follows it, so the trace's rows are the reference's
@@ -11,11 +11,11 @@
 
 extern "C" void bnot_rule_init(bnot_rule *r)
 {
-    r->epsilon = 0.2;
+    r->epsilon = BNOT_DEFAULT_EPSILON;
     r->breaker = 1;
-    r->max_rounds = 20;
+    r->max_rounds = BNOT_DEFAULT_MAX_ROUNDS;
     r->max_teleport = 100;
-    r->round_iters = 20;
+    r->round_iters = BNOT_DEFAULT_ROUND_ITERS;
     r->max_newton = 20;
     r->jitter = 1.0;
 }

@@ -1,7 +1,9 @@
 /* pd_main.c - the command line of the Poisson-disk baselines (cfpo-dart,
- * cfpo-bs, cfpo-bridson), in cfpo's style: options, radius from -n, trace,
- * progress, output and the SUMMARY line. One function for the three
- * commands; each main_*.c passes its method. Computes nothing itself. */
+ * cfpo-bs, cfpo-bridson), in cfpo's style: the options of the three
+ * methods' tables (bl_pd.c), parsed against them, the radius check and
+ * the run (pd_check.h), trace, progress, output and the SUMMARY line. One
+ * function for the three commands; each main_*.c passes its method.
+ * Computes nothing itself. */
 #include "pd_main.h"
 
 #include <getopt.h>
@@ -13,40 +15,34 @@
 #include "bl_run.h"
 #include "cfpo.h"
 #include "cli.h"
-#include "geom.h"
-#include "pd.h"
-#include "pdgrid.h"
+#include "pd_check.h"
 #include "pointfile.h"
 #include "stats.h"
 
-typedef struct {
-    const char *prog, *method, *title;
-    double rel;          /* default relative radius */
-    const char *rel_why; /* one line for --help */
-} method_info;
+extern const bl_method bl_dart, bl_bs, bl_bridson;
 
-static const method_info METHODS[] = {
-    [PD_DART] = {"cfpo-dart", "dart", "Dart throwing (Cook 1986): uniform darts, each kept when no earlier point\n"
-                 "lies within r.", PD_DART_REL,
-                 "close to dart throwing's jamming limit (about 0.777),\n"
-                 "                       yet reached reliably"},
-    [PD_BS] = {"cfpo-bs", "bs", "Boundary sampling (Dunbar & Humphreys 2006): a maximal Poisson-disk set grown\n"
-               "on the uncovered boundary arcs of the samples' disks.", PD_BS_REL,
-               "measured so that the maximal set has n points on\n"
-               "                       average"},
-    [PD_BRIDSON] = {"cfpo-bridson", "bridson", "Bridson's fast Poisson-disk sampling (2007), made maximal by an exact check\n"
-                    "of a sample's free boundary arcs before it is retired.", PD_BRIDSON_REL,
-                    "measured so that the maximal set has n points on\n"
-                    "                       average"},
-};
+/* Each option of the three commands (the union of their tables) and the
+ * command that takes it. */
+static const bl_method *const PD[] = {&bl_dart, &bl_bs, &bl_bridson};
 
-static void usage(int kind)
+/* The default of the option spelt cli in m's table. */
+static double def_of(const bl_method *m, const char *cli) { return m->options[bl_option_index(m, cli)].def; }
+
+static const char *const REL_WHY[] = {
+    [PD_DART] = "close to dart throwing's jamming limit (about 0.777),\n"
+                "                       yet reached reliably",
+    [PD_BS] = "measured so that the maximal set has n points on\n"
+              "                       average",
+    [PD_BRIDSON] = "measured so that the maximal set has n points on\n"
+                   "                       average"};
+
+static void usage(const bl_method *m)
 {
-    const method_info *m = &METHODS[kind];
+    const int kind = m->pd_kind;
     printf("Usage: %s -n N [options]\n", m->prog);
     if (kind != PD_DART) printf("       %s -r R [options]\n", m->prog);
     printf("%s\nThe unit torus, periodic distances. Prints one SUMMARY line on stdout.\n\n",
-           m->title);
+           m->about);
     if (kind == PD_DART)
         printf("  -n, --points N       number of points to place (required)\n");
     else
@@ -56,15 +52,15 @@ static void usage(int kind)
     printf("  -s, --seed S         random seed (default 1)\n"
            "  -r, --radius R       the Poisson-disk radius (minimum distance) itself\n"
            "      --rel-radius REL r = REL * Delta(n), Delta(n) = sqrt(2 / (sqrt(3) n));\n"
-           "                       default %.4g: %s\n", m->rel, m->rel_why);
+           "                       default %.4g: %s\n", m->pd_rel, REL_WHY[kind]);
     if (kind == PD_DART)
         printf("      --max-fails F    saturation: stop when F consecutive darts are rejected\n"
                "                       (default %.0f); then nothing is written, exit 1\n",
-               (double)PD_DART_MAX_FAILS);
+               def_of(m, "max-fails"));
     if (kind == PD_BRIDSON)
-        printf("  -k, --candidates K   candidates per active sample (default 30)\n"
+        printf("  -k, --candidates K   candidates per active sample (default %g)\n"
                "      --plain          the 2007 algorithm only: retire a sample after K\n"
-               "                       failures (not maximal)\n");
+               "                       failures (not maximal)\n", def_of(m, "candidates"));
     printf("  -o, --output FILE    write the points; format from the extension:\n"
            "                       %s\n"
            "      --trace FILE     progress rows (TSV: points, trials, active, elapsed)\n"
@@ -89,121 +85,93 @@ static void on_report(void *user, int64_t placed, uint64_t trials, int64_t activ
                       (long long)placed, (unsigned long long)trials, (long long)active, el);
 }
 
-int pd_main(int argc, char **argv, int kind)
+int pd_main(int argc, char **argv, const bl_method *m)
 {
-    const method_info *m = &METHODS[kind];
+    const int kind = m->pd_kind;
     const char *prog = m->prog;
-    static const struct option longopts[] = {
+    /* the three tables' options, each once: code OWN + k for opt[k] */
+    enum { FIXED = 8, OWN = 2000, MAXU = 3 * BL_MAX_OPTIONS };
+    struct option longopts[FIXED + MAXU + 1] = {
         {"points", required_argument, 0, 'n'}, {"seed", required_argument, 0, 's'},
-        {"radius", required_argument, 0, 'r'}, {"rel-radius", required_argument, 0, 'R'},
-        {"max-fails", required_argument, 0, 'F'}, {"candidates", required_argument, 0, 'k'},
-        {"plain", no_argument, 0, 'P'}, {"output", required_argument, 0, 'o'},
-        {"trace", required_argument, 0, 't'}, {"quiet", no_argument, 0, 'q'},
-        {"help", no_argument, 0, 'h'}, {"version", no_argument, 0, 'V'}, {0, 0, 0, 0}};
-    pd_params p;
-    memset(&p, 0, sizeof p);
-    p.seed = 1;
-    p.k = 30;
-    p.max_fails = PD_DART_MAX_FAILS;
+        {"output", required_argument, 0, 'o'}, {"trace", required_argument, 0, 't'},
+        {"quiet", no_argument, 0, 'q'}, {"help", no_argument, 0, 'h'},
+        {"version", no_argument, 0, 'V'}};
+    const bl_option *opt[MAXU];
+    const bl_method *owner[MAXU];
+    char shortopts[64] = ":n:s:o:qhV";
+    int nu = 0, k = FIXED - 1;
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < PD[j]->noptions; i++) {
+            const bl_option *o = &PD[j]->options[i];
+            int seen = 0;
+            for (int u = 0; u < nu; u++) seen |= strcmp(opt[u]->cli, o->cli) == 0;
+            if (seen) continue;
+            const int arg = o->type == BL_FLAG ? no_argument : required_argument;
+            longopts[k++] = (struct option){o->cli, arg, 0, o->letter ? o->letter : OWN + nu};
+            if (o->letter) snprintf(shortopts + strlen(shortopts), 3, "%c%s", o->letter, arg ? ":" : "");
+            opt[nu] = o;
+            owner[nu++] = PD[j];
+        }
+    longopts[k] = (struct option){0, 0, 0, 0};
+    bl_value v[BL_MAX_OPTIONS];
+    bl_defaults(m, v);
     int64_t n = -1;
-    double radius = -1, rel = -1;
+    uint64_t seed = 1;
     const char *out = NULL, *trace = NULL;
     int quiet = 0, ch;
+    char err[512];
     opterr = 0;
-    while ((ch = getopt_long(argc, argv, ":n:s:r:k:o:qhV", longopts, NULL)) != -1) {
-        int64_t v;
+    while ((ch = getopt_long(argc, argv, shortopts, longopts, NULL)) != -1) {
         switch (ch) {
-        case 'n':
-            n = cli_arg_points(prog, optarg);
-            break;
-        case 's':
-            p.seed = cli_arg_seed(prog, optarg);
-            break;
-        case 'r':
-            if (cli_parse_double(optarg, 0, 1, &radius) != 0 || !(radius > 0))
-                cli_usage_error(prog, "--radius: '%s' is not a number in (0, 1]", optarg);
-            break;
-        case 'R':
-            if (cli_parse_double(optarg, 0, 2, &rel) != 0 || !(rel > 0))
-                cli_usage_error(prog, "--rel-radius: '%s' is not a number in (0, 2]", optarg);
-            break;
-        case 'F':
-            if (kind != PD_DART) cli_usage_error(prog, "--max-fails applies to cfpo-dart only");
-            if (cli_parse_i64(optarg, 1, INT64_MAX, &v) != 0)
-                cli_usage_error(prog, "--max-fails: '%s' is not a positive whole number", optarg);
-            p.max_fails = (uint64_t)v;
-            break;
-        case 'k':
-            if (kind != PD_BRIDSON) cli_usage_error(prog, "-k applies to cfpo-bridson only");
-            if (cli_parse_i64(optarg, 1, 1000000, &v) != 0)
-                cli_usage_error(prog, "--candidates: '%s' is not a whole number in 1..1e6", optarg);
-            p.k = (int)v;
-            break;
-        case 'P':
-            if (kind != PD_BRIDSON) cli_usage_error(prog, "--plain applies to cfpo-bridson only");
-            p.plain = 1;
-            break;
+        case 'n': n = cli_arg_points(prog, optarg); break;
+        case 's': seed = cli_arg_seed(prog, optarg); break;
         case 'o': out = optarg; break;
         case 't': trace = optarg; break;
         case 'q': quiet = 1; break;
-        case 'h': usage(kind); return 0;
+        case 'h': usage(m); return 0;
         case 'V': printf("%s %s\n", prog, CFPO_VERSION); return 0;
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
-        default: cli_bad_option(prog, longopts, argv[optind - 1]);
+        default: {
+            int u = ch >= OWN && ch < OWN + nu ? ch - OWN : -1;
+            for (int w = 0; w < nu && u < 0; w++)
+                if (opt[w]->letter && opt[w]->letter == ch) u = w;
+            if (u < 0) cli_bad_option(prog, longopts, argv[optind - 1]);
+            const int i = bl_option_index(m, opt[u]->cli);
+            if (i < 0) {
+                if (opt[u]->letter) cli_usage_error(prog, "-%c applies to %s only", opt[u]->letter, owner[u]->prog);
+                cli_usage_error(prog, "--%s applies to %s only", opt[u]->cli, owner[u]->prog);
+            }
+            if (bl_option_parse(m, i, optarg, 0, v, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
+        }
         }
     }
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
-    if (radius > 0 && rel > 0) cli_usage_error(prog, "give --radius or --rel-radius, not both");
-    if (n < 0 && (kind == PD_DART || radius < 0))
-        cli_usage_error(prog, kind == PD_DART ? "the number of points is required: -n N"
-                                              : "-n N or --radius R is required");
-    if (n >= (int64_t)UINT32_MAX)
-        cli_usage_error(prog, "n = %lld is too large for one process (at most %lld)", (long long)n,
-                        (long long)UINT32_MAX - 1);
+    pd_params p;
+    double radius, rel;
+    pd_params_of(m, v, seed, &p, &radius, &rel);
+    if (pd_check_args(kind, n, radius, rel, &pd_cli_names, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
     bl_check_output_name(prog, out);
-    if (radius < 0) radius = (rel > 0 ? rel : m->rel) * cfpo_delta_bound((double)n);
-    /* DT: r < 1/2 keeps the periodic distance meaningful; BS and Bridson
-     * look 2 rho around a sample, which must stay below 1/2. */
-    const double rmax = kind == PD_DART ? 0.5 : 0.25 / (1.0 + PD_RHO_EPS);
-    if (!(radius < rmax))
-        cli_usage_error(prog, "radius %g is too large for the unit torus (must be below %g%s)",
-                        radius, rmax, n > 0 ? "; use more points or a smaller --rel-radius" : "");
-    if (pdgrid_cells(radius) > 4294967295.0)
-        cli_usage_error(prog, "radius %g is too small: the grid would need %.3g cells", radius,
-                        pdgrid_cells(radius));
-    p.r = radius;
-    if (kind == PD_DART) p.target = n;
-    else p.target = n > 0 ? n : (int64_t)(2.0 * m->rel * m->rel / (sqrt(3.0) * radius * radius)) + 1;
-    p.report_step = p.target / 64 > 0 ? p.target / 64 : 1;
+    if (pd_setup(kind, n, radius, rel, m->pd_rel, &pd_cli_names, &p, err, sizeof err) != 0)
+        cli_usage_error(prog, "%s", err);
 
     bl_run run;
-    bl_run_open(&run, prog, out, trace, kind == PD_DART ? (size_t)n : 0,
-                "points\ttrials\tactive\telapsed", quiet);
+    bl_run_open(&run, prog, out, trace, kind == PD_DART ? (size_t)n : 0, "points\ttrials\tactive\telapsed", quiet);
     report_ctx rc = {&run};
     p.report = on_report;
     p.user = &rc;
     pd_result res;
-    char err[512];
-    int rv = kind == PD_DART ? dart_sample(&p, &res, err, sizeof err)
-           : kind == PD_BS   ? bs_sample(&p, &res, err, sizeof err)
-                             : bridson_sample(&p, &res, err, sizeof err);
-    if (rv != 0) cli_fail(prog, "%s", err);
+    if (pd_sample(kind, &p, &res, err, sizeof err) != 0) cli_fail(prog, "%s", err);
     const double seconds = cli_now() - run.t0;
     on_report(&rc, res.n, res.trials, 0);
-    if (res.saturated) {
-        cli_progress_end(&run.pg);
-        cli_fail(prog, "saturated: placed %lld of %lld points at radius r = %.9g (%.4f Delta(n)); "
-                 "%llu consecutive darts were rejected. Use a smaller --rel-radius or --radius, "
-                 "or a larger --max-fails", (long long)res.n, (long long)n, radius,
-                 radius / cfpo_delta_bound((double)n), (unsigned long long)p.max_fails);
+    if (pd_verdict(kind, &res, n, &p, &pd_cli_names, err, sizeof err) != 0) {
+        if (res.saturated) cli_progress_end(&run.pg);
+        cli_fail(prog, "%s", err);
     }
-    if (res.n < 2 && kind != PD_DART)
-        cli_fail(prog, "radius %g leaves only %lld point(s)", radius, (long long)res.n);
     bl_run_finish(&run, res.xy, (size_t)res.n);
     double dmin = 0, davg = 0;
     if (res.n >= 2 && cfpo_nn_stats(res.xy, (size_t)res.n, NULL, &dmin, &davg) != 0)
         cli_fail(prog, "out of memory for the statistics");
-    cli_summary sm = {.method = m->method, .variant = "-", .n = res.n, .seed = p.seed,
+    cli_summary sm = {.method = m->name, .variant = "-", .n = res.n, .seed = p.seed,
                       .threads = 1, .ranks = 1, .iterations = -1, .seconds = seconds,
                       .delta_min = dmin, .delta_avg = davg, .converged = -1,
                       .peak_bytes = cli_peak_rss()};

@@ -30,6 +30,7 @@ enum { CFPO_VARIANT_PAPER = 0, CFPO_VARIANT_SIMPLIFIED = 1, CFPO_VARIANT_ADAPTIV
  * (the one bound, checked everywhere a tolerance comes in). */
 #define CFPO_TOL_MAX 0.49
 #define CFPO_DEFAULT_MAX_ITER 10000
+#define CFPO_MAX_ITER_MAX 1000000000 /* the largest --max-iter (0..1e9) */
 
 typedef struct {
     int iteration;     /* 1-based; 0 is the initial set */

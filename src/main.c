@@ -18,6 +18,7 @@
 #include "runfiles.h"
 #include "solver_simd.h"
 #include "stoprule.h"
+#include "tracecols.h"
 
 static const char *prog = "cfpo";
 
@@ -128,10 +129,12 @@ static int on_iteration(const cfpo_iter_stats *s, void *user)
     run_ctx *c = user;
     if (comm_rank() != 0) return 0;
     double el = cli_now() - c->t0;
-    if (c->trace)
-        fprintf(c->trace, "%d\t%.9f\t%.9f\t%lld\t%lld\t%.6g\t%.6f\t%.6f\t%.6g\t%d\n", s->iteration,
-                s->delta_min, s->delta_avg, (long long)s->moved, (long long)s->solved,
-                s->max_disp, s->seconds, el, s->max_move, s->near);
+    if (c->trace) {
+        double row[CFPO_TRACE_COLUMNS];
+        cfpo_trace_values(s, el, row);
+        cfpo_trace_write_values(c->trace, cfpo_trace_columns, row, CFPO_TRACE_COLUMNS, 1);
+        fputc('\n', c->trace);
+    }
     double eta = eta_seconds(c, s);
     char etas[32] = "?";
     if (eta >= 0) snprintf(etas, sizeof etas, "~%.0fs", eta);
@@ -213,7 +216,7 @@ static int sampler_option(cmdline *c, int ch, char *arg)
         c->given_variant = 1;
         break;
     case 't': c->o.threads = (int)whole("--threads", arg, 1, 4096, "1..4096"); break;
-    case 'm': c->o.max_iter = (int)whole("--max-iter", arg, 0, 1000000000, "0..1e9"); break;
+    case 'm': c->o.max_iter = (int)whole("--max-iter", arg, 0, CFPO_MAX_ITER_MAX, "0..1e9"); break;
     case 'T':
         if (cli_parse_double(arg, 0, CFPO_TOL_MAX, &c->o.tol) != 0)
             cli_usage_error(prog, "--tol: '%s' is not a number in [0, %g]", arg, CFPO_TOL_MAX);

@@ -9,6 +9,7 @@
 #include "cli.h"
 #include "comm.h"
 #include "pointfile.h"
+#include "tracecols.h"
 
 struct cfpo_runfiles {
     int64_t n;
@@ -125,8 +126,10 @@ cfpo_runfiles *cfpo_runfiles_open(const char *out, const char *trace, const char
             cfpo_runfiles_abort(f);
             return NULL;
         }
-        if (comm_rank() == 0)
-            fprintf(f->tr.f, "iteration\tdelta_min\tdelta_avg\tmoved\tsolved\tmax_disp\tseconds\telapsed\tmax_move\tnear\n");
+        if (comm_rank() == 0) {
+            cfpo_trace_write_names(f->tr.f, cfpo_trace_columns, CFPO_TRACE_COLUMNS, 1);
+            fputc('\n', f->tr.f);
+        }
     }
     if (checkpoint && probe_checkpoint(checkpoint, err, errlen) != 0) {
         cfpo_runfiles_abort(f);

@@ -12,14 +12,16 @@ void cfpo_stop_rules_init(cfpo_stop_rules *r)
     r->time_limit = 0;
 }
 
+const cfpo_stop_option cfpo_stop_options[3] = {{"target-min", 0, 1}, {"target-avg", 0, 1.1}, {"time-limit", 0, 1e9}};
+
 int cli_stop_option(const char *prog, const char *name, const char *arg, cfpo_stop_rules *r)
 {
-    double *dst;
-    double lo, hi;
-    if (strcmp(name, "target-min") == 0) { dst = &r->target_min; lo = 0; hi = 1; }
-    else if (strcmp(name, "target-avg") == 0) { dst = &r->target_avg; lo = 0; hi = 1.1; }
-    else if (strcmp(name, "time-limit") == 0) { dst = &r->time_limit; lo = 0; hi = 1e9; }
-    else return 0;
+    double *const dsts[3] = {&r->target_min, &r->target_avg, &r->time_limit};
+    int i = 0;
+    while (i < 3 && strcmp(name, cfpo_stop_options[i].name) != 0) i++;
+    if (i == 3) return 0;
+    double *dst = dsts[i];
+    const double lo = cfpo_stop_options[i].lo, hi = cfpo_stop_options[i].hi;
     double v;
     if (cli_parse_double(arg, lo, hi, &v) != 0 || !(v > 0))
         cli_usage_error(prog, "--%s: '%s' is not a number in (%g, %g]", name, arg, lo, hi);

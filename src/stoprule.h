@@ -23,6 +23,14 @@ enum {
 
 void cfpo_stop_rules_init(cfpo_stop_rules *r);
 
+/* The three rules' options: the long option without its dashes and the
+ * range (lo, hi] of its value; target-min, target-avg, time-limit. */
+typedef struct {
+    const char *name;
+    double lo, hi;
+} cfpo_stop_option;
+extern const cfpo_stop_option cfpo_stop_options[3];
+
 /* Parses the value of --target-min, --target-avg or --time-limit (`name`
  * is the long option without its dashes) into r; a bad value is a usage
  * error (one line, exit 2). Returns 1 when name is one of the three, 0

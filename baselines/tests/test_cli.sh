@@ -97,7 +97,7 @@ expect 1 "^cfpo-bnot: n = 1073741824 is too large for memory: bnot needs about 1
 # FPO's own memory model (about 720 bytes a point), not cfpo's.
 expect 1 "^cfpo-fpo: n = 1073741824 is too large for memory: the triangulation needs about 773\.1 GB" "$B/cfpo-fpo" -n 2^30
 
-# CCVT, CCDT and BNOT (iter_main.c): cfpo's trace columns then their own,
+# CCVT, CCDT and BNOT (bl_cli.c): cfpo's trace columns then their own,
 # one row per iteration plus row 0, the stop rules, bad values.
 for c in cfpo-ccvt cfpo-ccdt cfpo-bnot; do
   X="$B/$c"

@@ -26,8 +26,7 @@ __version__ = _core.version
 __all__ = ["sample", "run", "Result", "load", "save", "analysis", "baselines", "__version__"]
 
 STOP_REASONS = ("converged", "target", "time", "max-iter", "caller")
-TRACE_COLUMNS = ("iteration", "delta_min", "delta_avg", "moved", "solved", "max_disp", "seconds",
-                 "elapsed", "max_move", "near")
+TRACE_COLUMNS = _core.trace_columns  # the C library's (src/tracecols.h)
 
 
 @dataclass
@@ -39,8 +38,8 @@ class Result:
     result over Delta(n); converged: whether the convergence rule held;
     stop: which rule ended the run, one of "converged", "target", "time",
     "max-iter", "caller"; trace: dict of numpy arrays, one entry a row of the
-    command's --trace file (columns TRACE_COLUMNS; the baselines have no
-    max_move and no near solves: both 0).
+    command's --trace file (columns TRACE_COLUMNS; a baseline's are its
+    command's: the first eight of them, then its own).
     """
     points: np.ndarray
     iterations: int
@@ -73,8 +72,8 @@ def _call(want_trace, n, seed, variant, threads, tol, max_iter, target_min, targ
     if not isinstance(variant, str):
         raise TypeError("variant: expected a string")
     th = _args.threads(threads)
-    t = -1.0 if tol is None else _args.real("tol", tol, 0, _core.tol_max)
-    mi = _core.default_max_iter if max_iter is None else _args.whole("max_iter", max_iter, 0, 10**9)
+    t = _args.tol(tol, -1.0)  # -1: the variant's default
+    mi = _args.max_iter(max_iter)
     stops = _args.stop_rules(target_min, target_avg, time_limit)
     start = None if init is None else _args.as_points(init, "init")
     cb, line = _callback(progress, nn if nn > 0 else start.shape[0], mi, stops)

@@ -1,11 +1,14 @@
-"""Argument checks shared by the package: the command line's ranges and
-wording, for Python values (ValueError for a bad value, TypeError for a
-wrong type), and the conversion of point arrays."""
+"""Argument checks shared by the package: the command line's wording for
+Python values (ValueError for a bad value, TypeError for a wrong type),
+with the ranges the C library gives (cfpo._core), and the conversion of
+point arrays."""
 import math
 import numbers
 import os
 
 import numpy as np
+
+from . import _core
 
 
 def whole(name, v, lo, hi):
@@ -37,6 +40,42 @@ def flag(name, v):
     return bool(v)
 
 
+def choice(name, v, words, bad):
+    """The index of v among words; bad: the command's wording of a bad
+    value ("is not one of ...", "is neither ... nor ...")."""
+    if not isinstance(v, str):
+        raise TypeError(f"{name}: expected a string, {', '.join(words[:-1])} or {words[-1]}")
+    if v not in words:
+        raise ValueError(f"{name}: '{v}' {bad}")
+    return words.index(v)
+
+
+def option(o, v):
+    """The value of v for an option of a baseline's table (cfpo._core.methods),
+    checked by its type and range; None: the option's default."""
+    name = o["py"]
+    if v is None:
+        return o["default"]
+    if o["type"] == "int":
+        return whole(name, v, o["min"], o["max"])
+    if o["type"] == "real":
+        return real(name, v, o["min"], o["max"], open_lo=o["open_min"])
+    if o["type"] == "flag":
+        return int(flag(name, v))
+    return choice(name, v, o["choices"], o["bad"])
+
+
+def max_iter(v):
+    """The iteration cap: None for the default, else a whole number in the
+    commands' range."""
+    return _core.default_max_iter if v is None else whole("max_iter", v, 0, _core.max_iter_max)
+
+
+def tol(v, default):
+    """A move tolerance in [0, tol_max]; None: default."""
+    return default if v is None else real("tol", v, 0, _core.tol_max)
+
+
 def seed(v):
     """A 64-bit unsigned seed."""
     return whole("seed", v, 0, 2**64 - 1)
@@ -56,11 +95,9 @@ def threads(v):
 
 
 def stop_rules(target_min, target_avg, time_limit):
-    """The stop rules of src/stoprule.c (0 = not set)."""
-    tmin = 0.0 if target_min is None else real("target_min", target_min, 0, 1, open_lo=True)
-    tavg = 0.0 if target_avg is None else real("target_avg", target_avg, 0, 1.1, open_lo=True)
-    tlim = 0.0 if time_limit is None else real("time_limit", time_limit, 0, 1e9, open_lo=True)
-    return tmin, tavg, tlim
+    """The stop rules of src/stoprule.c (0 = not set), with its ranges."""
+    given = {"target_min": target_min, "target_avg": target_avg, "time_limit": time_limit}
+    return tuple(0.0 if v is None else real(k, v, *_core.stop_options[k], open_lo=True) for k, v in given.items())
 
 
 def as_points(points, name="points", min_n=1):

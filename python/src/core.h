@@ -1,6 +1,7 @@
 /* core.h - the pieces the extension module cfpo._core shares between its
  * files (CPython + NumPy C API): error mapping, point arrays in and out,
- * and the interruption check. The Python layer (python/cfpo/) checks and
+ * the interruption check, the statistics and the trace of an iteration
+ * (core_util.c). The Python layer (python/cfpo/) checks and
  * converts the arguments; these functions take them already checked and
  * check again only what would otherwise crash.
  *
@@ -24,6 +25,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "tracecols.h"
+
+/* Loads NumPy's C API (whose table core_util.c holds); 0, or -1 with
+ * an exception. */
+int core_import_numpy(void);
+
 /* Raises the exception that fits a library message: MemoryError for "out
  * of memory" / "too large for memory", else `type`. Returns NULL. */
 PyObject *core_error(PyObject *type, const char *msg);
@@ -45,17 +52,22 @@ PyObject *core_points_adopt(double *xy, size_t n);
  * Call with the GIL held. */
 int core_interrupted(void);
 
-/* The trace: one row per iteration, grown as the run goes. */
+/* The statistics of an iteration for a progress callable: the first ncols
+ * of src/tracecols.h's columns by name, and converged. */
+PyObject *core_stats_dict(const cfpo_iter_stats *s, double elapsed, int ncols);
+
+/* The trace: one row per iteration, grown as the run goes; cols values a
+ * row (src/tracecols.h's columns, then a baseline's own). */
 typedef struct {
-    double *v;    /* rows of TRACE_COLS */
+    double *v;
     size_t rows, cap;
+    int cols;
     int oom;
 } core_trace;
-#define TRACE_COLS 10
 void core_trace_add(core_trace *t, const double *row);
-/* The columns as a tuple of arrays (int64 for iteration, moved, solved;
- * float64 otherwise), in the order of `cfpo --trace`. Frees t->v. */
-PyObject *core_trace_take(core_trace *t, int cols);
+/* The columns as a tuple of arrays (int64 for whole-number columns,
+ * float64 otherwise): a[0..na-1], then b[...]. Frees t->v. */
+PyObject *core_trace_take(core_trace *t, const cfpo_trace_column *a, int na, const cfpo_trace_column *b);
 
 /* The module's functions, one file each. */
 PyObject *core_run(PyObject *self, PyObject *args);
@@ -63,9 +75,7 @@ PyObject *core_deltas(PyObject *self, PyObject *args);
 PyObject *core_spectrum(PyObject *self, PyObject *args);
 PyObject *core_certify(PyObject *self, PyObject *args);
 PyObject *core_poisson(PyObject *self, PyObject *args);
-PyObject *core_iterative(PyObject *self, PyObject *args, PyObject *kw);
-/* Adds baseline_defaults (the iterative baselines' own options as their
- * commands default them) to the module; 0, or -1 with an exception. */
-int core_baselines_defaults(PyObject *module);
+PyObject *core_iterative(PyObject *self, PyObject *args);
+PyObject *core_methods(PyObject *self, PyObject *args);
 
 #endif

@@ -1,7 +1,7 @@
 /* core_module.c - the extension module cfpo._core: its table of functions,
- * the shared helpers of core.h, and the point files (load, save) through
- * the suite's one point-file module (src/pointfile.h). */
-#define CFPO_PY_IMPORT_ARRAY
+ * its constants, and the point files (load, save) through the suite's one
+ * point-file module (src/pointfile.h). The shared helpers of core.h are
+ * core_util.c. */
 #include "core.h"
 
 #include <stdlib.h>
@@ -9,106 +9,8 @@
 
 #include "cfpo.h"
 #include "pointfile.h"
-
-PyObject *core_error(PyObject *type, const char *msg)
-{
-    if (strstr(msg, "out of memory") || strstr(msg, "too large for memory")) type = PyExc_MemoryError;
-    PyErr_SetString(type, msg);
-    return NULL;
-}
-
-PyArrayObject *core_points_in(PyObject *obj, size_t *n)
-{
-    PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 2, 2, NPY_ARRAY_IN_ARRAY);
-    if (!a) return NULL;
-    if (PyArray_DIM(a, 1) != 2) {
-        Py_DECREF(a);
-        PyErr_SetString(PyExc_ValueError, "points must be an (n, 2) array");
-        return NULL;
-    }
-    *n = (size_t)PyArray_DIM(a, 0);
-    return a;
-}
-
-PyObject *core_points_new(size_t n, double **data)
-{
-    npy_intp dims[2] = {(npy_intp)n, 2};
-    PyObject *a = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
-    if (a) *data = (double *)PyArray_DATA((PyArrayObject *)a);
-    return a;
-}
-
-static void free_capsule(PyObject *cap) { free(PyCapsule_GetPointer(cap, NULL)); }
-
-PyObject *core_adopt(double *v, int nd, const npy_intp *dims)
-{
-    PyObject *cap = PyCapsule_New(v, NULL, free_capsule);
-    if (!cap) {
-        free(v);
-        return NULL;
-    }
-    PyObject *a = PyArray_SimpleNewFromData(nd, (npy_intp *)dims, NPY_DOUBLE, v);
-    if (!a || PyArray_SetBaseObject((PyArrayObject *)a, cap) != 0) {
-        Py_XDECREF(a);
-        Py_DECREF(cap);
-        return NULL;
-    }
-    return a;
-}
-
-PyObject *core_points_adopt(double *xy, size_t n)
-{
-    const npy_intp dims[2] = {(npy_intp)n, 2};
-    return core_adopt(xy, 2, dims);
-}
-
-int core_interrupted(void) { return PyErr_CheckSignals() != 0; }
-
-void core_trace_add(core_trace *t, const double *row)
-{
-    if (t->oom) return;
-    if (t->rows == t->cap) {
-        size_t cap = t->cap ? 2 * t->cap : 256;
-        double *v = realloc(t->v, cap * TRACE_COLS * sizeof *v);
-        if (!v) {
-            t->oom = 1;
-            return;
-        }
-        t->v = v;
-        t->cap = cap;
-    }
-    memcpy(t->v + t->rows * TRACE_COLS, row, TRACE_COLS * sizeof *row);
-    t->rows++;
-}
-
-PyObject *core_trace_take(core_trace *t, int cols)
-{
-    if (t->oom) {
-        free(t->v);
-        t->v = NULL;
-        return PyErr_NoMemory();
-    }
-    PyObject *tup = PyTuple_New(cols);
-    for (int c = 0; tup && c < cols; c++) {
-        const int whole = c == 0 || c == 3 || c == 4 || c == 9; /* iteration, moved, solved, near */
-        npy_intp dim = (npy_intp)t->rows;
-        PyObject *a = PyArray_SimpleNew(1, &dim, whole ? NPY_INT64 : NPY_DOUBLE);
-        if (!a) {
-            Py_CLEAR(tup);
-            break;
-        }
-        void *d = PyArray_DATA((PyArrayObject *)a);
-        for (size_t r = 0; r < t->rows; r++) {
-            const double v = t->v[r * TRACE_COLS + c];
-            if (whole) ((int64_t *)d)[r] = (int64_t)v;
-            else ((double *)d)[r] = v;
-        }
-        PyTuple_SET_ITEM(tup, c, a);
-    }
-    free(t->v);
-    t->v = NULL;
-    return tup;
-}
+#include "stoprule.h"
+#include "tracecols.h"
 
 /* load(path) -> (n, 2) float64 array. */
 static PyObject *core_load(PyObject *self, PyObject *args)
@@ -174,8 +76,8 @@ static PyMethodDef methods[] = {
     {"spectrum", core_spectrum, METH_VARARGS, "Power spectrum and its measures (see cfpo.analysis.spectrum)."},
     {"certify", core_certify, METH_VARARGS, "FPD certificate (see cfpo.analysis.certify)."},
     {"poisson", core_poisson, METH_VARARGS, "Poisson-disk baselines (see cfpo.baselines)."},
-    {"iterative", (PyCFunction)(void (*)(void))core_iterative, METH_VARARGS | METH_KEYWORDS,
-     "Iterative baselines (see cfpo.baselines)."},
+    {"iterative", core_iterative, METH_VARARGS, "Iterative baselines (see cfpo.baselines)."},
+    {"methods", core_methods, METH_NOARGS, "The baselines' descriptions: options, defaults, trace columns."},
     {"load", core_load, METH_VARARGS, "Reads a point file (see cfpo.load)."},
     {"save", core_save, METH_VARARGS, "Writes a point file (see cfpo.save)."},
     {"format_of", core_format_of, METH_VARARGS, "The point-file format of a file name."},
@@ -185,16 +87,49 @@ static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_core",
                                     "The C library of cfpo (sampler, analysis, baselines, point files).",
                                     -1, methods, NULL, NULL, NULL, NULL};
 
+/* trace_columns: cfpo's trace columns (src/tracecols.h); stop_options:
+ * {name: (lo, hi)} of the stop rules (src/stoprule.h), names as Python's
+ * keywords. */
+static int add_tables(PyObject *m)
+{
+    PyObject *cols = PyTuple_New(CFPO_TRACE_COLUMNS);
+    for (int c = 0; cols && c < CFPO_TRACE_COLUMNS; c++) {
+        PyObject *w = PyUnicode_FromString(cfpo_trace_columns[c].name);
+        if (!w) Py_CLEAR(cols);
+        else PyTuple_SET_ITEM(cols, c, w);
+    }
+    if (!cols || PyModule_AddObject(m, "trace_columns", cols) != 0) {
+        Py_XDECREF(cols);
+        return -1;
+    }
+    PyObject *stops = PyDict_New();
+    for (int i = 0; stops && i < 3; i++) {
+        char key[32];
+        snprintf(key, sizeof key, "%s", cfpo_stop_options[i].name);
+        for (char *p = key; *p; p++)
+            if (*p == '-') *p = '_';
+        PyObject *r = Py_BuildValue("(dd)", cfpo_stop_options[i].lo, cfpo_stop_options[i].hi);
+        if (!r || PyDict_SetItemString(stops, key, r) != 0) Py_CLEAR(stops);
+        Py_XDECREF(r);
+    }
+    if (!stops || PyModule_AddObject(m, "stop_options", stops) != 0) {
+        Py_XDECREF(stops);
+        return -1;
+    }
+    return 0;
+}
+
 PyMODINIT_FUNC PyInit__core(void)
 {
-    import_array();
+    if (core_import_numpy() != 0) return NULL;
     PyObject *m = PyModule_Create(&module);
     if (!m) return NULL;
     if (PyModule_AddStringConstant(m, "version", CFPO_VERSION) != 0 ||
         PyModule_AddStringConstant(m, "extensions", PF_EXTENSIONS) != 0 ||
         PyModule_AddIntConstant(m, "default_max_iter", CFPO_DEFAULT_MAX_ITER) != 0 ||
+        PyModule_AddIntConstant(m, "max_iter_max", CFPO_MAX_ITER_MAX) != 0 ||
         PyModule_AddObject(m, "tol_max", PyFloat_FromDouble(CFPO_TOL_MAX)) != 0 ||
-        core_baselines_defaults(m) != 0) {
+        PyModule_AddObject(m, "default_tol", PyFloat_FromDouble(CFPO_DEFAULT_TOL)) != 0 || add_tables(m) != 0) {
         Py_DECREF(m);
         return NULL;
     }

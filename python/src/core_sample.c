@@ -21,15 +21,6 @@ typedef struct {
     int failed;         /* an exception is set (Ctrl-C, the callback's) */
 } run_ctx;
 
-static PyObject *stats_dict(const cfpo_iter_stats *s, double elapsed)
-{
-    return Py_BuildValue("{s:i,s:d,s:d,s:L,s:L,s:d,s:d,s:d,s:d,s:i,s:O}", "iteration", s->iteration,
-                         "delta_min", s->delta_min, "delta_avg", s->delta_avg, "moved",
-                         (long long)s->moved, "solved", (long long)s->solved, "max_disp", s->max_disp,
-                         "seconds", s->seconds, "elapsed", elapsed, "max_move", s->max_move,
-                         "near", s->near, "converged", s->converged ? Py_True : Py_False);
-}
-
 /* Called by the engine after every iteration, on the calling thread with
  * the GIL released: takes the GIL for the checks only. */
 static int on_iteration(const cfpo_iter_stats *s, void *user)
@@ -37,15 +28,15 @@ static int on_iteration(const cfpo_iter_stats *s, void *user)
     run_ctx *c = user;
     const double el = cli_now() - c->t0;
     if (c->want_trace) {
-        const double row[TRACE_COLS] = {s->iteration, s->delta_min, s->delta_avg, (double)s->moved,
-                                        (double)s->solved, s->max_disp, s->seconds, el, s->max_move, s->near};
+        double row[CFPO_TRACE_COLUMNS];
+        cfpo_trace_values(s, el, row);
         core_trace_add(&c->trace, row);
     }
     PyEval_RestoreThread(c->ts);
     int stop = 0;
     if (!c->failed && core_interrupted()) c->failed = 1;
     if (!c->failed && c->callback != Py_None) {
-        PyObject *d = stats_dict(s, el);
+        PyObject *d = core_stats_dict(s, el, CFPO_TRACE_COLUMNS);
         PyObject *r = d ? PyObject_CallOneArg(c->callback, d) : NULL;
         Py_XDECREF(d);
         if (!r) c->failed = 1;
@@ -114,7 +105,7 @@ PyObject *core_run(PyObject *self, PyObject *args)
         Py_XDECREF(start);
         return core_error(vr == -2 ? PyExc_MemoryError : PyExc_ValueError, err);
     }
-    run_ctx c = {.callback = callback, .want_trace = want_trace};
+    run_ctx c = {.callback = callback, .want_trace = want_trace, .trace = {.cols = CFPO_TRACE_COLUMNS}};
     o.progress = on_iteration;
     o.user = &c;
     cfpo_result res;
@@ -145,7 +136,7 @@ PyObject *core_run(PyObject *self, PyObject *args)
         return NULL;
     }
     if (want_trace) {
-        if (!(trace = core_trace_take(&c.trace, TRACE_COLS))) {
+        if (!(trace = core_trace_take(&c.trace, cfpo_trace_columns, CFPO_TRACE_COLUMNS, NULL))) {
             Py_DECREF(points);
             return NULL;
         }
