@@ -50,16 +50,6 @@ static void sync_device(cfpo_engine *E)
     if (E->be->sync_device) E->be->sync_device(E);
 }
 
-void eng_fatal(cfpo_engine *E, const char *what)
-{
-    if (E->fail) {
-        snprintf(E->fail_msg, sizeof E->fail_msg, "out of memory while %s", what);
-        longjmp(*E->fail, 1);
-    }
-    fprintf(stderr, "cfpo: rank %d: out of memory while %s\n", E->rank, what);
-    comm_abort(1);
-}
-
 /* After the cells of colour C changed (points moved, or the grid moved
  * under them): mark the blocks that changed, send points that left the
  * tile, move points that changed cell, clear the masks, refresh the halo.
