@@ -1,35 +1,35 @@
-/* outdir.c - see outdir.h. The signal handler only calls unlink, rmdir,
- * signal and raise (async-signal-safe) on paths prepared in advance. */
+/* outdir.c - see outdir.h. The temporary folder and every name it may
+ * hold are registered with the suite's one signal handler (src/tmpguard.h),
+ * which unlinks the files and then removes the folder. */
 #define _POSIX_C_SOURCE 200809L
 #include "outdir.h"
 
 #include <dirent.h>
 #include <errno.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "tmpguard.h"
+
 static const char *names[AN_OUT_COUNT] = AN_OUT_NAMES;
 
 #define PATHMAX 4096
-static char sig_files[AN_OUT_COUNT][PATHMAX];
-static char sig_dir[PATHMAX];
-static volatile sig_atomic_t sig_armed = 0;
 
-static void remove_prepared(void)
+/* Registers (on = 1) or forgets (0) the temporary folder and the names it
+ * may hold with the signal handler. */
+static void guard(const an_outdir *o, int on)
 {
-    for (int i = 0; i < AN_OUT_COUNT; i++) unlink(sig_files[i]);
-    rmdir(sig_dir);
-}
-
-static void on_signal(int sig)
-{
-    if (sig_armed) remove_prepared();
-    signal(sig, SIG_DFL);
-    raise(sig);
+    char p[PATHMAX + 32];
+    for (int i = 0; i < AN_OUT_COUNT; i++)
+        if (snprintf(p, sizeof p, "%s/%s", o->tmp, names[i]) < (int)sizeof p) {
+            if (on) tmpguard_file(p);
+            else tmpguard_forget(p);
+        }
+    if (on) tmpguard_dir(o->tmp);
+    else tmpguard_forget(o->tmp);
 }
 
 static int known_name(const char *s)
@@ -88,21 +88,14 @@ int an_outdir_begin(an_outdir *o, const char *path, char *err, size_t errlen)
         return -1;
     }
     snprintf(o->tmp, len + 32, "%s.tmp.%ld", o->final, (long)getpid());
-    for (int i = 0; i < AN_OUT_COUNT; i++) snprintf(sig_files[i], PATHMAX, "%s/%s", o->tmp, names[i]);
-    snprintf(sig_dir, PATHMAX, "%s", o->tmp);
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
+    tmpguard_install();
     if (mkdir(o->tmp, 0777) != 0) {
         snprintf(err, errlen, "%s: cannot create the output folder: %s", o->final, strerror(errno));
         an_outdir_abort(o);
         return -1;
     }
     o->created = 1;
-    sig_armed = 1;
+    guard(o, 1);
     return 0;
 }
 
@@ -147,7 +140,7 @@ int an_outdir_commit(an_outdir *o, char *err, size_t errlen)
         an_outdir_abort(o);
         return -1;
     }
-    sig_armed = 0;
+    guard(o, 0);
     o->created = 0;
     if (replacing) remove_folder(old);
     free(o->tmp);
@@ -159,7 +152,7 @@ int an_outdir_commit(an_outdir *o, char *err, size_t errlen)
 void an_outdir_abort(an_outdir *o)
 {
     if (o->created) {
-        sig_armed = 0;
+        guard(o, 0);
         remove_folder(o->tmp);
         o->created = 0;
     }

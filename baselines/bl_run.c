@@ -3,6 +3,8 @@
 
 #include <string.h>
 
+#include "tmpguard.h"
+
 void bl_check_output_name(const char *prog, const char *out)
 {
     if (out && pf_format_of(out) == PF_UNKNOWN)
@@ -18,7 +20,7 @@ void bl_run_open(bl_run *r, const char *prog, const char *out, const char *trace
     r->out = out;
     r->trace = trace;
     r->n = n;
-    cli_guard_tmp(NULL);
+    tmpguard_install();
     if (out) {
         /* n == 0: probe that the folder takes a file now, write at the end. */
         pf_writer *w = pf_writer_open(out, n, err, sizeof err);
@@ -26,7 +28,7 @@ void bl_run_open(bl_run *r, const char *prog, const char *out, const char *trace
         if (n == 0) pf_writer_abort(w);
         else {
             r->w = w;
-            cli_guard_tmp(pf_writer_tmpname(w));
+            tmpguard_file(pf_writer_tmpname(w));
         }
     }
     if (trace) {
@@ -53,7 +55,7 @@ void bl_run_finish(bl_run *r, const double *xy, size_t n)
             if (pf_writer_put(r->w, xy, n, err, sizeof err) != 0 ||
                 pf_writer_commit(r->w, err, sizeof err) != 0)
                 cli_fail(r->prog, "%s", err);
-            cli_unguard_tmp(tmp);
+            tmpguard_forget(tmp);
             r->w = NULL;
         } else if (pf_write(r->out, xy, n, err, sizeof err) != 0) {
             cli_fail(r->prog, "%s", err);

@@ -23,6 +23,13 @@
  * (the adaptive variant's shift) so the same mark / migrate / relocate
  * steps re-bucket them.
  *
+ * What a backend does with each point follows the iteration's policy,
+ * E->pol (policy.h, set by the schedule before the iteration's first
+ * phase): the square (cfpo_policy_square, which also says when a point
+ * stays), the solver (the near solve with pol.near_cells cells, or
+ * LocalCFPO) and the over-relaxed spot (cfpo_policy_relax). A backend
+ * reads these and holds no decision of a variant's schedule itself.
+ *
  * The host steps (migration, halo, statistics, output, checkpoints) read
  * and write the engine's point arrays (px, py, pid, dq, start) directly.
  * A backend that keeps its own copy of the points (a GPU) makes them

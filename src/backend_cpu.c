@@ -1,6 +1,9 @@
 /* backend_cpu.c - the OpenMP backend (see backend.h): the cells of one
  * colour solved in parallel by the engine's threads, one cell a task, on
- * the host arrays; relocation by eng_relocate (engine_move.c). */
+ * the host arrays; relocation by eng_relocate (engine_move.c). What to do
+ * with each point (its square, which solver, over-relaxation) is the
+ * iteration's policy, E->pol (policy.h): this file holds no decision and
+ * no constant of the variants' schedules. */
 #include "backend.h"
 
 #include <math.h>
@@ -87,64 +90,6 @@ int eng_gather_block(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, 
     return m;
 }
 
-/* The square a point of a cell may move in, in the cell's frame; NULL
- * result (return 0) when the adaptive variant keeps the point where it is
- * (r0 + tol L >= 1.5 L: a hole no move inside the block can improve).
- * The adaptive square reaches no closer than thr to the points outside
- * the block (negative margins shrink it), so a move raises x's distance to
- * all of X, not only to Y(x): without this, points in holes (r0 > L) cycle
- * between spots forever. */
-static int square_for(const cfpo_engine *E, double thr, cfpo_square *Sx)
-{
-    *Sx = cfpo_grid_square(&E->G);
-    if (E->G.variant != CFPO_VARIANT_ADAPTIVE) return 1;
-    if (thr >= 1.5 * E->G.L) return 0;
-    const double ex = fmin(E->G.margin, E->G.L - thr);
-    *Sx = (cfpo_square){-ex, -ex, E->G.L + ex, E->G.L + ex};
-    return 1;
-}
-
-/* The adaptive variant's schedule (docs/method.md items 5 and 6), by
- * iteration: the near solves of iterations 1 to NEAR_TWO_UNTIL - 1 search
- * two Voronoi cells, later ones one; moves are over-relaxed from
- * RELAX_FROM on, with the strong weights before RELAX_STRONG_UNTIL and the
- * mild ones after. */
-#define NEAR_TWO_UNTIL 7
-#define RELAX_FROM 4
-#define RELAX_STRONG_UNTIL 20
-static const double relax_strong[2] = {3.0, 1.8}, relax_mild[2] = {1.8, 1.4};
-
-/* Over-relaxation, the adaptive variant's only (docs/method.md): the
- * solver's spot (*nx, *ny) is pushed on along the move, to x + w (spot - x)
- * for w = w[0], else w = w[1]: the first that lies in the square and is
- * farther than the floor from every other point of the block replaces the
- * spot; else the spot stays. Such a spot raises x's distance to all of X
- * just as the solver's does (the square keeps it at least thr from the
- * points outside the block), so delta(X) still never falls and the
- * iteration still cannot cycle. Pushing past the farthest spot gives up
- * some of x's own gain to leave room for its crowded neighbours, whose
- * moves come later in the sweep: like over-relaxed Gauss-Seidel, it
- * carries a move across many points in one sweep where exact moves need
- * many sweeps. Not in the first RELAX_FROM - 1 iterations: their long
- * moves, pushed on, print the grid on the set (a spike at frequency (g, 0)
- * that the later iterations take long to wash out). The strong pushes
- * (w = 3.0, else 1.8) carry the near phase's short moves further while
- * the set is far from converged; the mild ones (1.8, else 1.4) after
- * them converge in fewer iterations, to a higher delta_min. */
-static void over_relax(const double *w, const cfpo_square *Sx, const double *lxs, const double *lys, int m, int gi,
-                       double x, double y, double floor2, double *nx, double *ny)
-{
-    for (int q = 0; q < 2; q++) {
-        const double rx = x + w[q] * (*nx - x), ry = y + w[q] * (*ny - y);
-        if (rx >= Sx->x0 && rx <= Sx->x1 && ry >= Sx->y0 && ry <= Sx->y1 &&
-            cfpo_min_dist2(rx, ry, lxs, lys, m, gi) > floor2) {
-            *nx = rx;
-            *ny = ry;
-            return;
-        }
-    }
-}
-
 /* Point slot k moved by (ddx, ddy) in the frame of the cell at global
  * (cx, cy), to local (nx, ny): stores it, adds to its net displacement and
  * returns the mask bit of the cell that now holds it. */
@@ -174,11 +119,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     int off = 0;
     const int m = eng_gather_block(E, lx, ly, lxs, lys, &off);
     const double tolL = E->o.tol * E->G.L;
-    const int adaptive = E->G.variant == CFPO_VARIANT_ADAPTIVE;
-    const int near_cells = E->cur < NEAR_TWO_UNTIL ? 2 : 1;
-    const double *relax = !adaptive || E->cur < RELAX_FROM ? NULL
-                          : E->cur < RELAX_STRONG_UNTIL    ? relax_strong
-                                                           : relax_mild;
+    const cfpo_policy *P = &E->pol;
     int64_t moves = 0;
     unsigned mask = 0;
     for (uint32_t k = 0; k < e - s; k++) {
@@ -188,13 +129,13 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
         if (isinf(r02)) continue;
         const double thr = sqrt(r02) + tolL, floor2 = thr * thr;
         cfpo_square Sx;
-        if (!square_for(E, thr, &Sx)) continue;
+        if (!cfpo_policy_square(P, thr, &Sx)) continue;
         double nx, ny;
-        const double v = E->near ? cfpo_near_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol, near_cells)
+        const double v = P->near ? cfpo_near_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol, P->near_cells)
                                  : cfpo_local_solve(lxs, lys, m, gi, Sx, x, y, floor2, &nx, &ny, sol);
         (*solved)++;
         if (!(v > floor2)) continue;
-        if (relax) over_relax(relax, &Sx, lxs, lys, m, gi, x, y, floor2, &nx, &ny);
+        if (P->relax) cfpo_policy_relax(P, &Sx, lxs, lys, m, gi, x, y, floor2, &nx, &ny);
         lxs[gi] = nx;
         lys[gi] = ny;
         const double ddx = nx - x, ddy = ny - y, mv = ddx * ddx + ddy * ddy;

@@ -1,8 +1,10 @@
 /* cells.c - see cells.h: the engine's storage, grown on demand, its
- * memory model, and the change marks that drive skipping and the cached
- * statistics. */
+ * memory model, the change marks that drive skipping and the cached
+ * statistics, and eng_fatal, the way out when the storage cannot grow
+ * mid-run (every engine file above may call it; it calls only comm). */
 #include "cells.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "geom.h"
@@ -52,6 +54,18 @@ int eng_ensure_cap(cfpo_engine *E, size_t need)
 #undef GROW
     E->cap = cap;
     return 0;
+}
+
+/* Out of memory mid-run: back to cfpo_engine_run's setjmp (one rank), or
+ * the whole job ends (several ranks: every rank must stop). */
+void eng_fatal(cfpo_engine *E, const char *what)
+{
+    if (E->fail) {
+        snprintf(E->fail_msg, sizeof E->fail_msg, "out of memory while %s", what);
+        longjmp(*E->fail, 1);
+    }
+    fprintf(stderr, "cfpo: rank %d: out of memory while %s\n", E->rank, what);
+    comm_abort(1);
 }
 
 static inline void mark_cell(cfpo_engine *E, int64_t x, int64_t y)

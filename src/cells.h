@@ -5,10 +5,13 @@
  * May include engine.h and the layers below it.
  *
  * The engine is split by concept, each file on top of this one:
- *   cells.c           storage growth, the memory model, change marks
+ *   cells.c           storage growth, the memory model, change marks,
+ *                     eng_fatal (out of memory mid-run)
  *   engine.c          creation, getters, timing
  *   engine_schedule.c the colour schedule: phase, grid shift, sweep,
- *                     iteration and run loop (the host side of the seam)
+ *                     iteration and run loop (the host side of the seam);
+ *                     asks policy.c (layer 2) for each iteration's
+ *                     decisions, which the backends read from E->pol
  *   backend.h         the seam: the per-phase work a compute backend does
  *   backend_cpu.c     the OpenMP backend: solving the cells of a colour
  *   engine_move.c     points moving between cells, tiles and ranks
@@ -31,6 +34,7 @@
 
 #include "engine.h"
 #include "omp_compat.h"
+#include "policy.h"
 #include "rng.h"
 
 #define ARRIVE_BIT (1u << 9) /* mask: the cell receives points from other ranks */
@@ -40,9 +44,6 @@
 #define CENTRE_BIT (1u << 4)
 #define SUM_SCALE 16777216.0 /* nearest-neighbour distances summed in units of Delta / 2^24 */
 #define SB 8 /* statistics blocks: SB x SB cells */
-#define SHIFT_SALT 0x3c6ef372fe94f82aULL
-#define SHIFT_EVERY 4 /* the grid moves before iterations 1, 5, 9, ...; in between, skipping works */
-#define ADAPTIVE_THETA 0.7 /* the adaptive margin never reaches past L - 0.7 Delta(n) */
 
 typedef struct { /* a point on the move between ranks */
     double x, y;
@@ -121,6 +122,8 @@ struct cfpo_engine {
     double t_born;    /* when cfpo_engine_create_ex began */
     int shifting;     /* inside move_grid: cells hold points of the old grid */
     int cur;          /* the iteration under way (or last done) */
+    cfpo_policy pol;  /* iteration cur's decisions (policy.h): what every
+                         backend reads of the variant's schedule */
     double dmin_now;  /* delta_min / Delta(n) of the set as it stands (1 until measured) */
     uint64_t id_sum;  /* checksum of all ids (check mode) */
     /* timing and traffic */
@@ -290,7 +293,6 @@ int eng_make_initial(cfpo_engine *E, char *err, size_t errlen);
  * points almost surely has fewer than 20 in every cell. */
 #define CFPO_CELL_MAX 64
 int eng_take_points(cfpo_engine *E, const double *xy, char *err, size_t errlen);
-double eng_shift_of(const cfpo_grid *G, int k);
 int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen);
 int eng_write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err, size_t errlen);
 

@@ -8,6 +8,7 @@
 
 #include "cfpo.h"
 #include "grid.h"
+#include "policy.h"
 
 #define MAGIC_V2 "CFPOCKPT"
 #define MAGIC_V1 "CFPOCKP1"
@@ -102,7 +103,7 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
         return -1;
     }
     c->converged = (int)converged;
-    if (c->near && (c->converged || c->variant != CFPO_VARIANT_ADAPTIVE)) {
+    if (c->near && (c->converged || !cfpo_policy_starts_near(c->variant))) {
         snprintf(err, errlen, "%s: corrupt checkpoint: field near = 1 with %s", path,
                  c->converged ? "converged = 1" : "a variant that has no near phase");
         return -1;

@@ -5,7 +5,6 @@
 #include <errno.h>
 #include <getopt.h>
 #include <math.h>
-#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
@@ -139,51 +138,6 @@ int cli_parse_double(const char *s, double lo, double hi, double *out)
 
 /* ------------------------------------------------- errors and clean-up */
 
-#define MAX_GUARDED 4
-static char guarded[MAX_GUARDED][4096];
-static volatile sig_atomic_t guarded_used[MAX_GUARDED];
-
-static void remove_guarded(void)
-{
-    for (int i = 0; i < MAX_GUARDED; i++)
-        if (guarded_used[i]) unlink(guarded[i]);
-}
-
-static void on_signal(int sig)
-{
-    remove_guarded(); /* unlink is async-signal-safe */
-    signal(sig, SIG_DFL);
-    raise(sig);
-}
-
-void cli_guard_tmp(const char *path)
-{
-    static int installed = 0;
-    if (!installed) {
-        struct sigaction sa;
-        memset(&sa, 0, sizeof sa);
-        sa.sa_handler = on_signal;
-        sigaction(SIGINT, &sa, NULL);
-        sigaction(SIGTERM, &sa, NULL);
-        sigaction(SIGHUP, &sa, NULL);
-        installed = 1;
-    }
-    if (!path) return;
-    for (int i = 0; i < MAX_GUARDED; i++)
-        if (!guarded_used[i] && strlen(path) < sizeof guarded[i]) {
-            strcpy(guarded[i], path);
-            guarded_used[i] = 1;
-            return;
-        }
-}
-
-void cli_unguard_tmp(const char *path)
-{
-    if (!path) return;
-    for (int i = 0; i < MAX_GUARDED; i++)
-        if (guarded_used[i] && strcmp(guarded[i], path) == 0) guarded_used[i] = 0;
-}
-
 static int errors_quiet;
 static void (*exit_hook)(void);
 
@@ -211,7 +165,7 @@ static void vreport(const char *prog, const char *fmt, va_list ap)
 
 void cli_usage_error(const char *prog, const char *fmt, ...)
 {
-    remove_guarded();
+    tmpguard_clean();
     fflush(stdout);
     if (!errors_quiet) {
         fprintf(stderr, "%s: ", prog);
@@ -226,7 +180,7 @@ void cli_usage_error(const char *prog, const char *fmt, ...)
 
 void cli_fail(const char *prog, const char *fmt, ...)
 {
-    remove_guarded();
+    tmpguard_clean();
     va_list ap;
     va_start(ap, fmt);
     vreport(prog, fmt, ap);
@@ -333,26 +287,26 @@ void cli_print_summary(FILE *f, const cli_summary *s)
     fflush(f);
 }
 
-/* --------------------------------------------------------- atomic files */
+/* ------------------------------------------------- whole-or-nothing text files */
 
 int cli_atomic_open(cli_atomic *a, const char *path, char *err, size_t errlen)
 {
-    if (atomic_open(a, path, "w", err, errlen) != 0) return -1;
-    cli_guard_tmp(a->tmp);
+    if (safefile_open(a, path, "w", err, errlen) != 0) return -1;
+    tmpguard_file(a->tmp);
     return 0;
 }
 
 int cli_atomic_commit(cli_atomic *a, char *err, size_t errlen)
 {
     char *tmp = a->tmp ? strdup(a->tmp) : NULL;
-    const int rc = atomic_commit(a, err, errlen); /* renamed or removed */
-    if (tmp) cli_unguard_tmp(tmp);
+    const int rc = safefile_commit(a, err, errlen); /* renamed or removed */
+    if (tmp) tmpguard_forget(tmp);
     free(tmp);
     return rc;
 }
 
 void cli_atomic_abort(cli_atomic *a)
 {
-    if (a->tmp) cli_unguard_tmp(a->tmp);
-    atomic_abort(a);
+    if (a->tmp) tmpguard_forget(a->tmp);
+    safefile_abort(a);
 }

@@ -1,18 +1,22 @@
-/* cli.h - layer 2 (includes atomic.h, layer 0): conventions shared
- * by every command of the suite (cfpo, the baselines, the analysis tools).
+/* cli.h - layer 2 (includes safefile.h and tmpguard.h, layer 0):
+ * conventions shared by every command of the suite (cfpo, the baselines,
+ * the analysis tools).
  *
  * Owns: strict number parsing, the one-line error messages and exit codes
- * (0 success, 1 runtime failure, 2 usage error), the progress line on a
- * terminal, the machine-readable summary line, peak memory, atomic text
- * files (for traces) and removal of temporary files on SIGINT/SIGTERM.
- * Does not own: any method's options beyond these helpers. */
+ * (0 success, 1 runtime failure, 2 usage error; the temporaries registered
+ * with tmpguard removed first), the progress line on a terminal, the
+ * machine-readable summary line, peak memory, and whole-or-nothing text
+ * files (for traces) guarded by tmpguard.
+ * Does not own: any method's options beyond these helpers, the signal
+ * handler (tmpguard.c). */
 #ifndef CFPO_CLI_H
 #define CFPO_CLI_H
 
 #include <stdarg.h>
 #include <stdint.h>
 
-#include "atomic.h"
+#include "safefile.h"
+#include "tmpguard.h"
 #include <stdio.h>
 
 enum { CLI_OK = 0, CLI_FAIL = 1, CLI_USAGE = 2 };
@@ -37,7 +41,7 @@ uint64_t cli_arg_seed(const char *prog, const char *s);
 
 /* One line "prog: message" on stderr, then exit 2 (the line ends with a
  * pointer to --help) or 1.
- * Temporary files registered with cli_guard_tmp are removed first. */
+ * Temporary files registered with tmpguard are removed first. */
 struct option;
 /* The usage error for an option getopt_long refused (arg: the argument it
  * stopped at, argv[optind - 1]): "--name=VALUE" of an option that takes
@@ -53,12 +57,6 @@ void cli_fail(const char *prog, const char *fmt, ...)
  * = 1 on all but one rank keeps the message to one line; hook (may be
  * NULL) runs before exit, e.g. to end MPI cleanly. */
 void cli_set_exit(int quiet, void (*hook)(void));
-
-/* Registers (or with NULL, clears) a temporary file to unlink when the
- * process is interrupted or fails; installs SIGINT/SIGTERM handlers. At most
- * 4 at once. */
-void cli_guard_tmp(const char *path);
-void cli_unguard_tmp(const char *path);
 
 /* Peak resident memory of this process in bytes (0 if unknown). */
 uint64_t cli_peak_rss(void);
@@ -100,9 +98,10 @@ typedef struct {
 } cli_summary;
 void cli_print_summary(FILE *f, const cli_summary *s);
 
-/* Text file written under a temporary name (registered with the signal
- * clean-up) and renamed on commit: atomic.h's file. */
-typedef atomic_file cli_atomic;
+/* Text file written under a temporary name (registered with tmpguard, so
+ * a signal or an error exit removes it) and renamed on commit: safefile.h's
+ * file. */
+typedef safefile cli_atomic;
 int cli_atomic_open(cli_atomic *a, const char *path, char *err, size_t errlen);
 int cli_atomic_commit(cli_atomic *a, char *err, size_t errlen);
 void cli_atomic_abort(cli_atomic *a);

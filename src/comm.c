@@ -2,7 +2,7 @@
 #define _GNU_SOURCE
 #include "comm.h"
 
-#include "atomic.h"
+#include "safefile.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -316,7 +316,7 @@ static void free_file(comm_file *f)
 comm_file *comm_file_create(const char *path, char *err, size_t errlen)
 {
     comm_file *f = calloc(1, sizeof *f);
-    const size_t len = strlen(path) + 16; /* the temporary's name, as atomic_create makes it */
+    const size_t len = strlen(path) + 16; /* the temporary's name, as safefile_create makes it */
     if (!f || !(f->path = strdup(path)) || !(f->tmp = calloc(1, len))) {
         free_file(f);
         snprintf(err, errlen, "%s: out of memory", path);
@@ -328,7 +328,7 @@ comm_file *comm_file_create(const char *path, char *err, size_t errlen)
     int e = 0;
     if (rank == 0) {
         char *tmp = NULL;
-        const int fd = atomic_create(path, &tmp, err, errlen);
+        const int fd = safefile_create(path, &tmp, err, errlen);
         if (fd < 0) e = 1;
         else {
             snprintf(f->tmp, len, "%s", tmp);
@@ -522,7 +522,7 @@ int comm_file_finish(comm_file *f, int ok, char *err, size_t errlen)
 int comm_file_publish(comm_file *f, char *err, size_t errlen)
 {
     int64_t e = 0;
-    if (rank == 0 && atomic_replace(f->tmp, f->path) != 0) e = errno;
+    if (rank == 0 && safefile_replace(f->tmp, f->path) != 0) e = errno;
     comm_bcast(&e, sizeof e, 0);
     if (e) snprintf(err, errlen, "%s: cannot rename into place: %s", f->path, strerror((int)e));
     free_file(f);

@@ -1,4 +1,4 @@
-/* comm.h - layer 2 (includes nothing of the project; its code uses atomic.h): the only door to
+/* comm.h - layer 2 (includes nothing of the project; its code uses safefile.h): the only door to
  * MPI, the one file that calls it.
  *
  * Owns: starting and ending MPI (only when the program was started by a

@@ -119,7 +119,7 @@ static int load_points(cfpo_engine *E, char *err, size_t errlen)
     }
     E->iter0 = (int)info.iteration;
     E->cur = E->iter0;
-    E->G.shift = eng_shift_of(&E->G, E->iter0);
+    E->G.shift = cfpo_policy_shift(&E->G, E->iter0);
     E->resumed_converged = info.converged;
     E->near = info.near;
     return eng_load_checkpoint(E, err, errlen);
@@ -158,7 +158,7 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         cfpo_engine_free(E);
         return NULL;
     }
-    E->near = o->variant == CFPO_VARIANT_ADAPTIVE; /* a checkpoint says otherwise */
+    E->near = cfpo_policy_starts_near(o->variant); /* a checkpoint says otherwise */
     int rc = load_points(E, err, errlen);
     if (!comm_all(rc == 0)) {
         if (rc == 0) snprintf(err, errlen, "another rank failed to make its points");
@@ -172,6 +172,9 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         cfpo_engine_free(E);
         return NULL;
     }
+    /* The decisions of the iteration the engine stands at, until
+     * cfpo_engine_begin asks for the next one's. */
+    E->pol = cfpo_policy_at(&E->G, E->cur, E->near, E->dmin_now);
     if (cfg->check) start_checks(E);
     E->t_halo = 0;
     E->b_halo = 0;

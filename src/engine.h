@@ -9,8 +9,9 @@
  * skip flags, net displacements, the per-iteration statistics (reduced over
  * ranks), output in id order and checkpoints.
  * Does not own: choosing g or the initial points (grid, start), the cut
- * into tiles (tiles), the local solver (geom), MPI itself (comm), the
- * command line.
+ * into tiles (tiles), the local solver (geom), the variants' decisions
+ * for each iteration (policy: margin, grid shift, solver, over-relaxation),
+ * MPI itself (comm), the command line.
  * May include: cfpo_types.h (layer 0), geom.h (1), grid.h, tiles.h,
  * comm.h, pointfile.h (2). Never cfpo.h (the library's front, above).
  *
@@ -26,7 +27,9 @@
  * first. A second one (a GPU) plugs in by
  *   1. filling a cfpo_backend with its own functions (backend_<name>.c),
  *      keeping the per-cell order of the OpenMP backend (points of a cell
- *      in id order, the same solver source) so the bytes stay the same;
+ *      in id order, the same solver source) so the bytes stay the same,
+ *      and doing with each point what the iteration's policy says
+ *      (E->pol, policy.h: square, solver, over-relaxation);
  *   2. keeping the host arrays current where the host reads them, through
  *      its sync_host / sync_device functions (see backend.h);
  *   3. being chosen in cfpo_engine_create_ex (engine.c sets E->be).
@@ -76,9 +79,11 @@ uint64_t cfpo_engine_bytes_local(int64_t nlocal, int64_t cells, int64_t ring, in
 /* The same for the whole torus on one rank. */
 uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads);
 
-/* Prepares the coming iteration from the set as it stands: the net
- * displacements cleared and, in the adaptive variant, the margin (from
- * delta(X) as last measured by cfpo_engine_deltas) and the grid shift. Call before the phases of an iteration
+/* Prepares the coming iteration from the set as it stands: its decisions
+ * asked of the policy (policy.h; in the adaptive variant the margin from
+ * delta(X) as last measured by cfpo_engine_deltas, the grid shift, the
+ * solver and the over-relaxation), the grid moved to the shift, the net
+ * displacements cleared. Call before the phases of an iteration
  * (cfpo_engine_iterate does). */
 void cfpo_engine_begin(cfpo_engine *E);
 

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "ckpt.h"
-#include "cli.h"
+#include "tmpguard.h"
 
 static int read_header(const char *path, ckpt_header *c, char *err, size_t errlen)
 {
@@ -354,7 +354,7 @@ int eng_write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err
     if (!f) return -1;
     /* The temporary is removed on SIGINT/SIGTERM like the output's. */
     char *tmp = E->rank == 0 && comm_file_tmpname(f) ? strdup(comm_file_tmpname(f)) : NULL;
-    if (tmp) cli_guard_tmp(tmp);
+    if (tmp) tmpguard_file(tmp);
     ckpt_header c = {.version = CKPT_VERSION, .n = E->n, .seed = E->o.seed, .variant = E->o.variant,
                      .tol = E->o.tol, .iteration = iteration, .converged = converged ? 1 : 0, .near = E->near,
                      .crc = 0};
@@ -370,7 +370,7 @@ int eng_write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err
         ok = 0;
     }
     int rc = comm_file_commit(f, ok, err, errlen);
-    if (tmp) cli_unguard_tmp(tmp);
+    if (tmp) tmpguard_forget(tmp);
     free(tmp);
     return rc;
 }

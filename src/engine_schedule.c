@@ -1,7 +1,10 @@
 /* engine_schedule.c - the colour schedule: the phase (one colour, through
- * the backend's steps and the host's migration and halo), the adaptive
- * variant's margin and grid shift, the sweep (every colour once), the
- * iteration with its statistics and the run loop with its stop rules.
+ * the backend's steps and the host's migration and halo), moving the grid
+ * under the points, the sweep (every colour once), the iteration with its
+ * statistics and the run loop with its stop rules. Each iteration's
+ * decisions (margin, grid shift, solver, over-relaxation) come from the
+ * policy (policy.h), asked once per iteration in cfpo_engine_begin; the
+ * end of the near phase is its rule too.
  * The one colour loop of the project: cfpo, the library and cfpo-bench
  * all sweep through cfpo_engine_sweep.
  *
@@ -50,16 +53,6 @@ static void sync_device(cfpo_engine *E)
     if (E->be->sync_device) E->be->sync_device(E);
 }
 
-void eng_fatal(cfpo_engine *E, const char *what)
-{
-    if (E->fail) {
-        snprintf(E->fail_msg, sizeof E->fail_msg, "out of memory while %s", what);
-        longjmp(*E->fail, 1);
-    }
-    fprintf(stderr, "cfpo: rank %d: out of memory while %s\n", E->rank, what);
-    comm_abort(1);
-}
-
 /* After the cells of colour C changed (points moved, or the grid moved
  * under them): mark the blocks that changed, send points that left the
  * tile, move points that changed cell, clear the masks, refresh the halo.
@@ -98,14 +91,6 @@ int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
     return moves;
 }
 
-/* The adaptive variant's grid offset in iteration k (0 before the first). */
-double eng_shift_of(const cfpo_grid *G, int k)
-{
-    if (G->variant != CFPO_VARIANT_ADAPTIVE || k <= 0) return 0;
-    k -= (k - 1) % SHIFT_EVERY; /* the shift of the group of iterations k belongs to */
-    return G->L * cfpo_rand01(G->seed ^ SHIFT_SALT, (uint64_t)k, 0);
-}
-
 /* Moves the grid under the points to offset `shift` (both axes): colour by
  * colour, the points of each cell go to the cell that holds them now
  * (the same or a neighbour, as |change| < L), through the same steps as a
@@ -129,21 +114,16 @@ static void move_grid(cfpo_engine *E, double shift)
     }
 }
 
-/* The adaptive variant's margin for the coming iteration: S reaches
- * L - max(delta(X), theta Delta(n)) past the cell, the most the
- * convergence argument allows while delta(X) is large, and no more than
- * L - theta Delta(n) early on (delta(X) taken a hair high, so rounding
- * can only shrink S); the grid shift; then the backend's start of an
- * iteration. */
+/* The coming iteration's decisions, asked of the policy once (policy.h:
+ * from the iteration number, the phase and delta(X) as last measured),
+ * kept in E->pol for the backend; the margin they give; the grid moved to
+ * their shift; then the backend's start of an iteration. */
 void cfpo_engine_begin(cfpo_engine *E)
 {
     E->cur++;
-    if (E->G.variant == CFPO_VARIANT_ADAPTIVE) {
-        const double d = fmax(E->dmin_now * (1 + 1e-9), ADAPTIVE_THETA) * E->G.delta;
-        E->G.margin = d < E->G.L ? E->G.L - d : 0;
-        const double sh = eng_shift_of(&E->G, E->cur);
-        if (sh != E->G.shift) move_grid(E, sh);
-    }
+    E->pol = cfpo_policy_at(&E->G, E->cur, E->near, E->dmin_now);
+    E->G.margin = E->pol.margin;
+    if (E->pol.shift != E->G.shift) move_grid(E, E->pol.shift);
     E->be->begin(E);
 }
 
@@ -174,10 +154,11 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
     s->max_move = sqrt(mx[1]) / E->G.L;
     s->converged = cfpo_net_converged(v[0], s->max_disp, E->o.tol);
     s->near = E->near;
-    /* The near phase ends when its sweep moves no point by tol: the exact
-     * solver takes over, every cell solved again, and only its sweeps can
-     * end the run as converged (the same decision on every rank). */
-    if (E->near && s->converged) {
+    /* The near phase ends when its sweep moves no point by tol (policy.h):
+     * the exact solver takes over, every cell solved again, and only its
+     * sweeps can end the run as converged (the same decision on every
+     * rank, from the reduced counts). */
+    if (cfpo_policy_near_ends(E->near, s->converged)) {
         E->near = 0;
         s->converged = 0;
         for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;

@@ -4,7 +4,7 @@
 #include "pointfile.h"
 #include "npy.h"
 
-#include "atomic.h"
+#include "safefile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -84,7 +84,7 @@ static double swap_double(double v)
 /* ------------------------------------------------------------------ writer */
 
 struct pf_writer {
-    atomic_file a;  /* the temporary and the final name */
+    safefile a;  /* the temporary and the final name */
     pf_format fmt;
     size_t n, written;
 };
@@ -128,7 +128,7 @@ pf_writer *pf_writer_open(const char *path, size_t n, char *err, size_t errlen)
     }
     pf_writer *w = calloc(1, sizeof *w);
     if (!w) { set_err(err, errlen, "%s: out of memory", path); return NULL; }
-    if (atomic_open(&w->a, path, "wb", err, errlen) != 0) {
+    if (safefile_open(&w->a, path, "wb", err, errlen) != 0) {
         free(w);
         return NULL;
     }
@@ -174,15 +174,15 @@ int pf_writer_finish(pf_writer *w, char *err, size_t errlen)
 {
     if (w->written != w->n) {
         set_err(err, errlen, "%s: %zu points written, %zu announced", w->a.path, w->written, w->n);
-        atomic_abort(&w->a);
+        safefile_abort(&w->a);
         return -1;
     }
-    return atomic_finish(&w->a, err, errlen);
+    return safefile_finish(&w->a, err, errlen);
 }
 
 int pf_writer_publish(pf_writer *w, char *err, size_t errlen)
 {
-    const int rc = w->a.tmp ? atomic_publish(&w->a, err, errlen) : -1;
+    const int rc = w->a.tmp ? safefile_publish(&w->a, err, errlen) : -1;
     free(w);
     return rc;
 }
@@ -199,7 +199,7 @@ int pf_writer_commit(pf_writer *w, char *err, size_t errlen)
 void pf_writer_abort(pf_writer *w)
 {
     if (!w) return;
-    atomic_abort(&w->a);
+    safefile_abort(&w->a);
     free(w);
 }
 

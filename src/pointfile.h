@@ -1,4 +1,4 @@
-/* pointfile.h - layer 2 (its code uses atomic.h, layer 0): the one module
+/* pointfile.h - layer 2 (its code uses safefile.h, layer 0): the one module
  * that reads and writes point files.
  *
  * Owns: the four formats (text "x y" lines with '#' comments, CSV (a header

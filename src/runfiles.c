@@ -9,6 +9,7 @@
 #include "cli.h"
 #include "comm.h"
 #include "pointfile.h"
+#include "tmpguard.h"
 #include "tracecols.h"
 
 struct cfpo_runfiles {
@@ -69,18 +70,18 @@ int cfpo_runfiles_check(const char *out, const char *trace, const char *checkpoi
 /* Opens the points' temporary; 0 on every rank or -1 on every rank. */
 static int open_points(cfpo_runfiles *f, const char *out, char *err, size_t errlen)
 {
-    cli_guard_tmp(NULL);
+    tmpguard_install();
     if (!out) return 0;
     f->fmt = pf_format_of(out);
     if (pf_format_is_text(f->fmt)) {
         f->w = pf_writer_open(out, (size_t)f->n, err, errlen);
         if (!f->w) return -1;
-        cli_guard_tmp(pf_writer_tmpname(f->w));
+        tmpguard_file(pf_writer_tmpname(f->w));
         return 0;
     }
     f->cf = comm_file_create(out, err, errlen);
     if (!f->cf) return -1;
-    if (comm_rank() == 0) cli_guard_tmp(comm_file_tmpname(f->cf));
+    if (comm_rank() == 0) tmpguard_file(comm_file_tmpname(f->cf));
     return 0;
 }
 
@@ -90,7 +91,7 @@ static int probe_checkpoint(const char *path, char *err, size_t errlen)
     int ok = 1;
     if (comm_rank() == 0) {
         char *tmp = NULL;
-        const int fd = atomic_create(path, &tmp, err, errlen);
+        const int fd = safefile_create(path, &tmp, err, errlen);
         ok = fd >= 0;
         if (ok) {
             close(fd);
@@ -183,7 +184,7 @@ static int finish_all(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen
     int rc = 0;
     if (f->w) rc = finish_text(f, E, err, errlen);
     else if (f->cf) rc = finish_shared(f, E, err, errlen);
-    if (rc == 0 && f->traced && comm_rank() == 0 && atomic_finish(&f->tr, err, errlen) != 0) {
+    if (rc == 0 && f->traced && comm_rank() == 0 && safefile_finish(&f->tr, err, errlen) != 0) {
         f->traced = 0; /* removed */
         rc = -1;
     }
@@ -211,12 +212,12 @@ int cfpo_runfiles_commit(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t err
     else if (f->cf) rc = comm_file_publish(f->cf, err, errlen);
     f->w = NULL;
     f->cf = NULL;
-    if (ptmp[0]) cli_unguard_tmp(ptmp);
+    if (ptmp[0]) tmpguard_forget(ptmp);
     if (f->traced && comm_rank() == 0) {
         char ttmp[4096];
         snprintf(ttmp, sizeof ttmp, "%s", f->tr.tmp);
-        if (atomic_publish(&f->tr, err, errlen) != 0) rc = -1;
-        cli_unguard_tmp(ttmp);
+        if (safefile_publish(&f->tr, err, errlen) != 0) rc = -1;
+        tmpguard_forget(ttmp);
     }
     free(f);
     return rc;

@@ -1,5 +1,5 @@
-/* atomic.c - see atomic.h. */
-#include "atomic.h"
+/* safefile.c - see safefile.h. */
+#include "safefile.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -7,7 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-int atomic_create(const char *path, char **tmp, char *err, size_t errlen)
+int safefile_create(const char *path, char **tmp, char *err, size_t errlen)
 {
     *tmp = NULL;
     struct stat st;
@@ -33,7 +33,7 @@ int atomic_create(const char *path, char **tmp, char *err, size_t errlen)
     return fd;
 }
 
-int atomic_replace(const char *tmp, const char *path)
+int safefile_replace(const char *tmp, const char *path)
 {
     if (rename(tmp, path) == 0) return 0;
     const int e = errno ? errno : EIO;
@@ -42,7 +42,7 @@ int atomic_replace(const char *tmp, const char *path)
     return -1;
 }
 
-int atomic_open(atomic_file *a, const char *path, const char *mode, char *err, size_t errlen)
+int safefile_open(safefile *a, const char *path, const char *mode, char *err, size_t errlen)
 {
     memset(a, 0, sizeof *a);
     a->path = strdup(path);
@@ -50,20 +50,20 @@ int atomic_open(atomic_file *a, const char *path, const char *mode, char *err, s
         snprintf(err, errlen, "%s: out of memory", path);
         return -1;
     }
-    const int fd = atomic_create(path, &a->tmp, err, errlen);
+    const int fd = safefile_create(path, &a->tmp, err, errlen);
     if (fd >= 0) a->f = fdopen(fd, mode);
     if (fd >= 0 && !a->f) {
         snprintf(err, errlen, "%s: cannot open file: %s", path, strerror(errno));
         close(fd);
     }
     if (!a->f) {
-        atomic_abort(a);
+        safefile_abort(a);
         return -1;
     }
     return 0;
 }
 
-int atomic_finish(atomic_file *a, char *err, size_t errlen)
+int safefile_finish(safefile *a, char *err, size_t errlen)
 {
     errno = 0;
     int bad = fflush(a->f) != 0 || ferror(a->f);
@@ -71,17 +71,17 @@ int atomic_finish(atomic_file *a, char *err, size_t errlen)
     a->f = NULL;
     if (bad) {
         snprintf(err, errlen, "%s: write failed: %s", a->path, strerror(errno ? errno : EIO));
-        atomic_abort(a);
+        safefile_abort(a);
         return -1;
     }
     return 0;
 }
 
-int atomic_publish(atomic_file *a, char *err, size_t errlen)
+int safefile_publish(safefile *a, char *err, size_t errlen)
 {
-    if (atomic_replace(a->tmp, a->path) != 0) {
+    if (safefile_replace(a->tmp, a->path) != 0) {
         snprintf(err, errlen, "%s: write failed: %s", a->path, strerror(errno));
-        atomic_abort(a);
+        safefile_abort(a);
         return -1;
     }
     free(a->path);
@@ -90,13 +90,13 @@ int atomic_publish(atomic_file *a, char *err, size_t errlen)
     return 0;
 }
 
-int atomic_commit(atomic_file *a, char *err, size_t errlen)
+int safefile_commit(safefile *a, char *err, size_t errlen)
 {
-    if (atomic_finish(a, err, errlen) != 0) return -1;
-    return atomic_publish(a, err, errlen);
+    if (safefile_finish(a, err, errlen) != 0) return -1;
+    return safefile_publish(a, err, errlen);
 }
 
-void atomic_abort(atomic_file *a)
+void safefile_abort(safefile *a)
 {
     if (a->f) fclose(a->f);
     if (a->tmp) unlink(a->tmp);

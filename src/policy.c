@@ -1,0 +1,90 @@
+/* policy.c - see policy.h: the constants of the adaptive schedule and the
+ * functions that turn them into one iteration's decisions. Why each value
+ * was chosen, and what was measured against the alternatives, is in
+ * docs/method.md ("--variant adaptive"). */
+#include "policy.h"
+
+#include "rng.h"
+
+/* Near solves search two Voronoi cells before this iteration, one after. */
+#define NEAR_TWO_UNTIL 7
+/* Moves are over-relaxed from this iteration on ... */
+#define RELAX_FROM 4
+/* ... with the strong weights before this one and the mild ones after. */
+#define RELAX_STRONG_UNTIL 20
+static const double relax_strong[2] = {3.0, 1.8}, relax_mild[2] = {1.8, 1.4};
+/* The adaptive margin never reaches past L - THETA Delta(n) ... */
+#define THETA 0.7
+/* ... and takes delta(X) this hair high, so rounding can only shrink S. */
+#define DMIN_UP 1e-9
+/* A point whose t = r0 + tol L reaches FREEZE L stays where it is. */
+#define FREEZE 1.5
+/* The grid moves before iterations 1, 5, 9, ...; in between, skipping works. */
+#define SHIFT_EVERY 4
+#define SHIFT_SALT 0x3c6ef372fe94f82aULL
+
+double cfpo_policy_shift(const cfpo_grid *G, int k)
+{
+    if (G->variant != CFPO_VARIANT_ADAPTIVE || k <= 0) return 0;
+    k -= (k - 1) % SHIFT_EVERY; /* the first iteration of k's group */
+    return G->L * cfpo_rand01(G->seed ^ SHIFT_SALT, (uint64_t)k, 0);
+}
+
+int cfpo_policy_starts_near(int variant) { return variant == CFPO_VARIANT_ADAPTIVE; }
+
+int cfpo_policy_near_ends(int near, int converged) { return near && converged; }
+
+/* S reaches L - max(delta(X), THETA Delta(n)) past the cell: the most the
+ * convergence argument allows while delta(X) is large, and no more than
+ * L - THETA Delta(n) early on. */
+static double adaptive_margin(const cfpo_grid *G, double dmin)
+{
+    const double d = fmax(dmin * (1 + DMIN_UP), THETA) * G->delta;
+    return d < G->L ? G->L - d : 0;
+}
+
+cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
+{
+    cfpo_policy P = {.iteration = k, .L = G->L, .margin = G->margin, .shift = 0};
+    if (G->variant != CFPO_VARIANT_ADAPTIVE) return P;
+    P.margin = adaptive_margin(G, dmin);
+    P.shift = cfpo_policy_shift(G, k);
+    P.cut = 1;
+    P.freeze = FREEZE * G->L;
+    P.near = near != 0;
+    P.near_cells = P.near ? (k < NEAR_TWO_UNTIL ? 2 : 1) : 0;
+    if (k >= RELAX_FROM) {
+        const double *w = k < RELAX_STRONG_UNTIL ? relax_strong : relax_mild;
+        P.relax = 2;
+        P.w[0] = w[0];
+        P.w[1] = w[1];
+    }
+    return P;
+}
+
+/* Why over-relaxation keeps the iteration from cycling: the spot taken is
+ * in the square and farther than the floor from every point of the block,
+ * so (the square keeps it at least t from the points outside the block) it
+ * raises x's distance to all of X just as the solver's does. Pushing past
+ * the farthest spot gives up some of x's own gain to leave room for its
+ * crowded neighbours, whose moves come later in the sweep: like
+ * over-relaxed Gauss-Seidel, it carries a move across many points in one
+ * sweep where exact moves need many sweeps. Not in the first iterations:
+ * their long moves, pushed on, print the grid on the set (a spike at
+ * frequency (g, 0) that the later iterations take long to wash out). The
+ * strong weights carry the near phase's short moves further while the set
+ * is far from converged; the mild ones after them converge in fewer
+ * iterations, to a higher delta_min. */
+void cfpo_policy_relax(const cfpo_policy *P, const cfpo_square *S, const double *bx, const double *by, int m,
+                       int self, double x, double y, double floor2, double *nx, double *ny)
+{
+    for (int q = 0; q < P->relax; q++) {
+        const double rx = x + P->w[q] * (*nx - x), ry = y + P->w[q] * (*ny - y);
+        if (rx >= S->x0 && rx <= S->x1 && ry >= S->y0 && ry <= S->y1 &&
+            cfpo_min_dist2(rx, ry, bx, by, m, self) > floor2) {
+            *nx = rx;
+            *ny = ry;
+            return;
+        }
+    }
+}

@@ -1,0 +1,103 @@
+/* policy.h - layer 2 (may include cfpo_types.h, geom.h, rng.h, grid.h):
+ * the variants' per-iteration policy, in one place.
+ *
+ * Owns: every decision of the adaptive variant's schedule (docs/method.md,
+ * "--variant adaptive", items 2, 3 and 5-7) and the same decisions for the
+ * paper's and the simplified variants (fixed margin, no shift, exact
+ * solves, no over-relaxation), as pure functions of the grid (variant, L,
+ * Delta(n), seed), the iteration and the run's statistics (delta(X) as last
+ * measured; whether the near phase still runs, which the statistics of an
+ * earlier sweep ended). The schedule (engine_schedule.c) asks
+ * cfpo_policy_at once per iteration and keeps the answer in the engine;
+ * every backend reads it from there and applies the two per-point rules
+ * below (the square a point may move in, and the over-relaxed spot), so no
+ * backend holds a constant or a decision of the schedule. As functions of
+ * the iteration number and of reduced statistics only, the decisions are
+ * the same on every rank and thread, and a run resumed from a checkpoint
+ * makes them as the uninterrupted run does.
+ *
+ * The adaptive schedule, iteration k (1-based):
+ *   k        the near solve searches   moves over-relaxed with w =
+ *   1-3      2 Voronoi cells           (none: the solver's spot)
+ *   4-6      2                         3.0, else 1.8
+ *   7-19     1                         3.0, else 1.8
+ *   20 on    1                         1.8, else 1.4
+ * The near solve runs from the first iteration until a near sweep
+ * converges, LocalCFPO after it (its cells column matters only before).
+ * The grid moves to a new random offset in [0, L) before iterations 1, 5,
+ * 9, ... (4j + 1) and stays for the next three. The margin of every
+ * iteration is L - max(delta(X) (1 + 1e-9), 0.7 Delta(n)), at least 0;
+ * each point's square is cut to a margin of min(margin, L - t),
+ * t = r0 + tol L, and a point with t >= 1.5 L stays where it is.
+ * Does not own: the adaptive start (start.c), the tolerance's default
+ * (cfpo_types.h), the solvers (geom.h), applying a shift (the schedule). */
+#ifndef CFPO_POLICY_H
+#define CFPO_POLICY_H
+
+#include <math.h>
+
+#include "cfpo_types.h"
+#include "geom.h"
+#include "grid.h"
+
+/* The decisions for one iteration. */
+typedef struct {
+    int iteration;  /* k, the iteration they are for (0: before the first) */
+    double L;       /* the cell side, for the per-point rules */
+    double margin;  /* how far S reaches past the cell: the grid's fixed
+                       margin (paper, simplified) or the adaptive one */
+    double shift;   /* the grid's offset on both axes in this iteration */
+    int cut;        /* 1: each point's square is cut to keep it t from the
+                       points beyond its block (adaptive) */
+    double freeze;  /* with cut: a point whose t reaches this stays (1.5 L) */
+    int near;       /* 1: the near solve (cfpo_near_solve); 0: LocalCFPO */
+    int near_cells; /* with near: the Voronoi cells it searches (2 or 1) */
+    int relax;      /* the over-relaxation weights to try, in order: 0 or 2 */
+    double w[2];
+} cfpo_policy;
+
+/* The decisions for iteration k of a run of grid G, the run being in its
+ * near phase (near) with delta(X) / Delta(n) = dmin as last measured (1
+ * before the first measurement). A pure function of its arguments. */
+cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin);
+
+/* The grid's offset in iteration k (0 before the first, and always 0 but
+ * in the adaptive variant): one random offset in [0, L) for each group of
+ * four iterations 4j + 1 .. 4j + 4, from the generator keyed by the seed. */
+double cfpo_policy_shift(const cfpo_grid *G, int k);
+
+/* Whether a run of this variant starts in the near phase (adaptive). */
+int cfpo_policy_starts_near(int variant);
+
+/* Whether the near phase ends after a sweep whose statistics say
+ * `converged` (no point moved by tol L): then every cell is solved again
+ * by LocalCFPO, and the sweep does not count as converged. */
+int cfpo_policy_near_ends(int near, int converged);
+
+/* The square a point may move in, in its cell's frame (cell = [0, L]^2),
+ * for a point at distance r0 from its nearest neighbour in the block, with
+ * t = r0 + tol L: the cell grown by the margin, or, with P->cut, by
+ * min(margin, L - t) (negative: shrunk), so that every spot of it is at
+ * least t from every point beyond the 3x3 block and a move raises the
+ * point's distance to all of X (docs/method.md, item 2). Returns 0 when
+ * the point stays (t >= 1.5 L: a hole no move inside the block improves). */
+static inline int cfpo_policy_square(const cfpo_policy *P, double t, cfpo_square *S)
+{
+    double e = P->margin;
+    if (P->cut) {
+        if (t >= P->freeze) return 0;
+        e = fmin(P->margin, P->L - t);
+    }
+    *S = (cfpo_square){-e, -e, P->L + e, P->L + e};
+    return 1;
+}
+
+/* Over-relaxation (docs/method.md, item 5): the solver's spot (*nx, *ny)
+ * for the point (x, y) of block (bx, by)[0, m), index self, is pushed on
+ * along the move to x + w (spot - x) for the first weight w of P->w whose
+ * spot lies in S and is farther than sqrt(floor2) from every other point
+ * of the block; else the spot stays. Nothing when P->relax is 0. */
+void cfpo_policy_relax(const cfpo_policy *P, const cfpo_square *S, const double *bx, const double *by, int m,
+                       int self, double x, double y, double floor2, double *nx, double *ny);
+
+#endif

@@ -1,0 +1,253 @@
+/* test_policy.c - the variants' per-iteration policy (src/policy.h).
+ *
+ * Properties: the adaptive decisions by iteration are the schedule
+ * docs/method.md documents (near solves in two cells in iterations 1-6,
+ * one after; no over-relaxation in 1-3, w = 3.0 else 1.8 in 4-19, 1.8
+ * else 1.4 from 20; one grid offset in [0, L) per group of four
+ * iterations 4j + 1 .. 4j + 4, a new one at each group's first, none
+ * before iteration 1); the margin is L - max(delta(X), 0.7 Delta(n)) up
+ * to a relative 1e-9 and never reaches past L - delta(X) (the convergence
+ * argument's bound) nor below 0; the per-point square keeps every spot at
+ * least t from the points beyond the block, and a point with t >= 1.5 L
+ * stays; over-relaxation takes the first weight whose spot is in the
+ * square and clear of the floor, else keeps the solver's spot; the paper's
+ * and the simplified variants get the fixed margin, no shift, exact solves
+ * and no push; the near phase starts only in the adaptive variant and ends
+ * at its first converged sweep; and every function is pure (the same
+ * arguments give the same decisions, whatever was asked in between). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "grid.h"
+#include "policy.h"
+#include "testutil.h"
+
+static int passed_, failed_;
+
+static int same_policy(const cfpo_policy *a, const cfpo_policy *b)
+{
+    return a->iteration == b->iteration && a->L == b->L && a->margin == b->margin && a->shift == b->shift &&
+           a->cut == b->cut && a->freeze == b->freeze && a->near == b->near && a->near_cells == b->near_cells &&
+           a->relax == b->relax && (a->relax < 1 || a->w[0] == b->w[0]) && (a->relax < 2 || a->w[1] == b->w[1]);
+}
+
+static cfpo_grid grid(int64_t n, int variant, uint64_t seed)
+{
+    cfpo_grid G;
+    char err[256];
+    if (cfpo_grid_init(&G, n, variant, seed, err, sizeof err) != 0) fprintf(stderr, "%s\n", err);
+    return G;
+}
+
+/* The documented table, row by row: iterations [from, to], the near
+ * solve's cells, the weights (0: no over-relaxation). */
+static const struct {
+    int from, to, cells;
+    double w0, w1;
+} table[] = {
+    {1, 3, 2, 0, 0},
+    {4, 6, 2, 3.0, 1.8},
+    {7, 19, 1, 3.0, 1.8},
+    {20, 2000, 1, 1.8, 1.4},
+};
+
+static void test_schedule_table(void)
+{
+    const cfpo_grid G = grid(65536, CFPO_VARIANT_ADAPTIVE, 3);
+    int bad = 0, rows = 0;
+    for (size_t r = 0; r < sizeof table / sizeof table[0]; r++)
+        for (int k = table[r].from; k <= table[r].to; k++) {
+            rows++;
+            const cfpo_policy P = cfpo_policy_at(&G, k, 1, 0.9);
+            const int want_relax = table[r].w0 > 0 ? 2 : 0;
+            if (P.iteration != k || !P.near || P.near_cells != table[r].cells || P.relax != want_relax ||
+                (want_relax && (P.w[0] != table[r].w0 || P.w[1] != table[r].w1)) || !P.cut ||
+                P.freeze != 1.5 * G.L || P.L != G.L) {
+                if (bad++ < 5)
+                    fprintf(stderr, "iteration %d: near %d cells %d relax %d w %g %g cut %d\n", k, P.near,
+                            P.near_cells, P.relax, P.w[0], P.w[1], P.cut);
+            }
+            /* Out of the near phase, the solver is LocalCFPO; the rest holds. */
+            const cfpo_policy Q = cfpo_policy_at(&G, k, 0, 0.9);
+            if (Q.near || Q.relax != P.relax || Q.margin != P.margin || Q.shift != P.shift) bad++;
+        }
+    CHECK(bad == 0, "adaptive decisions differ from the documented table in %d of %d iterations", bad, rows);
+}
+
+static void test_shift(void)
+{
+    int bad = 0, groups = 0;
+    for (uint64_t seed = 1; seed <= 4; seed++) {
+        const cfpo_grid G = grid(4096 * seed, CFPO_VARIANT_ADAPTIVE, seed);
+        if (cfpo_policy_shift(&G, 0) != 0 || cfpo_policy_at(&G, 0, 1, 1).shift != 0) bad++;
+        double prev = 0;
+        for (int k = 1; k <= 400; k++) {
+            const double s = cfpo_policy_shift(&G, k);
+            if (!(s >= 0 && s < G.L)) bad++;
+            if (cfpo_policy_at(&G, k, 1, 0.5).shift != s) bad++;
+            if ((k - 1) % 4 == 0) { /* a group's first iteration: a new offset */
+                groups++;
+                if (s == prev) bad++;
+            } else if (s != prev) bad++;
+            prev = s;
+        }
+        const cfpo_grid H = grid(4096 * seed, CFPO_VARIANT_ADAPTIVE, seed + 100);
+        if (cfpo_policy_shift(&H, 1) == cfpo_policy_shift(&G, 1)) bad++; /* the seed keys it */
+    }
+    CHECK(bad == 0, "grid shift: %d violations over %d groups of four iterations", bad, groups);
+}
+
+static void test_margin(void)
+{
+    int bad = 0, tried = 0;
+    for (int64_t n = 100; n <= 1 << 20; n *= 3) {
+        const cfpo_grid G = grid(n, CFPO_VARIANT_ADAPTIVE, 1);
+        const double early = cfpo_policy_at(&G, 1, 1, 0.1).margin;
+        if (fabs(early - (G.L - 0.7 * G.delta)) > 1e-15) bad++;
+        double last = INFINITY;
+        for (double dmin = 0; dmin <= 2.0; dmin += 1.0 / 64) {
+            tried++;
+            const double e = cfpo_policy_at(&G, 7, 1, dmin).margin;
+            if (e != cfpo_policy_at(&G, 300, 0, dmin).margin) bad++; /* the iteration does not matter */
+            /* The convergence argument's bound: S reaches no further than
+             * L - delta(X) past the cell; early, no further than
+             * L - 0.7 Delta(n) (up to rounding). */
+            if (e < 0 || e > fmax(0, G.L - dmin * G.delta) || e + 0.7 * G.delta > G.L * (1 + 1e-15)) bad++;
+            if (e > last) bad++; /* a larger delta(X), no larger margin */
+            const double want = fmax(0, G.L - fmax(dmin, 0.7) * G.delta);
+            if (fabs(e - want) > 2e-9 * G.delta) bad++;
+            last = e;
+        }
+    }
+    CHECK(bad == 0, "adaptive margin: %d violations in %d cases", bad, tried);
+}
+
+static void test_square(void)
+{
+    const cfpo_grid G = grid(65536, CFPO_VARIANT_ADAPTIVE, 1);
+    const cfpo_policy P = cfpo_policy_at(&G, 10, 1, 0.8);
+    int bad = 0, stays = 0, tried = 0;
+    for (double t = 0; t < 2 * G.L; t += G.L / 256) {
+        tried++;
+        cfpo_square S;
+        const int moves = cfpo_policy_square(&P, t, &S);
+        if (!moves) {
+            stays++;
+            if (t < 1.5 * G.L) bad++;
+            continue;
+        }
+        if (t >= 1.5 * G.L) bad++;
+        /* Every spot of S at least t from the points beyond the 3x3 block. */
+        const double tt = t * (1 - 1e-12); /* up to rounding */
+        if (S.x0 + G.L < tt || 2 * G.L - S.x1 < tt || S.y0 + G.L < tt || 2 * G.L - S.y1 < tt) bad++;
+        /* No farther than the margin, and square about the cell. */
+        if (-S.x0 > P.margin || S.x1 - G.L > P.margin * (1 + 1e-12) || S.x0 != S.y0 || S.x1 != S.y1 ||
+            fabs((S.x1 - G.L) + S.x0) > 1e-15)
+            bad++;
+        if (t <= G.L - P.margin && S.x0 != -P.margin) bad++; /* the margin itself when t allows it */
+    }
+    CHECK(bad == 0 && stays > 0, "adaptive square: %d violations in %d cases (%d stayed)", bad, tried, stays);
+    /* The paper's variant: the cell grown by L - Delta(n), whatever t. */
+    const cfpo_grid H = grid(65536, CFPO_VARIANT_PAPER, 1);
+    const cfpo_policy Q = cfpo_policy_at(&H, 10, 0, 0.8);
+    cfpo_square S;
+    const cfpo_square want = cfpo_grid_square(&H);
+    CHECK(cfpo_policy_square(&Q, 1.9 * H.L, &S) == 1 && memcmp(&S, &want, sizeof S) == 0,
+          "paper square [%g %g %g %g], want the grid's", S.x0, S.y0, S.x1, S.y1);
+}
+
+static void test_relax(void)
+{
+    const cfpo_grid G = grid(65536, CFPO_VARIANT_ADAPTIVE, 1);
+    const double L = G.L;
+    /* x at the cell's centre, one other point at its lower-left corner. */
+    const double bx[2] = {0.5 * L, 0}, by[2] = {0.5 * L, 0};
+    const double x = bx[0], y = by[0], floor2 = (0.2 * L) * (0.2 * L);
+    const cfpo_square S = {-0.2 * L, -0.2 * L, 1.2 * L, 1.2 * L};
+    double nx, ny;
+    int bad = 0;
+    /* Before iteration 4: the solver's spot. */
+    cfpo_policy P = cfpo_policy_at(&G, 3, 1, 0.5);
+    nx = 0.6 * L, ny = 0.5 * L;
+    cfpo_policy_relax(&P, &S, bx, by, 2, 0, x, y, floor2, &nx, &ny);
+    if (nx != 0.6 * L || ny != 0.5 * L) bad++;
+    /* Iteration 4: w = 3.0 (to 0.8 L). */
+    P = cfpo_policy_at(&G, 4, 1, 0.5);
+    nx = 0.6 * L, ny = 0.5 * L;
+    cfpo_policy_relax(&P, &S, bx, by, 2, 0, x, y, floor2, &nx, &ny);
+    if (nx != x + 3.0 * (0.6 * L - x) || ny != 0.5 * L) bad++;
+    /* w = 3.0 leaves the square (to 1.4 L), w = 1.8 does not (to 1.04 L). */
+    nx = 0.8 * L, ny = 0.5 * L;
+    cfpo_policy_relax(&P, &S, bx, by, 2, 0, x, y, floor2, &nx, &ny);
+    if (nx != x + 1.8 * (0.8 * L - x)) bad++;
+    /* Iteration 20: the mild weights, 1.8 then 1.4. */
+    P = cfpo_policy_at(&G, 20, 0, 0.5);
+    nx = 0.9 * L, ny = 0.5 * L; /* 1.8: 1.22 L, out; 1.4: 1.06 L */
+    cfpo_policy_relax(&P, &S, bx, by, 2, 0, x, y, floor2, &nx, &ny);
+    if (nx != x + 1.4 * (0.9 * L - x)) bad++;
+    /* Towards the other point: every pushed spot within the floor of it. */
+    nx = 0.2 * L, ny = 0.2 * L; /* 1.8: -0.04 L; 1.4: 0.08 L, both within 0.2 L of (0, 0) */
+    cfpo_policy_relax(&P, &S, bx, by, 2, 0, x, y, floor2, &nx, &ny);
+    if (nx != 0.2 * L || ny != 0.2 * L) bad++;
+    /* The paper's variant never pushes. */
+    const cfpo_grid H = grid(65536, CFPO_VARIANT_PAPER, 1);
+    P = cfpo_policy_at(&H, 50, 0, 0.5);
+    nx = 0.6 * L, ny = 0.5 * L;
+    cfpo_policy_relax(&P, &S, bx, by, 2, 0, x, y, floor2, &nx, &ny);
+    if (P.relax != 0 || nx != 0.6 * L) bad++;
+    CHECK(bad == 0, "over-relaxation: %d of 6 cases wrong", bad);
+}
+
+static void test_other_variants(void)
+{
+    int bad = 0;
+    const int variants[2] = {CFPO_VARIANT_PAPER, CFPO_VARIANT_SIMPLIFIED};
+    for (int v = 0; v < 2; v++) {
+        const cfpo_grid G = grid(4096, variants[v], 5);
+        if (cfpo_policy_starts_near(variants[v])) bad++;
+        for (int k = 0; k <= 100; k++) {
+            const cfpo_policy P = cfpo_policy_at(&G, k, 0, 0.3 + 0.01 * k);
+            if (P.margin != G.margin || P.shift != 0 || P.cut || P.near || P.relax ||
+                cfpo_policy_shift(&G, k) != 0)
+                bad++;
+        }
+    }
+    CHECK(bad == 0, "paper and simplified: %d decisions not the fixed ones", bad);
+    CHECK(cfpo_policy_starts_near(CFPO_VARIANT_ADAPTIVE), "the adaptive variant starts in the near phase");
+    CHECK(cfpo_policy_near_ends(1, 1) && !cfpo_policy_near_ends(1, 0) && !cfpo_policy_near_ends(0, 1) &&
+              !cfpo_policy_near_ends(0, 0),
+          "the near phase ends exactly at its first converged sweep");
+}
+
+/* Pure: a table of decisions asked in one order equals the same table
+ * asked in the reverse order, interleaved with other questions. */
+static void test_pure(void)
+{
+    enum { K = 120 };
+    const cfpo_grid G = grid(20000, CFPO_VARIANT_ADAPTIVE, 9);
+    const cfpo_grid H = grid(5000, CFPO_VARIANT_ADAPTIVE, 2);
+    static cfpo_policy a[K][2];
+    for (int k = 0; k < K; k++)
+        for (int near = 0; near < 2; near++) a[k][near] = cfpo_policy_at(&G, k, near, 0.5 + 0.004 * k);
+    int bad = 0;
+    for (int k = K - 1; k >= 0; k--)
+        for (int near = 1; near >= 0; near--) {
+            (void)cfpo_policy_at(&H, K - k, !near, 0.1 * near);
+            const cfpo_policy b = cfpo_policy_at(&G, k, near, 0.5 + 0.004 * k);
+            if (!same_policy(&a[k][near], &b)) bad++;
+        }
+    CHECK(bad == 0, "policy not a pure function: %d of %d answers changed", bad, 2 * K);
+}
+
+int main(void)
+{
+    test_schedule_table();
+    test_shift();
+    test_margin();
+    test_square();
+    test_relax();
+    test_other_variants();
+    test_pure();
+    return test_report(passed_, failed_);
+}
