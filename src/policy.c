@@ -61,30 +61,3 @@ cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
     }
     return P;
 }
-
-/* Why over-relaxation keeps the iteration from cycling: the spot taken is
- * in the square and farther than the floor from every point of the block,
- * so (the square keeps it at least t from the points outside the block) it
- * raises x's distance to all of X just as the solver's does. Pushing past
- * the farthest spot gives up some of x's own gain to leave room for its
- * crowded neighbours, whose moves come later in the sweep: like
- * over-relaxed Gauss-Seidel, it carries a move across many points in one
- * sweep where exact moves need many sweeps. Not in the first iterations:
- * their long moves, pushed on, print the grid on the set (a spike at
- * frequency (g, 0) that the later iterations take long to wash out). The
- * strong weights carry the near phase's short moves further while the set
- * is far from converged; the mild ones after them converge in fewer
- * iterations, to a higher delta_min. */
-void cfpo_policy_relax(const cfpo_policy *P, const cfpo_square *S, const double *bx, const double *by, int m,
-                       int self, double x, double y, double floor2, double *nx, double *ny)
-{
-    for (int q = 0; q < P->relax; q++) {
-        const double rx = x + P->w[q] * (*nx - x), ry = y + P->w[q] * (*ny - y);
-        if (rx >= S->x0 && rx <= S->x1 && ry >= S->y0 && ry <= S->y1 &&
-            cfpo_min_dist2(rx, ry, bx, by, m, self) > floor2) {
-            *nx = rx;
-            *ny = ry;
-            return;
-        }
-    }
-}
