@@ -38,6 +38,7 @@ static an_lowfreq of_sets(const char *what, int kind, size_t n, int sets)
             cfpo_options o;
             cfpo_options_init(&o);
             o.seed = 500 + s;
+            o.threads = 1;
             cfpo_result res;
             CHECK(cfpo_sample((int64_t)n, &o, xy, &res, err, sizeof err) == 0, "cfpo: %s", err);
         }

@@ -96,6 +96,7 @@ int main(void)
     cfpo_options o;
     cfpo_options_init(&o);
     o.seed = 23;
+    o.threads = 1;
     cfpo_result res;
     char err[256];
     CHECK(cfpo_sample((int64_t)n, &o, xy, &res, err, sizeof err) == 0, "cfpo: %s", err);
