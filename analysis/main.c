@@ -39,7 +39,8 @@ static void usage(void)
 {
     printf("Usage: cfpo-analyze [options] FILE...\n"
            "Power spectrum, radially averaged power spectrum (RAPS), anisotropy, distance\n"
-           "statistics and an optional FPD certificate of point sets on the unit torus.\n"
+           "statistics, low-frequency power, L2 discrepancies, integration variances under a\n"
+           "random shift and an optional FPD certificate of point sets on the unit torus.\n"
            "Several files (all with the same n) are averaged, as the paper averages 10 sets.\n"
            "Writes an output folder and prints one SUMMARY line on stdout.\n\n"
            "  -o, --output DIR     output folder (default: NAME.analysis for one file\n"
