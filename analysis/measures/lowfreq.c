@@ -50,7 +50,8 @@ int an_lowfreq_compute(const double *P, int K, size_t n, const an_rings *r, an_l
     /* |k| <= 0.2 sqrt(n) exactly: 25 |k|^2 <= n */
     int kr = (int)floor(R) + 1;
     while (kr > 0 && 25 * (int64_t)kr * kr > (int64_t)n) kr--;
-    if (kr >= 1 && kr <= K) {
+    if (kr < 1 || kr > K) return 0; /* nothing in range, or the box cuts it */
+    {
         double s = 0;
         long long c = 0;
         for (int ky = -kr; ky <= kr; ky++)
@@ -62,8 +63,8 @@ int an_lowfreq_compute(const double *P, int K, size_t n, const an_rings *r, an_l
         out->p0_count = c;
     }
 
-    /* rings 1..floor(R), complete inside the box when floor(R) <= K */
-    const int m = kr < K ? kr : K;
+    /* rings 1..floor(R), complete inside the box since floor(R) <= K */
+    const int m = kr;
     double *x = malloc((size_t)(m + 1) * sizeof *x), *y = malloc((size_t)(m + 1) * sizeof *y);
     double *lx = malloc((size_t)(m + 1) * sizeof *lx), *ly = malloc((size_t)(m + 1) * sizeof *ly);
     long long *cnt = calloc((size_t)(m + 1), sizeof *cnt);

@@ -18,8 +18,8 @@
  *   alpha  the least-squares slope of log RAPS against log mean |k| over
  *          the same rings (those with RAPS > 0): about 0 for white noise
  *          and for a flat floor, 2 for jittered, larger for BNOT.
- * Each is NAN when the range holds too little: no frequency for P0 (n <
- * 25, or K < R), fewer than 2 rings for H and alpha. */
+ * All three are NAN when the box does not hold the range (K < floor(R)) or
+ * it holds no frequency (n < 25); H and alpha also below 2 rings. */
 #ifndef AN_LOWFREQ_H
 #define AN_LOWFREQ_H
 

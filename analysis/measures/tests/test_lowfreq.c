@@ -96,6 +96,19 @@ int main(void)
         lf = of(P, K, n);
         CHECK(fabs(lf.alpha - b) < 0.02 * b, "|k|^%d: alpha %.6g", b, lf.alpha);
     }
+    /* the box cuts the range (K = 10 < 12.8): nothing */
+    {
+        an_rings r;
+        an_lowfreq cut;
+        const int k10 = 10;
+        double *Q = malloc(an_side(k10) * an_side(k10) * sizeof *Q);
+        for (size_t t = 0; t < an_side(k10) * an_side(k10); t++) Q[t] = 0.5;
+        CHECK(an_rings_compute(Q, k10, &r) == 0 && an_lowfreq_compute(Q, k10, n, &r, &cut) == 0, "K = 10");
+        CHECK(isnan(cut.p0) && isnan(cut.h) && isnan(cut.alpha), "K = 10: P0 %g, H %g, alpha %g", cut.p0, cut.h,
+              cut.alpha);
+        an_rings_free(&r);
+        free(Q);
+    }
     /* too small a set: no frequency in range */
     lf = of(P, K, 20);
     CHECK(isnan(lf.p0) && isnan(lf.h) && isnan(lf.alpha), "n = 20: P0 %g, H %g, alpha %g", lf.p0, lf.h, lf.alpha);
