@@ -1,5 +1,6 @@
 /* mreport.c - see mreport.h. */
 #include "mreport.h"
+#include "quad.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -85,7 +86,7 @@ char *an_measures_json(const an_measures *m)
     if (!m->disc) {
         fputs("null", f);
     } else {
-        fputs("{\"rooted\": true", f);
+        fprintf(f, "{\"rooted\": true, \"accumulation\": \"%s\"", AN_QUAD_NAME);
         for (int k = 0; k < 5; k++) {
             fprintf(f, ", \"%s\": ", disc_keys[k]);
             jnum(f, disc_mean(m, k));
