@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "omp_compat.h"
 #include "quad.h"
 
 /* A sort key: the value, its rounding to double (monotone, so comparing
@@ -159,44 +160,41 @@ static an_quad pair_poly(an_quad E[3][3], const an_quad c[3])
     return s;
 }
 
-double an_discrepancy_bytes(size_t n)
+/* The torus-invariant two: WD^2 and diaphony^2. 0, or -1 out of memory. */
+static int torus_part(const double *xy, size_t n, an_quad *wd2, an_quad *dia2)
 {
-    /* two key arrays, the Fenwick tree (fen3, reused as fen1), four quad
-     * arrays, one rank array */
-    return (double)(n + 1) * (2.0 * sizeof(qkey) + sizeof(fen3) + 4.0 * sizeof(an_quad) + sizeof(uint32_t));
+    qkey *kx = malloc(n * sizeof *kx), *ky = malloc(n * sizeof *ky);
+    an_quad *tmp = malloc(n * sizeof *tmp);
+    uint32_t *rank = malloc(n * sizeof *rank);
+    fen3 *tree = malloc((n + 1) * sizeof *tree);
+    const int bad = !kx || !ky || !tmp || !rank || !tree;
+    if (!bad) {
+        const an_quad N2 = (an_quad)n * (an_quad)n;
+        an_quad E[3][3] = {{0}};
+        pair_table(xy, n, kx, ky, tmp, rank, tree, E);
+        const an_quad cw[3] = {1.5, -1, 1};
+        *wd2 = pair_poly(E, cw) / N2 - (an_quad)16 / 9;
+        const an_quad pi = (an_quad)3.14159265358979323846264338327950288L;
+        const an_quad c2 = 2 * pi * pi;
+        const an_quad ch[3] = {1 + c2 / 6, -c2, c2};
+        const an_quad h0 = 1 + pi * pi / 3;
+        *dia2 = (pair_poly(E, ch) - N2) / (N2 * (h0 * h0 - 1));
+    }
+    free(kx); free(ky); free(tmp); free(rank); free(tree);
+    return bad ? -1 : 0;
 }
 
-static double root(an_quad sq) { return sq > 0 ? sqrt((double)sq) : 0; }
-
-int an_discrepancy_compute(const double *xy, size_t n, an_discrepancy *d, char *err, size_t errlen)
+/* L2-star^2, generalised L2^2 and centred L2^2. 0, or -1 out of memory. */
+static int box_part(const double *xy, size_t n, an_quad *star2, an_quad *gen2, an_quad *cen2)
 {
-    if (n < 1 || n >= UINT32_MAX) {
-        snprintf(err, errlen, "discrepancy: n = %zu (needs 1 to %u points)", n, UINT32_MAX - 1);
-        return -1;
-    }
-    qkey *kx = malloc(n * sizeof *kx), *ky = malloc(n * sizeof *ky);
-    fen3 *tree = malloc((n + 1) * sizeof *tree);
+    qkey *k = malloc(n * sizeof *k);
     an_quad *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
     an_quad *ga = malloc(n * sizeof *ga), *gb = malloc(n * sizeof *gb);
     uint32_t *rank = malloc(n * sizeof *rank);
-    int bad = !kx || !ky || !tree || !a || !b || !ga || !gb || !rank;
-    if (bad) {
-        snprintf(err, errlen, "discrepancy: out of memory for n = %zu (needs %.0f MB)", n,
-                 an_discrepancy_bytes(n) / 1e6);
-        goto done;
-    }
+    fen1 *tree = malloc((n + 1) * sizeof *tree);
+    const int bad = !k || !a || !b || !ga || !gb || !rank || !tree;
+    if (bad) goto done;
     const an_quad N = (an_quad)n, N2 = N * N;
-
-    /* the torus-invariant two */
-    an_quad E[3][3];
-    pair_table(xy, n, kx, ky, a, rank, tree, E);
-    const an_quad cw[3] = {1.5, -1, 1};
-    const an_quad wd2 = pair_poly(E, cw) / N2 - (an_quad)16 / 9;
-    const an_quad pi = (an_quad)3.14159265358979323846264338327950288L;
-    const an_quad c2 = 2 * pi * pi;
-    const an_quad ch[3] = {1 + c2 / 6, -c2, c2};
-    const an_quad h0 = 1 + pi * pi / 3;
-    const an_quad dia2 = (pair_poly(E, ch) - N2) / (N2 * (h0 * h0 - 1));
 
     /* L2-star and generalised L2: a = 1 - x, b = 1 - y;
      * 1 - max(x) = min(a), 2 - max(x) = 1 + min(a) */
@@ -208,11 +206,10 @@ int an_discrepancy_compute(const double *xy, size_t n, an_discrepancy *d, char *
         s_star += (1 - x * x) * (1 - y * y);
         s_gen += (3 - x * x) * (3 - y * y) / 4;
     }
-    fen1 *t1 = (fen1 *)tree;
-    const an_quad mm = minmin_sum(a, b, n, kx, rank, t1);
-    const an_quad ma = min_sum(a, n, kx), mb = min_sum(b, n, kx);
-    const an_quad star2 = (an_quad)1 / 9 - s_star / (2 * N) + mm / N2;
-    const an_quad gen2 = (an_quad)16 / 9 - 2 * s_gen / N + (N2 + ma + mb + mm) / N2;
+    const an_quad mm = minmin_sum(a, b, n, k, rank, tree);
+    const an_quad ma = min_sum(a, n, k), mb = min_sum(b, n, k);
+    *star2 = (an_quad)1 / 9 - s_star / (2 * N) + mm / N2;
+    *gen2 = (an_quad)16 / 9 - 2 * s_gen / N + (N2 + ma + mb + mm) / N2;
 
     /* centred L2: per axis 1 + (|u_i| + |u_j| - |u_i - u_j|)/2 is
      * 1 + min(|u_i|, |u_j|) when u_i, u_j have the same sign, else 1 */
@@ -229,7 +226,7 @@ int an_discrepancy_compute(const double *xy, size_t n, an_discrepancy *d, char *
             size_t m = 0;
             for (size_t i = 0; i < n; i++)
                 if ((xy[2 * i + axis] >= 0.5) == side) ga[m++] = axis ? b[i] : a[i];
-            pc += min_sum(ga, m, kx);
+            pc += min_sum(ga, m, k);
         }
     for (int q = 0; q < 4; q++) {
         size_t m = 0;
@@ -238,16 +235,50 @@ int an_discrepancy_compute(const double *xy, size_t n, an_discrepancy *d, char *
                 ga[m] = a[i];
                 gb[m++] = b[i];
             }
-        pc += minmin_sum(ga, gb, m, kx, rank, t1);
+        pc += minmin_sum(ga, gb, m, k, rank, tree);
     }
-    const an_quad cen2 = (an_quad)169 / 144 - 2 * s_cen / N + pc / N2;
+    *cen2 = (an_quad)169 / 144 - 2 * s_cen / N + pc / N2;
+done:
+    free(k); free(a); free(b); free(ga); free(gb); free(rank); free(tree);
+    return bad ? -1 : 0;
+}
 
+double an_discrepancy_bytes(size_t n)
+{
+    /* both parts at once (two threads) */
+    const double torus = 2.0 * sizeof(qkey) + sizeof(an_quad) + sizeof(uint32_t) + sizeof(fen3);
+    const double box = sizeof(qkey) + 4.0 * sizeof(an_quad) + sizeof(uint32_t) + sizeof(fen1);
+    return (double)(n + 1) * (torus + box);
+}
+
+static double root(an_quad sq) { return sq > 0 ? sqrt((double)sq) : 0; }
+
+int an_discrepancy_compute(const double *xy, size_t n, an_discrepancy *d, char *err, size_t errlen)
+{
+    if (n < 1 || n >= UINT32_MAX) {
+        snprintf(err, errlen, "discrepancy: n = %zu (needs 1 to %u points)", n, UINT32_MAX - 1);
+        return -1;
+    }
+    an_quad wd2 = 0, dia2 = 0, star2 = 0, gen2 = 0, cen2 = 0;
+    int bad_t = 0, bad_b = 0;
+    /* two independent parts, each summed in one fixed order: the same bits
+     * on one thread or two */
+#pragma omp parallel sections num_threads(2) if (omp_get_max_threads() > 1 && n >= 4096)
+    {
+#pragma omp section
+        bad_t = torus_part(xy, n, &wd2, &dia2);
+#pragma omp section
+        bad_b = box_part(xy, n, &star2, &gen2, &cen2);
+    }
+    if (bad_t || bad_b) {
+        snprintf(err, errlen, "discrepancy: out of memory for n = %zu (needs %.0f MB)", n,
+                 an_discrepancy_bytes(n) / 1e6);
+        return -1;
+    }
     d->wrap_l2 = root(wd2);
     d->diaphony = root(dia2);
     d->l2_star = root(star2);
     d->generalized_l2 = root(gen2);
     d->centred_l2 = root(cen2);
-done:
-    free(kx); free(ky); free(tree); free(a); free(b); free(ga); free(gb); free(rank);
-    return bad ? -1 : 0;
+    return 0;
 }

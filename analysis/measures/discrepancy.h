@@ -40,7 +40,9 @@ typedef struct {
 double an_discrepancy_bytes(size_t n);
 
 /* Coordinates in [0, 1), n >= 1 (fewer than 2^32). 0, or -1 with a message
- * (out of memory, bad n). Deterministic, single-threaded. */
+ * (out of memory, bad n). Runs the torus-invariant two and the other three
+ * on two OpenMP threads when allowed (n >= 4,096); the result does not
+ * depend on the number of threads. */
 int an_discrepancy_compute(const double *xy, size_t n, an_discrepancy *d, char *err, size_t errlen);
 
 #endif

@@ -21,6 +21,11 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "discrepancy.h"
 #include "quad.h"
@@ -127,6 +132,20 @@ int main(void)
     for (size_t i = 0; i < 4; i++) xy[i] = 0;
     against_brute("two points at the origin", xy, 2);
     printf("largest relative difference to the brute-force sums: %.3g\n", worst_);
+
+    /* one thread or two: the same bits */
+#ifdef _OPENMP
+    {
+        an_discrepancy t1, t2;
+        char e[256];
+        set_white(xy, N, 8);
+        omp_set_num_threads(1);
+        CHECK(an_discrepancy_compute(xy, N, &t1, e, sizeof e) == 0, "one thread: %s", e);
+        omp_set_num_threads(2);
+        CHECK(an_discrepancy_compute(xy, N, &t2, e, sizeof e) == 0, "two threads: %s", e);
+        CHECK(memcmp(&t1, &t2, sizeof t1) == 0, "one and two threads differ");
+    }
+#endif
 
     /* an empty set is refused */
     an_discrepancy d;
