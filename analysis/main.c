@@ -59,7 +59,7 @@ static void usage(void)
            "                       a side, colours of period 3 (G a multiple of 3), else 2\n"
            "                       (G even), else 1 (default: cfpo's grid for n; 0: none)\n"
            "      --no-discrepancy the five L2 discrepancies are skipped (O(n log n),\n"
-           "                       about 7 s a set at a million points)\n"
+           "                       about 4 s a set at a million points on 2 cores)\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "  -q, --quiet          no progress line\n"
            "  -h, --help           this help\n"
