@@ -11,7 +11,10 @@
 #include "certify.h"
 #include "cfpo.h"
 #include "cli.h"
+#include "discrepancy.h"
 #include "hsd.h"
+#include "lowfreq.h"
+#include "mreport.h"
 #include "nnhist.h"
 #include "omp_compat.h"
 #include "outdir.h"
@@ -19,12 +22,13 @@
 #include "power.h"
 #include "report.h"
 #include "rings.h"
+#include "shiftvar.h"
 
 static const char *prog = "cfpo-analyze";
 
 typedef struct {
     const char *out;
-    int K, width, exact, check, certify, quiet, threads;
+    int K, width, exact, check, certify, quiet, threads, no_disc;
     int any_n; /* --any-n: the sets may differ in n (maximal Poisson-disk sets) */
     int64_t grid; /* --grid: cells a side for the lattice ratio; -1: cfpo's for n */
     double cert_tol;
@@ -36,7 +40,8 @@ static void usage(void)
 {
     printf("Usage: cfpo-analyze [options] FILE...\n"
            "Power spectrum, radially averaged power spectrum (RAPS), anisotropy, distance\n"
-           "statistics and an optional FPD certificate of point sets on the unit torus.\n"
+           "statistics, low-frequency power, L2 discrepancies, integration variances under a\n"
+           "random shift and an optional FPD certificate of point sets on the unit torus.\n"
            "Several files (all with the same n, unless --any-n) are averaged, as the paper\n"
            "averages 10 sets.\n"
            "Writes an output folder and prints one SUMMARY line on stdout.\n\n"
@@ -58,6 +63,8 @@ static void usage(void)
            "      --grid G         the grid whose imprint lattice_ratio looks for: G cells\n"
            "                       a side, colours of period 3 (G a multiple of 3), else 2\n"
            "                       (G even), else 1 (default: cfpo's grid for n; 0: none)\n"
+           "      --no-discrepancy the five L2 discrepancies are skipped (O(n log n),\n"
+           "                       about 4 s a set at a million points on 2 cores)\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "  -q, --quiet          no progress line\n"
            "  -h, --help           this help\n"
@@ -71,13 +78,14 @@ static void usage(void)
 
 static void parse(int argc, char **argv, options *o)
 {
-    enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL, OPT_GRID, OPT_ANY_N };
+    enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL, OPT_GRID, OPT_ANY_N, OPT_NO_DISC };
     static const struct option longs[] = {
         {"output", required_argument, 0, 'o'},  {"kmax", required_argument, 0, 'K'},
         {"exact", no_argument, 0, OPT_EXACT},   {"check", no_argument, 0, OPT_CHECK},
         {"width", required_argument, 0, OPT_WIDTH}, {"certify", no_argument, 0, OPT_CERTIFY},
         {"cert-tol", required_argument, 0, OPT_CERT_TOL}, {"threads", required_argument, 0, 't'},
         {"grid", required_argument, 0, OPT_GRID}, {"any-n", no_argument, 0, OPT_ANY_N},
+        {"no-discrepancy", no_argument, 0, OPT_NO_DISC},
         {"quiet", no_argument, 0, 'q'},         {"help", no_argument, 0, 'h'},
         {"version", no_argument, 0, 'V'},       {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
@@ -103,6 +111,7 @@ static void parse(int argc, char **argv, options *o)
             break;
         case OPT_CERTIFY: o->certify = 1; break;
         case OPT_ANY_N: o->any_n = 1; break;
+        case OPT_NO_DISC: o->no_disc = 1; break;
         case OPT_CERT_TOL:
             if (cli_parse_double(optarg, 0, 1, &o->cert_tol) != 0)
                 cli_usage_error(prog, "bad --cert-tol '%s' (a number in [0, 1])", optarg);
@@ -160,6 +169,8 @@ typedef struct {
     double *P, *Psum, *Pref;
     double *dmin, *davg, *spike; /* per set */
     int *spike_k;                /* per set: kx, ky */
+    an_discrepancy *disc;        /* per set; NULL with --no-discrepancy */
+    double disc_seconds;
     uint64_t hist[AN_NN_BINS];
     an_certificate cert;
     an_nufft_info nufft;
@@ -204,6 +215,14 @@ static void start(const char *file, size_t n)
     R.spike_k = malloc(2 * (size_t)R.opt.nfiles * sizeof *R.spike_k);
     if (!R.P || !R.Psum || (R.opt.check && !R.Pref) || !R.dmin || !R.davg || !R.spike || !R.spike_k)
         fail("%s: out of memory for K = %d", file, R.K);
+    if (!R.opt.no_disc) {
+        const double need = an_discrepancy_bytes(n), have = cli_physical_memory();
+        if (need > 0.9 * have)
+            fail("%s: n = %zu is too large for memory: the discrepancies need %.1f GB, this machine has "
+                 "%.1f GB (--no-discrepancy skips them)", file, n, need / 1e9, have / 1e9);
+        R.disc = malloc((size_t)R.opt.nfiles * sizeof *R.disc);
+        if (!R.disc) fail("out of memory");
+    }
     char *out = R.opt.out ? strdup(R.opt.out) : default_out(&R.opt);
     if (!out) fail("out of memory");
     if (an_outdir_begin(&R.out, out, err, sizeof err) != 0) fail("%s", err);
@@ -246,6 +265,15 @@ static void distances(const char *file, const double *xy, size_t n)
     free(nn.nn);
 }
 
+static void discrepancies(const char *file, const double *xy, size_t n)
+{
+    char err[1024];
+    cli_progress_line(&R.progress, 1, "set %d/%d: discrepancies", R.set + 1, R.opt.nfiles);
+    const double t0 = cli_now();
+    if (an_discrepancy_compute(xy, n, &R.disc[R.set], err, sizeof err) != 0) fail("%s: %s", file, err);
+    R.disc_seconds += cli_now() - t0;
+}
+
 static void certificate(const char *file, const double *xy, size_t n)
 {
     char err[1024];
@@ -272,6 +300,7 @@ static void analyze_set(const char *file)
     cli_progress_line(&R.progress, 1, "set %d/%d: spectrum", R.set + 1, R.opt.nfiles);
     spectrum(file, xy, n);
     distances(file, xy, n);
+    if (R.disc) discrepancies(file, xy, n);
     if (R.opt.certify) certificate(file, xy, n);
     free(xy);
 }
@@ -326,8 +355,15 @@ int main(int argc, char **argv)
     an_lattice lattice;
     const int lg = an_lattice_grid(R.opt.grid, R.n);
     an_lattice_compute(R.Psum, &rings, lg, an_lattice_period(lg), &lattice);
+    an_lowfreq lowfreq;
+    an_shiftvar shiftvar;
+    if (an_lowfreq_compute(R.Psum, R.K, R.n, &rings, &lowfreq) != 0) fail("out of memory");
+    an_shiftvar_compute(R.Psum, R.K, R.n, &shiftvar);
+    const an_measures measures = {.sets = sets, .n = R.n, .disc = R.disc, .lowfreq = &lowfreq,
+                                  .shiftvar = &shiftvar, .disc_seconds = R.disc_seconds};
+    char *msum = an_measures_summary(&measures), *mjson = an_measures_json(&measures);
     char *outname = strdup(R.out.final);
-    if (!outname) fail("out of memory");
+    if (!outname || !msum || !mjson) fail("out of memory");
     an_report rep = {
         .files = (const char *const *)R.opt.files, .sets = sets, .n = R.n, .K = R.K,
         .exact = R.opt.exact, .nufft = R.nufft, .check_maxdiff = R.check_maxdiff,
@@ -337,7 +373,8 @@ int main(int argc, char **argv)
         .nn_hist = R.n >= 2 ? R.hist : NULL, .rings = &rings, .hsd = &hsd,
         .spike = R.spike, .spike_k = R.spike_k, .spike_mean = mean_of(R.spike, sets), .lattice = &lattice,
         .cert = R.opt.certify ? &R.cert : NULL, .threads = omp_get_max_threads(),
-        .spectrum_seconds = R.spectrum_seconds, .out = outname};
+        .spectrum_seconds = R.spectrum_seconds, .out = outname,
+        .summary_extra = msum, .json_extra = mjson};
     rep.seconds = cli_now() - t0;
     write_outputs(&rep);
     char err[1024];
@@ -351,6 +388,7 @@ int main(int argc, char **argv)
     an_print_summary(stdout, &rep);
     an_rings_free(&rings);
     free(outname);
+    free(msum); free(mjson); free(R.disc);
     free(R.P); free(R.Psum); free(R.Pref); free(R.dmin); free(R.davg); free(R.spike); free(R.spike_k);
     return 0;
 }

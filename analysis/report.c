@@ -287,6 +287,7 @@ int an_write_json(const char *path, const an_report *r, char *err, size_t errlen
     else fputs("null", f);
     json_spectrum(f, r);
     json_certificate(f, r->cert);
+    if (r->json_extra) fputs(r->json_extra, f);
     jkey(f, "threads", 0);
     fprintf(f, "%d", r->threads);
     jkey(f, "seconds", 0);
@@ -363,6 +364,7 @@ void an_print_summary(FILE *f, const an_report *r)
         fputs(" certify=- cert_pass=- cert_max_violation=- lct_pass=-", f);
     }
     kv(f, "check_maxdiff", "%.3g", r->check_maxdiff);
+    if (r->summary_extra) fputs(r->summary_extra, f);
     fprintf(f, " peak_bytes=%llu out=%s\n", (unsigned long long)r->peak_bytes, r->out);
     fflush(f);
 }

@@ -42,6 +42,10 @@ typedef struct {
     double seconds, spectrum_seconds;
     uint64_t peak_bytes;
     const char *out;
+    /* Text of the measures of measures/ (mreport.h), or NULL: inserted into
+     * the summary line before peak_bytes and into stats.json before
+     * "threads". */
+    const char *summary_extra, *json_extra;
 } an_report;
 
 int an_write_spectrum(const char *path, const double *P, int K, char *err, size_t errlen);

@@ -50,7 +50,11 @@ class Spectrum:
     nufft: (kernel width, grid, beta) or None for the exact sum;
     lattice_ratio, lattice_k, lattice_g, lattice_period: the largest P(k)
     over its ring's mean at the axis frequencies j g / p of a grid of g
-    cells (cfpo-analyze --grid; nan when none counts)."""
+    cells (cfpo-analyze --grid; nan when none counts); p0, h_index,
+    lowk_alpha: the low-frequency measures (analysis/README.md; details in
+    low_frequency); shift_variance: {integrand: (variance, tail)}, the exact
+    integration variance under a random toroidal shift and its part from
+    beyond the box, for the integrands gauss_0.02 ... disk_0.4."""
     K: int
     power: np.ndarray = field(repr=False)
     ring_count: np.ndarray = field(repr=False)
@@ -74,6 +78,11 @@ class Spectrum:
     lattice_k: tuple = (0, 0)
     lattice_g: int = 0
     lattice_period: int = 0
+    p0: float = math.nan
+    h_index: float = math.nan
+    lowk_alpha: float = math.nan
+    low_frequency: dict = field(default_factory=dict, repr=False)
+    shift_variance: dict = field(default_factory=dict, repr=False)
 
 
 def default_K(n):
@@ -100,9 +109,31 @@ def spectrum(points, K=None, *, exact=False, width=None, grid=None):
     P, cnt, raps, aniso, spike, peak, hsd, nufft, lat = _core.spectrum(a, K, bool(exact), w, g)
     s_ratio, s_P, kx, ky, s_ring, s_mean = spike
     eff, r_half, r_01, osc, ofrom, oto, clipped = hsd
+    lf, sv = _core.lowfreq(P, a.shape[0])
+    low = dict(zip(("range", "p0", "p0_count", "h", "intercept", "peak", "peak_ring", "alpha", "rings"), lf))
     return Spectrum(K, P, cnt, raps, aniso, s_ratio, s_P, (kx, ky), s_ring, s_mean, peak[0], peak[1], eff,
                     r_half, r_01, osc, (ofrom, oto), bool(clipped), nufft, lat[0], (lat[1], lat[2]), lat[3],
-                    lat[4])
+                    lat[4], lf[1], lf[3], lf[7], low, sv)
+
+
+@dataclass
+class Discrepancy:
+    """Five L2 discrepancies, each the square root of its squared formula
+    (analysis/README.md; scipy.stats.qmc.discrepancy returns "CD" and "WD"
+    squared): wrap-around L2 and diaphony (UTK's normalisation; both
+    torus-invariant), L2-star, generalised L2 (Hickernell), centred L2."""
+    wrap_l2: float
+    diaphony: float
+    l2_star: float
+    generalized_l2: float
+    centred_l2: float
+
+
+def discrepancy(points):
+    """The L2 discrepancies of a set (Discrepancy), exact, O(n log n): the
+    numbers cfpo-analyze prints for one set."""
+    a = _args.as_points(points)
+    return Discrepancy(*_core.discrepancy(a))
 
 
 @dataclass

@@ -74,6 +74,8 @@ PyObject *core_run(PyObject *self, PyObject *args);
 PyObject *core_deltas(PyObject *self, PyObject *args);
 PyObject *core_spectrum(PyObject *self, PyObject *args);
 PyObject *core_certify(PyObject *self, PyObject *args);
+PyObject *core_discrepancy(PyObject *self, PyObject *args);
+PyObject *core_lowfreq(PyObject *self, PyObject *args);
 PyObject *core_poisson(PyObject *self, PyObject *args);
 PyObject *core_iterative(PyObject *self, PyObject *args);
 PyObject *core_methods(PyObject *self, PyObject *args);

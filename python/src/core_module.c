@@ -75,6 +75,8 @@ static PyMethodDef methods[] = {
     {"deltas", core_deltas, METH_VARARGS, "Nearest-neighbour statistics (see cfpo.analysis.deltas)."},
     {"spectrum", core_spectrum, METH_VARARGS, "Power spectrum and its measures (see cfpo.analysis.spectrum)."},
     {"certify", core_certify, METH_VARARGS, "FPD certificate (see cfpo.analysis.certify)."},
+    {"discrepancy", core_discrepancy, METH_VARARGS, "L2 discrepancies (see cfpo.analysis.discrepancy)."},
+    {"lowfreq", core_lowfreq, METH_VARARGS, "Low-frequency measures and shift variances of a periodogram."},
     {"poisson", core_poisson, METH_VARARGS, "Poisson-disk baselines (see cfpo.baselines)."},
     {"iterative", core_iterative, METH_VARARGS, "Iterative baselines (see cfpo.baselines)."},
     {"methods", core_methods, METH_NOARGS, "The baselines' descriptions: options, defaults, trace columns."},

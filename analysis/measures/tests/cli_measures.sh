@@ -1,0 +1,60 @@
+#!/bin/sh
+# cli_measures.sh - the measures of analysis/measures/ in cfpo-analyze: every
+# key in the SUMMARY line (between check_maxdiff and peak_bytes, out= last)
+# and in stats.json, CFPO values on the right side of white noise's,
+# averaging two sets (discrepancies: the mean of the sets' values; shift
+# variances and P0: the values of the averaged spectrum, i.e. the means),
+# --no-discrepancy leaving everything else byte-identical.
+. "$(dirname "$0")/../../tests/common.sh"
+cd "$T" || exit 1
+
+"$B/cfpo" -n 1024 --seed 2 -t 1 -q -o a.txt >/dev/null || bad "cfpo failed"
+"$B/cfpo" -n 1024 --seed 3 -t 1 -q -o b.txt >/dev/null || bad "cfpo failed"
+awk 'BEGIN { srand(5); for (i = 0; i < 1024; i++) printf "%.17g %.17g\n", rand(), rand() }' >w.txt
+
+keys="p0 h_index lowk_alpha disc_wrap_l2 disc_diaphony disc_l2_star disc_gen_l2 disc_centred_l2
+shiftvar_gauss_0.02 shiftvar_gauss_0.05 shiftvar_gauss_0.15 shiftvar_disk_0.1 shiftvar_disk_0.25 shiftvar_disk_0.4"
+sa=$("$A" -q -t 1 -o a a.txt) || bad "cfpo-analyze a.txt failed"
+sw=$("$A" -q -t 1 -o w w.txt) || bad "cfpo-analyze w.txt failed"
+for k in $keys; do
+  check "field \"\$sa\" $k | grep -Eq '^-?[0-9.]+(e[-+][0-9]+)?\$'" "$k missing or not a number: $sa"
+done
+check 'echo "$sa" | grep -q " check_maxdiff=- p0=.* shiftvar_disk_0.4=[^ ]* peak_bytes=[0-9]* out=a$"' \
+  "key order: $sa"
+# CFPO against white noise: less low-frequency power, smaller discrepancies
+# and integration variances
+check 'le "$(field "$sa" p0)" 0.05 && le 0.7 "$(field "$sw" p0)"' "p0: cfpo $(field "$sa" p0), white $(field "$sw" p0)"
+for k in disc_wrap_l2 disc_l2_star disc_centred_l2 shiftvar_gauss_0.05 shiftvar_disk_0.25; do
+  check 'awk -v a="$(field "$sa" $k)" -v w="$(field "$sw" $k)" "BEGIN { exit !(3 * a < w) }"' \
+    "$k: cfpo $(field "$sa" $k) not well below white noise's $(field "$sw" $k)"
+done
+for j in '"low_frequency": {"range": 6.4, "P0": ' '"P0_count": ' '"rings": \[1, 6\]' '"discrepancy": {"rooted": true' \
+         '"per_set": {"wrap_around_l2": \[' '"shift_variance": {"tail": ' '"disk_0.25": {"radius": 0.25, "var": '; do
+  check "grep -q '$j' a/stats.json" "stats.json lacks $j"
+done
+
+# two sets: discrepancies are the mean of the single values; P0 and the
+# shift variances come from the averaged spectrum, which is their mean
+sb=$("$A" -q -t 1 -o b b.txt) || bad "cfpo-analyze b.txt failed"
+sab=$("$A" -q -t 1 -o ab a.txt b.txt) || bad "cfpo-analyze a.txt b.txt failed"
+for k in $keys; do
+  [ "$k" = h_index ] || [ "$k" = lowk_alpha ] && continue
+  check 'awk -v a="$(field "$sa" $k)" -v b="$(field "$sb" $k)" -v m="$(field "$sab" $k)" \
+    "BEGIN { d = m - (a + b) / 2; if (d < 0) d = -d; exit !(d <= 1e-5 * m) }"' \
+    "$k of two sets $(field "$sab" $k) is not the mean of $(field "$sa" $k) and $(field "$sb" $k)"
+done
+check 'grep -q "\"per_set\": {\"wrap_around_l2\": \[[^],]*, [^],]*\]" ab/stats.json' "per_set has not two values"
+
+# --no-discrepancy: the discrepancies are '-' and null, the rest unchanged
+sn=$("$A" -q -t 1 --no-discrepancy -o n a.txt) || bad "--no-discrepancy failed"
+for k in disc_wrap_l2 disc_diaphony disc_l2_star disc_gen_l2 disc_centred_l2; do
+  check '[ "$(field "$sn" $k)" = - ]' "--no-discrepancy: $k=$(field "$sn" $k)"
+done
+check 'grep -q "\"discrepancy\": null" n/stats.json' "--no-discrepancy: discrepancy not null"
+for k in p0 h_index lowk_alpha shiftvar_disk_0.1 raps_peak delta_avg; do
+  check '[ "$(field "$sn" $k)" = "$(field "$sa" $k)" ]' "--no-discrepancy changed $k"
+done
+for f in spectrum.txt raps.txt nn_hist.txt plot.gp; do check "cmp -s a/$f n/$f" "--no-discrepancy changed $f"; done
+"$A" -q --no-discrepancy=1 a.txt >/dev/null 2>&1
+check '[ $? -eq 2 ]' "--no-discrepancy=1 is not a usage error"
+finish
