@@ -155,8 +155,11 @@ find "$B" -name '*.o' -path '*/CMakeFiles/*.dir/*' | LC_ALL=C sort | while read 
 done >"$T/objects"
 
 # Sources without an object: compile them here (the Python binding).
-INC="-I$ROOT/src"
-for d in analysis analysis/certify baselines python/src; do [ -d "$d" ] && INC="$INC -I$ROOT/$d"; done
+# Include path: every folder of the sources that holds a header.
+INC=""
+for d in $(find src analysis baselines python/src -name '*.h' -o -name '*.hpp' | xargs -n1 dirname | sort -u); do
+  INC="$INC -I$ROOT/$d"
+done
 # The first Python with both: the package's virtual environment (make
 # python, or the python test), then the system's.
 pyinc="" npinc="" PY=""
