@@ -3,7 +3,7 @@
  * move tolerance (bnot_iterate; the authors' schedule is bnot_rule.cpp),
  * and the engine's accessors. The power diagram and the capacity solve
  * are bnot_power.cpp. */
-#include "bnot_impl.hpp"
+#include "bnot_types.hpp"
 
 static bnot_engine *make(int64_t n, const double *xy, uint64_t seed, double L, double tol, double cap_tol,
                          const bnot_rule *rule, char *err, size_t errlen)

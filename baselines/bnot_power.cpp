@@ -1,5 +1,5 @@
 /* bnot_power.cpp - the power diagram and the capacity solve of BNOT
- * (bnot_impl.hpp), below both the run to a move tolerance (bnot.cpp) and
+ * (bnot_types.hpp), below both the run to a move tolerance (bnot.cpp) and
  * the authors' schedule (bnot_rule.cpp); also the sites' nearest-neighbour
  * statistics. BNOT on CGAL's Regular_triangulation_2 (exact predicates,
  * inexact constructions) of the sites and their periodic copies within the
@@ -14,7 +14,7 @@
  * edges; the margin check. A failed check doubles the margin and builds
  * again. The weights keep mean 0 (they start at 0 and every Newton
  * direction is centred; the diagram only sees their differences). */
-#include "bnot_impl.hpp"
+#include "bnot_types.hpp"
 
 /* The triangulation of the sites and their copies within the margin. */
 static void triangulate(bnot_engine *E)

@@ -7,7 +7,7 @@
  * iterations: the norm is measured right after the step, on the weights
  * the step was taken with (a triangulation of the moved sites), as the
  * reference measures it; the solve for the next step comes after. */
-#include "bnot_impl.hpp"
+#include "bnot_types.hpp"
 
 extern "C" void bnot_rule_init(bnot_rule *r)
 {

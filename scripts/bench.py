@@ -21,7 +21,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.dont_write_bytecode = True
 
-from benchlib import methods, runner  # noqa: E402
+from benchlib import common, methods, runner  # noqa: E402
 
 USAGE = ("usage: bench.py run BUILD [PROFILE] [--plan] | replot [DIR] | core BUILD [PROFILE] | "
          "methods [--binaries] [KIND...] | methods --get KEY FIELD | profile PROFILE")
@@ -39,7 +39,7 @@ def main(argv):
             from benchlib import plotdata
             try:
                 plotdata.replot(args[0] if args else None)
-            except runner.Failure as e:
+            except common.Failure as e:
                 print(f"replot: {e}", file=sys.stderr)
                 return e.code
             return 0
@@ -51,7 +51,7 @@ def main(argv):
             from benchlib import profiles
             p = profiles.profile(args[0], len(os.sched_getaffinity(0)))
             if p is None:
-                raise runner.Failure(f"unknown PROFILE '{args[0]}' (smoke, default, paper)", 2)
+                raise common.Failure(f"unknown PROFILE '{args[0]}' (smoke, default, paper)", 2)
             out = {}
             for k, v in p.items():
                 if k == "rt_sizes":
@@ -78,7 +78,7 @@ def main(argv):
             else:
                 print(" ".join(m.keys(*args)))
             return 0
-    except runner.Failure as e:
+    except common.Failure as e:
         print(f"bench: {e}", file=sys.stderr)
         return e.code
     print(f"bench: {USAGE}", file=sys.stderr)

@@ -10,7 +10,7 @@ import subprocess
 import sys
 import time
 
-from .runner import Failure, sh
+from .common import Failure, sh
 from .stats import fields
 
 

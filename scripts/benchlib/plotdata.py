@@ -18,7 +18,7 @@ import sys
 
 from . import methods as M
 from . import stats as S
-from .runner import Failure, write
+from .common import Failure, write
 
 WRITTEN = "# written by scripts/bench.py replot"
 

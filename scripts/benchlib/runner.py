@@ -20,6 +20,7 @@ import threading
 import time
 
 from . import methods as M
+from .common import Failure, sh, write
 from . import profiles as P
 from . import stats as S
 
@@ -36,26 +37,10 @@ SPECTRA_COLUMNS = ("group,experiment,method,variant,n,iteration,sets,runs,K,delt
 QUALITY_COLUMNS = "run,n,K,certify,cert_pass,cert_max_violation,lct_pass,spike_ratio,spike_k,lattice_ratio,lattice_k"
 
 
-class Failure(Exception):
-    """A one-line error: `bench: MESSAGE`, exit status CODE."""
-    def __init__(self, msg, code=1):
-        super().__init__(msg)
-        self.code = code
-
-
 class Stop(Exception):
     def __init__(self, code):
         super().__init__(code)
         self.code = code
-
-
-def sh(cmd):
-    """A shell command's first line of output ('' when it fails)."""
-    try:
-        out = subprocess.run(cmd, shell=True, capture_output=True, text=True).stdout
-    except OSError:
-        return ""
-    return out.split("\n")[0].strip()
 
 
 # ---------------------------------------------------------------- the plan
@@ -514,13 +499,6 @@ def crop_spectrum(src, dst, crop):
                 vals = v[1 + K - c:1 + K + c + 1]
                 lines.append("%d" % ky + "".join(" %.5g" % float(x) for x in vals))
     write(dst, lines)
-
-
-def write(path, lines):
-    tmp = f"{path}.tmp.{os.getpid()}"
-    with open(tmp, "w") as f:
-        f.write("".join(l + "\n" for l in lines))
-    os.rename(tmp, path)
 
 
 def main(build, name, plan_only):

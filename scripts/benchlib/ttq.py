@@ -10,8 +10,8 @@ its median run's trace) and plotdata/fig-time-to-quality.vars.gp.
 """
 from . import methods as M
 from . import stats as S
-from .runner import Failure
-from .runner import write as write_file
+from .common import Failure
+from .common import write as write_file
 
 TSV_HEAD = ("# run\tkey\tthreads\tn\tseed\ttime_limit\tstop\tt_avg929\tt_min90\tt_min92\tt_target\tfinal_elapsed\t"
             "final_dmin\tfinal_davg\titerations\tcert_pass\tspike_ratio\tspike_k\tmedian_run\tlattice_ratio")

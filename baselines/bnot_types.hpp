@@ -1,9 +1,9 @@
-/* bnot_impl.hpp - the inside of bnot.h's engine, shared by bnot_power.cpp
+/* bnot_types.hpp - the inside of bnot.h's engine, shared by bnot_power.cpp
  * (the power diagram and the capacity solve), bnot.cpp (the engine, the
  * run to a move tolerance) and bnot_rule.cpp (the authors' two-phase
  * stopping rule and the regularity breaker). Not a public header. */
-#ifndef CFPO_BASELINES_BNOT_IMPL_HPP
-#define CFPO_BASELINES_BNOT_IMPL_HPP
+#ifndef CFPO_BASELINES_BNOT_TYPES_HPP
+#define CFPO_BASELINES_BNOT_TYPES_HPP
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Regular_triangulation_2.h>
 #include <CGAL/Regular_triangulation_face_base_2.h>
