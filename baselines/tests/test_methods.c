@@ -141,7 +141,7 @@ int main(int argc, char **argv)
         for (int c = 0; c < m->ncolumns; c++)
             CHECK(m->columns[c].name && m->columns[c].fmt && m->columns[c].fmt[0] == '%', "%s column %d", m->name, c);
         if (m->kind == BL_ITERATIVE)
-            CHECK(m->check_n && m->create && m->iterate && m->deltas && m->points && m->destroy &&
+            CHECK(m->check_n && m->create && m->deltas && m->points && m->destroy &&
                       (m->ncolumns == 0 || m->column_values),
                   "%s: an engine function is missing", m->name);
         else CHECK(m->pd_rel > 0 && m->pd_rel <= 2, "%s: relative radius %g", m->name, m->pd_rel);
