@@ -33,6 +33,7 @@ struct gbn_engine {
     double step;       /* the authors' step (divided by sigma^2 when sigma > 1) */
     int64_t G;         /* cells per side (1: every pair) */
     int done;          /* iterations made */
+    int sorted;        /* sxy, cell and start are of the current points */
     double *xy, *nxy;  /* the points, the next points */
     double *sxy;       /* the points in cell order */
     int64_t *start;    /* G^2 + 1 offsets into sxy */
@@ -157,7 +158,7 @@ static inline void add_range(const gbn_engine *E, double x, double y, int64_t lo
     }
 }
 
-void gbn_cell_gradient(const gbn_engine *E, int64_t i, double *gx, double *gy)
+static void cell_gradient(const gbn_engine *E, int64_t i, double *gx, double *gy)
 {
     const double x = E->xy[2 * i], y = E->xy[2 * i + 1];
     *gx = *gy = 0;
@@ -171,6 +172,13 @@ void gbn_cell_gradient(const gbn_engine *E, int64_t i, double *gx, double *gy)
             const int64_t nc = ((cy + oy + G) % G) * G + (cx + ox + G) % G;
             add_range(E, x, y, E->start[nc], E->start[nc + 1], gx, gy);
         }
+}
+
+void gbn_cell_gradient(gbn_engine *E, int64_t i, double *gx, double *gy)
+{
+    if (!E->sorted) sort_cells(E);
+    E->sorted = 1;
+    cell_gradient(E, i, gx, gy);
 }
 
 void gbn_full_gradient(const gbn_engine *E, int64_t i, double *gx, double *gy)
@@ -199,7 +207,7 @@ void gbn_iterate(gbn_engine *E, cfpo_iter_stats *s)
 {
     const double t0 = cli_now();
     const int64_t n = E->n;
-    sort_cells(E);
+    if (!E->sorted) sort_cells(E);
     const double tolL = E->o.tol * E->L;
     int64_t moved = 0;
     double maxd2 = 0;
@@ -207,7 +215,7 @@ void gbn_iterate(gbn_engine *E, cfpo_iter_stats *s)
 #pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : moved) reduction(max : maxd2)
     for (int64_t i = 0; i < n; i++) {
         double gx, gy;
-        gbn_cell_gradient(E, i, &gx, &gy);
+        cell_gradient(E, i, &gx, &gy);
         const double mx = E->step * gx, my = E->step * gy;
         E->nxy[2 * i] = wrap01(E->xy[2 * i] + mx);
         E->nxy[2 * i + 1] = wrap01(E->xy[2 * i + 1] + my);
@@ -219,6 +227,7 @@ void gbn_iterate(gbn_engine *E, cfpo_iter_stats *s)
     E->xy = E->nxy;
     E->nxy = t;
     E->done++;
+    E->sorted = 0;
     s->moved = moved;
     s->solved = n;
     s->max_disp = sqrt(maxd2) / E->L;

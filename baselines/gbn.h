@@ -63,7 +63,7 @@ const double *gbn_points(const gbn_engine *E);
 void gbn_full_gradient(const gbn_engine *E, int64_t i, double *gx, double *gy);
 
 /* The truncated sum the iteration uses, for tests. */
-void gbn_cell_gradient(const gbn_engine *E, int64_t i, double *gx, double *gy);
+void gbn_cell_gradient(gbn_engine *E, int64_t i, double *gx, double *gy);
 
 #ifdef __cplusplus
 }
