@@ -1,9 +1,16 @@
 /* bl_lloyd.c - Lloyd's CVT (lloyd.h) as a baseline method (bl_method.h):
- * its memory model and its engine; no options of its own. */
+ * its cap on iterations, its memory model and its engine. */
 #include <stdio.h>
 
 #include "bl_method.h"
 #include "lloyd.h"
+
+static const bl_option OPTS[] = {
+    {.cli = "iterations", .py = "iterations", .type = BL_INT, .lo = 0, .hi = 1000000000, .def = LLOYD_ITERATIONS,
+     .bad = "is not a whole number in 0..1e9",
+     .help = "      --iterations K   the run ends (as converged) after K iterations (default %g,\n"
+             "                       before the hexagonal CVT); 0: only by --tol\n"},
+};
 
 static int check_n(const bl_value *v, int64_t n, double tol, char *err, size_t errlen)
 {
@@ -17,8 +24,7 @@ static int check_n(const bl_value *v, int64_t n, double tol, char *err, size_t e
 
 static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
 {
-    (void)v;
-    return lloyd_create(n, seed, tol, err, errlen);
+    return lloyd_create(n, seed, tol, (int)v[0].i, err, errlen);
 }
 
 static void iterate(void *E, cfpo_iter_stats *s) { lloyd_iterate(E, s); }
@@ -33,7 +39,7 @@ const bl_method bl_lloyd = {
     .about = "Lloyd's algorithm (1982) on the unit torus, on CGAL's periodic Delaunay\n"
              "triangulation: from uniform points, every site moves at once to the centroid\n"
              "of its Voronoi cell, towards a centroidal Voronoi tessellation; converged when\n"
-             "no site moves --tol * L. Prints one SUMMARY line on stdout.",
-    .noptions = 0,
+             "no site moves --tol * L, or after --iterations steps. Prints one SUMMARY line on stdout.",
+    BL_OPTIONS(OPTS),
     BL_ENGINE,
 };

@@ -26,6 +26,7 @@ const std::uint64_t START_STREAM = 0x4c4c4f5944535452ULL; /* "LLOYDSTR" */
 struct lloyd_engine {
     std::int64_t n;
     double tol, L;
+    int iterations, done;
     std::vector<double> xy, area, cx, cy;
 };
 
@@ -33,7 +34,7 @@ extern "C" {
 
 double lloyd_bytes(std::int64_t n) { return (double)n * 760 + 8.0 * 1024 * 1024; }
 
-lloyd_engine *lloyd_create(std::int64_t n, std::uint64_t seed, double tol, char *err, size_t errlen)
+lloyd_engine *lloyd_create(std::int64_t n, std::uint64_t seed, double tol, int iterations, char *err, size_t errlen)
 {
     cfpo_grid G;
     if (n >= (std::int64_t)UINT32_MAX) {
@@ -49,6 +50,8 @@ lloyd_engine *lloyd_create(std::int64_t n, std::uint64_t seed, double tol, char 
     try {
         E->n = n;
         E->tol = tol;
+        E->iterations = iterations;
+        E->done = 0;
         E->L = G.L;
         E->xy.resize(2 * (size_t)n);
         E->area.resize((size_t)n);
@@ -144,7 +147,8 @@ void lloyd_iterate(lloyd_engine *E, cfpo_iter_stats *s)
     s->solved = E->n;
     s->max_disp = std::sqrt(maxd2) / E->L;
     s->max_move = s->max_disp;
-    s->converged = cfpo_net_converged(moved, s->max_disp, E->tol);
+    E->done++;
+    s->converged = cfpo_net_converged(moved, s->max_disp, E->tol) || (E->iterations > 0 && E->done >= E->iterations);
     lloyd_deltas(E, &s->delta_min, &s->delta_avg);
     s->seconds = cli_now() - t0;
 }

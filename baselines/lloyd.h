@@ -6,7 +6,8 @@
  * sites, takes each site's Voronoi cell as the polygon of the circumcentres
  * of its incident faces in counter-clockwise order, and moves every site
  * at once to that polygon's centroid, wrapped into [0, 1)); the iteration
- * statistics; converged when no site moved tol * L (L cfpo's cell side).
+ * statistics; converged when no site moved tol * L (L cfpo's cell side),
+ * or after `iterations` steps when that is not 0 (the benchmark's cap).
  * Does not own: the run loop and its stop rules (bl_loop.c), files.
  * A C interface over a C++ implementation (CGAL). */
 #ifndef CFPO_BASELINES_LLOYD_H
@@ -26,9 +27,13 @@ typedef struct lloyd_engine lloyd_engine;
 /* Bytes for n sites (the triangulation as FPO's, rebuilt every iteration). */
 double lloyd_bytes(int64_t n);
 
+/* LLOYD_ITERATIONS: the default cap, as the blue-noise comparisons stop
+ * Lloyd before the hexagonal CVT. */
+#define LLOYD_ITERATIONS 100
+
 /* The uniform start; NULL with a message (n too small for cfpo's grid,
  * coincident points, out of memory). */
-lloyd_engine *lloyd_create(int64_t n, uint64_t seed, double tol, char *err, size_t errlen);
+lloyd_engine *lloyd_create(int64_t n, uint64_t seed, double tol, int iterations, char *err, size_t errlen);
 void lloyd_free(lloyd_engine *E);
 
 /* One Lloyd step of every site; fills everything but s->iteration. */

@@ -66,7 +66,7 @@ int main(void)
 {
     char err[256];
     cfpo_iter_stats s;
-    lloyd_engine *E = lloyd_create(40, 3, 1e-4, err, sizeof err);
+    lloyd_engine *E = lloyd_create(40, 3, 1e-4, 0, err, sizeof err);
     CHECK(E != NULL, "lloyd_create(40): %s", err);
     if (E) {
         brute(E, 40);
@@ -76,7 +76,7 @@ int main(void)
     }
     const int64_t n = 64;
     const double tol = 1e-4;
-    E = lloyd_create(n, 5, tol, err, sizeof err);
+    E = lloyd_create(n, 5, tol, 0, err, sizeof err);
     CHECK(E != NULL, "lloyd_create(64): %s", err);
     if (!E) return test_report(passed_, failed_);
     double d0min, d0avg;
@@ -99,10 +99,10 @@ int main(void)
     printf("lloyd n=64 converged after %d iterations: delta_min %.4f delta_avg %.4f\n", it + 1, s.delta_min,
            s.delta_avg);
     free(area), free(cx), free(cy);
-    lloyd_engine *A = lloyd_create(n, 5, tol, err, sizeof err), *B = lloyd_create(n, 6, tol, err, sizeof err);
+    lloyd_engine *A = lloyd_create(n, 5, tol, 0, err, sizeof err), *B = lloyd_create(n, 6, tol, 0, err, sizeof err);
     CHECK(A && B && memcmp(lloyd_points(A), lloyd_points(B), 2 * (size_t)n * sizeof(double)) != 0,
           "lloyd: seeds 5 and 6 give the same start");
-    lloyd_engine *C = lloyd_create(n, 5, tol, err, sizeof err);
+    lloyd_engine *C = lloyd_create(n, 5, tol, 0, err, sizeof err);
     for (int i = 0; i < 5; i++) lloyd_iterate(A, &s), lloyd_iterate(C, &s);
     CHECK(memcmp(lloyd_points(A), lloyd_points(C), 2 * (size_t)n * sizeof(double)) == 0, "lloyd: same seed, other sites");
     lloyd_free(A), lloyd_free(B), lloyd_free(C), lloyd_free(E);

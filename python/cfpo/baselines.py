@@ -197,7 +197,8 @@ def sobol(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=Non
     return _iterative("sobol", **locals())
 
 
-def lloyd(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, progress=None):
+def lloyd(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, iterations=None,
+          progress=None):
     return _iterative("lloyd", **locals())
 
 
@@ -215,6 +216,6 @@ sobol.__doc__ = ("Owen-scrambled Sobol': the first n points of the 2-D Sobol' se
                  "    uniform scrambling (cfpo-sobol); plain=True: unscrambled. Direct (0 iterations).\n"
                  + _options_doc("sobol") + _ITER_DOC)
 lloyd.__doc__ = ("Lloyd's algorithm towards a centroidal Voronoi tessellation on the torus\n"
-                 "    (cfpo-lloyd); converged when no site moves tol * L.\n" + _options_doc("lloyd") + _ITER_DOC)
+                 "    (cfpo-lloyd); converged when no site moves tol * L, or after iterations (100).\n" + _options_doc("lloyd") + _ITER_DOC)
 gbn.__doc__ = ("Gaussian blue noise (Ahmed, Ren, Wonka 2022) as the authors' toroidal code runs it\n"
                "    (cfpo-gbn): sigma 1, step 0.25, 1000 iterations by default.\n" + _options_doc("gbn") + _ITER_DOC)
