@@ -27,6 +27,7 @@ void *bl_loop(const bl_method *m, const bl_value *v, const bl_loop_args *a, doub
     const double t = cli_now();
     m->deltas(E, &s->delta_min, &s->delta_avg);
     s->seconds = cli_now() - t;
+    s->converged = m->iterate == NULL; /* a direct sampler: the start is the set */
     double el = cli_now() - t0;
     int it = 0;
     int stop = after_row(a, row(user, E, s, el), s, el, o);

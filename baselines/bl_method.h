@@ -84,6 +84,7 @@ struct bl_method {
     int (*check_n)(const bl_value *v, int64_t n, double tol, char *err, size_t errlen);
     /* the engine for n points, seed and tol; NULL with a message */
     void *(*create)(const bl_value *v, int64_t n, uint64_t seed, double tol, char *err, size_t errlen);
+    /* NULL: a direct sampler (its start is its set, converged at once) */
     void (*iterate)(void *E, cfpo_iter_stats *s);
     void (*deltas)(void *E, double *dmin, double *davg);
     /* the values of the columns (ncolumns of them) */

@@ -42,7 +42,9 @@ static void check_tsv(const char *path)
         const bl_method *m = bl_method_find(field[0]);
         CHECK(m != NULL, "methods.tsv row %s has no method in bl_list.c", field[0]);
         if (!m) continue;
-        CHECK(strcmp(m->prog, field[7]) == 0, "%s: command %s, methods.tsv says %s", m->name, m->prog, field[7]);
+        const size_t w = strcspn(field[7], " "); /* the program, before any fixed arguments */
+        CHECK(strlen(m->prog) == w && strncmp(m->prog, field[7], w) == 0, "%s: command %s, methods.tsv says %s",
+              m->name, m->prog, field[7]);
         CHECK(m->kind == (strcmp(field[4], "pd") == 0 ? BL_POISSON : BL_ITERATIVE), "%s: kind", m->name);
         CHECK(strcmp(field[5], m->name) == 0, "%s: SUMMARY method %s", m->name, field[5]);
     }
@@ -141,7 +143,7 @@ int main(int argc, char **argv)
         for (int c = 0; c < m->ncolumns; c++)
             CHECK(m->columns[c].name && m->columns[c].fmt && m->columns[c].fmt[0] == '%', "%s column %d", m->name, c);
         if (m->kind == BL_ITERATIVE)
-            CHECK(m->check_n && m->create && m->iterate && m->deltas && m->points && m->destroy &&
+            CHECK(m->check_n && m->create && m->deltas && m->points && m->destroy &&
                       (m->ncolumns == 0 || m->column_values),
                   "%s: an engine function is missing", m->name);
         else CHECK(m->pd_rel > 0 && m->pd_rel <= 2, "%s: relative radius %g", m->name, m->pd_rel);

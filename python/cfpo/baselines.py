@@ -3,8 +3,9 @@
 dart, bs, bridson: Poisson-disk samplers (cfpo-dart, cfpo-bs,
 cfpo-bridson) returning an (m, 2) float64 array (for bs and bridson m is
 about n: the maximal set at the radius n gives). fpo, lfpo, ccvt, ccdt,
-bnot: iterative methods (cfpo-fpo, cfpo-lfpo, cfpo-ccvt, cfpo-ccdt,
-cfpo-bnot) returning a cfpo.Result, with the commands' stop rules
+bnot, lloyd, gbn: iterative methods (cfpo-fpo, cfpo-lfpo, cfpo-ccvt,
+cfpo-ccdt, cfpo-bnot, cfpo-lloyd, cfpo-gbn), and white, jitter, sobol:
+direct samplers run the same way (0 iterations), returning a cfpo.Result, with the commands' stop rules
 (convergence by tol, target_min, target_avg, time_limit, max_iter), a
 progress callable that stops the run by returning True, and each
 command's own options as keywords (None: the command's default).
@@ -180,3 +181,41 @@ bnot.__doc__ = """Blue noise through optimal transport (de Goes et al. 2012) (cf
     With epsilon > 0, tol only decides which sites count as moved in the
     statistics.
 """ + _options_doc("bnot") + _ITER_DOC
+
+
+def white(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, progress=None):
+    return _iterative("white", **locals())
+
+
+def jitter(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None,
+           progress=None):
+    return _iterative("jitter", **locals())
+
+
+def sobol(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, plain=None,
+          progress=None):
+    return _iterative("sobol", **locals())
+
+
+def lloyd(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, iterations=None,
+          progress=None):
+    return _iterative("lloyd", **locals())
+
+
+def gbn(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, sigma=None,
+        step=None, iterations=None, cutoff=None, threads=None, progress=None):
+    return _iterative("gbn", **locals())
+
+
+white.__doc__ = ("White noise: n independent uniform points (cfpo-white); direct (0 iterations).\n"
+                 + _options_doc("white") + _ITER_DOC)
+jitter.__doc__ = ("Jittered sampling: one uniform point in each of n strata, round(sqrt(n)) rows of\n"
+                  "    floor or ceil of n / rows equal cells (cfpo-jitter); direct (0 iterations).\n"
+                  + _options_doc("jitter") + _ITER_DOC)
+sobol.__doc__ = ("Owen-scrambled Sobol': the first n points of the 2-D Sobol' sequence under nested\n"
+                 "    uniform scrambling (cfpo-sobol); plain=True: unscrambled. Direct (0 iterations).\n"
+                 + _options_doc("sobol") + _ITER_DOC)
+lloyd.__doc__ = ("Lloyd's algorithm towards a centroidal Voronoi tessellation on the torus\n"
+                 "    (cfpo-lloyd); converged when no site moves tol * L, or after iterations (100).\n" + _options_doc("lloyd") + _ITER_DOC)
+gbn.__doc__ = ("Gaussian blue noise (Ahmed, Ren, Wonka 2022) as the authors' toroidal code runs it\n"
+               "    (cfpo-gbn): sigma 1, step 0.25, 1000 iterations by default.\n" + _options_doc("gbn") + _ITER_DOC)

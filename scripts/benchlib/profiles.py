@@ -52,14 +52,17 @@ def profile(name, cores):
     if name == "smoke":
         p.update(sets=2, comp_n=1024, rt_reps=1, ttq_sizes=[1024], ttq_seeds=1, ttq_maxiter=80,
                  rt_sizes=dict(cfpo=[256, 512], simplified=[256], fpo=[256], lfpo=[256], ccvt=[256],
-                               ccdt=[256], bnot=[256], dart=[4096], bs=[4096], bridson=[4096]))
+                               ccdt=[256], bnot=[256], dart=[4096], bs=[4096], bridson=[4096],
+                               white=[4096], jitter=[4096], sobol=[4096], lloyd=[256], gbn=[256]))
     elif name == "default":
         p.update(sets=10, comp_n=4096, rt_reps=1,
                  rt_sizes=dict(cfpo=[1024, 4096, 16384], simplified=[1024, 4096], fpo=[1024, 16384],
                                lfpo=[1024], ccvt=[1024], ccdt=[1024], bnot=[1024, 4096, 16384],
                                dart=[1024, 4096, 16384, 65536, 262144],
                                bs=[1024, 4096, 16384, 65536, 262144],
-                               bridson=[1024, 4096, 16384, 65536, 262144]))
+                               bridson=[1024, 4096, 16384, 65536, 262144],
+                               white=[1024, 16384, 262144], jitter=[1024, 16384, 262144],
+                               sobol=[1024, 16384, 262144], lloyd=[1024], gbn=[1024]))
         # at 65,536 points only the experiment the CFPO schedule is tuned
         # on: adaptive CFPO on one and two threads against FPO (CFPO-paper
         # and LFPO there: the paper profile). FPO stopped at 35 s there
@@ -113,8 +116,10 @@ def omp_env():
 # iteration on one core; single runs on a 2-core machine
 _MODEL = dict(cfpo=(230, 0.5, 1250, 1.1e-6), simplified=(654, 0.35, 1550, 0.75e-6),
               fpo=(166, 0.33, 5000, 2.5e-6), lfpo=(239, 0.55, 5000, 2.5e-6),
-              ccvt=(330, 0, 5000, 1.5e-5), ccdt=(120, 0.1, 5000, 1.5e-5), bnot=(20, 0, 20, 1.05e-5))
-_PD = dict(dart=8e-6, bs=1.5e-6, bridson=5e-6)
+              ccvt=(330, 0, 5000, 1.5e-5), ccdt=(120, 0.1, 5000, 1.5e-5), bnot=(20, 0, 20, 1.05e-5),
+              lloyd=(100, 0, 100, 8.5e-6), gbn=(1000, 0, 1000, 3.4e-6))
+# the direct samplers (white, jitter, sobol) as the Poisson-disk ones: s a point
+_PD = dict(dart=8e-6, bs=1.5e-6, bridson=5e-6, white=1e-7, jitter=1e-7, sobol=2e-7)
 
 
 def estimate(key, n, threads, maxiter):
