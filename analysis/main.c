@@ -11,13 +11,16 @@
 #include "certify.h"
 #include "cfpo.h"
 #include "cli.h"
+#include "delaunay.h"
 #include "discrepancy.h"
 #include "hsd.h"
+#include "integration.h"
 #include "lowfreq.h"
 #include "mreport.h"
 #include "nnhist.h"
 #include "omp_compat.h"
 #include "outdir.h"
+#include "pcf.h"
 #include "pointfile.h"
 #include "power.h"
 #include "report.h"
@@ -28,7 +31,8 @@ static const char *prog = "cfpo-analyze";
 
 typedef struct {
     const char *out;
-    int K, width, exact, check, certify, quiet, threads, no_disc;
+    int K, width, exact, check, certify, quiet, threads, no_disc, no_delaunay, integ;
+    double pcf_sigma, pcf_rmax;
     int any_n; /* --any-n: the sets may differ in n (maximal Poisson-disk sets) */
     int64_t grid; /* --grid: cells a side for the lattice ratio; -1: cfpo's for n */
     double cert_tol;
@@ -65,32 +69,44 @@ static void usage(void)
            "                       (G even), else 1 (default: cfpo's grid for n; 0: none)\n"
            "      --no-discrepancy the five L2 discrepancies are skipped (O(n log n),\n"
            "                       about 4 s a set at a million points on 2 cores)\n"
+           "      --pcf-sigma S    pair correlation: Gaussian kernel sigma / Delta(n) (default %g)\n"
+           "      --pcf-rmax R     pair correlation up to r = R Delta(n) (default %g)\n"
+           "      --integration M  UTK's integration test with M Gaussian and M Heaviside\n"
+           "                       integrands (default %d; 0: none)\n"
+           "      --no-delaunay    psi6, Voronoi area variance and mesh ratio are skipped\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "  -q, --quiet          no progress line\n"
            "  -h, --help           this help\n"
            "  -V, --version        version\n\n"
            "Input formats: %s\n"
-           "Output folder: spectrum.txt (gnuplot nonuniform matrix), raps.txt, nn_hist.txt,\n"
-           "stats.json, plot.gp (gnuplot plot.gp draws them). See analysis/README.md.\n"
+           "Output folder: spectrum.txt (gnuplot nonuniform matrix), raps.txt, nn_hist.txt, pcf.txt,\n"
+           "stats.json, plot.gp, pcf.gp (gnuplot draws them). See analysis/README.md.\n"
            "Exit status: 0 success, 1 runtime failure, 2 usage error.\n",
-           AN_KMAX, AN_NUFFT_WIDTH, AN_CERT_TOL, omp_get_num_procs(), PF_EXTENSIONS);
+           AN_KMAX, AN_NUFFT_WIDTH, AN_CERT_TOL, AN_PCF_SIGMA, AN_PCF_RMAX, AN_INTEG_M, omp_get_num_procs(),
+           PF_EXTENSIONS);
 }
 
 static void parse(int argc, char **argv, options *o)
 {
-    enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL, OPT_GRID, OPT_ANY_N, OPT_NO_DISC };
+    enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL, OPT_GRID, OPT_ANY_N, OPT_NO_DISC,
+           OPT_PCF_SIGMA, OPT_PCF_RMAX, OPT_INTEG, OPT_NO_DT };
     static const struct option longs[] = {
         {"output", required_argument, 0, 'o'},  {"kmax", required_argument, 0, 'K'},
         {"exact", no_argument, 0, OPT_EXACT},   {"check", no_argument, 0, OPT_CHECK},
         {"width", required_argument, 0, OPT_WIDTH}, {"certify", no_argument, 0, OPT_CERTIFY},
         {"cert-tol", required_argument, 0, OPT_CERT_TOL}, {"threads", required_argument, 0, 't'},
         {"grid", required_argument, 0, OPT_GRID}, {"any-n", no_argument, 0, OPT_ANY_N},
-        {"no-discrepancy", no_argument, 0, OPT_NO_DISC},
+        {"no-discrepancy", no_argument, 0, OPT_NO_DISC}, {"no-delaunay", no_argument, 0, OPT_NO_DT},
+        {"pcf-sigma", required_argument, 0, OPT_PCF_SIGMA}, {"pcf-rmax", required_argument, 0, OPT_PCF_RMAX},
+        {"integration", required_argument, 0, OPT_INTEG},
         {"quiet", no_argument, 0, 'q'},         {"help", no_argument, 0, 'h'},
         {"version", no_argument, 0, 'V'},       {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->cert_tol = AN_CERT_TOL;
     o->grid = -1;
+    o->pcf_sigma = AN_PCF_SIGMA;
+    o->pcf_rmax = AN_PCF_RMAX;
+    o->integ = AN_INTEG_M;
     int c;
     int64_t v;
     opterr = 0;
@@ -112,6 +128,20 @@ static void parse(int argc, char **argv, options *o)
         case OPT_CERTIFY: o->certify = 1; break;
         case OPT_ANY_N: o->any_n = 1; break;
         case OPT_NO_DISC: o->no_disc = 1; break;
+        case OPT_NO_DT: o->no_delaunay = 1; break;
+        case OPT_PCF_SIGMA:
+            if (cli_parse_double(optarg, 0.005, 1, &o->pcf_sigma) != 0)
+                cli_usage_error(prog, "bad --pcf-sigma '%s' (a number in [0.005, 1])", optarg);
+            break;
+        case OPT_PCF_RMAX:
+            if (cli_parse_double(optarg, 0.1, 100, &o->pcf_rmax) != 0)
+                cli_usage_error(prog, "bad --pcf-rmax '%s' (a number in [0.1, 100])", optarg);
+            break;
+        case OPT_INTEG:
+            if (cli_parse_i64(optarg, 0, 1 << 20, &v) != 0)
+                cli_usage_error(prog, "bad --integration '%s' (an integer in [0, %d])", optarg, 1 << 20);
+            o->integ = (int)v;
+            break;
         case OPT_CERT_TOL:
             if (cli_parse_double(optarg, 0, 1, &o->cert_tol) != 0)
                 cli_usage_error(prog, "bad --cert-tol '%s' (a number in [0, 1])", optarg);
@@ -171,6 +201,11 @@ typedef struct {
     int *spike_k;                /* per set: kx, ky */
     an_discrepancy *disc;        /* per set; NULL with --no-discrepancy */
     double disc_seconds;
+    an_delaunay *dt;             /* per set; NULL with --no-delaunay */
+    an_integration *integ;       /* per set; NULL with --integration 0 */
+    double *pcf, *pcf_set;       /* the sets' g summed, one set's; NULL: no bins */
+    int pcf_bins;
+    double dt_seconds, integ_seconds, pcf_seconds;
     uint64_t hist[AN_NN_BINS];
     an_certificate cert;
     an_nufft_info nufft;
@@ -223,6 +258,21 @@ static void start(const char *file, size_t n)
         R.disc = malloc((size_t)R.opt.nfiles * sizeof *R.disc);
         if (!R.disc) fail("out of memory");
     }
+    if (!R.opt.no_delaunay) {
+        const double need = an_delaunay_bytes(n), have = cli_physical_memory();
+        if (need > 0.9 * have)
+            fail("%s: n = %zu is too large for memory: the Delaunay triangulation needs %.1f GB, this machine "
+                 "has %.1f GB (--no-delaunay skips it)", file, n, need / 1e9, have / 1e9);
+        R.dt = malloc((size_t)R.opt.nfiles * sizeof *R.dt);
+    }
+    if (R.opt.integ) R.integ = malloc((size_t)R.opt.nfiles * sizeof *R.integ);
+    R.pcf_bins = an_pcf_bins(n, R.opt.pcf_sigma, R.opt.pcf_rmax);
+    if (R.pcf_bins) {
+        R.pcf = calloc((size_t)R.pcf_bins, sizeof *R.pcf);
+        R.pcf_set = malloc((size_t)R.pcf_bins * sizeof *R.pcf_set);
+    }
+    if ((!R.opt.no_delaunay && !R.dt) || (R.opt.integ && !R.integ) || (R.pcf_bins && (!R.pcf || !R.pcf_set)))
+        fail("out of memory");
     char *out = R.opt.out ? strdup(R.opt.out) : default_out(&R.opt);
     if (!out) fail("out of memory");
     if (an_outdir_begin(&R.out, out, err, sizeof err) != 0) fail("%s", err);
@@ -274,6 +324,37 @@ static void discrepancies(const char *file, const double *xy, size_t n)
     R.disc_seconds += cli_now() - t0;
 }
 
+/* pair correlation, Delaunay measures, integration test */
+static void structure(const char *file, const double *xy, size_t n)
+{
+    char err[1024];
+    if (R.pcf) {
+        cli_progress_line(&R.progress, 1, "set %d/%d: pair correlation", R.set + 1, R.opt.nfiles);
+        const double t0 = cli_now();
+        const int B = an_pcf_bins(n, R.opt.pcf_sigma, R.opt.pcf_rmax); /* --any-n: the least of the sets' */
+        if (B < R.pcf_bins) R.pcf_bins = B;
+        if (R.pcf_bins < 1) fail("%s: too few points for the pair correlation", file);
+        if (an_pcf_compute(xy, n, R.opt.pcf_sigma, R.opt.pcf_rmax, R.pcf_bins, R.pcf_set) != 0)
+            fail("%s: out of memory", file);
+        for (int b = 0; b < R.pcf_bins; b++) R.pcf[b] += R.pcf_set[b];
+        R.pcf_seconds += cli_now() - t0;
+    }
+    if (R.dt) {
+        cli_progress_line(&R.progress, 1, "set %d/%d: Delaunay", R.set + 1, R.opt.nfiles);
+        const double t0 = cli_now();
+        if (an_delaunay_compute(xy, n, &R.dt[R.set], err, sizeof err) != 0) /* undefined for this set */
+            R.dt[R.set] = (an_delaunay){NAN, NAN, NAN, NAN, NAN};
+        R.dt_seconds += cli_now() - t0;
+    }
+    if (R.integ) {
+        cli_progress_line(&R.progress, 1, "set %d/%d: integration test", R.set + 1, R.opt.nfiles);
+        const double t0 = cli_now();
+        if (an_integration_compute(xy, n, R.opt.integ, AN_INTEG_SEED, &R.integ[R.set]) != 0)
+            fail("%s: out of memory", file);
+        R.integ_seconds += cli_now() - t0;
+    }
+}
+
 static void certificate(const char *file, const double *xy, size_t n)
 {
     char err[1024];
@@ -301,11 +382,12 @@ static void analyze_set(const char *file)
     spectrum(file, xy, n);
     distances(file, xy, n);
     if (R.disc) discrepancies(file, xy, n);
+    structure(file, xy, n);
     if (R.opt.certify) certificate(file, xy, n);
     free(xy);
 }
 
-static void write_outputs(const an_report *rep)
+static void write_outputs(const an_report *rep, const an_measures *m)
 {
     char err[1024];
     char *p;
@@ -324,6 +406,8 @@ static void write_outputs(const an_report *rep)
     WRITE("nn_hist.txt", an_write_nnhist(p, rep, err, sizeof err));
     WRITE("plot.gp", an_write_plot(p, rep, err, sizeof err));
     WRITE("stats.json", an_write_json(p, rep, err, sizeof err));
+    WRITE("pcf.txt", an_measures_write_pcf(p, m, err, sizeof err));
+    WRITE("pcf.gp", an_measures_write_pcf_plot(p, m, err, sizeof err));
 #undef WRITE
 }
 
@@ -359,8 +443,13 @@ int main(int argc, char **argv)
     an_shiftvar shiftvar;
     if (an_lowfreq_compute(R.Psum, R.K, R.n, &rings, &lowfreq) != 0) fail("out of memory");
     an_shiftvar_compute(R.Psum, R.K, R.n, &shiftvar);
+    for (int b = 0; R.pcf && b < R.pcf_bins; b++) R.pcf[b] /= sets;
     const an_measures measures = {.sets = sets, .n = R.n, .disc = R.disc, .lowfreq = &lowfreq,
-                                  .shiftvar = &shiftvar, .disc_seconds = R.disc_seconds};
+                                  .shiftvar = &shiftvar, .disc_seconds = R.disc_seconds,
+                                  .dt = R.dt, .dt_seconds = R.dt_seconds, .integ = R.integ,
+                                  .integ_seed = AN_INTEG_SEED, .integ_seconds = R.integ_seconds,
+                                  .pcf = R.pcf, .pcf_bins = R.pcf_bins, .pcf_sigma = R.opt.pcf_sigma,
+                                  .pcf_rmax = R.opt.pcf_rmax, .pcf_seconds = R.pcf_seconds};
     char *msum = an_measures_summary(&measures), *mjson = an_measures_json(&measures);
     char *outname = strdup(R.out.final);
     if (!outname || !msum || !mjson) fail("out of memory");
@@ -376,7 +465,7 @@ int main(int argc, char **argv)
         .spectrum_seconds = R.spectrum_seconds, .out = outname,
         .summary_extra = msum, .json_extra = mjson};
     rep.seconds = cli_now() - t0;
-    write_outputs(&rep);
+    write_outputs(&rep, &measures);
     char err[1024];
     if (an_outdir_commit(&R.out, err, sizeof err) != 0) {
         R.out_begun = 0;
@@ -388,7 +477,7 @@ int main(int argc, char **argv)
     an_print_summary(stdout, &rep);
     an_rings_free(&rings);
     free(outname);
-    free(msum); free(mjson); free(R.disc);
+    free(msum); free(mjson); free(R.disc); free(R.dt); free(R.integ); free(R.pcf); free(R.pcf_set);
     free(R.P); free(R.Psum); free(R.Pref); free(R.dmin); free(R.davg); free(R.spike); free(R.spike_k);
     return 0;
 }

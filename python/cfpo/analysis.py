@@ -136,6 +136,69 @@ def discrepancy(points):
     return Discrepancy(*_core.discrepancy(a))
 
 
+PCF_SIGMA = 0.05   # analysis/measures/pcf.h AN_PCF_SIGMA (in Delta(n))
+PCF_RMAX = 3.0     # AN_PCF_RMAX
+INTEG_M = 1024     # analysis/measures/integration.h AN_INTEG_M
+INTEG_SEED = 2022  # AN_INTEG_SEED
+
+
+def pcf(points, sigma=PCF_SIGMA, rmax=PCF_RMAX):
+    """Pair correlation g(r) on the torus (analysis/README.md): returns (r,
+    g), r in units of Delta(n) at b sigma / 5, b = 1..B, up to rmax (and
+    below 1/2 - 6 sigma Delta); g with a Gaussian kernel of width sigma
+    Delta(n), no window correction. cfpo-analyze's pcf.txt for one set."""
+    a = _args.as_points(points, min_n=2)
+    s = _args.real("sigma", sigma, 0.005, 1)
+    r = _args.real("rmax", rmax, 0.1, 100)
+    g = _core.pcf(a, s, r)
+    return (np.arange(1, g.shape[0] + 1) * (s / 5), g)
+
+
+@dataclass
+class Structure:
+    """Measures of the periodic Delaunay triangulation (analysis/README.md):
+    psi6, the bond-orientational order as psa computes it; voronoi_area_var,
+    the variance of the Voronoi cell areas over their squared mean;
+    covering_radius and delta_min over Delta(n); mesh_ratio = 2 covering
+    radius / delta_min (2 / sqrt(3) on the hexagonal lattice)."""
+    psi6: float
+    voronoi_area_var: float
+    mesh_ratio: float
+    covering_radius: float
+    delta_min: float
+
+
+def structure(points):
+    """psi6, Voronoi area variance and mesh ratio of a set (Structure), from
+    one CGAL periodic Delaunay triangulation: cfpo-analyze's numbers for one
+    set. ValueError for duplicate points and sets too few or too clustered
+    for a triangulation of the torus."""
+    a = _args.as_points(points)
+    psi6, var, cover, dmin, mesh = _core.delaunay(a)
+    D = math.sqrt(2 / (math.sqrt(3) * a.shape[0]))
+    return Structure(psi6, var, mesh, cover / D, dmin / D)
+
+
+@dataclass
+class Integration:
+    """UTK's integration test with exact ground truth (analysis/README.md):
+    the mean squared error over M random Gaussian and M random Heaviside
+    integrands on the unit square, and the standard errors of those means."""
+    gauss_mse: float
+    gauss_se: float
+    heaviside_mse: float
+    heaviside_se: float
+
+
+def integration(points, M=INTEG_M, seed=INTEG_SEED):
+    """The integration test of a set (Integration): cfpo-analyze's numbers
+    (--integration M) for one set; the integrands depend on M and seed only."""
+    a = _args.as_points(points)
+    m = _args.whole("M", M, 1, 1 << 20)
+    s = _args.seed(seed)
+    return Integration(*_core.integration(a, m, s))
+
+
 @dataclass
 class Certificate:
     """An exact certificate that a set is a Farthest Point Distribution.

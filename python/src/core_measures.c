@@ -1,10 +1,14 @@
-/* core_measures.c - cfpo._core.discrepancy and lowfreq: the measures of
+/* core_measures.c - cfpo._core.discrepancy, lowfreq, pcf, delaunay and
+ * integration: the measures of
  * analysis/measures/ for one set, the calls cfpo-analyze makes
  * (analysis/main.c), so the numbers are the command's. */
 #include "core.h"
 
+#include "delaunay.h"
 #include "discrepancy.h"
+#include "integration.h"
 #include "lowfreq.h"
+#include "pcf.h"
 #include "power.h"
 #include "rings.h"
 #include "shiftvar.h"
@@ -71,4 +75,77 @@ PyObject *core_lowfreq(PyObject *self, PyObject *args)
     if (!vars) return NULL;
     return Py_BuildValue("((ddLdddidi)N)", lf.range, lf.p0, (long long)lf.p0_count, lf.h, lf.s0, lf.peak,
                          lf.peak_ring, lf.alpha, lf.rings, vars);
+}
+
+/* pcf(points, sigma, rmax) -> g at r_b = b sigma / 5, b = 1..B (float64
+ * array; empty when no bin fits). */
+PyObject *core_pcf(PyObject *self, PyObject *args)
+{
+    (void)self;
+    PyObject *obj;
+    double sigma, rmax;
+    if (!PyArg_ParseTuple(args, "Odd", &obj, &sigma, &rmax)) return NULL;
+    size_t n;
+    PyArrayObject *a = core_points_in(obj, &n);
+    if (!a) return NULL;
+    const int B = an_pcf_bins(n, sigma, rmax);
+    double *g = malloc(((size_t)B + 1) * sizeof *g);
+    if (!g) {
+        Py_DECREF(a);
+        return PyErr_NoMemory();
+    }
+    int rc = 0;
+    Py_BEGIN_ALLOW_THREADS
+    if (B > 0) rc = an_pcf_compute((const double *)PyArray_DATA(a), n, sigma, rmax, B, g);
+    Py_END_ALLOW_THREADS
+    Py_DECREF(a);
+    if (rc != 0) {
+        free(g);
+        return PyErr_NoMemory();
+    }
+    const npy_intp dims[1] = {B};
+    return core_adopt(g, 1, dims);
+}
+
+/* delaunay(points) -> (psi6, area_var, covering, delta_min, mesh_ratio),
+ * covering and delta_min absolute. */
+PyObject *core_delaunay(PyObject *self, PyObject *args)
+{
+    (void)self;
+    PyObject *obj;
+    if (!PyArg_ParseTuple(args, "O", &obj)) return NULL;
+    size_t n;
+    PyArrayObject *a = core_points_in(obj, &n);
+    if (!a) return NULL;
+    an_delaunay d;
+    char err[512];
+    int rc;
+    Py_BEGIN_ALLOW_THREADS
+    rc = an_delaunay_compute((const double *)PyArray_DATA(a), n, &d, err, sizeof err);
+    Py_END_ALLOW_THREADS
+    Py_DECREF(a);
+    if (rc != 0) return core_error(PyExc_ValueError, err);
+    return Py_BuildValue("(ddddd)", d.psi6, d.area_var, d.covering, d.delta_min, d.mesh_ratio);
+}
+
+/* integration(points, M, seed) -> (gauss MSE, its se, Heaviside MSE, its se). */
+PyObject *core_integration(PyObject *self, PyObject *args)
+{
+    (void)self;
+    PyObject *obj;
+    int M;
+    unsigned long long seed;
+    if (!PyArg_ParseTuple(args, "OiK", &obj, &M, &seed)) return NULL;
+    if (M < 1) return core_error(PyExc_ValueError, "integrands: M must be at least 1");
+    size_t n;
+    PyArrayObject *a = core_points_in(obj, &n);
+    if (!a) return NULL;
+    an_integration r;
+    int rc;
+    Py_BEGIN_ALLOW_THREADS
+    rc = an_integration_compute((const double *)PyArray_DATA(a), n, M, (uint64_t)seed, &r);
+    Py_END_ALLOW_THREADS
+    Py_DECREF(a);
+    if (rc != 0) return PyErr_NoMemory();
+    return Py_BuildValue("(dddd)", r.gauss_mse, r.gauss_se, r.heaviside_mse, r.heaviside_se);
 }

@@ -44,3 +44,46 @@ def test_discrepancy_properties():
     assert wd2 == pytest.approx((2.25 - 16 / 9) / 300, rel=0.2)
     with pytest.raises(ValueError):
         cfpo.analysis.discrepancy(np.array([[0.5, 1.5]]))
+
+
+def test_structure_match_command(tmp_path, command):
+    pts = cfpo.sample(500, seed=12, max_iter=30)
+    cfpo.save(tmp_path / "p.npy", pts)
+    command("cfpo-analyze", "-o", "out", "--integration", "64", "p.npy")
+    js = json.loads((tmp_path / "out" / "stats.json").read_text())
+    st = cfpo.analysis.structure(pts)
+    jd = js["delaunay"]
+    assert g12(st.psi6) == jd["psi6"] and g12(st.voronoi_area_var) == jd["voronoi_area_var"]
+    assert g12(st.mesh_ratio) == jd["mesh_ratio"] and g12(st.covering_radius) == jd["covering_radius"]
+    assert st.delta_min == pytest.approx(cfpo.analysis.deltas(pts).delta_min, rel=1e-12)
+    r, g = cfpo.analysis.pcf(pts)
+    rows = np.loadtxt(tmp_path / "out" / "pcf.txt")
+    assert len(r) == len(rows) == 300
+    assert np.allclose(rows[:, 0], r, rtol=1e-6) and np.allclose(rows[:, 1], g, rtol=1e-11, atol=1e-300)
+    it = cfpo.analysis.integration(pts, M=64)
+    ji = js["integration"]
+    assert ji["integrands"] == 64
+    assert g12(it.gauss_mse) == ji["gauss"]["mse"] and g12(it.heaviside_mse) == ji["heaviside"]["mse"]
+
+
+def test_structure_properties():
+    # a hexagonal lattice (26 x 30, stretched by 0.08% to fit the square)
+    i, j = np.meshgrid(np.arange(26), np.arange(30))
+    lat = np.column_stack([((i + 0.5 * (j % 2)) / 26).ravel(), (j / 30).ravel()])
+    st = cfpo.analysis.structure(lat)
+    assert st.psi6 > 0.9999 and abs(st.voronoi_area_var) < 1e-12
+    assert st.mesh_ratio == pytest.approx(2 / np.sqrt(3), rel=2e-3)
+    rng = np.random.default_rng(4)
+    white = rng.random((20000, 2))
+    assert cfpo.analysis.structure(white).psi6 == pytest.approx(0.365, abs=0.01)
+    r, g = cfpo.analysis.pcf(white)
+    assert np.mean(g[(r >= 1) & (r <= 3)]) == pytest.approx(1, abs=0.02)
+    iw = cfpo.analysis.integration(rng.random((1024, 2)), M=256)
+    ij = cfpo.analysis.integration(cfpo.sample(1024, seed=3, max_iter=30), M=256)
+    assert ij.gauss_mse < 0.1 * iw.gauss_mse and ij.heaviside_mse < 0.5 * iw.heaviside_mse
+    with pytest.raises(ValueError):
+        cfpo.analysis.structure(np.array([[0.1, 0.2], [0.1, 0.2], [0.5, 0.5]]))
+    with pytest.raises(ValueError):
+        cfpo.analysis.pcf(white, sigma=0)
+    with pytest.raises(ValueError):
+        cfpo.analysis.integration(white, M=0)

@@ -4,7 +4,9 @@
 # and in stats.json, CFPO values on the right side of white noise's,
 # averaging two sets (discrepancies: the mean of the sets' values; shift
 # variances and P0: the values of the averaged spectrum, i.e. the means),
-# --no-discrepancy leaving everything else byte-identical.
+# --no-discrepancy leaving everything else byte-identical; the pair
+# correlation, Delaunay measures and integration test (CFPO more ordered
+# than white noise, pcf.txt averaged, their options).
 . "$(dirname "$0")/../../tests/common.sh"
 cd "$T" || exit 1
 
@@ -13,13 +15,14 @@ cd "$T" || exit 1
 awk 'BEGIN { srand(5); for (i = 0; i < 1024; i++) printf "%.17g %.17g\n", rand(), rand() }' >w.txt
 
 keys="p0 h_index lowk_alpha disc_wrap_l2 disc_diaphony disc_l2_star disc_gen_l2 disc_centred_l2
-shiftvar_gauss_0.02 shiftvar_gauss_0.05 shiftvar_gauss_0.15 shiftvar_disk_0.1 shiftvar_disk_0.25 shiftvar_disk_0.4"
+shiftvar_gauss_0.02 shiftvar_gauss_0.05 shiftvar_gauss_0.15 shiftvar_disk_0.1 shiftvar_disk_0.25 shiftvar_disk_0.4
+psi6 voronoi_area_var mesh_ratio covering_radius utk_gauss_mse utk_heaviside_mse"
 sa=$("$A" -q -t 1 -o a a.txt) || bad "cfpo-analyze a.txt failed"
 sw=$("$A" -q -t 1 -o w w.txt) || bad "cfpo-analyze w.txt failed"
 for k in $keys; do
   check "field \"\$sa\" $k | grep -Eq '^-?[0-9.]+(e[-+][0-9]+)?\$'" "$k missing or not a number: $sa"
 done
-check 'echo "$sa" | grep -q " check_maxdiff=- p0=.* shiftvar_disk_0.4=[^ ]* peak_bytes=[0-9]* out=a$"' \
+check 'echo "$sa" | grep -q " check_maxdiff=- p0=.* shiftvar_disk_0.4=[^ ]* psi6=.* utk_heaviside_mse=[^ ]* peak_bytes=[0-9]* out=a$"' \
   "key order: $sa"
 # CFPO against white noise: less low-frequency power, smaller discrepancies
 # and integration variances
@@ -55,6 +58,25 @@ for k in p0 h_index lowk_alpha shiftvar_disk_0.1 raps_peak delta_avg; do
   check '[ "$(field "$sn" $k)" = "$(field "$sa" $k)" ]' "--no-discrepancy changed $k"
 done
 for f in spectrum.txt raps.txt nn_hist.txt plot.gp; do check "cmp -s a/$f n/$f" "--no-discrepancy changed $f"; done
+# structure and integration: CFPO on the ordered side of white noise; pcf.txt
+# is the mean of the sets' g; the options' bad values are usage errors
+gt() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a > b) }'; }
+check 'gt "$(field "$sa" psi6)" "$(field "$sw" psi6)"' "psi6: cfpo $(field "$sa" psi6), white $(field "$sw" psi6)"
+check 'gt "$(field "$sw" voronoi_area_var)" "$(field "$sa" voronoi_area_var)"' "voronoi_area_var: cfpo not below white"
+check 'gt "$(field "$sw" mesh_ratio)" "$(field "$sa" mesh_ratio)"' "mesh_ratio: cfpo not below white"
+check 'gt "$(field "$sw" utk_gauss_mse)" "$(field "$sa" utk_gauss_mse)"' "utk_gauss_mse: cfpo not below white"
+check 'gt "$(field "$sw" utk_heaviside_mse)" "$(field "$sa" utk_heaviside_mse)"' "utk_heaviside_mse: cfpo not below white"
+check 'awk "NR > 3 && \$1 < 0.5 && \$2 != 0 { bad = 1 } END { exit bad }" a/pcf.txt' "cfpo: g != 0 below 0.5 Delta"
+check 'paste a/pcf.txt b/pcf.txt ab/pcf.txt | awk "NR > 3 { d = \$6 - (\$2 + \$4) / 2; if (d < 0) d = -d; if (d > 1e-9 * (\$6 + 1)) bad = 1 } END { exit bad }"' \
+  "pcf.txt of two sets is not the mean"
+check '[ $(grep -vc "^#" a/pcf.txt) -eq 300 ]' "pcf.txt has not 300 rows"
+"$A" -q -t 1 --pcf-sigma 0.1 --pcf-rmax 2 --integration 0 --no-delaunay -o o a.txt >/dev/null || bad "options failed"
+check '[ $(grep -vc "^#" o/pcf.txt) -eq 100 ] && grep -q "\"integration\": null" o/stats.json && grep -q "\"delaunay\": null" o/stats.json' \
+  "--pcf-sigma/--pcf-rmax/--integration 0/--no-delaunay not followed"
+for o in "--pcf-sigma 0" "--pcf-sigma x" "--pcf-rmax 0.01" "--pcf-rmax 1e9" "--integration -1" "--integration 1.5"; do
+  "$A" -q $o -o bad a.txt >/dev/null 2>&1
+  check '[ $? -eq 2 ] && [ ! -e bad ]' "$o is not a usage error"
+done
 "$A" -q --no-discrepancy=1 a.txt >/dev/null 2>&1
 check '[ $? -eq 2 ]' "--no-discrepancy=1 is not a usage error"
 finish
