@@ -12,14 +12,13 @@ load VARS
 set terminal pngcairo size 1500, 820 font "DejaVu Sans,13" enhanced
 set output OUT
 set multiplot layout 1, 2 title "Integration error: variance under a random toroidal shift against n (mean over the sets)" font ",16"
-set logscale xy
+set logscale x 2; set logscale y 10
 set format x "2^{%L}"; set format y "10^{%L}"
 set xrange [NMIN / 1.3:NMAX * 1.3]
 set xlabel "points n"
 set ylabel "variance"
 set grid lc rgb "#dddddd"
 set key outside bottom center maxrows 5 font ",10" width -1
-set xtics logscale 2 2
 D = DIR."/plotdata/integration.dat"
 do for [p = 1:2] {
   c = COLN[p]

@@ -145,7 +145,7 @@ def integration_section(p, meth, integ):
         if not mine:
             continue
         for r in mine:
-            p("| %s | %s | %s | %s | %s | `%s` |" % (meth.label(k), r["n"], r["sets"], S.ranges(r["runs"].split(";")),
+            p("| %s | %s | %s | %s | %s | `%s` |" % (meth.label(k), r["n"], r["sets"], r["runs"].replace(";", ", "),
                                                   " | ".join(g3(r[v]) for v, _ in SHOWN), r["group"]))
         slopes.append((k, [slope([S.num(r["n"]) for r in mine], [S.num(r[v]) for r in mine]) for v, _ in SHOWN]))
     p("")
