@@ -75,7 +75,7 @@ def profile(name, cores):
         # runs by the cost model, 2 cores); CCVT, CCDT, GBN, Lloyd and LFPO
         # at 4 sets in the comparison and simplified CFPO at 6 (instead of
         # 10) pay for it, for adaptive CFPO in the comparison and for GBN and
-        # Lloyd (167 s of runs less); the paper profile runs them at 10
+        # Lloyd (161 s of runs less); the paper profile runs them at 10
         p.update(sets=10, comp_n=4096, rt_reps=1, int_seeds=2, int_n=[256, 1024, 4096, 16384],
                  int_top={k: 4096 for k in ("simplified", "lfpo", "ccvt", "ccdt", "gbn", "lloyd")},
                  comp_sets=dict(ccvt=4, ccdt=4, gbn=4, lloyd=4, lfpo=4, simplified=6),
