@@ -62,7 +62,9 @@ def main(argv):
                     out[k] = " ".join(f"{a}@{n}:{x}" for (a, n), x in v.items())
                 elif k == "ttq_configs":
                     out[k] = " ".join(f"{a}:{b}" for a, b in v)
-                elif isinstance(v, list):
+                elif isinstance(v, dict):
+                    out[k] = " ".join(f"{a}:{b}" for a, b in v.items())
+                elif isinstance(v, (list, tuple)):
                     out[k] = " ".join(map(str, v))
                 else:
                     out[k] = "-" if v is None else v

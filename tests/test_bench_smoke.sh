@@ -61,10 +61,10 @@ bad_rows=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, -v mall="^($M_ALL)\$" -v m
   { e = "" }
   NF != 22 { e = e " fields=" NF }
   $1 != NR { e = e " run" }
-  $2 !~ /^(evolution|comparison|runtime|ttq)$/ { e = e " experiment" }
+  $2 !~ /^(evolution|comparison|runtime|integration|ttq)$/ { e = e " experiment" }
   $3 !~ mall { e = e " method" }
   ($3 == "cfpo") != ($4 ~ /^(paper|adaptive|simplified)$/) || ($3 != "cfpo" && $4 != "-") { e = e " variant" }
-  $2 != "ttq" && $4 == "adaptive" { e = e " variant (the other experiments run the paper variant)" }
+  ($2 == "evolution" || $2 == "runtime") && $4 == "adaptive" { e = e " variant (evolution and runtime run the paper variant)" }
   !int_($5) || !int_($6) || !int_($7) || !int_($8) || !int_($9) || ($9 != 1 && !($3 == "cfpo" && $8 == 1 && $2 == "runtime")) { e = e " n/seed/threads/ranks" }
   $10 != "-" && !int_($10) { e = e " max_iter" }
   !num($12) || !num($16) || $16 == 0 || !num($18) { e = e " seconds/peak/wall" }
@@ -75,16 +75,23 @@ bad_rows=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, -v mall="^($M_ALL)\$" -v m
   $3 ~ mit && $21 !~ /^(converged|target|time|max-iter)$/ { e = e " stop" }
   ($21 == "converged") != ($17 == "yes") || ($21 == "max-iter" && $11 != $10) { e = e " stop/converged/cap" }
   $2 != "ttq" && ($20 != "-" || $21 == "target" || $21 == "time") { e = e " ttq fields outside ttq" }
-  $2 != "ttq" && $2 != "comparison" && $22 != "-" { e = e " batch outside ttq and comparison" }
+  $2 != "ttq" && $2 != "comparison" && $2 != "integration" && $22 != "-" { e = e " batch outside ttq, comparison and integration" }
   $22 != "-" && !int_($22) { e = e " batch" }
   $2 == "ttq" && (!num($20) || !int_($22) || $3 ~ mpd) { e = e " ttq fields" }
   $10 != "-" && $2 != "ttq" && ($11 != $10 || $17 != "no") { e = e " capped" }
-  $2 == "comparison" && $3 ~ mit && $17 != "yes" { e = e " not converged" }
+  ($2 == "comparison" || $2 == "integration") && $3 ~ mit && $17 != "yes" { e = e " not converged" }
   e != "" { print $1 ":" e }')
 check "every row well formed${bad_rows:+ (bad: $bad_rows)}" [ -z "$bad_rows" ]
 keys=$(grep -v '^#' "$csv" | awk -F, '$2 == "comparison" { print ($3 == "cfpo" ? $4 : $3) }' | sort -u | tr '\n' ' ')
 check "comparison has all $N_COMP methods of scripts/methods.tsv (found: $keys; want: $COMP_SEEN)" [ "$keys" = "$COMP_SEEN" ]
-for e in evolution comparison runtime ttq; do check "experiment $e present" grep -q "^[0-9]*,$e," "$csv"; done
+for e in evolution comparison runtime integration ttq; do check "experiment $e present" grep -q "^[0-9]*,$e," "$csv"; done
+# the comparison's sets per method: the profile's sets, fewer where comp_sets says
+SETS_P=$($BENCH profile smoke | sed -n 's/^sets=//p'); COMP_SETS=$($BENCH profile smoke | sed -n 's/^comp_sets=//p')
+badcs=$(grep -v '^#' "$csv" | awk -F, -v sets="$SETS_P" -v cs="$COMP_SETS" '
+  BEGIN { n = split(cs, a, " "); for (i = 1; i <= n; i++) { split(a[i], b, ":"); want[b[1]] = b[2] } }
+  $2 == "comparison" { c[$3 == "cfpo" && $4 != "paper" ? $4 : $3]++ }
+  END { for (k in c) if (c[k] != ((k in want) ? want[k] : sets)) printf "%s:%d ", k, c[k] }')
+check "comparison: $SETS_P sets a method, as comp_sets ($COMP_SETS) says for the others${badcs:+ (bad: $badcs)}" [ -z "$badcs" ] && [ -n "$COMP_SETS" ]
 # every iterative baseline of the list (CCVT, CCDT and BNOT among them) in the
 # comparison, runtime and convergence experiments and in summary.md
 for k in $(methods_keys iter); do
@@ -197,7 +204,7 @@ done
 # the plan lists exactly these runs, the ttq ones with their limit and batch
 $BENCH run "$B" smoke --plan >"$T/plan" 2>&1
 check "--plan lists one line per run made ($(grep -c '^[a-z]' "$T/plan") lines for $rows runs)" \
-  [ "$(grep -Ec '^(evolution|comparison|runtime|ttq) ' "$T/plan")" -eq "$rows" ]
+  [ "$(grep -Ec '^(evolution|comparison|runtime|integration|ttq) ' "$T/plan")" -eq "$rows" ]
 check "--plan: ttq runs with time_limit and batch" \
   [ "$(grep -Ec '^ttq .* time_limit=[0-9.]+s batch=[0-9]+$' "$T/plan")" -eq "$(echo $want_ttq | wc -w)" ]
 check "--plan: the total" grep -Eq "^bench: profile smoke: $rows runs, about [0-9]+ min" "$T/plan"
@@ -211,9 +218,22 @@ for g in $groups; do
   check "analysis of $g (spectrum, raps)" [ -s "$R/data/analysis/$g/spectrum.txt" ] && [ -s "$R/data/analysis/$g/raps.txt" ]
   check "seed-1 point set of $g" [ -s "$R/data/points/$g.txt" ]
 done
-check "spectra.csv: 19 columns, spike ratio (average and per-set mean) and its k" \
-  awk -F, 'NR == 1 { exit !($17 == "spike_ratio" && $18 == "spike_k" && $19 == "spike_ratio_set_mean" && NF == 19) }
-    NF != 19 || !($17 > 1 && $17 < 1000) || $18 !~ /^-?[0-9]+;-?[0-9]+$/ || !($19 > 1 && $19 < 1000) { exit 1 }' "$R/spectra.csv"
+SPEC_NEW="p0,h_index,lowk_alpha,disc_wrap_l2,disc_diaphony,disc_l2_star,disc_gen_l2,disc_centred_l2,shiftvar_gauss_0.02,shiftvar_gauss_0.05,shiftvar_gauss_0.15,shiftvar_disk_0.1,shiftvar_disk_0.25,shiftvar_disk_0.4"
+check "spectra.csv: 33 columns, spike ratio (average and per-set mean) and its k, then the measures of sampling research" \
+  awk -F, -v new="$SPEC_NEW" 'NR == 1 { n = split(new, c, ","); for (i = 1; i <= n; i++) if ($(19 + i) != c[i]) exit 1
+      exit !($17 == "spike_ratio" && $18 == "spike_k" && $19 == "spike_ratio_set_mean" && NF == 33) }
+    NF != 33 || !($17 > 1 && $17 < 1000) || $18 !~ /^-?[0-9]+;-?[0-9]+$/ || !($19 > 1 && $19 < 1000) { exit 1 }' "$R/spectra.csv"
+# the new columns of the converged sets: numbers in their ranges (P0 of white
+# noise about 1, of the blue-noise sets far below; discrepancies in (0, 1);
+# variances positive, white noise's the largest)
+badm=$(awk -F, 'NR > 1 && $2 == "comparison" {
+    for (i = 20; i <= 33; i++) if ($i !~ /^-?[0-9.]+(e[-+]?[0-9]+)?$/) { printf "%s(col %d) ", $1, i; next }
+    for (i = 23; i <= 27; i++) if (!($i > 0 && $i < 1)) printf "%s(disc %d) ", $1, i
+    for (i = 28; i <= 33; i++) if (!($i > 0)) printf "%s(var %d) ", $1, i
+    if ($3 == "white") { if (!($20 > 0.7 && $20 < 1.4)) printf "white(p0 %s) ", $20; wv = $32 } else if ($32 > mv) mv = $32
+    if ($3 == "bnot" && !($20 < 0.01)) printf "bnot(p0 %s) ", $20 }
+  END { if (!(wv > mv)) printf "white noise variance %s not the largest (%s) ", wv, mv }' "$R/spectra.csv")
+check "spectra.csv: the measures in their ranges${badm:+ (bad: $badm)}" [ -z "$badm" ]
 check "BS and Bridson averaged by cfpo-analyze --any-n, same-n groups by plain cfpo-analyze" \
   awk -F, 'NR > 1 && (($3 == "bs" || $3 == "bridson") != ($16 == "cfpo-analyze --any-n") || $16 !~ /^cfpo-analyze/) { exit 1 }' "$R/spectra.csv"
 # the BS and Bridson rows: n is the mean of their runs' n (runs.csv column n)
@@ -221,6 +241,54 @@ badn=$(awk -F, 'FNR == NR { if ($2 == "comparison") { s[$3] += $5; c[$3]++ } nex
   FNR > 1 && ($3 == "bs" || $3 == "bridson") { m = sprintf("%.1f", s[$3] / c[$3]); if ($5 != m) printf "%s(%s, runs %s) ", $1, $5, m }' \
   <(grep -v '^#' "$csv") "$R/spectra.csv")
 check "spectra.csv: n of BS and Bridson is their runs' mean${badn:+ (bad: $badn)}" [ -z "$badn" ]
+
+# ---- integration.csv: one row per method of the comparison and n of the profile --------
+ic="$R/integration.csv"
+check "integration.csv header" [ "$(head -n 1 "$ic")" = "group,method,variant,n,n_target,sets,runs,K,averaged_by,shiftvar_gauss_0.02,shiftvar_gauss_0.05,shiftvar_gauss_0.15,shiftvar_disk_0.1,shiftvar_disk_0.25,shiftvar_disk_0.4" ]
+want_int=$(for k in $(methods_keys pd iter cfpo); do for n in $(prof int_n); do echo "integration-$k-n$n"; done; done | sort | tr '\n' ' ')
+got_int=$(tail -n +2 "$ic" | cut -d, -f1 | sort | tr '\n' ' ')
+check "integration.csv: a row per method and n (want: $want_int; got: $got_int)" [ "$want_int" = "$got_int" ]
+# each row: its runs (ranges a;b-c) are the runs.csv rows of that method and
+# n_target whose sets the experiment took (comparison at its n, the
+# integration runs, one-thread runtime runs), as many as sets; variances > 0
+# and white noise's the largest at each n
+badi=$(awk -F, 'FNR == NR { if ($1 ~ /^[0-9]+$/) { k = ($3 == "cfpo" && $4 != "paper") ? $4 : $3; key[$1] = k "/" $6; ex[$1] = $2; th[$1] = $8 } next }
+  FNR > 1 { g = $1; sub(/^integration-/, "", g); sub(/-n[0-9]+$/, "", g); m = split($7, parts, ";"); c = 0
+    for (i = 1; i <= m; i++) { split(parts[i], ab, "-"); hi = (ab[2] == "" ? ab[1] : ab[2])
+      for (r = ab[1]; r <= hi; r++) { c++; if (key[r] != g "/" $5 || !(ex[r] == "comparison" || ex[r] == "integration" || (ex[r] == "runtime" && th[r] == 1))) printf "%s(run %d) ", $1, r } }
+    if (c != $6) printf "%s(%d runs, %s sets) ", $1, c, $6
+    for (i = 10; i <= 15; i++) if (!($i > 0)) printf "%s(col %d) ", $1, i
+    if (g == "white") wv[$5] = $14; else if ($14 > mv[$5]) mv[$5] = $14 }
+  END { for (n in wv) if (!(wv[n] > mv[n])) printf "white noise not the largest at %s ", n }' <(grep -v '^#' "$csv") "$ic")
+check "integration.csv: rows cite their runs, positive variances${badi:+ (bad: $badi)}" [ -z "$badi" ]
+# the integration experiment made only the sets the others did not: no
+# (method, n, seed) twice among the sets it took
+dup=$(grep -v '^#' "$csv" | awk -F, '$2 == "integration" { k = (($3 == "cfpo" && $4 != "paper") ? $4 : $3) "/" $6 "/" $7; i[k] = 1 }
+  $2 == "runtime" && $8 == 1 && $9 == 1 { k = (($3 == "cfpo" && $4 != "paper") ? $4 : $3) "/" $6 "/" $7; r[k] = 1 }
+  END { for (k in i) if (k in r) printf "%s ", k }')
+check "integration runs only where no runtime run of one thread made the set${dup:+ (twice: $dup)}" [ -z "$dup" ]
+# summary.md: the figure data are integration.csv's (disk r = 0.25 of the last row)
+last=$(tail -n 1 "$ic" | awk -F, '{ printf "%s\t%s\t%s", $4, $14, $11 }')
+check "plotdata/integration.dat holds integration.csv's last row ($last)" grep -qF "$last" "$R/plotdata/integration.dat"
+
+# ---- the low-frequency table: every number recomputes from spectra.csv --------------
+lowtab=$(awk '/^## Low-frequency spectrum/ { on = 1; next } on && /^## / { on = 0 } on && /^\| / && !/^\| (method|---)/' "$R/summary.md")
+check "summary.md: a low-frequency table row per method ($(grep -c . <<<"$lowtab") of $N_COMP)" [ "$(grep -c . <<<"$lowtab")" -eq "$N_COMP" ]
+badl=$(awk -F, 'FNR == NR { if (FNR > 1 && $2 == "comparison") { s = ""
+      split("20 21 22 23 24 25 26 27 31 32 33 28 29 30", c, " ")
+      for (i = 1; i <= 14; i++) s = s " | " (($(c[i]) == "" || $(c[i]) == "-" || tolower($(c[i])) == "nan") ? "-" : sprintf("%.3g", $(c[i])))
+      want[$1] = s " | `" $1 "` |" } next }
+    { g = $0; sub(/.*`comparison-/, "comparison-", g); sub(/`.*/, "", g); row = $0; sub(/^\| [^|]* /, "", row)
+      if (!(g in want) || row != substr(want[g], 2)) print g; seen[g] = 1 }
+    END { for (g in want) if (!(g in seen)) print "missing " g }' "$R/spectra.csv" - <<<"$lowtab")
+check "summary.md: the low-frequency table recomputes from spectra.csv${badl:+ (bad: $badl)}" [ -z "$badl" ]
+check "summary.md: the low-frequency table defines its measures and links analysis/README.md" \
+  grep -q '(../../analysis/README.md#measures-of-sampling-research-measures)' "$R/summary.md"
+for d in '\*\*P0\*\*' '\*\*H\*\*' '\*\*α\*\*' '\*\*wrap-around L2' '\*\*Var disk r'; do
+  check "summary.md defines $d" grep -q "^- $d" "$R/summary.md"
+done
+check "summary.md: CFPO (adaptive) beside CFPO in the comparison table" \
+  grep -q "^| CFPO (adaptive) | [0-9]" "$R/summary.md"
 
 # ---- figures ----------------------------------------------------------------------
 png_ok() { # PNG signature, then an IHDR chunk with a non-zero width and height
@@ -232,13 +300,15 @@ png_ok() { # PNG signature, then an IHDR chunk with a non-zero width and height
   h=$(head -c 24 "$1" | tail -c 4 | od -An -tu1 | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }')
   [ "$w" -ge 400 ] && [ "$h" -ge 300 ] && [ "$(stat -c %s "$1")" -gt 10000 ]
 }
-FIGS="evolution comparison convergence runtime speedup time-to-quality"
+FIGS="evolution comparison lowfreq convergence runtime speedup integration time-to-quality"
 for f in $FIGS; do
   check "fig-$f.png is a PNG image" png_ok "$R/fig-$f.png"
   check "summary.md shows fig-$f.png" grep -q "](fig-$f.png)" "$R/summary.md"
   check "scripts/fig-$f.gp exists" [ -f scripts/fig-$f.gp ]
 done
-check "no other PNG than the figures" [ "$(find "$R" -name '*.png' | wc -l)" -eq 6 ]
+check "no other PNG than the figures (no pcf.txt: no g(r) figure)" [ "$(find "$R" -name '*.png' | wc -l)" -eq 8 ] && [ ! -e "$R/fig-pcf.png" ]
+check "the low-frequency panel draws every method of the comparison" \
+  [ "$(grep -c "^GRP\[[0-9]*\] = 'comparison-" "$R/plotdata/fig-lowfreq.vars.gp")" -eq "$N_COMP" ]
 
 # ---- summary.md: numbers recompute from runs.csv ------------------------------------
 for k in cfpo fpo; do
@@ -253,19 +323,38 @@ for k in cfpo fpo; do
 done
 
 # ---- replot: from the folder alone ----------------------------------------------------
-sum_before=$(md5sum "$csv" "$R/spectra.csv")
+sum_before=$(md5sum "$csv" "$R/spectra.csv" "$R/integration.csv")
 cp "$R/summary.md" "$T/summary.before"
 rm -f "$R"/fig-*.png "$R/summary.md"
 rm -rf "$R/plotdata"
 if $BENCH replot "$R" >"$T/rout" 2>"$T/rerr"; then ok; else bad "bench.py replot failed: $(tail -n 1 "$T/rerr")"; fi
 for f in $FIGS; do check "replot redrew fig-$f.png" png_ok "$R/fig-$f.png"; done
 check "replot rewrote the same summary.md" cmp -s "$R/summary.md" "$T/summary.before"
-check "replot left runs.csv and spectra.csv alone" [ "$(md5sum "$csv" "$R/spectra.csv")" = "$sum_before" ]
+check "replot left runs.csv, spectra.csv and integration.csv alone" [ "$(md5sum "$csv" "$R/spectra.csv" "$R/integration.csv")" = "$sum_before" ]
 # a folder without time-to-quality runs (written before they existed)
 old="$T/old"; cp -r "$R" "$old"
 awk -F, '/^#/ || $2 != "ttq"' "$R/runs.csv" >"$old/runs.csv"; rm -f "$old/quality.csv" "$old/fig-time-to-quality.png"
 if $BENCH replot "$old" >/dev/null 2>"$T/rerr2"; then ok; else bad "replot of a folder without ttq runs: $(tail -n 1 "$T/rerr2")"; fi
 check "no ttq runs: no time-to-quality figure or section" [ ! -e "$old/fig-time-to-quality.png" ] && ! grep -q "Time to quality" "$old/summary.md"
+check "no ttq runs: the integration figure still drawn" png_ok "$old/fig-integration.png"
+rm -rf "$old"
+# a folder written before the measures: spectra.csv of 19 columns, no integration.csv
+old="$T/old2"; cp -r "$R" "$old"
+cut -d, -f1-19 "$R/spectra.csv" >"$old/spectra.csv"; rm -f "$old/integration.csv"
+if $BENCH replot "$old" >/dev/null 2>"$T/rerr3"; then ok; else bad "replot of a folder before the measures: $(tail -n 1 "$T/rerr3")"; fi
+check "before the measures: no integration figure, no low-frequency table" \
+  [ ! -e "$old/fig-integration.png" ] && ! grep -q "^## Low-frequency" "$old/summary.md" && ! grep -q "^## Integration" "$old/summary.md"
+check "before the measures: the low-frequency panel still drawn (raps.txt)" png_ok "$old/fig-lowfreq.png"
+# pair correlation: a pcf.txt in an averaged analysis gives the g(r) figure;
+# without one, it goes (silently)
+printf '# pair correlation, test data\n# r/Delta g\n0.1 0\n0.5 0\n0.9 1.8\n1.2 1.1\n2.0 1.0\n3.0 1.0\n' >"$old/data/analysis/comparison-cfpo/pcf.txt"
+cp "$old/data/analysis/comparison-cfpo/pcf.txt" "$old/data/analysis/comparison-fpo/pcf.txt"
+if $BENCH replot "$old" >/dev/null 2>"$T/rerr4"; then ok; else bad "replot with pcf.txt: $(tail -n 1 "$T/rerr4")"; fi
+check "pcf.txt present: fig-pcf.png a PNG, shown in summary.md, one panel per such method" \
+  png_ok "$old/fig-pcf.png" && grep -q "](fig-pcf.png)" "$old/summary.md" && [ "$(grep -c "^GRP\[" "$old/plotdata/fig-pcf.vars.gp")" -eq 2 ]
+rm -f "$old"/data/analysis/*/pcf.txt
+if $BENCH replot "$old" >/dev/null 2>"$T/rerr5"; then ok; else bad "replot after pcf.txt went: $(tail -n 1 "$T/rerr5")"; fi
+check "pcf.txt gone: no g(r) figure, no mention" [ ! -e "$old/fig-pcf.png" ] && ! grep -q "fig-pcf" "$old/summary.md"
 rm -rf "$old"
 (cd "$T/res/.." && mkdir -p results && cp -r "$R" results/ && python3 "$SRC/scripts/bench.py" replot >/dev/null 2>&1)
 check "replot without an argument takes the newest folder under results/" [ -s "$T/results/$(basename "$R")/fig-speedup.png" ]

@@ -5,9 +5,10 @@ but gnuplot. Default folder: the newest under results/ with a runs.csv.
 
 Writes plotdata/ (the tables the figures draw: convergence-KEY.dat,
 runtime.tsv/.dat, speedup.tsv, speedup-cores.dat, speedup-n.dat, ttq-runs.tsv,
-ttq-nN.dat and one fig-NAME.vars.gp per figure), fig-NAME.png for every
-scripts/fig-NAME.gp (time-to-quality only when the folder has such runs) and
-summary.md. Each file is written under a temporary name and renamed.
+ttq-nN.dat, integration.dat and one fig-NAME.vars.gp per figure),
+fig-NAME.png for every scripts/fig-NAME.gp (time-to-quality only when the
+folder has such runs, integration when it has integration.csv, pcf when
+the comparison's analyses hold pcf.txt) and summary.md. Each file is written under a temporary name and renamed.
 """
 import math
 import os
@@ -202,7 +203,9 @@ def speedup(F, meth, host):
     sp.sort(key=lambda x: (x[0], S.num(x[1]), S.num(x[4]), S.num(x[3])))
     write(f"{F.R}/plotdata/speedup.tsv", ["\t".join(x) for x in sp])
     # against cores: one block per method/n/ranks (the 1-thread, 1-rank row in each)
-    ba = sorted({(x[0], x[1], x[3]) for x in sp}, key=lambda b: (b[0], S.num(b[1]), S.num(b[2])))
+    # (a method and n with one-thread runs only, as adaptive CFPO's comparison, draws no line)
+    multi = {(x[0], x[1]) for x in sp if int(x[4]) > 1}
+    ba = sorted({(x[0], x[1], x[3]) for x in sp if (x[0], x[1]) in multi}, key=lambda b: (b[0], S.num(b[1]), S.num(b[2])))
     ba.sort(key=lambda b: b[0], reverse=True)
     parts = []
     for k, n, rk in ba:
@@ -265,7 +268,21 @@ def replot(R=None):
     conv_keys = convergence(F, meth, N, SETS)
     rt = runtime(F, meth, host)
     sp = speedup(F, meth, host)
-    figs = ["evolution", "comparison", "convergence", "runtime", "speedup"]
+    figs = ["evolution", "comparison", "lowfreq", "convergence", "runtime", "speedup"]
+    from . import integration, lowfreq
+    lowfreq.write_lowfreq(F, meth, WRITTEN, N)
+    integ = integration.read(R)
+    # the optional figures: integration (a folder with integration.csv),
+    # g(r) (where the averaged analyses hold pcf.txt); stale copies removed
+    optional = (("integration", bool(integ) and integration.write_figure(R, meth, integ, WRITTEN),
+                 ["plotdata/integration.dat"]), ("pcf", lowfreq.write_pcf(F, meth, WRITTEN, N), []))
+    for fig, have, data in optional:
+        if have:
+            figs.append(fig)
+            continue
+        for f in [f"fig-{fig}.png", f"plotdata/fig-{fig}.vars.gp"] + data:
+            if os.path.exists(f"{R}/{f}"):
+                os.remove(f"{R}/{f}")
     for f in os.listdir(P):
         if f.startswith("ttq-") and f.endswith(".dat"):
             os.remove(f"{P}/{f}")
@@ -299,5 +316,5 @@ def replot(R=None):
             raise Failure(f"scripts/fig-{fig}.gp wrote no image")
         os.rename(out, f"{R}/fig-{fig}.png")
     from . import summary
-    write_text(f"{R}/summary.md", summary.text(F, meth, conv_keys, rt, sp, runs, tmin, tavg))
+    write_text(f"{R}/summary.md", summary.text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ, figs))
     print(f"replot: figures and summary.md in {R}", file=sys.stderr)

@@ -2,6 +2,7 @@
 as data, and the rough cost model behind `--plan` and the time-left display.
 
   sets          point sets per spectrum (comparison and evolution figures)
+  comp_sets     fewer sets for some methods of the comparison: {key: sets}
   comp_n        points per set in the comparison, evolution and convergence
   comp_threads  threads of CFPO in the comparison (1: like for like)
   comp_together one-thread comparison runs of one method (successive seeds)
@@ -25,6 +26,18 @@ as data, and the rough cost model behind `--plan` and the time-left display.
   ttq_big       n at which only CFPO (adaptive, 2 threads) runs it
   ttq_seeds     seeds per configuration; ttq_maxiter: iteration cap (None)
 
+  int_n         n of the integration experiment, for every method of the
+                comparison up to int_top[key] (absent: no limit): the sets whose exact shift
+                variances (cfpo-analyze --no-discrepancy) the integration
+                figure draws against n; a runtime run of one thread at such
+                an n and a seed up to int_seeds keeps its set for it, the
+                comparison's sets serve at comp_n, and only the sets missing
+                are made by runs of their own (experiment integration,
+                successive seeds of a method started together like the
+                comparison's)
+  int_seeds     seeds per (method, n) of the integration experiment;
+                int_seeds_big: (n0, seeds) fewer seeds above n0 (None)
+
 The runtime figure uses every uncapped run (comparison and runtime), so the
 runtime plan leaves out n = comp_n on comp_threads.
 """
@@ -46,16 +59,26 @@ def profile(name, cores):
     """The plan of a profile as a dict; None for an unknown name."""
     if name not in NAMES:
         return None
-    p = dict(comp_threads=1, comp_together=cores, evo_iters=[0, 1, 2, 5, 10],
+    p = dict(comp_threads=1, comp_together=cores, evo_iters=[0, 1, 2, 5, 10], comp_sets={}, int_seeds_big=None,
+             int_top={},
              rt_threads=threads_list(cores), ttq_target_min="0.925", ttq_target_avg="0.929",
              ttq_sizes=[4096, 65536], ttq_big=[], ttq_seeds=3, ttq_maxiter=None, ttq_limits={})
     if name == "smoke":
         p.update(sets=2, comp_n=1024, rt_reps=1, ttq_sizes=[1024], ttq_seeds=1, ttq_maxiter=80,
+                 comp_sets=dict(gbn=1), int_seeds=2, int_n=[256, 1024],
                  rt_sizes=dict(cfpo=[256, 512], simplified=[256], fpo=[256], lfpo=[256], ccvt=[256],
                                ccdt=[256], bnot=[256], dart=[4096], bs=[4096], bridson=[4096],
                                white=[4096], jitter=[4096], sobol=[4096], lloyd=[256], gbn=[256]))
     elif name == "default":
-        p.update(sets=10, comp_n=4096, rt_reps=1,
+        # the integration experiment at 2^8, 2^10, 2^12 (the comparison's) and
+        # 2^14 points, 2 seeds, the slow iterative methods to 2^12 (63 s of
+        # runs by the cost model, 2 cores); CCVT, CCDT, GBN, Lloyd and LFPO
+        # at 4 sets in the comparison and simplified CFPO at 6 (instead of
+        # 10) pay for it, for adaptive CFPO in the comparison and for GBN and
+        # Lloyd (161 s of runs less); the paper profile runs them at 10
+        p.update(sets=10, comp_n=4096, rt_reps=1, int_seeds=2, int_n=[256, 1024, 4096, 16384],
+                 int_top={k: 4096 for k in ("simplified", "lfpo", "ccvt", "ccdt", "gbn", "lloyd")},
+                 comp_sets=dict(ccvt=4, ccdt=4, gbn=4, lloyd=4, lfpo=4, simplified=6),
                  rt_sizes=dict(cfpo=[1024, 4096, 16384], simplified=[1024, 4096], fpo=[1024, 16384],
                                lfpo=[1024], ccvt=[1024], ccdt=[1024], bnot=[1024, 4096, 16384],
                                dart=[1024, 4096, 16384, 65536, 262144],
@@ -76,7 +99,12 @@ def profile(name, cores):
         p["ttq_configs_at"] = {65536: [("adaptive", 1), ("fpo", 1), ("adaptive", 2)]}
         p["ttq_limits"] = {("fpo", 65536): 35}
     else:
+        # the integration experiment: 2^8 to 2^20 points, 10 seeds to 2^16
+        # and 3 above, each method as far as its runtime experiment goes
         p.update(sets=10, comp_n=4096, rt_reps=1, comp_together=1, ttq_big=[1048576],
+                 int_seeds=10, int_seeds_big=(65536, 3), int_n=[2 ** e for e in range(8, 21)],
+                 int_top=dict(adaptive=262144, fpo=262144, simplified=262144, bnot=65536, lfpo=65536, ccvt=65536, ccdt=65536,
+                              gbn=65536, lloyd=65536),
                  rt_sizes=dict(cfpo=[1024, 4096, 16384, 65536, 262144, 1048576],
                                simplified=[1024, 4096, 16384, 65536, 262144],
                                fpo=[1024, 4096, 16384, 65536, 262144], lfpo=[1024, 4096, 16384, 65536],
@@ -89,6 +117,21 @@ def profile(name, cores):
     p["ttq_configs"] = TTQ_ALL
     p["comp_together"] = min(p["comp_together"], cores)
     return p
+
+
+def int_sizes(p, key):
+    """n of the integration experiment for a method of the comparison."""
+    return [n for n in p["int_n"] if n <= p["int_top"].get(key, n)]
+
+
+def int_seeds(p, n):
+    big = p["int_seeds_big"]
+    return big[1] if big and n > big[0] else p["int_seeds"]
+
+
+def comp_sets(p, key):
+    """Sets of a method in the comparison."""
+    return p["comp_sets"].get(key, p["sets"])
 
 
 def ttq_configs(p, n):
@@ -114,7 +157,7 @@ def omp_env():
 
 # iterations to converge ~ a (n/1024)^b (capped), seconds per point and
 # iteration on one core; single runs on a 2-core machine
-_MODEL = dict(cfpo=(230, 0.5, 1250, 1.1e-6), simplified=(654, 0.35, 1550, 0.75e-6),
+_MODEL = dict(cfpo=(230, 0.5, 1250, 1.1e-6), adaptive=(116, 0.5, 1250, 1.1e-6), simplified=(654, 0.35, 1550, 0.75e-6),
               fpo=(166, 0.33, 5000, 2.5e-6), lfpo=(239, 0.55, 5000, 2.5e-6),
               ccvt=(330, 0, 5000, 1.5e-5), ccdt=(120, 0.1, 5000, 1.5e-5), bnot=(20, 0, 20, 1.05e-5),
               lloyd=(100, 0, 100, 8.5e-6), gbn=(1000, 0, 1000, 3.4e-6))
@@ -133,7 +176,7 @@ def estimate(key, n, threads, maxiter):
     if maxiter is not None and maxiter < it:
         it = maxiter
     s = c * n * it
-    if key in ("cfpo", "simplified") and threads > 1:
+    if key in ("cfpo", "adaptive", "simplified") and threads > 1:
         s /= 0.95 * threads
     return s + 0.01
 

@@ -4,7 +4,8 @@ its baselines, with the paper's figures (Chen & Gotsman, figures 5-8).
 Builds the plan of the profile (profiles.py; the methods: methods.tsv), runs
 it (one-thread runs of a batch start together, each pinned to its own CPU;
 every other run alone), writes runs.csv, analyses the final sets of the
-time-to-quality runs (quality.csv) and averages the spectra of each group of
+time-to-quality runs (quality.csv), the integration experiment's sets
+(integration.csv, integration.py) and averages the spectra of each group of
 sets with cfpo-analyze (spectra.csv, data/analysis/), then draws the figures
 and summary.md (plotdata.replot). Everything is built in a temporary folder
 renamed when complete: a failure or a signal leaves nothing.
@@ -19,6 +20,7 @@ import sys
 import threading
 import time
 
+from . import integration as I
 from . import methods as M
 from .common import Failure, sh, write
 from . import profiles as P
@@ -32,8 +34,13 @@ COLUMNS_NOTE = ("# columns: seconds = the tool's own sampling time (start includ
                 "wall_seconds = the whole process as timed by this script; time_limit = --time-limit of a ttq run "
                 "(- none); stop = the rule that ended the run (SUMMARY stop=); batch = runs with the same number "
                 "started together, one per core (- alone)")
+# the measures of sampling research (analysis/README.md), appended after the
+# 19 columns of the earlier folders, which replot without them
+MEASURES = ("p0", "h_index", "lowk_alpha", "disc_wrap_l2", "disc_diaphony", "disc_l2_star", "disc_gen_l2",
+            "disc_centred_l2") + I.SHIFTVAR
 SPECTRA_COLUMNS = ("group,experiment,method,variant,n,iteration,sets,runs,K,delta_min,delta_avg,raps_peak,"
-                   "raps_peak_r,eff_nyquist,oscillation,averaged_by,spike_ratio,spike_k,spike_ratio_set_mean")
+                   "raps_peak_r,eff_nyquist,oscillation,averaged_by,spike_ratio,spike_k,spike_ratio_set_mean,"
+                   + ",".join(MEASURES))
 QUALITY_COLUMNS = "run,n,K,certify,cert_pass,cert_max_violation,lct_pass,spike_ratio,spike_k,lattice_ratio,lattice_k"
 
 
@@ -47,11 +54,11 @@ class Stop(Exception):
 def build_plan(p, meth, cores, mpirun):
     plan = []
 
-    def add(exp, key, n, seed, threads, maxiter, out, limit=None, batch=None, est=None):
+    def add(exp, key, n, seed, threads, maxiter, out, limit=None, batch=None, est=None, integ=None):
         if est is None:
             est = P.estimate(key, n, threads, maxiter)
         plan.append(dict(exp=exp, key=key, n=n, seed=seed, threads=threads, maxiter=maxiter,
-                         est=est, out=out, limit=limit, batch=batch))
+                         est=est, out=out, limit=limit, batch=batch, integ=integ))
 
     batch = 0
     for it in p["evo_iters"]:
@@ -60,29 +67,51 @@ def build_plan(p, meth, cores, mpirun):
     together = p["comp_together"]
     for k in meth.keys("pd", "iter", "cfpo"):
         t = p["comp_threads"] if meth.kind(k) == "cfpo" else 1
+        integ = (k, p["comp_n"]) if p["comp_n"] in P.int_sizes(p, k) else None
         slot = 0
-        for s in range(1, p["sets"] + 1):
+        for s in range(1, P.comp_sets(p, k) + 1):
             out = f"sets/comparison-{k}-s{s}.txt"
             if t > 1 or together <= 1:
-                add("comparison", k, p["comp_n"], s, t, None, out)
+                add("comparison", k, p["comp_n"], s, t, None, out, integ=integ)
                 continue
             if slot == 0:
                 batch += 1
-            add("comparison", k, p["comp_n"], s, t, None, out, batch=batch)
+            add("comparison", k, p["comp_n"], s, t, None, out, batch=batch, integ=integ)
             slot = (slot + 1) % together
+    kept = set()  # (key, n, seed) of the runtime runs whose sets the integration experiment takes
     for k in meth.keys("cfpo") + meth.keys("iter") + meth.keys("pd"):
         cf = meth.kind(k) == "cfpo"
         for n in p["rt_sizes"].get(k, []):
             for t in (p["rt_threads"] if cf else [1]):
                 ct = p["comp_threads"] if cf else 1
-                if n == p["comp_n"] and t == ct and p["rt_reps"] <= p["sets"]:
+                if n == p["comp_n"] and t == ct and P.comp_sets(p, k) >= p["rt_reps"]:
                     continue  # the comparison's runs (same n, threads, seeds)
                 for s in range(1, p["rt_reps"] + 1):
-                    add("runtime", k, n, s, t, None, None)
+                    if t == 1 and n != p["comp_n"] and n in P.int_sizes(p, k) and s <= P.int_seeds(p, n):
+                        kept.add((k, n, s))
+                        add("runtime", k, n, s, t, None, f"sets/runtime-{k}-n{n}-s{s}.txt", integ=(k, n))
+                    else:
+                        add("runtime", k, n, s, t, None, None)
     if mpirun and cores >= 2:
         for n in p["rt_sizes"].get("cfpo", []):
             for s in range(1, p["rt_reps"] + 1):
                 add("runtime", "cfpo-mpi", n, s, 1, None, None)
+    for k in meth.keys("pd", "iter", "cfpo"):  # the integration experiment's own runs
+        for n in P.int_sizes(p, k):
+            if n == p["comp_n"]:
+                continue
+            slot = 0
+            for s in range(1, P.int_seeds(p, n) + 1):
+                if (k, n, s) in kept:
+                    continue
+                out = f"sets/integration-{k}-n{n}-s{s}.txt"
+                if together <= 1:
+                    add("integration", k, n, s, 1, None, out, integ=(k, n))
+                    continue
+                if slot == 0:
+                    batch += 1
+                add("integration", k, n, s, 1, None, out, batch=batch, integ=(k, n))
+                slot = (slot + 1) % together
 
     def add_ttq(key, n, seed, t, b):
         lim = P.ttq_limit(p, key, n)
@@ -404,6 +433,8 @@ class Bench:
             shutil.rmtree(f"{self.work}/tmp/an-q")
             os.remove(f"{self.work}/{out}")
         write(f"{self.work}/quality.csv", quality)
+        keep = {r["out"] for r in self.plan if r["exp"] == "comparison"}
+        write(f"{self.work}/integration.csv", I.analyse(self, self.plan, rows, keep))
         spectra = self.spectra(p, rows)
         write(f"{self.work}/spectra.csv", spectra)
         shutil.rmtree(f"{self.work}/sets")
@@ -448,8 +479,9 @@ class Bench:
             os.makedirs(dst)
             anyn = len(set(sizes)) > 1
             f = self.analyze(["-q", "-K", str(K)] + (["--any-n"] if anyn else []) + ["-o", a] + files, grp)
-            for name in ("raps.txt", "stats.json"):
-                shutil.copy(f"{a}/{name}", dst)
+            for name in ("raps.txt", "stats.json", "pcf.txt"):
+                if name != "pcf.txt" or os.path.isfile(f"{a}/{name}"):  # pcf.txt: where the tool writes one
+                    shutil.copy(f"{a}/{name}", dst)
             crop_spectrum(f"{a}/spectrum.txt", f"{dst}/spectrum.txt", crop)
             shutil.rmtree(a)
             nval = "%.1f" % (sum(sizes) / len(sizes)) if anyn else f.get("n", "")
@@ -458,7 +490,7 @@ class Bench:
                                      "K", "delta_min", "delta_avg", "raps_peak", "raps_peak_r", "eff_nyquist",
                                      "oscillation")] + ["cfpo-analyze --any-n" if anyn else "cfpo-analyze",
                                  f.get("spike_ratio", ""), f.get("spike_k", "").replace(",", ";"),
-                                 f.get("spike_ratio_set_mean", "")]))
+                                 f.get("spike_ratio_set_mean", "")] + [f.get(k, "") for k in MEASURES]))
             os.rename(f"{self.work}/sets/{grp}-s1.txt", f"{self.work}/data/points/{grp}.txt")
         return out
 

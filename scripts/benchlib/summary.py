@@ -77,7 +77,87 @@ over this row's, a lower bound; - where this row never got there.
 Per run: `plotdata/ttq-runs.tsv`."""
 
 
-def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg):
+LOWFREQ_NOTE = """The measures of sampling research ([analysis/README.md](../../analysis/README.md#measures-of-sampling-research-measures),
+"Measures of sampling research"), from the analysis that averages the sets of each method (spectra.csv,
+the columns of the same names; discrepancies and variances: the mean of the per-set values), n as above:
+
+- **P0** (`p0`): the mean of P(k) over 0 < |k| ≤ 0.2 √n, the low-frequency floor (white noise 1).
+- **H** (`h_index`): the hyperuniformity index, the intercept at k = 0 of the least-squares line
+  through the RAPS of the rings up to 0.2 √n over the RAPS at its first peak (effectively
+  hyperuniform: H ≤ 1e-3; negative for a k² spectrum such as jittered's).
+- **α** (`lowk_alpha`): the least-squares slope of log RAPS against log |k| over the same rings
+  (0: a flat floor; 2: a k² spectrum).
+- **wrap-around L2, diaphony, L2-star, generalised L2, centred L2** (`disc_*`): the L2
+  discrepancies, each the square root of its squared form (Hickernell 1998; Zinterhof 1976;
+  Warnock 1972); the first two torus-invariant.
+- **Var disk r, Var Gauss σ** (`shiftvar_*`): the exact variance of the estimate
+  (1/n) Σ f(x_j + s) of the integral of f under a uniformly random toroidal shift s,
+  (1/n) Σ_{k ≠ 0} |f̂(k)|² P(k), for f the indicator of a disk of radius r and the periodised
+  Gaussian of width σ.
+"""
+INTEGRATION_NOTE = """The exact variance under a random toroidal shift (the last columns above) at each n of the
+integration experiment (integration.csv, one row per method and n: the analysis of its sets with
+`cfpo-analyze --no-discrepancy`, the mean of the per-set variances; the sets: the comparison's at
+its n, one-thread runtime runs, and runs of experiment `integration` for the seeds missing).
+Slope: the least-squares slope of log variance against log n over the rows of the method
+(white noise: -1; a flat low-frequency floor keeps it near -1; the disk's discontinuity bounds a
+blue-noise set's at about -1.5)."""
+
+
+def slope(xs, ys):
+    """Least-squares slope of log y against log x ('-' for fewer than 2 points or y <= 0)."""
+    pts = [(math.log(x), math.log(y)) for x, y in zip(xs, ys) if x > 0 and y > 0]
+    if len(pts) < 2 or len({x for x, _ in pts}) < 2:
+        return "-"
+    mx = sum(x for x, _ in pts) / len(pts)
+    my = sum(y for _, y in pts) / len(pts)
+    return "%.2f" % (sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts))
+
+
+def g3(x):
+    return "-" if x in ("-", "", None) or x.lower() == "nan" else "%.3g" % S.num(x)
+
+
+def lowfreq_section(p, F, meth, N):
+    from .lowfreq import TABLE, table_rows
+    rows = table_rows(F, meth)
+    if not rows:
+        return
+    p("## Low-frequency spectrum, discrepancies and integration variance at n = %s\n" % N)
+    p("| method | " + " | ".join(h for _, h in TABLE) + " | spectra.csv group |")
+    p("| --- |" + " --- |" * (len(TABLE) + 1))
+    for k, g, v in rows:
+        p("| %s | %s | `%s` |" % (meth.label(k), " | ".join(g3(v[c]) for c, _ in TABLE), g))
+    p("")
+    p(LOWFREQ_NOTE)
+    p("![low-frequency RAPS](fig-lowfreq.png)\n")
+
+
+def integration_section(p, meth, integ):
+    from .integration import SHOWN
+    p("## Integration error against n\n")
+    p(INTEGRATION_NOTE + "\n")
+    p("| method | n | sets | runs.csv rows | " + " | ".join("Var " + t for _, t in SHOWN) + " | integration.csv group |")
+    p("| --- | --- | --- | --- |" + " --- |" * len(SHOWN) + " --- |")
+    slopes = []
+    for k in meth.keys("pd", "iter", "cfpo"):
+        mine = sorted((r for r in integ if M.key(r["method"], r["variant"]) == k), key=lambda r: S.num(r["n"]))
+        if not mine:
+            continue
+        for r in mine:
+            p("| %s | %s | %s | %s | %s | `%s` |" % (meth.label(k), r["n"], r["sets"], r["runs"].replace(";", ", "),
+                                                  " | ".join(g3(r[v]) for v, _ in SHOWN), r["group"]))
+        slopes.append((k, [slope([S.num(r["n"]) for r in mine], [S.num(r[v]) for r in mine]) for v, _ in SHOWN]))
+    p("")
+    p("| method | " + " | ".join("slope, " + t for _, t in SHOWN) + " |")
+    p("| --- |" + " --- |" * len(SHOWN))
+    for k, sl in slopes:
+        p("| %s | %s |" % (meth.label(k), " | ".join(sl)))
+    p("")
+    p("![integration](fig-integration.png)\n")
+
+
+def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=()):
     out = []
     p = out.append
     host = prof = ""
@@ -111,7 +191,9 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg):
     out.extend(h for h in hdr if not h.startswith("columns:"))
     p("```\n")
     fpo = S.mean([r[11] for r in comp["fpo"]]) if "fpo" in comp else 0
-    p("## Quality and cost at n = %s, %d sets per method\n" % (N, len(comp.get("cfpo", []))))
+    nsets = len(comp.get("cfpo", []))
+    fewer = ", ".join("%s %d" % (meth.label(k), len(rs)) for k, rs in comp.items() if len(rs) != nsets)
+    p("## Quality and cost at n = %s, %d sets per method%s\n" % (N, nsets, f" (fewer: {fewer})" if fewer else ""))
     p("| method | runs.csv rows | δ_min / Δ(n) | δ_avg / Δ(n) | eff. Nyquist | oscillation | spike ratio (sets / average) "
       "| iterations | converged | seconds | time / FPO's | threads | peak MB | spectra.csv group |")
     p("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
@@ -129,6 +211,10 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg):
     p("")
     p(COMPARISON_NOTE)
     p("![comparison](fig-comparison.png)\n")
+    lowfreq_section(p, F, meth, N)
+    if "pcf" in figs:
+        p("Pair correlation g(r) of the comparison's averaged analyses (`data/analysis/*/pcf.txt`):\n")
+        p("![pair correlation](fig-pcf.png)\n")
     p("![convergence](fig-convergence.png)\n")
     if conv_keys:
         p("Convergence: the traces of rows" + ";".join(
@@ -178,6 +264,9 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg):
                                                         S.ranges(b[0].split()), S.ranges(b[1].split())))
     p("")
     p("![speedup](fig-speedup.png)")
+    if integ:
+        p("")
+        integration_section(p, meth, integ)
     if runs:
         ttq_section(p, meth, runs, tmin, tavg)
     return "\n".join(out) + "\n"
