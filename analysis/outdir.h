@@ -15,9 +15,9 @@
 /* The only names written into an output folder, then the pictures plot.gp
  * makes there (accepted, and removed, when an earlier folder is replaced). */
 #define AN_OUT_NAMES {"spectrum.txt", "raps.txt", "nn_hist.txt", "stats.json", "plot.gp", \
-                      "spectrum.png", "raps.png", "nn_hist.png"}
-#define AN_OUT_WRITTEN 5
-#define AN_OUT_COUNT 8
+                      "density.txt", "spectrum.png", "raps.png", "nn_hist.png"}
+#define AN_OUT_WRITTEN 6 /* density.txt: with --density only */
+#define AN_OUT_COUNT 9
 
 typedef struct {
     char *final, *tmp;
