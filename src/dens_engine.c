@@ -34,7 +34,8 @@ struct cfpo_dens_engine {
     int nthreads;
     tbuf *tb;
     int iter;
-    double t0;
+    cfpo_dens_move_fn on_move;
+    void *move_user;
 };
 
 static int64_t cell_of(const cfpo_dens_engine *E, double x, double y)
@@ -189,6 +190,7 @@ static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, 
         E->xy[2 * id + 1] = y;
         E->rho[id] = rc;
         moves++;
+        if (E->on_move) E->on_move(E->xy, id, E->move_user);
     }
     return moves;
 }
@@ -301,6 +303,12 @@ int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_sa
 }
 
 const double *cfpo_dens_points(const cfpo_dens_engine *E) { return E->xy; }
+
+void cfpo_dens_on_move(cfpo_dens_engine *E, cfpo_dens_move_fn fn, void *user)
+{
+    E->on_move = fn;
+    E->move_user = user;
+}
 int64_t cfpo_dens_cells_per_side(const cfpo_dens_engine *E) { return E->g; }
 
 void cfpo_dens_free(cfpo_dens_engine *E)

@@ -46,6 +46,11 @@ int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_sa
                   size_t errlen);
 
 const double *cfpo_dens_points(const cfpo_dens_engine *E); /* 2 n doubles, id order */
+
+/* For the tests: fn(points, id, user) after every accepted move (from the
+ * thread that made it). */
+typedef void (*cfpo_dens_move_fn)(const double *xy, int64_t id, void *user);
+void cfpo_dens_on_move(cfpo_dens_engine *E, cfpo_dens_move_fn fn, void *user);
 int64_t cfpo_dens_cells_per_side(const cfpo_dens_engine *E);
 void cfpo_dens_free(cfpo_dens_engine *E);
 

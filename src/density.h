@@ -10,14 +10,16 @@
  *   cos:a=A,kx=K,ky=K           1 + A cos(2 pi (kx x + ky y)), A in [0, 1],
  *                               kx, ky whole numbers (default a=0.9, kx=1, ky=0);
  *   ramp:contrast=C             a periodic linear ramp in x from 1 (x = 0)
- *                               up to C (x = 1/2) and back (default C = 16);
+ *                               up to C (x = 1/2) and back (default C = 16),
+ *                               sampled at the pixels' left edges so that
+ *                               its contrast is C exactly (R even);
  *   balzer                      Balzer, Schloemer and Deussen's (2009) field
  *                               exp(-20 (u^2 + v^2)) + 0.2 sin^2(pi u) sin^2(pi v)
  *                               on (u, v) = (2x - 1, 2y - 1), periodic to
  *                               within 1e-8, values below 1/256 of its
  *                               maximum raised to that.
  *   The named densities take res=R (16..4096, default 1024): they are
- *   sampled at the centres of an R x R raster.
+ *   sampled at the centres of an R x R raster (the ramp: see above).
  * Every density is piecewise constant on its W x H pixels. Pixel (i, j)
  * covers [i/W, (i+1)/W) x [j/H, (j+1)/H), j counted from y = 0 up: an
  * image's top row (row 0 of the file) is j = H - 1, near y = 1, so a plot

@@ -91,7 +91,7 @@ int cfpo_density_named(const char *name, const char *params, cfpo_density *d, ch
             const double x = ((double)i + 0.5) / (double)R, y = ((double)j + 0.5) / (double)R;
             double r;
             if (kind == COS) r = 1 + ps[0].value * cos(two_pi * (ps[1].value * x + ps[2].value * y));
-            else if (kind == RAMP) r = 1 + (ps[0].value - 1) * (1 - fabs(2 * x - 1));
+            else if (kind == RAMP) r = 1 + (ps[0].value - 1) * (1 - fabs(2 * (double)i / (double)R - 1));
             else {
                 const double u = 2 * x - 1, w = 2 * y - 1, su = sin(M_PI * u), sw = sin(M_PI * w);
                 r = exp(-20 * (u * u + w * w)) + 0.2 * su * su * sw * sw;
