@@ -27,8 +27,8 @@
  * normalised to mean 1; zero-density pixels get no points; the contrast
  * (max over the smallest non-zero value) may be at most DENSITY_CONTRAST_MAX.
  *
- * Owns: the SPEC grammar, normalisation, validation, the hash, lookups.
- * Does not own: the image grammars (pgm.c, png_read.c), the .npy header
+ * Owns: the SPEC grammar (density.c); normalisation, validation, the
+ * hash (density_values.c); lookups. Does not own: the image grammars (pgm.c, png_read.c), the .npy header
  * (npy.c), the named fields' formulas (density_analytic.c). */
 #ifndef CFPO_DENSITY_H
 #define CFPO_DENSITY_H
