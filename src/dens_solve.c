@@ -29,8 +29,10 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
         *f = rc > 0 ? INFINITY : -1;
         return rc > 0;
     }
+    double *w = bufb + cap; /* rho_j^(1/4), once */
+    for (int j = 0; j < k; j++) w[j] = sqrt(yr[j]);
     for (int i = 0; i < k; i++) {
-        const double ax = yx[i], ay = yy[i], wi = sqrt(yr[i]);
+        const double ax = yx[i], ay = yy[i], wi = w[i];
         double *poly = bufa, *next = bufb;
         int nv = 4;
         double far2 = 0;
@@ -45,7 +47,7 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
         int alive = 1;
         for (int j = 0; j < k && alive; j++) {
             if (j == i) continue;
-            const double nx = yx[j] - ax, ny = yy[j] - ay, wj = sqrt(yr[j]);
+            const double nx = yx[j] - ax, ny = yy[j] - ay, wj = w[j];
             const double t = wj / (wi + wj), n2 = nx * nx + ny * ny;
             if (t * t * n2 >= far2) continue; /* the line misses the polygon */
             const double mx = ax + t * nx, my = ay + t * ny;
@@ -95,7 +97,13 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
             if (py > S.y1) py = S.y1;
             const double rc = cfpo_dens_local_q(d, ox, oy, px, py);
             if (!(rc > 0)) continue;
-            const double val = cfpo_dens_value(yx, yy, yr, k, rc, px, py);
+            /* f at the vertex, abandoned as soon as it cannot beat best */
+            double val = INFINITY;
+            for (int j = 0; j < k && val > best; j++) {
+                const double dx = px - yx[j], dy = py - yy[j];
+                const double v = (dx * dx + dy * dy) * yr[j] * rc;
+                if (v < val) val = v;
+            }
             if (val > best) {
                 best = val;
                 *cx = px;

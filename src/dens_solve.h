@@ -22,7 +22,7 @@
 #include "geom.h"
 
 /* Scratch doubles the solve needs for k neighbours. */
-static inline size_t cfpo_dens_scratch(int k) { return 4 * ((size_t)k + 8) + 16; }
+static inline size_t cfpo_dens_scratch(int k) { return 5 * ((size_t)k + 8) + 16; }
 
 /* Neighbours (yx, yy) with q = sqrt(rho) in yr (k of them, in a local frame whose
  * origin is (ox, oy) on the torus), the box S (local frame). Returns the
