@@ -1,6 +1,8 @@
 /* dens_solve.c - layer 2: the local solve under a density (dens_solve.h). */
 #include "dens_solve.h"
 
+#define CELLS 10 /* the polygons of the CELLS nearest neighbours (given nearest first) */
+
 #include <math.h>
 
 double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy)
@@ -31,7 +33,7 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
     }
     double *w = bufb + cap; /* rho_j^(1/4), once */
     for (int j = 0; j < k; j++) w[j] = sqrt(yr[j]);
-    for (int i = 0; i < k; i++) {
+    for (int i = 0; i < (k < CELLS ? k : CELLS); i++) {
         const double ax = yx[i], ay = yy[i], wi = w[i];
         double *poly = bufa, *next = bufb;
         int nv = 4;

@@ -6,19 +6,20 @@
  * q_j (the squared symmetric measure times Delta^2). Its level sets are
  * bounded by Apollonius circles; the solve replaces each circle by the
  * straight line through the point that divides y_i y_j in the ratio
- * q_j^(1/2) : q_i^(1/2), perpendicular to y_i y_j (exact when rho_i = rho_j, where it
- * is today's bisector), clips S by those lines into one polygon per
- * neighbour as LocalCFPO does, and evaluates f exactly at every vertex
- * (q(c) from the pixel, the min over all neighbours). The best vertex is
+ * q_j^(1/2) : q_i^(1/2), perpendicular to y_i y_j (exact when rho_i =
+ * rho_j, where it is today's bisector), clips S by those lines into one
+ * polygon for each of the 10 nearest neighbours (given nearest first) as
+ * LocalCFPO does, and evaluates f exactly at every vertex (q(c) from the
+ * pixel, the min over all neighbours). The best vertex is
  * a candidate only: the engine accepts it when f rises against every point
  * that can matter (dens_engine.c), which is what the guarantee rests on.
  * Owns: the candidate search. */
 #ifndef CFPO_DENS_SOLVE_H
 #define CFPO_DENS_SOLVE_H
 
-#include "density.h"
 #include <math.h>
 
+#include "density.h"
 #include "geom.h"
 
 /* Scratch doubles the solve needs for k neighbours. */

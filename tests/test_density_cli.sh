@@ -85,6 +85,17 @@ expect 2 "not a density checkpoint" --density cos --resume u.bin -o x.npy
 "$CFPO" -q --density cos:a=0.9 --init a1.npy --max-iter 3 -o i.npy >/dev/null && ok || bad "--init with a density"
 rm -f u.npy u.bin h.npy ck.bin
 
+# several ranks: refused with one line (rank 0's), no file
+MPIRUN=$(command -v mpirun || true)
+if [ -n "$MPIRUN" ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  timeout 60 "$MPIRUN" --oversubscribe -np 2 "$CFPO" -q -n 1000 --density cos -o m.npy >out.log 2>err.log
+  rc=$?
+  if [ $rc -ne 2 ] || [ -e m.npy ] || ! grep -q "one rank" err.log || [ "$(grep -c "one rank" err.log)" -ne 1 ]; then
+    bad "mpirun -np 2 --density: exit $rc, $(cat err.log)"
+  else ok; fi
+fi
+
 # uniform density: the measures equal today's
 "$CFPO" -q -n 2000 --max-iter 5 -o uni.npy >/dev/null
 s=$("$AN" -q -o an1 uni.npy | sed -n 's/.* delta_min=\([^ ]*\) delta_avg=\([^ ]*\) .*/\1 \2/p')
