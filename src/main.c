@@ -420,6 +420,9 @@ static int run_density(const cmdline *c)
     if (c->every > 0 && !c->cfg.checkpoint) cli_usage_error(prog, "--checkpoint-every needs --checkpoint FILE");
     if (c->cfg.resume && !dens_ckpt_is(c->cfg.resume))
         cli_usage_error(prog, "--resume %s: not a density checkpoint (made without --density, or not a checkpoint)", c->cfg.resume);
+    char err[512];
+    if (comm_size() == 1 && cfpo_runfiles_check(c->out, c->trace, c->cfg.checkpoint, 1, err, sizeof err) != 0)
+        cli_usage_error(prog, "%s", err);
     cfpo_density_cmd d = {.spec = c->density, .n = c->n, .o = c->o, .given_seed = c->given_seed,
                           .given_tol = c->given_tol, .out = c->out, .trace = c->trace,
                           .checkpoint = c->cfg.checkpoint, .resume = c->cfg.resume, .init = c->init,
