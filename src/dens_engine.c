@@ -227,6 +227,18 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
         return NULL;
     }
     for (int64_t i = 0; i < n; i++) E->rho[i] = sqrt(cfpo_density_at(d, E->xy[2 * i], E->xy[2 * i + 1]));
+    if (start) { /* a given set: no cell far fuller than the density allows (a block's work grows with its count squared) */
+        build_cells(E);
+        const double most = 4 * (double)n * E->L * E->L * d->rho_max + 64;
+        for (int64_t c = 0; c < g * g; c++)
+            if ((double)(E->cstart[c + 1] - E->cstart[c]) > most) {
+                snprintf(err, errlen, "the given points hold %lld in one cell of side %.3g, over the %.0f this density "
+                         "allows there: too clustered to start from", (long long)(E->cstart[c + 1] - E->cstart[c]),
+                         E->L, most);
+                cfpo_dens_free(E);
+                return NULL;
+            }
+    }
     return E;
 }
 

@@ -83,7 +83,9 @@ expect 2 "made with a density" --resume ck.bin -o x.npy
 "$CFPO" -q -n 1000 --max-iter 2 --checkpoint u.bin -o u.npy >/dev/null || bad "uniform checkpoint"
 expect 2 "not a density checkpoint" --density cos --resume u.bin -o x.npy
 "$CFPO" -q --density cos:a=0.9 --init a1.npy --max-iter 3 -o i.npy >/dev/null && ok || bad "--init with a density"
-rm -f u.npy u.bin h.npy ck.bin
+awk 'BEGIN{for(i=0;i<3000;i++) printf "0.5 %.9f\n", 0.5+i*1e-9}' >clump.txt
+expect 1 "too clustered" --density cos:a=0.9 --init clump.txt -o x.npy
+rm -f u.npy u.bin h.npy ck.bin clump.txt
 
 # several ranks: refused with one line (rank 0's), no file
 MPIRUN=$(command -v mpirun || true)
