@@ -13,7 +13,10 @@
  *                         mass > 0 compared with n times its mass (the
  *                         density's exact integral over it): the relative
  *                         error (count - n mass) / (n mass), its root mean
- *                         square and largest magnitude over the blocks;
+ *                         square and largest magnitude over the blocks,
+ *                         and the same over the blocks expecting 16 or
+ *                         more points (a block expecting 0.5 points holds 0
+ *                         or 1: its relative error says little);
  *   off_support           points on zero-density pixels.
  * Several sets: the means of the sets' values, the histogram summed. */
 #ifndef AN_DENSITY_MEASURES_H
@@ -31,7 +34,7 @@
 typedef struct {
     cfpo_density d;
     int sets;
-    double dmin, davg, fid_rms, fid_max, off; /* sums over the sets */
+    double dmin, davg, fid_rms, fid_max, fid_rms16, fid_max16, off; /* sums over the sets */
     int64_t blocks;
     uint64_t hist[AN_DENS_BINS];
 } an_density;
@@ -44,6 +47,10 @@ int an_density_add(an_density *a, const double *xy, size_t n, char *err, size_t 
 /* The count fidelity of one set (exposed for the tests). */
 int an_density_fidelity(const cfpo_density *d, const double *xy, size_t n, int64_t B, double *rms, double *maxabs,
                         size_t *off);
+
+/* The same over the blocks expecting at least emin points. */
+int an_density_fidelity_min(const cfpo_density *d, const double *xy, size_t n, int64_t B, double emin, double *rms,
+                            double *maxabs, size_t *off);
 
 /* density.txt: the means as '#' lines, then the histogram (bin centre,
  * fraction). 0, or -1 with one line in err. */
