@@ -13,7 +13,9 @@
  *                               up to C (x = 1/2) and back (default C = 16),
  *                               sampled at the pixels' left edges so that
  *                               its contrast is C exactly (R even);
- *   balzer                      Balzer, Schloemer and Deussen's (2009) field
+ *   balzer                      the teaser field of Balzer, Schloemer and
+ *                               Deussen (2009) as the design notes give it
+ *                               (constants not yet checked against the paper)
  *                               exp(-20 (u^2 + v^2)) + 0.2 sin^2(pi u) sin^2(pi v)
  *                               on (u, v) = (2x - 1, 2y - 1), periodic to
  *                               within 1e-8, values below 1/256 of its
