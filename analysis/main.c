@@ -12,6 +12,7 @@
 #include "cfpo.h"
 #include "cli.h"
 #include "delaunay.h"
+#include "density_measures.h"
 #include "discrepancy.h"
 #include "hsd.h"
 #include "integration.h"
@@ -36,6 +37,7 @@ typedef struct {
     int any_n; /* --any-n: the sets may differ in n (maximal Poisson-disk sets) */
     int64_t grid; /* --grid: cells a side for the lattice ratio; -1: cfpo's for n */
     double cert_tol;
+    const char *density; /* --density SPEC (density_measures.c) */
     char **files;
     int nfiles;
 } options;
@@ -74,6 +76,8 @@ static void usage(void)
            "      --integration M  UTK's integration test with M Gaussian and M Heaviside\n"
            "                       integrands (default %d; 0: none)\n"
            "      --no-delaunay    psi6, Voronoi area variance and mesh ratio are skipped\n"
+           "      --density SPEC   also the measures under a density (cfpo's --density\n"
+           "                       SPEC): DENSITY line, density.txt\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "  -q, --quiet          no progress line\n"
            "  -h, --help           this help\n"
@@ -89,7 +93,7 @@ static void usage(void)
 static void parse(int argc, char **argv, options *o)
 {
     enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL, OPT_GRID, OPT_ANY_N, OPT_NO_DISC,
-           OPT_PCF_SIGMA, OPT_PCF_RMAX, OPT_INTEG, OPT_NO_DT };
+           OPT_PCF_SIGMA, OPT_PCF_RMAX, OPT_INTEG, OPT_NO_DT, OPT_DENSITY };
     static const struct option longs[] = {
         {"output", required_argument, 0, 'o'},  {"kmax", required_argument, 0, 'K'},
         {"exact", no_argument, 0, OPT_EXACT},   {"check", no_argument, 0, OPT_CHECK},
@@ -100,7 +104,8 @@ static void parse(int argc, char **argv, options *o)
         {"pcf-sigma", required_argument, 0, OPT_PCF_SIGMA}, {"pcf-rmax", required_argument, 0, OPT_PCF_RMAX},
         {"integration", required_argument, 0, OPT_INTEG},
         {"quiet", no_argument, 0, 'q'},         {"help", no_argument, 0, 'h'},
-        {"version", no_argument, 0, 'V'},       {0, 0, 0, 0}};
+        {"version", no_argument, 0, 'V'},       {"density", required_argument, 0, OPT_DENSITY},
+        {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->cert_tol = AN_CERT_TOL;
     o->grid = -1;
@@ -156,6 +161,7 @@ static void parse(int argc, char **argv, options *o)
             o->threads = (int)v;
             break;
         case 'q': o->quiet = 1; break;
+        case OPT_DENSITY: o->density = optarg; break;
         case 'h': usage(); exit(0);
         case 'V': printf("cfpo-analyze %s\n", CFPO_VERSION); exit(0);
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
@@ -210,6 +216,7 @@ typedef struct {
     an_certificate cert;
     an_nufft_info nufft;
     double check_maxdiff, spectrum_seconds;
+    an_density dens;
 } run;
 
 static run R;
@@ -384,6 +391,7 @@ static void analyze_set(const char *file)
     if (R.disc) discrepancies(file, xy, n);
     structure(file, xy, n);
     if (R.opt.certify) certificate(file, xy, n);
+    if (R.opt.density && n >= 2 && an_density_add(&R.dens, xy, n, err, sizeof err) != 0) fail("%s: %s", file, err);
     free(xy);
 }
 
@@ -408,6 +416,7 @@ static void write_outputs(const an_report *rep, const an_measures *m)
     WRITE("stats.json", an_write_json(p, rep, err, sizeof err));
     WRITE("pcf.txt", an_measures_write_pcf(p, m, err, sizeof err));
     WRITE("pcf.gp", an_measures_write_pcf_plot(p, m, err, sizeof err));
+    if (R.opt.density) WRITE("density.txt", an_density_write(&R.dens, p, err, sizeof err));
 #undef WRITE
 }
 
@@ -424,6 +433,10 @@ int main(int argc, char **argv)
     if (R.opt.threads) omp_set_num_threads(R.opt.threads);
     cli_progress_init(&R.progress, R.opt.quiet);
     R.check_maxdiff = NAN;
+    if (R.opt.density) {
+        char derr[1024];
+        if (an_density_begin(&R.dens, R.opt.density, derr, sizeof derr) != 0) cli_fail(prog, "%s", derr);
+    }
     const double t0 = cli_now();
     for (R.set = 0; R.set < R.opt.nfiles; R.set++) analyze_set(R.opt.files[R.set]);
     cli_progress_end(&R.progress);
@@ -475,6 +488,7 @@ int main(int argc, char **argv)
     rep.seconds = cli_now() - t0;
     rep.peak_bytes = cli_peak_rss();
     an_print_summary(stdout, &rep);
+    if (R.opt.density) an_density_print(&R.dens, stdout), an_density_free(&R.dens);
     an_rings_free(&rings);
     free(outname);
     free(msum); free(mjson); free(R.disc); free(R.dt); free(R.integ); free(R.pcf); free(R.pcf_set);

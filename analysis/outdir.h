@@ -15,9 +15,9 @@
 /* The only names written into an output folder, then the pictures plot.gp
  * makes there (accepted, and removed, when an earlier folder is replaced). */
 #define AN_OUT_NAMES {"spectrum.txt", "raps.txt", "nn_hist.txt", "stats.json", "plot.gp", "pcf.txt", "pcf.gp", \
-                      "spectrum.png", "raps.png", "nn_hist.png", "pcf.png"}
-#define AN_OUT_WRITTEN 7
-#define AN_OUT_COUNT 11
+                      "density.txt", "spectrum.png", "raps.png", "nn_hist.png", "pcf.png"}
+#define AN_OUT_WRITTEN 8 /* density.txt: with --density only */
+#define AN_OUT_COUNT 12
 
 typedef struct {
     char *final, *tmp;

@@ -35,6 +35,7 @@ pkgs_core=(
   openmpi-bin       # mpirun
   libfftw3-dev      # FFTW3 for the spectra
   zlib1g-dev        # crc32: checkpoint checksums
+  libpng-dev        # PNG density images (cfpo --density)
   libcgal-dev       # CGAL (periodic Delaunay) for the FPO baseline
   libgmp-dev libmpfr-dev  # CGAL's exact number types
 )
@@ -57,6 +58,7 @@ present() {
     openmpi-bin) have mpirun || have mpiexec ;;
     libfftw3-dev) pkg-config --exists fftw3 2>/dev/null || header c fftw3.h ;;
     zlib1g-dev) pkg-config --exists zlib 2>/dev/null || header c zlib.h ;;
+    libpng-dev) pkg-config --exists libpng 2>/dev/null || header c png.h ;;
     libcgal-dev) header c++ CGAL/version.h ;;
     libgmp-dev) header c gmp.h ;;
     libmpfr-dev) header c mpfr.h ;;

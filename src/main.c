@@ -12,6 +12,8 @@
 #include "cli.h"
 #include "comm.h"
 #include "engine.h"
+#include "main_density.h"
+#include "dens_ckpt.h"
 #include "omp_compat.h"
 #include "plan.h"
 #include "pointfile.h"
@@ -50,6 +52,10 @@ static void usage(void)
            "  -o, --output FILE    write the points; format from the extension:\n"
            "                       %s\n"
            "      --trace FILE     one TSV row per iteration\n"
+           "      --density SPEC   follow a density: an image (FILE.png, FILE.pgm; dark =\n"
+           "                       dense, FILE.png:invert for light = dense), a 2-D array\n"
+           "                       (FILE.npy, row = y) or cos:a=0.9,kx=1,ky=0, ramp:contrast=16,\n"
+           "                       balzer (docs/cli.md); one rank\n"
            "  -q, --quiet          no progress line\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
            "      --tiles AxB      cut into A x B tiles (default: the most square cut)\n"
@@ -178,7 +184,7 @@ typedef struct {
     cfpo_options o;
     cfpo_engine_config cfg;
     int64_t n, dry_ranks;
-    const char *out, *trace, *init;
+    const char *out, *trace, *init, *density;
     double *init_xy; /* the points of --init */
     int quiet, dry, every;
     int given_seed, given_variant, given_tol;
@@ -246,6 +252,7 @@ static int run_option(cmdline *c, int ch, char *arg)
     case 'I': c->init = arg; break;
     case 'D': c->dry = 1; break;
     case 'N': c->dry_ranks = whole("--ranks", arg, 1, 1 << 24, "1..16777216"); break;
+    case 1004: c->density = arg; break;
     default: return 0;
     }
     return 1;
@@ -266,7 +273,7 @@ static void parse(int argc, char **argv, cmdline *c)
         {"resume", required_argument, 0, 'R'}, {"dry-run", no_argument, 0, 'D'},
         {"ranks", required_argument, 0, 'N'}, {"target-min", required_argument, 0, 1001},
         {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003},
-        {"init", required_argument, 0, 'I'}, {0, 0, 0, 0}};
+        {"init", required_argument, 0, 'I'}, {"density", required_argument, 0, 1004}, {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;
     c->every = -1;
@@ -320,6 +327,7 @@ static void take_from_points(cmdline *c)
  * others, the checkpoint's run. */
 static void settle_options(cmdline *c)
 {
+    if (c->density && c->dry) cli_usage_error(prog, "--dry-run does not go with --density");
     if (!c->given_tol) c->o.tol = cfpo_default_tol(c->o.variant);
     if (c->every > 0 && !c->cfg.checkpoint) cli_usage_error(prog, "--checkpoint-every needs --checkpoint FILE");
     if (c->cfg.checkpoint) c->cfg.checkpoint_every = c->every > 0 ? c->every : 100;
@@ -401,6 +409,29 @@ static void report(const cmdline *c, cfpo_engine *E, const cfpo_result *res, dou
     fflush(stdout);
 }
 
+/* --density: the run under a density (main_density.c), one rank. */
+static int run_density(const cmdline *c)
+{
+    if (c->dry) cli_usage_error(prog, "--dry-run does not go with --density");
+    if (c->given_variant) cli_usage_error(prog, "--variant does not go with --density (the density run has one variant)");
+    if (c->cfg.px > 0 || c->cfg.check || c->dry_ranks > 0)
+        cli_usage_error(prog, "--tiles, --check and --ranks do not go with --density");
+    if (c->cfg.resume && c->init) cli_usage_error(prog, "--init does not go with --resume");
+    if (c->every > 0 && !c->cfg.checkpoint) cli_usage_error(prog, "--checkpoint-every needs --checkpoint FILE");
+    if (c->cfg.resume && !dens_ckpt_is(c->cfg.resume))
+        cli_usage_error(prog, "--resume %s: not a density checkpoint (made without --density, or not a checkpoint)", c->cfg.resume);
+    char err[512];
+    if (comm_size() == 1 && cfpo_runfiles_check(c->out, c->trace, c->cfg.checkpoint, 1, err, sizeof err) != 0)
+        cli_usage_error(prog, "%s", err);
+    cfpo_density_cmd d = {.spec = c->density, .n = c->n, .o = c->o, .given_seed = c->given_seed,
+                          .given_tol = c->given_tol, .out = c->out, .trace = c->trace,
+                          .checkpoint = c->cfg.checkpoint, .resume = c->cfg.resume, .init = c->init,
+                          .every = c->every, .quiet = c->quiet, .ranks = comm_size()};
+    int rc = cfpo_density_main(&d);
+    comm_finalize();
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     comm_init(&argc, &argv);
@@ -408,6 +439,9 @@ int main(int argc, char **argv)
     if (!cfpo_solver_name()) cli_usage_error(prog, "CFPO_SOLVER: bad value '%s' (plain, avx2, avx512 or auto)", getenv("CFPO_SOLVER"));
     cmdline c = {0};
     parse(argc, argv, &c);
+    if (c.cfg.resume && !c.density && dens_ckpt_is(c.cfg.resume))
+        cli_usage_error(prog, "--resume %s: the checkpoint was made with a density; give the same --density SPEC", c.cfg.resume);
+    if (c.density) return run_density(&c);
     settle_options(&c);
     if (c.dry) {
         int rc = dry_run(c.n, &c.o, c.dry_ranks > 0 ? (int)c.dry_ranks : comm_size(), c.cfg.px, c.cfg.py);

@@ -143,7 +143,7 @@ static int descr(lexer *L, npy_info *info)
     return 0;
 }
 
-static int dict(lexer *L, npy_info *info)
+static int dict(lexer *L, npy_info *info, int any_cols)
 {
     enum { DESCR = 1, FORTRAN = 2, SHAPE = 4 };
     int seen = 0;
@@ -171,6 +171,17 @@ static int dict(lexer *L, npy_info *info)
         return fail(L, "missing key '%s'", !(seen & DESCR) ? "descr" : !(seen & FORTRAN) ? "fortran_order" : "shape");
     skip_ws(L);
     if (L->i != L->len) return fail(L, "data after the closing brace");
+    if (any_cols && nd == 2) {
+        if (dims[0] > SIZE_MAX / 8 || dims[1] > SIZE_MAX / 8 || (dims[1] > 0 && dims[0] > SIZE_MAX / 8 / dims[1]))
+            return fail(L, "shape too large");
+        info->n = (size_t)dims[0];
+        info->cols = (size_t)dims[1];
+        return 0;
+    }
+    if (any_cols) {
+        snprintf(L->err, L->errlen, "%s: .npy array has %d dimensions, not 2", L->path, nd);
+        return -1;
+    }
     if (nd != 2 || dims[1] != 2) {
         if (nd == 2) snprintf(L->err, L->errlen, "%s: .npy shape (%llu, %llu) is not (n, 2)", L->path,
                               (unsigned long long)dims[0], (unsigned long long)dims[1]);
@@ -181,11 +192,12 @@ static int dict(lexer *L, npy_info *info)
     }
     if (dims[0] > SIZE_MAX / 16) return fail(L, "shape too large");
     info->n = (size_t)dims[0];
+    info->cols = 2;
     return 0;
 }
 
-int npy_parse_header(const char *path, const unsigned char *buf, size_t len, npy_info *info, char *err,
-                     size_t errlen)
+static int parse_header(const char *path, const unsigned char *buf, size_t len, npy_info *info, char *err,
+                        size_t errlen, int any_cols)
 {
     static const unsigned char magic[6] = {0x93, 'N', 'U', 'M', 'P', 'Y'};
     memset(info, 0, sizeof *info);
@@ -219,7 +231,19 @@ int npy_parse_header(const char *path, const unsigned char *buf, size_t len, npy
     /* ast.literal_eval strips leading spaces and tabs only. */
     while (L.i < L.len && (L.s[L.i] == ' ' || L.s[L.i] == '\t')) L.i++;
     if (peek(&L) != '{') return fail(&L, "not a dict");
-    if (dict(&L, info) != 0) return -1;
+    if (dict(&L, info, any_cols) != 0) return -1;
     info->data = hstart + hlen;
     return 0;
+}
+
+int npy_parse_header(const char *path, const unsigned char *buf, size_t len, npy_info *info, char *err,
+                     size_t errlen)
+{
+    return parse_header(path, buf, len, info, err, errlen, 0);
+}
+
+int npy_parse_header_2d(const char *path, const unsigned char *buf, size_t len, npy_info *info, char *err,
+                        size_t errlen)
+{
+    return parse_header(path, buf, len, info, err, errlen, 1);
 }

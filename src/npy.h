@@ -12,6 +12,8 @@
  * keys, 'TrueX', junk after the brace, leading zeros (Python refuses
  * them), escapes and concatenated strings, headers over 10,000 bytes (numpy
  * refuses them too), minor versions other than 0.
+ * npy_parse_header_2d reads the same grammar for any 2-D shape (rows,
+ * cols) of float64 or float32: the density arrays of density.c.
  * Owns: the header grammar. Does not own: the data (pointfile.c). */
 #ifndef CFPO_NPY_H
 #define CFPO_NPY_H
@@ -20,6 +22,7 @@
 
 typedef struct {
     size_t n;        /* rows */
+    size_t cols;     /* columns: 2 for point files */
     size_t data;     /* offset of the first data byte */
     int itemsize;    /* 8 (float64) or 4 (float32) */
     int big_endian;  /* the data's byte order */
@@ -30,5 +33,9 @@ typedef struct {
  * only; the data's length is the caller's. */
 int npy_parse_header(const char *path, const unsigned char *buf, size_t len, npy_info *info, char *err,
                      size_t errlen);
+
+/* The same for a 2-D array of any shape: info->n rows, info->cols columns. */
+int npy_parse_header_2d(const char *path, const unsigned char *buf, size_t len, npy_info *info, char *err,
+                        size_t errlen);
 
 #endif

@@ -63,8 +63,21 @@ def _callback(progress, n, max_iter, stops):
     raise TypeError("progress: expected None, True or a callable(stats) -> bool")
 
 
+def _density_arg(density, variant):
+    """density= as the C layer takes it: a SPEC string, or a 2-D float64 array (row = y)."""
+    if variant != "adaptive":
+        raise ValueError("variant does not go with density (the density run has one variant)")
+    if isinstance(density, (str, bytes)) or hasattr(density, "__fspath__"):
+        import os
+        return os.fsdecode(density)
+    a = np.ascontiguousarray(density, dtype=np.float64)
+    if a.ndim != 2:
+        raise ValueError(f"density: expected a SPEC string or a 2-D array, got an array of {a.ndim} dimensions")
+    return a
+
+
 def _call(want_trace, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
-          progress):
+          progress, density=None):
     """Checks the arguments as the command does, then runs the C engine."""
     if n is None and init is None:
         raise ValueError("the number of points is required: n")
@@ -76,8 +89,11 @@ def _call(want_trace, n, seed, variant, threads, tol, max_iter, target_min, targ
     mi = _args.max_iter(max_iter)
     stops = _args.stop_rules(target_min, target_avg, time_limit)
     start = None if init is None else _args.as_points(init, "init")
+    dens = None if density is None else _density_arg(density, variant)
     cb, line = _callback(progress, nn if nn > 0 else start.shape[0], mi, stops)
     try:
+        if dens is not None:
+            return _core.run_density(nn, _args.seed(seed), th, t, mi, *stops, start, cb, want_trace, dens)
         return _core.run(nn, _args.seed(seed), variant, th, t, mi, *stops, start, cb, want_trace)
     finally:
         if line is not None:
@@ -85,7 +101,7 @@ def _call(want_trace, n, seed, variant, threads, tol, max_iter, target_min, targ
 
 
 def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
-        target_avg=None, time_limit=None, init=None, progress=None):
+        target_avg=None, time_limit=None, init=None, progress=None, density=None):
     """Runs CFPO and returns a Result (points, statistics, stop reason, trace).
 
     n: number of points (at least the command's minimum; may be left out
@@ -101,25 +117,30 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
     stderr, or a callable receiving each iteration's statistics as a dict
     (iteration, delta_min, delta_avg, moved, solved, max_disp, seconds,
     elapsed, max_move, near, converged) that stops the run (stop="caller") by
-    returning True.
+    returning True. density: follow a density, as `cfpo --density SPEC`: a
+    SPEC string (an image path, a .npy path, or e.g. "cos:a=0.9") or a 2-D
+    array of non-negative values (row j = y); tol is then in local spacings
+    (default 1e-4) and delta_min, delta_avg are in the symmetric measure
+    (docs/method.md, "Density").
 
     The points are the same bytes as `cfpo -n N --seed S ... -o x.npy`
-    writes. Raises ValueError/TypeError for bad arguments (the command's
+    writes (with density, as `cfpo --density SPEC ...`, the array saved as
+    a .npy for SPEC). Raises ValueError/TypeError for bad arguments (the command's
     wording), MemoryError when n does not fit, KeyboardInterrupt on Ctrl-C.
     """
     r = _call(True, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
-              progress)
+              progress, density)
     pts, it, secs, dmin, davg, conv, stop, tr = r
     return Result(pts, it, secs, dmin, davg, conv, stop, dict(zip(TRACE_COLUMNS, tr)))
 
 def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
-           target_avg=None, time_limit=None, init=None, progress=None):
+           target_avg=None, time_limit=None, init=None, progress=None, density=None):
     """CFPO points: run(...).points, an (n, 2) float64 array that owns its memory.
 
     The same arguments as cfpo.run; the same bytes as `cfpo ... -o x.npy`.
     """
     return _call(False, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
-                 progress)[0]
+                 progress, density)[0]
 
 def load(path):
     """Reads a point file into an (n, 2) float64 array.

@@ -69,8 +69,24 @@ void core_trace_add(core_trace *t, const double *row);
  * float64 otherwise): a[0..na-1], then b[...]. Frees t->v. */
 PyObject *core_trace_take(core_trace *t, const cfpo_trace_column *a, int na, const cfpo_trace_column *b);
 
+/* A run's per-iteration state (core_sample.c): the callback, the trace,
+ * Ctrl-C; core_on_iteration is the engine's progress function over it. */
+typedef struct {
+    PyThreadState *ts;  /* this thread's state while the GIL is released */
+    PyObject *callback; /* None or a callable(dict) -> truthy to stop */
+    int want_trace;
+    core_trace trace;
+    double t0;
+    int failed;         /* an exception is set (Ctrl-C, the callback's) */
+} core_run_ctx;
+int core_on_iteration(const cfpo_iter_stats *s, void *user);
+/* The options of a run from the arguments (core_sample.c). */
+int core_options_of(cfpo_options *o, unsigned long long seed, const char *variant, int threads, double tol,
+                    int max_iter, double tmin, double tavg, double tlimit);
+
 /* The module's functions, one file each. */
 PyObject *core_run(PyObject *self, PyObject *args);
+PyObject *core_run_density(PyObject *self, PyObject *args);
 PyObject *core_deltas(PyObject *self, PyObject *args);
 PyObject *core_spectrum(PyObject *self, PyObject *args);
 PyObject *core_certify(PyObject *self, PyObject *args);

@@ -12,20 +12,11 @@
 #include "plan.h"
 #include "stoprule.h"
 
-typedef struct {
-    PyThreadState *ts;  /* this thread's state while the GIL is released */
-    PyObject *callback; /* None or a callable(dict) -> truthy to stop */
-    int want_trace;
-    core_trace trace;
-    double t0;
-    int failed;         /* an exception is set (Ctrl-C, the callback's) */
-} run_ctx;
-
 /* Called by the engine after every iteration, on the calling thread with
  * the GIL released: takes the GIL for the checks only. */
-static int on_iteration(const cfpo_iter_stats *s, void *user)
+int core_on_iteration(const cfpo_iter_stats *s, void *user)
 {
-    run_ctx *c = user;
+    core_run_ctx *c = user;
     const double el = cli_now() - c->t0;
     if (c->want_trace) {
         double row[CFPO_TRACE_COLUMNS];
@@ -53,7 +44,7 @@ static int on_iteration(const cfpo_iter_stats *s, void *user)
 /* The options of a run from the arguments (already checked by the Python
  * layer); ValueError with the command's wording for what the library
  * refuses. */
-static int options_of(cfpo_options *o, unsigned long long seed, const char *variant, int threads,
+int core_options_of(cfpo_options *o, unsigned long long seed, const char *variant, int threads,
                       double tol, int max_iter, double tmin, double tavg, double tlimit)
 {
     cfpo_options_init(o);
@@ -84,7 +75,7 @@ PyObject *core_run(PyObject *self, PyObject *args)
                           &tlimit, &init, &callback, &want_trace))
         return NULL;
     cfpo_options o;
-    if (options_of(&o, seed, variant, threads, tol, max_iter, tmin, tavg, tlimit) != 0) return NULL;
+    if (core_options_of(&o, seed, variant, threads, tol, max_iter, tmin, tavg, tlimit) != 0) return NULL;
     cfpo_engine_config cfg;
     memset(&cfg, 0, sizeof cfg);
     PyArrayObject *start = NULL;
@@ -105,8 +96,8 @@ PyObject *core_run(PyObject *self, PyObject *args)
         Py_XDECREF(start);
         return core_error(vr == -2 ? PyExc_MemoryError : PyExc_ValueError, err);
     }
-    run_ctx c = {.callback = callback, .want_trace = want_trace, .trace = {.cols = CFPO_TRACE_COLUMNS}};
-    o.progress = on_iteration;
+    core_run_ctx c = {.callback = callback, .want_trace = want_trace, .trace = {.cols = CFPO_TRACE_COLUMNS}};
+    o.progress = core_on_iteration;
     o.user = &c;
     cfpo_result res;
     int rc = -1;

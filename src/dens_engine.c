@@ -1,0 +1,335 @@
+/* dens_engine.c - layer 3: CFPO under a density (dens_engine.h). */
+#include "dens_engine.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dens_measure.h"
+#include "dens_solve.h"
+#include "dens_start.h"
+#include "geom.h"
+#include "omp_compat.h"
+#include "rng.h"
+#include "stoprule.h"
+
+#define KMAX 40        /* neighbours the solve looks at, nearest first */
+#define REACH 2.5      /* ... within REACH local spacings */
+#define CELL_SPACINGS 1.25 /* L >= CELL_SPACINGS r_max */
+
+typedef struct { /* one thread's buffers */
+    double *bx, *by, *br, *nx, *ny, *nr, *nd, *scratch;
+    int64_t *bid;
+    size_t cap;
+} tbuf;
+
+struct cfpo_dens_engine {
+    const cfpo_density *d;
+    int64_t n, g;
+    cfpo_options o;
+    double D, L, sx, sy;
+    double *xy, *rho; /* positions and sqrt of their pixels' densities (q), id order */
+    int64_t *cell, *cstart, *cidx;
+    int nthreads;
+    tbuf *tb;
+    int iter;
+    cfpo_dens_move_fn on_move;
+    void *move_user;
+};
+
+static int64_t cell_of(const cfpo_dens_engine *E, double x, double y)
+{
+    const double gx = cfpo_wrap01(x - E->sx), gy = cfpo_wrap01(y - E->sy);
+    int64_t ix = (int64_t)(gx * (double)E->g), iy = (int64_t)(gy * (double)E->g);
+    if (ix >= E->g) ix = E->g - 1;
+    if (iy >= E->g) iy = E->g - 1;
+    return iy * E->g + ix;
+}
+
+/* Cells of this iteration's grid, points in id order inside each. */
+static void build_cells(cfpo_dens_engine *E)
+{
+    const int64_t G = E->g * E->g;
+    memset(E->cstart, 0, (size_t)(G + 1) * sizeof *E->cstart);
+    for (int64_t i = 0; i < E->n; i++) {
+        E->cell[i] = cell_of(E, E->xy[2 * i], E->xy[2 * i + 1]);
+        E->cstart[E->cell[i] + 1]++;
+    }
+    for (int64_t c = 0; c < G; c++) E->cstart[c + 1] += E->cstart[c];
+    for (int64_t i = 0; i < E->n; i++) E->cidx[E->cstart[E->cell[i]]++] = i;
+    for (int64_t c = G; c > 0; c--) E->cstart[c] = E->cstart[c - 1];
+    E->cstart[0] = 0;
+}
+
+static int64_t block_count(const cfpo_dens_engine *E, int64_t cx, int64_t cy)
+{
+    int64_t m = 0;
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            const int64_t c = ((cy + dy + E->g) % E->g) * E->g + (cx + dx + E->g) % E->g;
+            m += E->cstart[c + 1] - E->cstart[c];
+        }
+    return m;
+}
+
+static int ensure_buffers(cfpo_dens_engine *E, size_t m)
+{
+    for (int t = 0; t < E->nthreads; t++) {
+        tbuf *b = &E->tb[t];
+        if (b->cap >= m) continue;
+        size_t cap = m + m / 2 + 16;
+        free(b->bx); free(b->bid); free(b->scratch);
+        b->bx = malloc(6 * cap * sizeof *b->bx + 3 * (KMAX + 1) * sizeof *b->bx);
+        b->bid = malloc(cap * sizeof *b->bid);
+        b->scratch = malloc((KMAX + cfpo_dens_scratch(KMAX)) * sizeof *b->scratch);
+        if (!b->bx || !b->bid || !b->scratch) return -1;
+        b->by = b->bx + cap;
+        b->br = b->by + cap;
+        b->nd = b->br + cap; /* squared distances to the moving point */
+        b->nx = b->bx + 6 * cap; /* nx, ny, nr: KMAX + 1 each */
+        b->ny = b->nx + KMAX + 1;
+        b->nr = b->ny + KMAX + 1;
+        b->cap = cap;
+    }
+    return 0;
+}
+
+/* Solves the points of cell (cx, cy) one after another; returns the moves
+ * made, the largest move (in local spacings) into *maxd. */
+static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, double *maxd)
+{
+    const int64_t g = E->g;
+    const double L = E->L, ox = (double)cx * L + E->sx, oy = (double)cy * L + E->sy;
+    const int wrap = g < 6; /* the block spans the torus: differences wrap */
+    int m = 0, c0 = 0, c1 = 0;
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            const int64_t c = ((cy + dy + g) % g) * g + (cx + dx + g) % g;
+            if (dx == 0 && dy == 0) c0 = m;
+            const double mx = ((double)dx + 0.5) * L, my = ((double)dy + 0.5) * L;
+            for (int64_t s = E->cstart[c]; s < E->cstart[c + 1]; s++) {
+                const int64_t j = E->cidx[s];
+                double u = E->xy[2 * j] - ox, v = E->xy[2 * j + 1] - oy;
+                b->bx[m] = u - rint(u - mx);
+                b->by[m] = v - rint(v - my);
+                b->br[m] = E->rho[j];
+                b->bid[m] = j;
+                m++;
+            }
+            if (dx == 0 && dy == 0) c1 = m;
+        }
+    const double lo = sqrt(E->d->rho_min), rmax = E->D / lo, hi = L * (1 - 1e-9);
+    int64_t moves = 0;
+    for (int p = c0; p < c1; p++) {
+        const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
+        const double ri = ra > 0 ? E->D / ra : rmax, R2 = REACH * REACH * ri * ri;
+        double old = INFINITY;
+        for (int j = 0; j < m; j++) {
+            if (j == p) { b->nd[j] = INFINITY; continue; }
+            double ex = b->bx[j] - ax, ey = b->by[j] - ay;
+            if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+            const double d2 = ex * ex + ey * ey, v = d2 * b->br[j];
+            b->nd[j] = d2;
+            if (v < old) old = v;
+        }
+        const double oldf = old * ra;
+        /* the KMAX nearest within reach, nearest first (ties: block order) */
+        int kk = 0;
+        for (int j = 0; j < m; j++) {
+            const double d2 = b->nd[j];
+            if (!(d2 < R2)) continue;
+            if (kk == KMAX && d2 >= b->scratch[KMAX - 1]) continue;
+            int t = kk < KMAX ? kk++ : KMAX - 1;
+            while (t > 0 && b->scratch[t - 1] > d2) {
+                b->scratch[t] = b->scratch[t - 1];
+                b->nx[t] = b->nx[t - 1]; b->ny[t] = b->ny[t - 1]; b->nr[t] = b->nr[t - 1];
+                t--;
+            }
+            double ex = b->bx[j] - ax, ey = b->by[j] - ay;
+            if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+            b->scratch[t] = d2;
+            b->nx[t] = ax + ex; b->ny[t] = ay + ey; b->nr[t] = b->br[j];
+        }
+        cfpo_square S = {ax - ri, ay - ri, ax + ri, ay + ri};
+        if (S.x0 < 0) S.x0 = 0;
+        if (S.y0 < 0) S.y0 = 0;
+        if (S.x1 > hi) S.x1 = hi;
+        if (S.y1 > hi) S.y1 = hi;
+        double cxp, cyp, fc;
+        if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, S, E->d, ox, oy, &cxp, &cyp, &fc, b->scratch + KMAX))
+            continue;
+        if (!(fc > oldf * (1 + 1e-12))) continue;
+        /* the accept rule: f rises against the whole block ... */
+        const double rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
+        if (!(rc > 0)) continue;
+        double nv = INFINITY;
+        for (int j = 0; j < m; j++) {
+            if (j == p) continue;
+            double ex = b->bx[j] - cxp, ey = b->by[j] - cyp;
+            if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+            const double v = (ex * ex + ey * ey) * b->br[j];
+            if (v < nv) nv = v;
+        }
+        const double newf = nv * rc;
+        if (!(newf > oldf * (1 + 1e-12))) continue;
+        /* ... and no point outside the block can be nearer in f */
+        if (!wrap) {
+            const double e = fmin(fmin(cxp + L, 2 * L - cxp), fmin(cyp + L, 2 * L - cyp));
+            if (!(e * e * lo * rc >= oldf)) continue;
+        }
+        const double x = cfpo_wrap01(ox + cxp), y = cfpo_wrap01(oy + cyp);
+        if (cell_of(E, x, y) != cy * g + cx) continue; /* rounding left the cell */
+        const int64_t id = b->bid[p];
+        const double dd = sqrt((cxp - ax) * (cxp - ax) + (cyp - ay) * (cyp - ay)) / ri;
+        if (dd > *maxd) *maxd = dd;
+        b->bx[p] = cxp;
+        b->by[p] = cyp;
+        b->br[p] = rc;
+        E->xy[2 * id] = x;
+        E->xy[2 * id + 1] = y;
+        E->rho[id] = rc;
+        moves++;
+        if (E->on_move) E->on_move(E->xy, id, E->move_user);
+    }
+    return moves;
+}
+
+cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_options *o, const double *start,
+                                   int iter0, char *err, size_t errlen)
+{
+    if (cfpo_density_check_n(d, n, err, errlen) != 0) return NULL;
+    cfpo_dens_engine *E = calloc(1, sizeof *E);
+    if (!E) { snprintf(err, errlen, "out of memory"); return NULL; }
+    E->d = d;
+    E->n = n;
+    E->o = *o;
+    E->D = cfpo_delta_bound((double)n);
+    const double rmax = E->D / sqrt(d->rho_min);
+    int64_t g = (int64_t)floor(1.0 / (CELL_SPACINGS * rmax));
+    g -= g % 3;
+    if (g < 3) g = 3;
+    if (g > 3 * 8192) g = 3 * 8192;
+    E->g = g;
+    E->L = 1.0 / (double)g;
+    E->iter = iter0;
+    E->nthreads = o->threads > 0 ? o->threads : omp_get_num_procs();
+    E->xy = malloc((size_t)n * 2 * sizeof *E->xy);
+    E->rho = malloc((size_t)n * sizeof *E->rho);
+    E->cell = malloc((size_t)n * sizeof *E->cell);
+    E->cidx = malloc((size_t)n * sizeof *E->cidx);
+    E->cstart = malloc((size_t)(g * g + 1) * sizeof *E->cstart);
+    E->tb = calloc((size_t)E->nthreads, sizeof *E->tb);
+    if (!E->xy || !E->rho || !E->cell || !E->cidx || !E->cstart || !E->tb ||
+        (start ? (memcpy(E->xy, start, (size_t)n * 2 * sizeof *E->xy), 0) : cfpo_dens_start(d, n, o->seed, E->xy)) != 0) {
+        snprintf(err, errlen, "out of memory for %lld points", (long long)n);
+        cfpo_dens_free(E);
+        return NULL;
+    }
+    for (int64_t i = 0; i < n; i++) E->rho[i] = sqrt(cfpo_density_at(d, E->xy[2 * i], E->xy[2 * i + 1]));
+    if (start) { /* a given set: no cell far fuller than the density allows (a block's work grows with its count squared) */
+        build_cells(E);
+        const double most = 4 * (double)n * E->L * E->L * d->rho_max + 64;
+        for (int64_t c = 0; c < g * g; c++)
+            if ((double)(E->cstart[c + 1] - E->cstart[c]) > most) {
+                snprintf(err, errlen, "the given points hold %lld in one cell of side %.3g, over the %.0f this density "
+                         "allows there: too clustered to start from", (long long)(E->cstart[c + 1] - E->cstart[c]),
+                         E->L, most);
+                cfpo_dens_free(E);
+                return NULL;
+            }
+    }
+    return E;
+}
+
+int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
+{
+    const double t0 = omp_get_wtime();
+    E->iter++;
+    E->sx = cfpo_rand01(E->o.seed, 0xD5E1ull, (uint64_t)E->iter) * E->L;
+    E->sy = cfpo_rand01(E->o.seed, 0xD5E2ull, (uint64_t)E->iter) * E->L;
+    build_cells(E);
+    const int64_t g = E->g, per = g / 3;
+    int64_t mx = 0;
+    for (int64_t cy = 0; cy < g; cy++)
+        for (int64_t cx = 0; cx < g; cx++) {
+            const int64_t m = block_count(E, cx, cy);
+            if (m > mx) mx = m;
+        }
+    if (ensure_buffers(E, (size_t)mx) != 0) return -1;
+    int64_t moves = 0;
+    double maxd = 0;
+    for (int colour = 0; colour < 9; colour++) {
+        const int64_t bx = colour % 3, by = colour / 3;
+#pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves) reduction(max : maxd)
+        for (int64_t t = 0; t < per * per; t++) {
+            double md = 0;
+            moves += solve_cell(E, &E->tb[omp_get_thread_num()], bx + 3 * (t % per), by + 3 * (t / per), &md);
+            if (md > maxd) maxd = md;
+        }
+    }
+    memset(s, 0, sizeof *s);
+    s->iteration = E->iter;
+    s->moved = moves;
+    s->solved = E->n;
+    s->max_disp = maxd;
+    s->max_move = maxd;
+    if (cfpo_dens_nn(E->d, E->xy, (size_t)E->n, NULL, &s->delta_min, &s->delta_avg) != 0) return -1;
+    s->converged = cfpo_net_converged(moves, maxd, E->o.tol);
+    s->seconds = omp_get_wtime() - t0;
+    return 0;
+}
+
+int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_save_fn save, void *user, char *err,
+                  size_t errlen)
+{
+    const double t0 = omp_get_wtime();
+    cfpo_iter_stats s;
+    memset(&s, 0, sizeof s);
+    memset(res, 0, sizeof *res);
+    s.iteration = E->iter;
+    if (cfpo_dens_nn(E->d, E->xy, (size_t)E->n, NULL, &s.delta_min, &s.delta_avg) != 0) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    int stop = CFPO_STOP_NONE;
+    if (E->o.progress && E->o.progress(&s, E->o.user)) stop = CFPO_STOP_CALLER;
+    if (stop == CFPO_STOP_NONE && E->iter >= E->o.max_iter) stop = CFPO_STOP_MAX_ITER;
+    if (stop == CFPO_STOP_NONE && cfpo_stop_targets_met(&E->o.stop, s.delta_min, s.delta_avg)) stop = CFPO_STOP_TARGET;
+    while (stop == CFPO_STOP_NONE) {
+        if (cfpo_dens_iterate(E, &s) != 0) { snprintf(err, errlen, "out of memory mid-run"); return -1; }
+        if (E->o.progress && E->o.progress(&s, E->o.user)) stop = CFPO_STOP_CALLER;
+        if (stop == CFPO_STOP_NONE) stop = cfpo_stop_check(&E->o.stop, &s, omp_get_wtime() - t0, E->o.max_iter);
+        if (save && every > 0 && (E->iter % every == 0 || stop != CFPO_STOP_NONE) &&
+            save(E, E->iter, s.converged, user, err, errlen) != 0)
+            return -1;
+    }
+    res->iterations = E->iter;
+    res->converged = s.converged && stop == CFPO_STOP_CONVERGED;
+    res->seconds = omp_get_wtime() - t0;
+    res->delta_min = s.delta_min;
+    res->delta_avg = s.delta_avg;
+    res->cells_per_side = E->g;
+    res->stop = stop;
+    return 0;
+}
+
+const double *cfpo_dens_points(const cfpo_dens_engine *E) { return E->xy; }
+
+void cfpo_dens_on_move(cfpo_dens_engine *E, cfpo_dens_move_fn fn, void *user)
+{
+    E->on_move = fn;
+    E->move_user = user;
+}
+int64_t cfpo_dens_cells_per_side(const cfpo_dens_engine *E) { return E->g; }
+
+void cfpo_dens_free(cfpo_dens_engine *E)
+{
+    if (!E) return;
+    if (E->tb)
+        for (int t = 0; t < E->nthreads; t++) {
+            free(E->tb[t].bx); free(E->tb[t].bid); free(E->tb[t].scratch);
+        }
+    free(E->tb); free(E->xy); free(E->rho); free(E->cell); free(E->cidx); free(E->cstart);
+    free(E);
+}

@@ -1,0 +1,57 @@
+/* dens_engine.h - layer 3: CFPO under a density, on one rank with OpenMP
+ * (docs/method.md, "Density").
+ *
+ * The torus is cut into g x g square cells of side L >= 1.25 r_max (r_max
+ * = Delta(n) / sqrt(rho_min), the sparsest local spacing), g a multiple of
+ * 3, the grid shifted by a random offset every iteration, the cells
+ * coloured (x mod 3, y mod 3): nine phases, each solving its cells in
+ * parallel, whose 3 x 3 blocks are disjoint. Each point of a cell, in id
+ * order, gets a candidate from the local solve (dens_solve.h) inside the
+ * box of half-side r_i around it, clipped to its cell, and moves there
+ * only when its squared symmetric measure f rises against every other
+ * point of the block, and when no point outside the block can have f
+ * below the old value (their distance is at least the candidate's
+ * distance to the block's edge, their density at least rho_min). A
+ * rejected move changes nothing; so every move raises the moved point's
+ * smallest measure, and the smallest measure over all pairs never falls.
+ * The output does not depend on the thread count.
+ * Owns: the grid, the colour schedule, the accept rule, the run loop. */
+#ifndef CFPO_DENS_ENGINE_H
+#define CFPO_DENS_ENGINE_H
+
+#include <stdint.h>
+
+#include "cfpo_types.h"
+#include "density.h"
+
+typedef struct cfpo_dens_engine cfpo_dens_engine;
+
+/* n points under d; start: 2 n doubles to start from (--init, a
+ * checkpoint), or NULL for cfpo_dens_start's; iter0: the iteration the
+ * start stands at. o: seed, threads, max_iter, tol (of a move, in local
+ * spacings: converged when no point moves that far in an iteration), stop
+ * rules, progress. NULL with one line in err on failure. */
+cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_options *o, const double *start,
+                                   int iter0, char *err, size_t errlen);
+
+/* One iteration (nine phases); its statistics into *s. 0, or -1 when out of memory. */
+int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s);
+
+/* Runs until a stop rule holds; every `every` iterations (0: never)
+ * calls save(E, iteration, converged, user), and stops with -1 when it
+ * fails (err filled by it). */
+typedef int (*cfpo_dens_save_fn)(const cfpo_dens_engine *E, int iteration, int converged, void *user, char *err,
+                                 size_t errlen);
+int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_save_fn save, void *user, char *err,
+                  size_t errlen);
+
+const double *cfpo_dens_points(const cfpo_dens_engine *E); /* 2 n doubles, id order */
+
+/* For the tests: fn(points, id, user) after every accepted move (from the
+ * thread that made it). */
+typedef void (*cfpo_dens_move_fn)(const double *xy, int64_t id, void *user);
+void cfpo_dens_on_move(cfpo_dens_engine *E, cfpo_dens_move_fn fn, void *user);
+int64_t cfpo_dens_cells_per_side(const cfpo_dens_engine *E);
+void cfpo_dens_free(cfpo_dens_engine *E);
+
+#endif

@@ -1,0 +1,85 @@
+/* dens_measure.c - layer 2: see dens_measure.h. Grid of about 2 points per
+ * cell at the mean density; a point looks at rings of cells outward until
+ * a ring's distance k L, scaled by (q_i q_min)^(1/2) / Delta (q =
+ * sqrt(rho)), reaches its best measure so far (no unvisited point can be nearer in m); once
+ * the rings cover the torus every cell has been seen once. */
+#include "dens_measure.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "geom.h"
+#include "omp_compat.h"
+
+static inline double wrapd(double d) { return d - rint(d); }
+
+int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg)
+{
+    int64_t g = (int64_t)floor(sqrt((double)n / 2));
+    if (g < 1) g = 1;
+    if (g > 4096) g = 4096;
+    const double L = 1.0 / (double)g, D = cfpo_delta_bound((double)n);
+    size_t *start = calloc((size_t)(g * g) + 1, sizeof *start), *fill = malloc((size_t)(g * g) * sizeof *fill);
+    size_t *idx = malloc(n * sizeof *idx);
+    double *rho = malloc(n * sizeof *rho), *mm = m ? m : malloc(n * sizeof *mm);
+    int64_t *cell = malloc(n * sizeof *cell);
+    int rc = -1;
+    if (!start || !fill || !idx || !rho || !mm || !cell) goto done;
+    for (size_t i = 0; i < n; i++) {
+        int64_t cx = (int64_t)(xy[2 * i] * (double)g), cy = (int64_t)(xy[2 * i + 1] * (double)g);
+        cx = cx < 0 ? 0 : cx >= g ? g - 1 : cx;
+        cy = cy < 0 ? 0 : cy >= g ? g - 1 : cy;
+        cell[i] = cy * g + cx;
+        start[cell[i] + 1]++;
+        rho[i] = sqrt(cfpo_density_at(d, xy[2 * i], xy[2 * i + 1])); /* q = sqrt(rho) */
+    }
+    for (int64_t c = 0; c < g * g; c++) start[c + 1] += start[c];
+    for (int64_t c = 0; c < g * g; c++) fill[c] = start[c];
+    for (size_t i = 0; i < n; i++) idx[fill[cell[i]]++] = i;
+    const double lo = sqrt(d->rho_min);
+#pragma omp parallel for schedule(dynamic, 1024)
+    for (size_t i = 0; i < n; i++) {
+        const double x = xy[2 * i], y = xy[2 * i + 1], ri = rho[i];
+        if (!(ri > 0)) { mm[i] = 0; continue; }
+        const int64_t cx = cell[i] % g, cy = cell[i] / g;
+        double best = INFINITY; /* d^2 q_j, the smallest so far */
+        for (int64_t k = 0;; k++) {
+            const int all = 2 * k + 1 >= g;
+            const int64_t kk = all ? (g - 1) / 2 : k, kx0 = all ? -kk : -k, kx1 = all ? g - 1 - kk : k;
+            for (int64_t dy = kx0; dy <= kx1; dy++)
+                for (int64_t dx = kx0; dx <= kx1; dx++) {
+                    if (!all && k > 0 && dx > -k && dx < k && dy > -k && dy < k) continue; /* inner rings done */
+                    if (all && k > 0) {
+                        /* cells seen in rings below k are skipped */
+                        const int64_t ring = llabs(dx) > llabs(dy) ? llabs(dx) : llabs(dy);
+                        if (ring < k) continue;
+                    }
+                    const int64_t c = ((cy + dy) % g + g) % g * g + ((cx + dx) % g + g) % g;
+                    for (size_t s = start[c]; s < start[c + 1]; s++) {
+                        const size_t j = idx[s];
+                        if (j == i) continue;
+                        const double ex = wrapd(xy[2 * j] - x), ey = wrapd(xy[2 * j + 1] - y);
+                        const double v = (ex * ex + ey * ey) * rho[j];
+                        if (v < best) best = v;
+                    }
+                }
+            if (all) break;
+            const double reach = (double)k * L;
+            if (reach * reach * lo >= best) break;
+        }
+        mm[i] = sqrt(best * ri) / D; /* d (q_i q_j)^(1/2) / Delta */
+    }
+    double mn = INFINITY, sum = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (mm[i] < mn) mn = mm[i];
+        sum += mm[i];
+    }
+    *delta_min = mn;
+    *delta_avg = sum / (double)n;
+    rc = 0;
+done:
+    free(start); free(fill); free(idx); free(rho); free(cell);
+    if (!m) free(mm);
+    return rc;
+}

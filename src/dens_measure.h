@@ -1,0 +1,25 @@
+/* dens_measure.h - layer 2: the symmetric pair measure of a point set
+ * under a density (docs/method.md, "Density").
+ *
+ * With local spacing r(x) = Delta(n) / sqrt(rho(x)), the measure of a pair
+ * is m(i, j) = |x_i - x_j| / sqrt(r_i r_j) = |x_i - x_j| (rho_i rho_j)^(1/4)
+ * / Delta(n), |.| the torus distance, rho_i the density of x_i's pixel.
+ * For rho = 1 it is today's |x_i - x_j| / Delta(n). delta_min is the
+ * smallest m over all pairs; delta_avg the mean over points of each
+ * point's smallest m (its nearest neighbour in the measure). A point in a
+ * zero-density pixel has m = 0 to every other point.
+ * Owns: the measure's exact nearest-neighbour search (a uniform grid,
+ * rings outward until no unvisited cell can hold a smaller m). */
+#ifndef CFPO_DENS_MEASURE_H
+#define CFPO_DENS_MEASURE_H
+
+#include <stddef.h>
+
+#include "density.h"
+
+/* Each point's smallest measure into m (n doubles; may be NULL), and
+ * delta_min, delta_avg. n >= 2. 0, or -1 when out of memory. The result
+ * does not depend on the number of threads. */
+int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg);
+
+#endif

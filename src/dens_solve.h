@@ -1,0 +1,44 @@
+/* dens_solve.h - layer 2: the local solve under a density (docs/method.md,
+ * "Density"): a candidate for the farthest point, in the symmetric
+ * measure, of one point from its neighbours inside a box S.
+ *
+ * With q = sqrt(rho), the objective at c is f(c) = q(c) min_j |c - y_j|^2
+ * q_j (the squared symmetric measure times Delta^2). Its level sets are
+ * bounded by Apollonius circles; the solve replaces each circle by the
+ * straight line through the point that divides y_i y_j in the ratio
+ * q_j^(1/2) : q_i^(1/2), perpendicular to y_i y_j (exact when rho_i =
+ * rho_j, where it is today's bisector), clips S by those lines into one
+ * polygon for each of the 10 nearest neighbours (given nearest first) as
+ * LocalCFPO does, and evaluates f exactly at every vertex (q(c) from the
+ * pixel, the min over all neighbours). The best vertex is
+ * a candidate only: the engine accepts it when f rises against every point
+ * that can matter (dens_engine.c), which is what the guarantee rests on.
+ * Owns: the candidate search. */
+#ifndef CFPO_DENS_SOLVE_H
+#define CFPO_DENS_SOLVE_H
+
+#include <math.h>
+
+#include "density.h"
+#include "geom.h"
+
+/* Scratch doubles the solve needs for k neighbours. */
+static inline size_t cfpo_dens_scratch(int k) { return 5 * ((size_t)k + 8) + 16; }
+
+/* Neighbours (yx, yy) with q = sqrt(rho) in yr (k of them, in a local frame whose
+ * origin is (ox, oy) on the torus), the box S (local frame). Returns the
+ * best vertex's f into *f and its position into (cx, cy), or 0 when no
+ * vertex lies on a non-zero pixel (then *f = -1). */
+int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, cfpo_square S,
+                    const cfpo_density *d, double ox, double oy, double *cx, double *cy, double *f, double *scratch);
+
+/* f at c (local frame) against the k neighbours. */
+double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy);
+
+/* q = sqrt(rho) at the local point (cx, cy) of the frame at (ox, oy). */
+static inline double cfpo_dens_local_q(const cfpo_density *d, double ox, double oy, double cx, double cy)
+{
+    return sqrt(cfpo_density_at(d, cfpo_wrap01(ox + cx), cfpo_wrap01(oy + cy)));
+}
+
+#endif
