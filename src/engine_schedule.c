@@ -124,6 +124,9 @@ void cfpo_engine_begin(cfpo_engine *E)
     E->pol = cfpo_policy_at(&E->G, E->cur, E->near, E->dmin_now);
     E->G.margin = E->pol.margin;
     if (E->pol.shift != E->G.shift) move_grid(E, E->pol.shift);
+    if (E->pol.all)
+        for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    if (E->pol.transport) cfpo_lowfreq_coeffs(&E->lf, E->px, E->py, E->nloc, E->n);
     E->be->begin(E);
 }
 
@@ -163,6 +166,8 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
         s->converged = 0;
         for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
     }
+    /* The hyperuniform variant ends at its last iteration (policy.h). */
+    if (cfpo_policy_last(&E->G) > 0) s->converged = E->cur >= cfpo_policy_last(&E->G);
     cfpo_engine_deltas(E, &s->delta_min, &s->delta_avg);
     double el = now() - t0;
     comm_max_d(&el, 1);
