@@ -166,8 +166,17 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
         s->converged = 0;
         for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
     }
-    /* The hyperuniform variant ends at its last iteration (policy.h). */
-    if (cfpo_policy_last(&E->G) > 0) s->converged = E->cur >= cfpo_policy_last(&E->G);
+    /* The hyperuniform variant's stage (policy.c) schedules its own near
+     * sweeps, so the near phase is over (a checkpoint says near = 0; the
+     * trace's column says which sweeps were near ones); the variant ends,
+     * converged, at its last iteration. */
+    if (cfpo_policy_last(&E->G) > 0) {
+        if (E->pol.all) {
+            E->near = 0;
+            s->near = E->pol.near;
+        }
+        s->converged = E->cur >= cfpo_policy_last(&E->G);
+    }
     cfpo_engine_deltas(E, &s->delta_min, &s->delta_avg);
     double el = now() - t0;
     comm_max_d(&el, 1);
