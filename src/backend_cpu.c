@@ -107,7 +107,7 @@ static unsigned store_move(cfpo_engine *E, uint32_t k, int64_t cx, int64_t cy, d
     return 1u << ((dy + 1) * 3 + (dx + 1));
 }
 
-/* The transport sweep's move of point gi of the block (lowfreq.h): along
+/* The transport sweep's move of point gi of the block (transport.h): along
  * the field, shortened to P->vmax, keeping min(r0, P->cap) from every
  * point (the square keeps it from those beyond the block). */
 static int transport_move(const cfpo_engine *E, const double *lxs, const double *lys, int m, int gi, double ox,
@@ -120,10 +120,10 @@ static int transport_move(const cfpo_engine *E, const double *lxs, const double 
     cfpo_square Sx;
     if (!cfpo_policy_square(P, sqrt(floor2), &Sx)) return 0;
     double ux, uy;
-    cfpo_lowfreq_field(&E->lf, cfpo_wrap01(x + ox), cfpo_wrap01(y + oy), omp_get_thread_num(), &ux, &uy);
+    cfpo_transport_field(&E->lf, cfpo_wrap01(x + ox), cfpo_wrap01(y + oy), omp_get_thread_num(), &ux, &uy);
     const double u = sqrt(ux * ux + uy * uy);
     if (u > P->vmax) ux *= P->vmax / u, uy *= P->vmax / u;
-    return cfpo_lowfreq_move(x, y, ux, uy, lxs, lys, m, gi, floor2, &Sx, nx, ny);
+    return cfpo_transport_move(x, y, ux, uy, lxs, lys, m, gi, floor2, &Sx, nx, ny);
 }
 
 /* Solves every point of own cell (lx, ly) in id order. Returns moves. */

@@ -27,7 +27,7 @@ uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads)
 void cfpo_engine_free(cfpo_engine *E)
 {
     if (!E) return;
-    cfpo_lowfreq_free(&E->lf);
+    cfpo_transport_free(&E->lf);
     free(E->px); free(E->py); free(E->pid); free(E->dq);
     free(E->tx); free(E->ty); free(E->tid);
     free(E->start); free(E->start2); free(E->mask);
@@ -159,7 +159,7 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
             cfpo_engine_free(E);
             return NULL;
         }
-        if (cfpo_lowfreq_init(&E->lf, n, E->nthreads) != 0) {
+        if (cfpo_transport_init(&E->lf, n, E->nthreads) != 0) {
             snprintf(err, errlen, "out of memory");
             cfpo_engine_free(E);
             return NULL;

@@ -126,7 +126,7 @@ void cfpo_engine_begin(cfpo_engine *E)
     if (E->pol.shift != E->G.shift) move_grid(E, E->pol.shift);
     if (E->pol.all)
         for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
-    if (E->pol.transport) cfpo_lowfreq_coeffs(&E->lf, E->px, E->py, E->nloc, E->n);
+    if (E->pol.transport) cfpo_transport_coeffs(&E->lf, E->px, E->py, E->nloc, E->n);
     E->be->begin(E);
 }
 

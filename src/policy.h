@@ -55,7 +55,7 @@ typedef struct {
     int relax;      /* the over-relaxation weights to try, in order: 0 or 2 */
     double w[2];
     int all;        /* 1: every cell is solved (the hyperuniform stage) */
-    int transport;  /* 1: a transport sweep (lowfreq.h) instead of solves */
+    int transport;  /* 1: a transport sweep (transport.h) instead of solves */
     double cap;     /* with transport: a point keeps min(r0, cap) from all */
     double vmax;    /* with transport: the longest displacement followed */
 } cfpo_policy;

@@ -1,6 +1,6 @@
-/* lowfreq.c - see lowfreq.h: the low-frequency modes, the transport field
+/* transport.c - see transport.h: the low-frequency modes, the transport field
  * and the clipped move of the hyperuniform variant. */
-#include "lowfreq.h"
+#include "transport.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -15,7 +15,7 @@
  * square, so that rounding leaves it outside; the exact check decides. */
 #define SHORT (1 - 1e-9)
 
-int cfpo_lowfreq_init(cfpo_lowfreq *F, int64_t n, int threads)
+int cfpo_transport_init(cfpo_transport *F, int64_t n, int threads)
 {
     const int K = (int)floor(sqrt((double)n / 25.0));
     const size_t most = (size_t)(2 * K + 1) * (size_t)(K + 1), W = (size_t)(2 * K + 1);
@@ -27,7 +27,7 @@ int cfpo_lowfreq_init(cfpo_lowfreq *F, int64_t n, int threads)
     F->part = calloc(CHUNKS * 2 * most, sizeof(double));
     F->tab = malloc(sizeof(double) * 4 * W * (CHUNKS + (size_t)F->threads));
     if (!F->k || !F->c || !F->part || !F->tab) {
-        cfpo_lowfreq_free(F);
+        cfpo_transport_free(F);
         return -1;
     }
     for (int ky = 0; ky <= K; ky++)
@@ -41,7 +41,7 @@ int cfpo_lowfreq_init(cfpo_lowfreq *F, int64_t n, int threads)
     return 0;
 }
 
-void cfpo_lowfreq_free(cfpo_lowfreq *F)
+void cfpo_transport_free(cfpo_transport *F)
 {
     free(F->k);
     free(F->c);
@@ -69,7 +69,7 @@ static void powers(double x, int K, double *re, double *im)
     }
 }
 
-void cfpo_lowfreq_coeffs(cfpo_lowfreq *F, const double *x, const double *y, int64_t np, int64_t n)
+void cfpo_transport_coeffs(cfpo_transport *F, const double *x, const double *y, int64_t np, int64_t n)
 {
     const int m = F->m, W = 2 * F->K + 1;
     const int64_t nch = np < CHUNKS ? (np > 0 ? np : 1) : CHUNKS;
@@ -102,7 +102,7 @@ void cfpo_lowfreq_coeffs(cfpo_lowfreq *F, const double *x, const double *y, int6
     }
 }
 
-void cfpo_lowfreq_field(const cfpo_lowfreq *F, double x, double y, int thread, double *ux, double *uy)
+void cfpo_transport_field(const cfpo_transport *F, double x, double y, int thread, double *ux, double *uy)
 {
     const int W = 2 * F->K + 1;
     double *tab = F->tab + (size_t)(CHUNKS + thread) * 4 * (size_t)W;
@@ -156,7 +156,7 @@ static int admissible(double x, double y, const double *bx, const double *by, in
     return x >= S->x0 && x <= S->x1 && y >= S->y0 && y <= S->y1 && cfpo_min_dist2(x, y, bx, by, m, self) >= floor2;
 }
 
-int cfpo_lowfreq_move(double x, double y, double vx, double vy, const double *bx, const double *by, int m,
+int cfpo_transport_move(double x, double y, double vx, double vy, const double *bx, const double *by, int m,
                       int self, double floor2, const cfpo_square *S, double *nx, double *ny)
 {
     *nx = x;

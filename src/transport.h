@@ -1,4 +1,4 @@
-/* lowfreq.h - layer 1: the low-frequency transport of the hyperuniform
+/* transport.h - layer 1: the low-frequency transport of the hyperuniform
  * variant (docs/method.md, "--variant hyperuniform").
  *
  * The density modes rho_hat(k) = sum_j exp(-2 pi i k.x_j) of a set of n
@@ -14,8 +14,8 @@
  * chunks, so the same bits for any thread count), the field at a point and
  * the clipped move. Does not own: when the transport runs (policy.c) or
  * which points it moves (backend_cpu.c). */
-#ifndef CFPO_LOWFREQ_H
-#define CFPO_LOWFREQ_H
+#ifndef CFPO_TRANSPORT_H
+#define CFPO_TRANSPORT_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -30,19 +30,19 @@ typedef struct {
     double *part; /* the chunks' partial sums */
     double *tab;  /* per chunk, then per thread: the exponentials of one point */
     int threads;
-} cfpo_lowfreq;
+} cfpo_transport;
 
 /* The modes of a set of n points, c zeroed, scratch for `threads` threads.
  * 0, or -1 out of memory. */
-int cfpo_lowfreq_init(cfpo_lowfreq *F, int64_t n, int threads);
-void cfpo_lowfreq_free(cfpo_lowfreq *F);
+int cfpo_transport_init(cfpo_transport *F, int64_t n, int threads);
+void cfpo_transport_free(cfpo_transport *F);
 
 /* c from the np points (x[j], y[j]) of a set of n points, on F's threads;
  * the same bits for any thread count. */
-void cfpo_lowfreq_coeffs(cfpo_lowfreq *F, const double *x, const double *y, int64_t np, int64_t n);
+void cfpo_transport_coeffs(cfpo_transport *F, const double *x, const double *y, int64_t np, int64_t n);
 
 /* u at (x, y) (torus coordinates), by thread `thread` of F's. */
-void cfpo_lowfreq_field(const cfpo_lowfreq *F, double x, double y, int thread, double *ux, double *uy);
+void cfpo_transport_field(const cfpo_transport *F, double x, double y, int thread, double *ux, double *uy);
 
 /* The point `self` of the m block points (bx, by) at (x, y), displaced by
  * (vx, vy): it goes along the displacement until the spot would come
@@ -51,7 +51,7 @@ void cfpo_lowfreq_field(const cfpo_lowfreq *F, double x, double y, int thread, d
  * it, as far again. The spot (*nx, *ny) is in S and at least sqrt(floor2)
  * from every other block point, checked exactly; (x, y) itself if no
  * such spot was found (x must then satisfy both). Returns 1 if it moved. */
-int cfpo_lowfreq_move(double x, double y, double vx, double vy, const double *bx, const double *by, int m,
+int cfpo_transport_move(double x, double y, double vx, double vy, const double *bx, const double *by, int m,
                       int self, double floor2, const cfpo_square *S, double *nx, double *ny);
 
 #endif
