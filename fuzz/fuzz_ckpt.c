@@ -20,7 +20,7 @@ static void check(const uint8_t *data, size_t size)
         if (c.n < 1 || (uint64_t)c.n != (size - CKPT_HEADER) / 16 || c.converged < 0 || c.converged > 1 ||
             !(c.tol >= 0 && c.tol <= CFPO_TOL_MAX) || c.iteration < 0 || c.iteration > CKPT_ITER_MAX ||
             (c.variant != CFPO_VARIANT_PAPER && c.variant != CFPO_VARIANT_SIMPLIFIED &&
-             c.variant != CFPO_VARIANT_ADAPTIVE))
+             c.variant != CFPO_VARIANT_ADAPTIVE && c.variant != CFPO_VARIANT_HYPERUNIFORM))
             abort();
     } else if (rc != -1 || strncmp(err, "fuzz.ck: ", 9) != 0 || strchr(err, '\n')) {
         abort();

@@ -107,6 +107,25 @@ static unsigned store_move(cfpo_engine *E, uint32_t k, int64_t cx, int64_t cy, d
     return 1u << ((dy + 1) * 3 + (dx + 1));
 }
 
+/* The transport sweep's move of point gi of the block (transport.h): along
+ * the field, shortened to P->vmax, keeping min(r0, P->cap) from every
+ * point (the square keeps it from those beyond the block). */
+static int transport_move(const cfpo_engine *E, const double *lxs, const double *lys, int m, int gi, double ox,
+                          double oy, double *nx, double *ny)
+{
+    const cfpo_policy *P = &E->pol;
+    const double x = lxs[gi], y = lys[gi], r02 = cfpo_min_dist2(x, y, lxs, lys, m, gi);
+    if (isinf(r02)) return 0;
+    const double floor2 = fmin(r02, P->cap * P->cap);
+    cfpo_square Sx;
+    if (!cfpo_policy_square(P, sqrt(floor2), &Sx)) return 0;
+    double ux, uy;
+    cfpo_transport_field(&E->lf, cfpo_wrap01(x + ox), cfpo_wrap01(y + oy), omp_get_thread_num(), &ux, &uy);
+    const double u = sqrt(ux * ux + uy * uy);
+    if (u > P->vmax) ux *= P->vmax / u, uy *= P->vmax / u;
+    return cfpo_transport_move(x, y, ux, uy, lxs, lys, m, gi, floor2, &Sx, nx, ny);
+}
+
 /* Solves every point of own cell (lx, ly) in id order. Returns moves. */
 static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, int64_t *solved, double *maxmove)
 {
@@ -122,9 +141,22 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     const cfpo_policy *P = &E->pol;
     int64_t moves = 0;
     unsigned mask = 0;
+    const double ox = (double)(E->x0 + lx) * E->G.L + E->G.shift, oy = (double)(E->y0 + ly) * E->G.L + E->G.shift;
     for (uint32_t k = 0; k < e - s; k++) {
         const int gi = off + (int)k;
         const double x = lxs[gi], y = lys[gi];
+        if (P->transport) {
+            double nx, ny;
+            (*solved)++;
+            if (!transport_move(E, lxs, lys, m, gi, ox, oy, &nx, &ny)) continue;
+            lxs[gi] = nx;
+            lys[gi] = ny;
+            const double ddx = nx - x, ddy = ny - y, mv = ddx * ddx + ddy * ddy;
+            if (mv > *maxmove) *maxmove = mv;
+            mask |= store_move(E, s + k, E->x0 + lx, E->y0 + ly, nx, ny, ddx, ddy);
+            moves++;
+            continue;
+        }
         const double r02 = cfpo_min_dist2(x, y, lxs, lys, m, gi);
         if (isinf(r02)) continue;
         const double thr = sqrt(r02) + tolL, floor2 = thr * thr;

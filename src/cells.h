@@ -33,6 +33,7 @@
 #include <stdint.h>
 
 #include "engine.h"
+#include "transport.h"
 #include "omp_compat.h"
 #include "policy.h"
 #include "rng.h"
@@ -116,6 +117,7 @@ struct cfpo_engine {
     size_t scratch_m; /* points the scratch is sized for */
     int iter0;        /* iteration the engine stands at */
     int resumed_converged;
+    cfpo_transport lf;  /* the hyperuniform variant's transport (transport.h) */
     int near;         /* 1 while the adaptive variant's near phase runs:
                          cfpo_near_solve, until a sweep moves nothing */
     double max_move;  /* largest single move this iteration */

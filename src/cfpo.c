@@ -14,7 +14,7 @@
 
 double cfpo_default_tol(int variant)
 {
-    return variant == CFPO_VARIANT_ADAPTIVE ? CFPO_ADAPTIVE_TOL : CFPO_DEFAULT_TOL;
+    return variant == CFPO_VARIANT_ADAPTIVE || variant == CFPO_VARIANT_HYPERUNIFORM ? CFPO_ADAPTIVE_TOL : CFPO_DEFAULT_TOL;
 }
 
 void cfpo_options_init(cfpo_options *o)
@@ -35,6 +35,7 @@ int cfpo_variant_parse(const char *name, int *variant)
     if (strcmp(name, "adaptive") == 0) *variant = CFPO_VARIANT_ADAPTIVE;
     else if (strcmp(name, "paper") == 0 || strcmp(name, "cfpo") == 0) *variant = CFPO_VARIANT_PAPER;
     else if (strcmp(name, "simplified") == 0) *variant = CFPO_VARIANT_SIMPLIFIED;
+    else if (strcmp(name, "hyperuniform") == 0) *variant = CFPO_VARIANT_HYPERUNIFORM;
     else return -1;
     return 0;
 }
@@ -45,6 +46,7 @@ const char *cfpo_variant_name(int variant)
     case CFPO_VARIANT_ADAPTIVE: return "adaptive";
     case CFPO_VARIANT_PAPER: return "paper";
     case CFPO_VARIANT_SIMPLIFIED: return "simplified";
+    case CFPO_VARIANT_HYPERUNIFORM: return "hyperuniform";
     default: return "?";
     }
 }
@@ -52,7 +54,7 @@ const char *cfpo_variant_name(int variant)
 static int validate_options(const cfpo_options *o, char *err, size_t errlen)
 {
     if (o->variant != CFPO_VARIANT_PAPER && o->variant != CFPO_VARIANT_SIMPLIFIED &&
-        o->variant != CFPO_VARIANT_ADAPTIVE) {
+        o->variant != CFPO_VARIANT_ADAPTIVE && o->variant != CFPO_VARIANT_HYPERUNIFORM) {
         snprintf(err, errlen, "unknown variant %d", o->variant);
         return -1;
     }

@@ -18,7 +18,7 @@ extern "C" {
  * the stratified start). SIMPLIFIED: 4 phases, S = own cell. ADAPTIVE (the
  * default): 9 phases on the same grid with the margin and start described
  * in docs/method.md. FULL is the old name of PAPER. */
-enum { CFPO_VARIANT_PAPER = 0, CFPO_VARIANT_SIMPLIFIED = 1, CFPO_VARIANT_ADAPTIVE = 2 };
+enum { CFPO_VARIANT_PAPER = 0, CFPO_VARIANT_SIMPLIFIED = 1, CFPO_VARIANT_ADAPTIVE = 2, CFPO_VARIANT_HYPERUNIFORM = 3 };
 #define CFPO_VARIANT_FULL CFPO_VARIANT_PAPER
 
 /* Default move/convergence tolerance, relative to the cell side: the

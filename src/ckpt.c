@@ -30,7 +30,8 @@ static uint64_t get64(const unsigned char *b)
 
 static int known_variant(uint64_t v)
 {
-    return v == CFPO_VARIANT_PAPER || v == CFPO_VARIANT_SIMPLIFIED || v == CFPO_VARIANT_ADAPTIVE;
+    return v == CFPO_VARIANT_PAPER || v == CFPO_VARIANT_SIMPLIFIED || v == CFPO_VARIANT_ADAPTIVE ||
+           v == CFPO_VARIANT_HYPERUNIFORM;
 }
 
 int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_header *c, char *err,
@@ -121,7 +122,7 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
     if (n < (uint64_t)nmin || n > (size - CKPT_HEADER) / 16) {
         if (n < (uint64_t)nmin)
             snprintf(err, errlen, "%s: corrupt checkpoint: field n = %llu is below the smallest n of variant %s (%lld)",
-                     path, (unsigned long long)n, c->variant == CFPO_VARIANT_SIMPLIFIED ? "simplified" : c->variant == CFPO_VARIANT_PAPER ? "paper" : "adaptive", (long long)nmin);
+                     path, (unsigned long long)n, c->variant == CFPO_VARIANT_SIMPLIFIED ? "simplified" : c->variant == CFPO_VARIANT_PAPER ? "paper" : c->variant == CFPO_VARIANT_HYPERUNIFORM ? "hyperuniform" : "adaptive", (long long)nmin);
         else
             snprintf(err, errlen, "%s: checkpoint field n = %llu needs %llu bytes or more, file has %llu (truncated?)",
                      path, (unsigned long long)n, (unsigned long long)n < UINT64_MAX / 16 - 4 ?

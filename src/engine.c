@@ -27,6 +27,7 @@ uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads)
 void cfpo_engine_free(cfpo_engine *E)
 {
     if (!E) return;
+    cfpo_transport_free(&E->lf);
     free(E->px); free(E->py); free(E->pid); free(E->dq);
     free(E->tx); free(E->ty); free(E->tid);
     free(E->start); free(E->start2); free(E->mask);
@@ -152,6 +153,18 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         return NULL;
     }
     E->t_born = born;
+    if (o->variant == CFPO_VARIANT_HYPERUNIFORM) {
+        if (E->nranks > 1) {
+            snprintf(err, errlen, "--variant hyperuniform runs on one rank (its transport field sums over every point)");
+            cfpo_engine_free(E);
+            return NULL;
+        }
+        if (cfpo_transport_init(&E->lf, n, E->nthreads) != 0) {
+            snprintf(err, errlen, "out of memory");
+            cfpo_engine_free(E);
+            return NULL;
+        }
+    }
     if (!comm_all(alloc_cells(E) == 0)) {
         snprintf(err, errlen, "out of memory for n = %lld (%.1f GB per rank needed)", (long long)n,
                  (double)cfpo_engine_bytes_local(n / E->nranks, G.g * G.g / E->nranks, 0, E->nthreads) / 1e9);

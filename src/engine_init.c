@@ -68,7 +68,7 @@ oom:
 
 int eng_make_initial(cfpo_engine *E, char *err, size_t errlen)
 {
-    if (E->G.variant == CFPO_VARIANT_ADAPTIVE) return make_initial_adaptive(E, err, errlen);
+    if (E->G.variant == CFPO_VARIANT_ADAPTIVE || E->G.variant == CFPO_VARIANT_HYPERUNIFORM) return make_initial_adaptive(E, err, errlen);
     const int64_t g = E->G.g;
     const uint64_t cells = (uint64_t)(g * g);
     const int simple = E->G.extra % cells == 0;

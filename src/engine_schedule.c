@@ -124,6 +124,9 @@ void cfpo_engine_begin(cfpo_engine *E)
     E->pol = cfpo_policy_at(&E->G, E->cur, E->near, E->dmin_now);
     E->G.margin = E->pol.margin;
     if (E->pol.shift != E->G.shift) move_grid(E, E->pol.shift);
+    if (E->pol.all)
+        for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    if (E->pol.transport) cfpo_transport_coeffs(&E->lf, E->px, E->py, E->nloc, E->n);
     E->be->begin(E);
 }
 
@@ -162,6 +165,17 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
         E->near = 0;
         s->converged = 0;
         for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    }
+    /* The hyperuniform variant's stage (policy.c) schedules its own near
+     * sweeps, so the near phase is over (a checkpoint says near = 0; the
+     * trace's column says which sweeps were near ones); the variant ends,
+     * converged, at its last iteration. */
+    if (cfpo_policy_last(&E->G) > 0) {
+        if (E->pol.all) {
+            E->near = 0;
+            s->near = E->pol.near;
+        }
+        s->converged = E->cur >= cfpo_policy_last(&E->G);
     }
     cfpo_engine_deltas(E, &s->delta_min, &s->delta_avg);
     double el = now() - t0;

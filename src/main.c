@@ -38,8 +38,12 @@ static void usage(void)
            "                       second neighbour's) until they stall, then exact\n"
            "                       ones; see docs/method.md),\n"
            "                       paper (the published algorithm: S = cell grown by\n"
-           "                       L - Delta, stratified start; 'cfpo' is an alias)\n"
-           "                       or simplified (4 phases, S = own cell)\n"
+           "                       L - Delta, stratified start; 'cfpo' is an alias),\n"
+           "                       simplified (4 phases, S = own cell)\n"
+           "                       or hyperuniform (adaptive for 40 iterations, then 70\n"
+           "                       of transport sweeps that remove the density modes\n"
+           "                       |k| <= 0.2 sqrt(n), delta_min kept >= 0.92 Delta, and\n"
+           "                       near sweeps; no low-frequency floor; one rank only)\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "      --max-iter K     stop after K iterations (default %d)\n"
            "      --tol T          a move must gain more than T * cell side; converged when\n"
@@ -218,7 +222,7 @@ static int sampler_option(cmdline *c, int ch, char *arg)
     case 's': c->o.seed = cli_arg_seed(prog, arg); c->given_seed = 1; break;
     case 'v':
         if (cfpo_variant_parse(arg, &c->o.variant) != 0)
-            cli_usage_error(prog, "--variant: '%s' is not one of adaptive, paper, simplified", arg);
+            cli_usage_error(prog, "--variant: '%s' is not one of adaptive, paper, simplified, hyperuniform", arg);
         c->given_variant = 1;
         break;
     case 't': c->o.threads = (int)whole("--threads", arg, 1, 4096, "1..4096"); break;

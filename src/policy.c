@@ -23,14 +23,36 @@ static const double relax_strong[2] = {3.0, 1.8}, relax_mild[2] = {1.8, 1.4};
 #define SHIFT_EVERY 4
 #define SHIFT_SALT 0x3c6ef372fe94f82aULL
 
+/* The hyperuniform variant: the adaptive schedule until HU_FROM; then
+ * HU_FIRST transport sweeps; then HU_ROUNDS rounds of one near sweep
+ * (two cells, no over-relaxation) and HU_ROUND - 1 transport sweeps. Every
+ * transport sweep keeps each point min(r0, HU_CAP Delta(n)) from all;
+ * moves longer than HU_VMAX Delta(n) are shortened to it. */
+#define HU_FROM 41
+#define HU_FIRST 20
+#define HU_ROUNDS 10
+#define HU_ROUND 5
+#define HU_CAP 0.92
+#define HU_VMAX 0.3
+
+static int adaptive_like(int variant)
+{
+    return variant == CFPO_VARIANT_ADAPTIVE || variant == CFPO_VARIANT_HYPERUNIFORM;
+}
+
+int cfpo_policy_last(const cfpo_grid *G)
+{
+    return G->variant == CFPO_VARIANT_HYPERUNIFORM ? HU_FROM - 1 + HU_FIRST + HU_ROUNDS * HU_ROUND : 0;
+}
+
 double cfpo_policy_shift(const cfpo_grid *G, int k)
 {
-    if (G->variant != CFPO_VARIANT_ADAPTIVE || k <= 0) return 0;
+    if (!adaptive_like(G->variant) || k <= 0) return 0;
     k -= (k - 1) % SHIFT_EVERY; /* the first iteration of k's group */
     return G->L * cfpo_rand01(G->seed ^ SHIFT_SALT, (uint64_t)k, 0);
 }
 
-int cfpo_policy_starts_near(int variant) { return variant == CFPO_VARIANT_ADAPTIVE; }
+int cfpo_policy_starts_near(int variant) { return adaptive_like(variant); }
 
 int cfpo_policy_near_ends(int near, int converged) { return near && converged; }
 
@@ -46,11 +68,25 @@ static double adaptive_margin(const cfpo_grid *G, double dmin)
 cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
 {
     cfpo_policy P = {.iteration = k, .L = G->L, .margin = G->margin, .shift = 0};
-    if (G->variant != CFPO_VARIANT_ADAPTIVE) return P;
+    if (!adaptive_like(G->variant)) return P;
     P.margin = adaptive_margin(G, dmin);
     P.shift = cfpo_policy_shift(G, k);
     P.cut = 1;
     P.freeze = FREEZE * G->L;
+    if (G->variant == CFPO_VARIANT_HYPERUNIFORM && k >= HU_FROM) {
+        const int j = k - HU_FROM;
+        P.all = 1;
+        if (j < HU_FIRST || (j - HU_FIRST) % HU_ROUND != 0) {
+            P.transport = 1;
+            P.margin = G->L; /* the cut alone: L - min(r0, cap) */
+            P.cap = HU_CAP * G->delta;
+            P.vmax = HU_VMAX * G->delta;
+        } else {
+            P.near = 1;
+            P.near_cells = 2;
+        }
+        return P;
+    }
     P.near = near != 0;
     P.near_cells = P.near ? (k < NEAR_TWO_UNTIL ? 2 : 1) : 0;
     if (k >= RELAX_FROM) {

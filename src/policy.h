@@ -54,7 +54,15 @@ typedef struct {
     int near_cells; /* with near: the Voronoi cells it searches (2 or 1) */
     int relax;      /* the over-relaxation weights to try, in order: 0 or 2 */
     double w[2];
+    int all;        /* 1: every cell is solved (the hyperuniform stage) */
+    int transport;  /* 1: a transport sweep (transport.h) instead of solves */
+    double cap;     /* with transport: a point keeps min(r0, cap) from all */
+    double vmax;    /* with transport: the longest displacement followed */
 } cfpo_policy;
+
+/* The last iteration of a run of grid G (the hyperuniform variant's), or
+ * 0 where the convergence rule alone ends a run. */
+int cfpo_policy_last(const cfpo_grid *G);
 
 /* The decisions for iteration k of a run of grid G, the run being in its
  * near phase (near) with delta(X) / Delta(n) = dmin as last measured (1

@@ -154,6 +154,7 @@ expect_err 2 "tiles too small" 5 -n 100 -o x.npy
 expect_err 2 "use at most 9 ranks" 11 -n 100
 expect_err 2 "does not give one tile" 2 -n $N --tiles 3x1
 expect_err 2 "text output needs one rank" 2 -n $N -o x.txt
+expect_err 1 "hyperuniform runs on one rank" 2 -n $N -t 1 --variant hyperuniform -o h.npy
 expect_err 2 "the checkpoint is for" 2 --resume ck.bin --seed 9
 head -c 1000 ck.bin >trunc.bin
 expect_err 1 "truncated" 2 --resume trunc.bin -o y.npy

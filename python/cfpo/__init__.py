@@ -106,7 +106,8 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
 
     n: number of points (at least the command's minimum; may be left out
     with init). seed: 64-bit unsigned. variant: "adaptive" (default),
-    "paper" (alias "cfpo") or "simplified". threads: OpenMP threads; None
+    "paper" (alias "cfpo"), "simplified" or "hyperuniform" (no
+    low-frequency floor; docs/method.md). threads: OpenMP threads; None
     follows OMP_NUM_THREADS, else all cores (the result does not depend on
     it). tol: move tolerance relative to the cell side (default: the
     variant's). max_iter: iteration cap (default 10000). target_min,

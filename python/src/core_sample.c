@@ -50,7 +50,7 @@ int core_options_of(cfpo_options *o, unsigned long long seed, const char *varian
     cfpo_options_init(o);
     o->seed = seed;
     if (cfpo_variant_parse(variant, &o->variant) != 0) {
-        PyErr_Format(PyExc_ValueError, "variant: '%s' is not one of adaptive, paper, simplified", variant);
+        PyErr_Format(PyExc_ValueError, "variant: '%s' is not one of adaptive, paper, simplified, hyperuniform", variant);
         return -1;
     }
     o->tol = tol >= 0 ? tol : cfpo_default_tol(o->variant);
