@@ -306,7 +306,11 @@ for f in $FIGS; do
   check "summary.md shows fig-$f.png" grep -q "](fig-$f.png)" "$R/summary.md"
   check "scripts/fig-$f.gp exists" [ -f scripts/fig-$f.gp ]
 done
-check "no other PNG than the figures (no pcf.txt: no g(r) figure)" [ "$(find "$R" -name '*.png' | wc -l)" -eq 8 ] && [ ! -e "$R/fig-pcf.png" ]
+# cfpo-analyze writes pcf.txt: the g(r) figure, a panel per comparison group
+npcf=$(find "$R/data/analysis" -path '*/comparison-*/pcf.txt' | wc -l)
+check "the comparison's analyses hold pcf.txt" [ "$npcf" -ge 2 ]
+check "no other PNG than the figures, fig-pcf.png among them" [ "$(find "$R" -name '*.png' | wc -l)" -eq 9 ] && png_ok "$R/fig-pcf.png"
+check "fig-pcf: one panel per comparison group with pcf.txt" [ "$(grep -c "^GRP\[" "$R/plotdata/fig-pcf.vars.gp")" -eq "$npcf" ]
 check "the low-frequency panel draws every method of the comparison" \
   [ "$(grep -c "^GRP\[[0-9]*\] = 'comparison-" "$R/plotdata/fig-lowfreq.vars.gp")" -eq "$N_COMP" ]
 
@@ -347,6 +351,7 @@ check "before the measures: no integration figure, no low-frequency table" \
 check "before the measures: the low-frequency panel still drawn (raps.txt)" png_ok "$old/fig-lowfreq.png"
 # pair correlation: a pcf.txt in an averaged analysis gives the g(r) figure;
 # without one, it goes (silently)
+rm -f "$old"/data/analysis/*/pcf.txt
 printf '# pair correlation, test data\n# r/Delta g\n0.1 0\n0.5 0\n0.9 1.8\n1.2 1.1\n2.0 1.0\n3.0 1.0\n' >"$old/data/analysis/comparison-cfpo/pcf.txt"
 cp "$old/data/analysis/comparison-cfpo/pcf.txt" "$old/data/analysis/comparison-fpo/pcf.txt"
 if $BENCH replot "$old" >/dev/null 2>"$T/rerr4"; then ok; else bad "replot with pcf.txt: $(tail -n 1 "$T/rerr4")"; fi
