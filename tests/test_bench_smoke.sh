@@ -63,7 +63,7 @@ bad_rows=$(grep -v '^#' "$csv" | tail -n +2 | awk -F, -v mall="^($M_ALL)\$" -v m
   $1 != NR { e = e " run" }
   $2 !~ /^(evolution|comparison|runtime|integration|ttq)$/ { e = e " experiment" }
   $3 !~ mall { e = e " method" }
-  ($3 == "cfpo") != ($4 ~ /^(paper|adaptive|simplified)$/) || ($3 != "cfpo" && $4 != "-") { e = e " variant" }
+  ($3 == "cfpo") != ($4 ~ /^(paper|adaptive|simplified|hyperuniform)$/) || ($3 != "cfpo" && $4 != "-") { e = e " variant" }
   ($2 == "evolution" || $2 == "runtime") && $4 == "adaptive" { e = e " variant (evolution and runtime run the paper variant)" }
   !int_($5) || !int_($6) || !int_($7) || !int_($8) || !int_($9) || ($9 != 1 && !($3 == "cfpo" && $8 == 1 && $2 == "runtime")) { e = e " n/seed/threads/ranks" }
   $10 != "-" && !int_($10) { e = e " max_iter" }
@@ -289,6 +289,8 @@ for d in '\*\*P0\*\*' '\*\*H\*\*' '\*\*α\*\*' '\*\*wrap-around L2' '\*\*Var dis
 done
 check "summary.md: CFPO (adaptive) beside CFPO in the comparison table" \
   grep -q "^| CFPO (adaptive) | [0-9]" "$R/summary.md"
+check "summary.md: CFPO (hyperuniform) in the comparison and low-frequency tables" \
+  [ "$(grep -c "^| CFPO (hyperuniform) | " "$R/summary.md")" -ge 2 ]
 
 # ---- figures ----------------------------------------------------------------------
 png_ok() { # PNG signature, then an IHDR chunk with a non-zero width and height

@@ -77,7 +77,7 @@ PyObject *core_run_density(PyObject *self, PyObject *args)
     const double seconds = cli_now() - c.t0;
     PyEval_RestoreThread(c.ts);
     Py_XDECREF(start);
-    PyObject *points = NULL, *trace = NULL;
+    PyObject *points = NULL;
     if (!c.failed && rc == 0) {
         double *xy;
         points = core_points_new((size_t)n, &xy);
@@ -85,19 +85,5 @@ PyObject *core_run_density(PyObject *self, PyObject *args)
     }
     cfpo_dens_free(E);
     cfpo_density_free(&d);
-    if (c.failed || rc != 0 || !points) {
-        free(c.trace.v);
-        if (!c.failed && rc != 0) core_error(created ? PyExc_RuntimeError : PyExc_ValueError, err);
-        return NULL;
-    }
-    if (want_trace) {
-        if (!(trace = core_trace_take(&c.trace, cfpo_trace_columns, CFPO_TRACE_COLUMNS, NULL))) {
-            Py_DECREF(points);
-            return NULL;
-        }
-    } else {
-        trace = Py_NewRef(Py_None);
-    }
-    return Py_BuildValue("(NidddNsN)", points, res.iterations, seconds, res.delta_min, res.delta_avg,
-                         PyBool_FromLong(res.converged), cfpo_stop_name(res.stop), trace);
+    return core_run_result(&c, rc, created, err, points, &res, seconds);
 }

@@ -13,25 +13,51 @@
 #include "rings.h"
 #include "shiftvar.h"
 
-/* discrepancy(points) -> (wrap_l2, diaphony, l2_star, generalized_l2,
- * centred_l2), square roots. */
-PyObject *core_discrepancy(PyObject *self, PyObject *args)
+/* The measures of one point set that give five numbers: the set from the
+ * single argument, the measure run with the GIL released, its five numbers
+ * as a tuple (ValueError with the measure's message on failure). */
+typedef int (*five_fn)(const double *xy, size_t n, double out[5], char *err, size_t errlen);
+
+static PyObject *five_of_points(PyObject *args, five_fn fn)
 {
-    (void)self;
     PyObject *obj;
     if (!PyArg_ParseTuple(args, "O", &obj)) return NULL;
     size_t n;
     PyArrayObject *a = core_points_in(obj, &n);
     if (!a) return NULL;
-    an_discrepancy d;
+    double v[5];
     char err[512];
     int rc;
     Py_BEGIN_ALLOW_THREADS
-    rc = an_discrepancy_compute((const double *)PyArray_DATA(a), n, &d, err, sizeof err);
+    rc = fn((const double *)PyArray_DATA(a), n, v, err, sizeof err);
     Py_END_ALLOW_THREADS
     Py_DECREF(a);
     if (rc != 0) return core_error(PyExc_ValueError, err);
-    return Py_BuildValue("(ddddd)", d.wrap_l2, d.diaphony, d.l2_star, d.generalized_l2, d.centred_l2);
+    return Py_BuildValue("(ddddd)", v[0], v[1], v[2], v[3], v[4]);
+}
+
+static int discrepancy5(const double *xy, size_t n, double out[5], char *err, size_t errlen)
+{
+    an_discrepancy d;
+    if (an_discrepancy_compute(xy, n, &d, err, errlen) != 0) return -1;
+    out[0] = d.wrap_l2, out[1] = d.diaphony, out[2] = d.l2_star, out[3] = d.generalized_l2, out[4] = d.centred_l2;
+    return 0;
+}
+
+static int delaunay5(const double *xy, size_t n, double out[5], char *err, size_t errlen)
+{
+    an_delaunay d;
+    if (an_delaunay_compute(xy, n, &d, err, errlen) != 0) return -1;
+    out[0] = d.psi6, out[1] = d.area_var, out[2] = d.covering, out[3] = d.delta_min, out[4] = d.mesh_ratio;
+    return 0;
+}
+
+/* discrepancy(points) -> (wrap_l2, diaphony, l2_star, generalized_l2,
+ * centred_l2), square roots. */
+PyObject *core_discrepancy(PyObject *self, PyObject *args)
+{
+    (void)self;
+    return five_of_points(args, discrepancy5);
 }
 
 /* lowfreq(P, n) for a (2K+1, 2K+1) float64 periodogram -> ((range, P0,
@@ -112,20 +138,7 @@ PyObject *core_pcf(PyObject *self, PyObject *args)
 PyObject *core_delaunay(PyObject *self, PyObject *args)
 {
     (void)self;
-    PyObject *obj;
-    if (!PyArg_ParseTuple(args, "O", &obj)) return NULL;
-    size_t n;
-    PyArrayObject *a = core_points_in(obj, &n);
-    if (!a) return NULL;
-    an_delaunay d;
-    char err[512];
-    int rc;
-    Py_BEGIN_ALLOW_THREADS
-    rc = an_delaunay_compute((const double *)PyArray_DATA(a), n, &d, err, sizeof err);
-    Py_END_ALLOW_THREADS
-    Py_DECREF(a);
-    if (rc != 0) return core_error(PyExc_ValueError, err);
-    return Py_BuildValue("(ddddd)", d.psi6, d.area_var, d.covering, d.delta_min, d.mesh_ratio);
+    return five_of_points(args, delaunay5);
 }
 
 /* integration(points, M, seed) -> (gauss MSE, its se, Heaviside MSE, its se). */

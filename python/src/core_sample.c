@@ -110,7 +110,7 @@ PyObject *core_run(PyObject *self, PyObject *args)
     seconds = cli_now() - c.t0;
     PyEval_RestoreThread(c.ts);
     Py_XDECREF(start);
-    PyObject *points = NULL, *trace = NULL;
+    PyObject *points = NULL;
     if (!c.failed && rc == 0) {
         double *xy;
         points = core_points_new((size_t)n, &xy);
@@ -121,19 +121,32 @@ PyObject *core_run(PyObject *self, PyObject *args)
         }
     }
     cfpo_engine_free(E);
-    if (c.failed || rc != 0 || !points) {
-        free(c.trace.v);
-        if (!c.failed && rc != 0) core_error(created ? PyExc_RuntimeError : PyExc_ValueError, err);
+    return core_run_result(&c, rc, created, err, points, &res, seconds);
+}
+
+/* The end of a run (core_run, core_run_density): the failure as an exception
+ * (RuntimeError once the engine was created, ValueError before; none when the
+ * callback or an interrupt already raised one), else the tuple (points,
+ * iterations, seconds, delta_min, delta_avg, converged, stop, trace or
+ * None). Takes the reference to points. */
+PyObject *core_run_result(core_run_ctx *c, int rc, int created, const char *err, PyObject *points,
+                          const cfpo_result *res, double seconds)
+{
+    PyObject *trace;
+    if (c->failed || rc != 0 || !points) {
+        free(c->trace.v);
+        Py_XDECREF(points);
+        if (!c->failed && rc != 0) core_error(created ? PyExc_RuntimeError : PyExc_ValueError, err);
         return NULL;
     }
-    if (want_trace) {
-        if (!(trace = core_trace_take(&c.trace, cfpo_trace_columns, CFPO_TRACE_COLUMNS, NULL))) {
+    if (c->want_trace) {
+        if (!(trace = core_trace_take(&c->trace, cfpo_trace_columns, CFPO_TRACE_COLUMNS, NULL))) {
             Py_DECREF(points);
             return NULL;
         }
     } else {
         trace = Py_NewRef(Py_None);
     }
-    return Py_BuildValue("(NidddNsN)", points, res.iterations, seconds, res.delta_min, res.delta_avg,
-                         PyBool_FromLong(res.converged), cfpo_stop_name(res.stop), trace);
+    return Py_BuildValue("(NidddNsN)", points, res->iterations, seconds, res->delta_min, res->delta_avg,
+                         PyBool_FromLong(res->converged), cfpo_stop_name(res->stop), trace);
 }
