@@ -8,6 +8,7 @@
 # for any thread count; --init and --resume work under a density; the
 # uniform density measures what cfpo-analyze measures without one.
 set -u
+HERE=$(cd "$(dirname "$0")" && pwd)
 B=$(cd "$1" && pwd)
 CFPO="$B/cfpo"
 AN="$B/cfpo-analyze"
@@ -15,27 +16,7 @@ T=$(mktemp -d /tmp/cfpo-dens-XXXXXX)
 trap 'rm -rf "$T"' EXIT
 cd "$T" || exit 1
 mkdir in
-pass=0 fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
-
-# expect CODE PATTERN ARGS...: exit code, one stderr line matching PATTERN,
-# nothing on stdout, no file created in the folder.
-expect() {
-  local code=$1 pat=$2; shift 2
-  local before after
-  before=$(ls -A | sort)
-  "$CFPO" "$@" >out.log 2>err.log
-  local rc=$?
-  after=$(ls -A | grep -v -e '^out.log$' -e '^err.log$' | sort)
-  local lines; lines=$(wc -l <err.log)
-  if [ "$rc" -ne "$code" ]; then bad "cfpo $*: exit $rc, expected $code ($(cat err.log))"; return; fi
-  if [ "$lines" -ne 1 ]; then bad "cfpo $*: $lines lines on stderr: $(cat err.log)"; return; fi
-  if ! grep -q -- "$pat" err.log; then bad "cfpo $*: message '$(cat err.log)' lacks '$pat'"; return; fi
-  if [ -s out.log ]; then bad "cfpo $*: printed on stdout: $(cat out.log)"; return; fi
-  if [ "$after" != "$(echo "$before" | grep -v -e '^out.log$' -e '^err.log$')" ]; then bad "cfpo $*: left files: $after"; return; fi
-  ok
-}
+. "$HERE/cli_expect.sh"
 
 printf 'P5 4 4 255\n' >in/g.pgm; head -c 16 /dev/zero >>in/g.pgm            # all black: uniform
 printf 'P5 4 4 255\n' >in/w.pgm; head -c 16 /dev/zero | tr '\0' '\377' >>in/w.pgm   # all white: zero
