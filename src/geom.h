@@ -12,9 +12,20 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 
 /* Largest possible minimum distance of n points on the unit torus. */
 static inline double cfpo_delta_bound(double n) { return sqrt(2.0 / (sqrt(3.0) * n)); }
+
+/* The low-frequency band of n points: integer k with 0 < |k| <= 0.2 sqrt(n),
+ * decided exactly (25 |k|^2 <= n). P0 is the periodogram's mean over it
+ * (analysis/measures/lowfreq.c) and the hyperuniform variant removes its
+ * density modes (transport.c). */
+static inline int cfpo_in_lowk_band(int64_t kx, int64_t ky, int64_t n)
+{
+    const int64_t q = kx * kx + ky * ky;
+    return q > 0 && 25 * q <= n;
+}
 
 /* v mapped into [0,1): never returns 1.0. */
 static inline double cfpo_wrap01(double v)

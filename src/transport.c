@@ -33,7 +33,7 @@ int cfpo_transport_init(cfpo_transport *F, int64_t n, int threads)
     for (int ky = 0; ky <= K; ky++)
         for (int kx = -K; kx <= K; kx++) {
             if (ky == 0 && kx <= 0) continue; /* one of each pair +-k, no k = 0 */
-            if (25 * ((double)kx * kx + (double)ky * ky) > (double)n) continue;
+            if (!cfpo_in_lowk_band(kx, ky, (int64_t)n)) continue;
             F->k[2 * F->m] = kx;
             F->k[2 * F->m + 1] = ky;
             F->m++;

@@ -5,6 +5,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "geom.h"
 #include "power.h"
 
 /* Least squares y = a + b x over m points: 0, or -1 when degenerate. */
@@ -56,8 +57,7 @@ int an_lowfreq_compute(const double *P, int K, size_t n, const an_rings *r, an_l
         long long c = 0;
         for (int ky = -kr; ky <= kr; ky++)
             for (int kx = -kr; kx <= kr; kx++) {
-                const int64_t q = (int64_t)kx * kx + (int64_t)ky * ky;
-                if (q > 0 && 25 * q <= (int64_t)n) { s += P[an_pidx(K, kx, ky)]; c++; }
+                if (cfpo_in_lowk_band(kx, ky, (int64_t)n)) { s += P[an_pidx(K, kx, ky)]; c++; }
             }
         out->p0 = s / (double)c;
         out->p0_count = c;
