@@ -244,7 +244,7 @@ check "spectra.csv: n of BS and Bridson is their runs' mean${badn:+ (bad: $badn)
 
 # ---- integration.csv: one row per method of the comparison and n of the profile --------
 ic="$R/integration.csv"
-check "integration.csv header" [ "$(head -n 1 "$ic")" = "group,method,variant,n,n_target,sets,runs,K,averaged_by,shiftvar_gauss_0.02,shiftvar_gauss_0.05,shiftvar_gauss_0.15,shiftvar_disk_0.1,shiftvar_disk_0.25,shiftvar_disk_0.4" ]
+check "integration.csv header" [ "$(head -n 1 "$ic")" = "group,method,variant,n,n_target,sets,runs,K,averaged_by,shiftvar_gauss_0.02,shiftvar_gauss_0.05,shiftvar_gauss_0.15,shiftvar_disk_0.1,shiftvar_disk_0.25,shiftvar_disk_0.4,p0,h_index,lowk_alpha,delta_min,delta_avg,spike_ratio,utk_gauss_mse,utk_heaviside_mse" ]
 want_int=$(for k in $(methods_keys pd iter cfpo); do for n in $(prof int_n); do echo "integration-$k-n$n"; done; done | sort | tr '\n' ' ')
 got_int=$(tail -n +2 "$ic" | cut -d, -f1 | sort | tr '\n' ' ')
 check "integration.csv: a row per method and n (want: $want_int; got: $got_int)" [ "$want_int" = "$got_int" ]
@@ -270,6 +270,26 @@ check "integration runs only where no runtime run of one thread made the set${du
 # summary.md: the figure data are integration.csv's (disk r = 0.25 of the last row)
 last=$(tail -n 1 "$ic" | awk -F, '{ printf "%s\t%s\t%s", $4, $14, $11 }')
 check "plotdata/integration.dat holds integration.csv's last row ($last)" grep -qF "$last" "$R/plotdata/integration.dat"
+
+# summary.md's low-frequency table per method and n: a row per integration.csv
+# row, its P0 (column 6) that row's p0, every P0 > 0
+lown=$(awk '/^## Low-frequency measures per method and n/ { on = 1; next } on && /^## / { on = 0 } on && /^\| / && !/^\| (method|---)/' "$R/summary.md")
+check "summary.md: a low-frequency row per integration.csv row ($(grep -c . <<<"$lown") of $(($(wc -l <"$ic") - 1)))" \
+  [ "$(grep -c . <<<"$lown")" -eq "$(($(wc -l <"$ic") - 1))" ]
+badp=$(awk -F, 'FNR == NR { if (FNR > 1) { if (!($16 > 0)) print "p0 " $1; want[sprintf("%.3g", $16)]++ } next }
+  { split($0, c, " [|] "); if (!(c[6] in want) || want[c[6]] == 0) print "row " c[1] " " c[3] " P0 " c[6]; else want[c[6]]-- }' "$ic" - <<<"$lown")
+check "summary.md: the P0 of each (method, n) is integration.csv's${badp:+ (bad: $badp)}" [ -z "$badp" ]
+
+# ---- the profile seeds (planned only): 10 comparison sets of every method,
+# no evolution, runtime or time-to-quality runs, 65,536 points with 10 seeds
+# (5 for the slow five), the hyperuniform variant not there
+$BENCH run "$B" seeds --plan >"$T/plan-seeds" 2>&1
+check "seeds plan: no evolution, runtime or ttq runs" [ "$(grep -Ec '^(evolution|runtime|ttq) ' "$T/plan-seeds")" -eq 0 ]
+badc=$(for k in $(methods_keys pd iter cfpo); do c=$(grep -Ec "^comparison $k +n=4096 " "$T/plan-seeds"); [ "$c" -eq 10 ] || printf '%s(%s) ' "$k" "$c"; done)
+check "seeds plan: 10 comparison sets of every method${badc:+ (bad: $badc)}" [ -z "$badc" ]
+bads=$(for k in $(methods_keys pd iter cfpo); do c=$(grep -Ec "^integration $k +n=65536 " "$T/plan-seeds")
+  case $k in ccvt|ccdt|lfpo|gbn|lloyd) w=5 ;; hyperuniform) w=0 ;; *) w=10 ;; esac; [ "$c" -eq "$w" ] || printf '%s(%s, want %s) ' "$k" "$c" "$w"; done)
+check "seeds plan: 65,536-point seeds per method${bads:+ (bad: $bads)}" [ -z "$bads" ]
 
 # ---- the low-frequency table: every number recomputes from spectra.csv --------------
 lowtab=$(awk '/^## Low-frequency spectrum/ { on = 1; next } on && /^## / { on = 0 } on && /^\| / && !/^\| (method|---)/' "$R/summary.md")

@@ -22,7 +22,11 @@ from .common import Failure, write
 # cfpo-analyze's integrands (periodised Gaussians of width sigma, disks of radius r)
 SHIFTVAR = ("shiftvar_gauss_0.02", "shiftvar_gauss_0.05", "shiftvar_gauss_0.15",
             "shiftvar_disk_0.1", "shiftvar_disk_0.25", "shiftvar_disk_0.4")
-COLUMNS = "group,method,variant,n,n_target,sets,runs,K,averaged_by," + ",".join(SHIFTVAR)
+# and the low-frequency measures of the same analysis (the mean periodogram of
+# the sets), delta_min / delta_avg (means over the sets) and the UTK-style MSEs
+LOWFREQ = ("p0", "h_index", "lowk_alpha", "delta_min", "delta_avg", "spike_ratio", "utk_gauss_mse",
+           "utk_heaviside_mse")
+COLUMNS = "group,method,variant,n,n_target,sets,runs,K,averaged_by," + ",".join(SHIFTVAR + LOWFREQ)
 # the two the figure draws
 SHOWN = (("shiftvar_disk_0.25", "disk, radius 0.25"), ("shiftvar_gauss_0.05", "Gaussian, σ = 0.05"))
 
@@ -61,7 +65,7 @@ def analyse(bench, plan, rows, keep):
         out.append(",".join([name, bench.meth.get(key, "method"), bench.meth.get(key, "variant"), nval, str(n),
                              f.get("sets", ""), S.ranges([i for i, _ in mine], ";"), f.get("K", ""),
                              "cfpo-analyze --no-discrepancy" + (" --any-n" if anyn else "")]
-                            + [f.get(k, "") for k in SHIFTVAR]))
+                            + [f.get(k, "") for k in SHIFTVAR + LOWFREQ]))
     return out
 
 

@@ -268,7 +268,15 @@ def replot(R=None):
     conv_keys = convergence(F, meth, N, SETS)
     rt = runtime(F, meth, host)
     sp = speedup(F, meth, host)
-    figs = ["evolution", "comparison", "lowfreq", "convergence", "runtime", "speedup"]
+    # a profile without evolution or runtime runs (seeds) draws neither
+    # figure (nor the speedup figure); stale copies removed
+    figs = [f for f, have in (("evolution", evo), ("comparison", True), ("lowfreq", True), ("convergence", True),
+                              ("runtime", rt), ("speedup", any(int(x[4]) > 1 for x in sp))) if have]
+    for f in ("evolution", "runtime", "speedup"):
+        if f not in figs:
+            for g in (f"{R}/fig-{f}.png", f"{P}/fig-{f}.vars.gp"):
+                if os.path.exists(g):
+                    os.remove(g)
     from . import integration, lowfreq
     lowfreq.write_lowfreq(F, meth, WRITTEN, N)
     integ = integration.read(R)

@@ -87,7 +87,7 @@ def build_plan(p, meth, cores, mpirun):
                 if n == p["comp_n"] and t == ct and P.comp_sets(p, k) >= p["rt_reps"]:
                     continue  # the comparison's runs (same n, threads, seeds)
                 for s in range(1, p["rt_reps"] + 1):
-                    if t == 1 and n != p["comp_n"] and n in P.int_sizes(p, k) and s <= P.int_seeds(p, n):
+                    if t == 1 and n != p["comp_n"] and n in P.int_sizes(p, k) and s <= P.int_seeds(p, n, k):
                         kept.add((k, n, s))
                         add("runtime", k, n, s, t, None, f"sets/runtime-{k}-n{n}-s{s}.txt", integ=(k, n))
                     else:
@@ -101,7 +101,7 @@ def build_plan(p, meth, cores, mpirun):
             if n == p["comp_n"]:
                 continue
             slot = 0
-            for s in range(1, P.int_seeds(p, n) + 1):
+            for s in range(1, P.int_seeds(p, n, k) + 1):
                 if (k, n, s) in kept:
                     continue
                 out = f"sets/integration-{k}-n{n}-s{s}.txt"
@@ -364,7 +364,7 @@ class Bench:
     def main(self, plan_only):
         p = P.profile(self.name, os.cpu_count() or 1)
         if p is None:
-            raise Failure(f"unknown PROFILE '{self.name}' (smoke, default, paper)", 2)
+            raise Failure(f"unknown PROFILE '{self.name}' (smoke, default, paper, seeds)", 2)
         cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
         p = P.profile(self.name, cores)
         self.p = p

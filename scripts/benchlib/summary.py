@@ -155,6 +155,30 @@ def integration_section(p, meth, integ):
         p("| %s | %s |" % (meth.label(k), " | ".join(sl)))
     p("")
     p("![integration](fig-integration.png)\n")
+    lowfreq_by_n(p, meth, integ)
+
+
+LOWFREQ_BY_N = (("delta_min", "δ_min", "%.4f"), ("delta_avg", "δ_avg", "%.4f"), ("p0", "P0", None),
+                ("h_index", "H", None), ("lowk_alpha", "α", "%.2f"), ("spike_ratio", "spike ratio", "%.1f"),
+                ("utk_gauss_mse", "UTK Gaussian MSE", None), ("utk_heaviside_mse", "UTK Heaviside MSE", None))
+
+
+def lowfreq_by_n(p, meth, integ):
+    """The low-frequency measures of each (method, n) of integration.csv; nothing
+    for a folder written before integration.csv had them."""
+    rows = [r for r in integ if r.get("p0") not in (None, "")]
+    if not rows:
+        return
+    p("## Low-frequency measures per method and n\n")
+    p("One `cfpo-analyze --no-discrepancy` of each (method, n) group's sets (integration.csv): P0, H and α")
+    p("of their mean periodogram, δ_min / δ_avg and the UTK-style MSEs means over the sets.\n")
+    p("| method | n | sets | " + " | ".join(h for _, h, _ in LOWFREQ_BY_N) + " |")
+    p("| --- | --- | --- |" + " --- |" * len(LOWFREQ_BY_N))
+    for k in meth.keys("pd", "iter", "cfpo"):
+        for r in sorted((r for r in rows if M.key(r["method"], r["variant"]) == k), key=lambda r: S.num(r["n"])):
+            cells = [g3(r[c]) if f is None or r[c] in ("", "-") else f % S.num(r[c]) for c, _, f in LOWFREQ_BY_N]
+            p("| %s | %s | %s | %s |" % (meth.label(k), r["n"], r["sets"], " | ".join(cells)))
+    p("")
 
 
 def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=()):
@@ -251,6 +275,17 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=()):
                     a[7], S.ranges(a[8].split())))
     p("")
     p("![runtime](fig-runtime.png)\n")
+    if "speedup" in figs:
+        speedup_section(p, meth, sp)
+    if integ:
+        p("")
+        integration_section(p, meth, integ)
+    if runs:
+        ttq_section(p, meth, runs, tmin, tavg)
+    return "\n".join(out) + "\n"
+
+
+def speedup_section(p, meth, sp):
     p("## Speedup\n")
     p("Median time on 1 thread and 1 rank over the median time of the configuration, same method, n")
     p("and seeds (`plotdata/speedup.tsv`; on 2 cores this is 1 against 2 threads).\n")
@@ -264,12 +299,6 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=()):
                                                         S.ranges(b[0].split()), S.ranges(b[1].split())))
     p("")
     p("![speedup](fig-speedup.png)")
-    if integ:
-        p("")
-        integration_section(p, meth, integ)
-    if runs:
-        ttq_section(p, meth, runs, tmin, tavg)
-    return "\n".join(out) + "\n"
 
 
 def ttq_section(p, meth, runs, tmin, tavg):
