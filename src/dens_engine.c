@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dens_buckets.h"
 #include "dens_measure.h"
 #include "dens_solve.h"
 #include "dens_start.h"
@@ -17,11 +18,17 @@
 #define KMAX 40        /* neighbours the solve looks at, nearest first */
 #define REACH 2.5      /* ... within REACH local spacings */
 #define CELL_SPACINGS 1.25 /* L >= CELL_SPACINGS r_max */
+#define BUCKET_FROM 64     /* blocks of fewer points are scanned whole (one bucket) */
+#define BUCKET_PER 2.0     /* points a bucket on average */
+#define BOUND_SAFE (1 + 1e-9) /* a ring's distance bound must beat the value by this much */
 
 typedef struct { /* one thread's buffers */
     double *bx, *by, *br, *nx, *ny, *nr, *nd, *scratch;
     int64_t *bid;
-    size_t cap;
+    int *nj, *ring; /* the nearest's block indices; a ring's buckets */
+    size_t cap, ring_cap;
+    cfpo_dens_buckets bk;
+    int oom;
 } tbuf;
 
 struct cfpo_dens_engine {
@@ -79,11 +86,12 @@ static int ensure_buffers(cfpo_dens_engine *E, size_t m)
         tbuf *b = &E->tb[t];
         if (b->cap >= m) continue;
         size_t cap = m + m / 2 + 16;
-        free(b->bx); free(b->bid); free(b->scratch);
+        free(b->bx); free(b->bid); free(b->scratch); free(b->nj);
         b->bx = malloc(6 * cap * sizeof *b->bx + 3 * (KMAX + 1) * sizeof *b->bx);
         b->bid = malloc(cap * sizeof *b->bid);
         b->scratch = malloc((KMAX + cfpo_dens_scratch(KMAX)) * sizeof *b->scratch);
-        if (!b->bx || !b->bid || !b->scratch) return -1;
+        b->nj = malloc((KMAX + 1) * sizeof *b->nj);
+        if (!b->bx || !b->bid || !b->scratch || !b->nj) return -1;
         b->by = b->bx + cap;
         b->br = b->by + cap;
         b->nd = b->br + cap; /* squared distances to the moving point */
@@ -93,6 +101,14 @@ static int ensure_buffers(cfpo_dens_engine *E, size_t m)
         b->cap = cap;
     }
     return 0;
+}
+
+static int grow_ring(tbuf *b, size_t need)
+{
+    free(b->ring);
+    b->ring = malloc(need * sizeof *b->ring);
+    b->ring_cap = b->ring ? need : 0;
+    return b->ring ? 0 : -1;
 }
 
 /* Solves the points of cell (cx, cy) one after another; returns the moves
@@ -120,37 +136,72 @@ static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, 
             if (dx == 0 && dy == 0) c1 = m;
         }
     const double lo = sqrt(E->d->rho_min), rmax = E->D / lo, hi = L * (1 - 1e-9);
+    /* the block's buckets (one for a small block), and the smallest q in
+     * it, which bounds the measure of the points a ring scan leaves out */
+    cfpo_dens_buckets *bk = &b->bk;
+    if (cfpo_dens_buckets_build(bk, b->bx, b->by, m, -L, -L, 3 * L, wrap, m < BUCKET_FROM ? (double)m + 1 : BUCKET_PER) != 0
+        || ((size_t)(8 * bk->B + 1) > b->ring_cap && grow_ring(b, (size_t)(8 * bk->B + 1)) != 0)) {
+        b->oom = 1;
+        return 0;
+    }
+    double qlo = INFINITY;
+    for (int j = 0; j < m; j++)
+        if (b->br[j] < qlo) qlo = b->br[j];
+    const double h = bk->h;
     int64_t moves = 0;
     for (int p = c0; p < c1; p++) {
         const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
         const double ri = ra > 0 ? E->D / ra : rmax, R2 = REACH * REACH * ri * ri;
+        const int cp = cfpo_dens_bucket_of(bk, ax, ay);
+        /* old: the smallest d^2 q_j over the block, by rings around the
+         * point until the points left are too far to go below it */
         double old = INFINITY;
-        for (int j = 0; j < m; j++) {
-            if (j == p) { b->nd[j] = INFINITY; continue; }
-            double ex = b->bx[j] - ax, ey = b->by[j] - ay;
-            if (wrap) { ex -= rint(ex); ey -= rint(ey); }
-            const double d2 = ex * ex + ey * ey, v = d2 * b->br[j];
-            b->nd[j] = d2;
-            if (v < old) old = v;
+        for (int k = 0;; k++) {
+            if (k > 1 && qlo > 0) {
+                const double e = (double)(k - 1) * h;
+                if (e * e * qlo >= old * BOUND_SAFE) break;
+            }
+            const int nb = cfpo_dens_ring(bk, cp, k, b->ring);
+            if (nb < 0) break;
+            for (int r = 0; r < nb; r++)
+                for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
+                    if (j == p) continue;
+                    double ex = b->bx[j] - ax, ey = b->by[j] - ay;
+                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                    const double v = (ex * ex + ey * ey) * b->br[j];
+                    if (v < old) old = v;
+                }
         }
         const double oldf = old * ra;
-        /* the KMAX nearest within reach, nearest first (ties: block order) */
-        int kk = 0;
-        for (int j = 0; j < m; j++) {
-            const double d2 = b->nd[j];
-            if (!(d2 < R2)) continue;
-            if (kk == KMAX && d2 >= b->scratch[KMAX - 1]) continue;
-            int t = kk < KMAX ? kk++ : KMAX - 1;
-            while (t > 0 && b->scratch[t - 1] > d2) {
-                b->scratch[t] = b->scratch[t - 1];
-                b->nx[t] = b->nx[t - 1]; b->ny[t] = b->ny[t - 1]; b->nr[t] = b->nr[t - 1];
-                t--;
+        /* the KMAX nearest within reach, nearest first (ties: block order),
+         * from the buckets that cover the reach */
+        int kk = 0, fx, nx_, fy, ny_;
+        const double R = REACH * ri;
+        cfpo_dens_span(bk, ax - R, ax + R, bk->x0, &fx, &nx_);
+        cfpo_dens_span(bk, ay - R, ay + R, bk->y0, &fy, &ny_);
+        for (int iy = 0; iy < ny_; iy++)
+            for (int ix = 0; ix < nx_; ix++) {
+                const int c = ((fy + iy) % bk->B) * bk->B + (fx + ix) % bk->B;
+                for (int j = bk->head[c]; j >= 0; j = bk->next[j]) {
+                    if (j == p) continue;
+                    double ex = b->bx[j] - ax, ey = b->by[j] - ay;
+                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                    const double d2 = ex * ex + ey * ey;
+                    if (!(d2 < R2)) continue;
+                    if (kk == KMAX && (d2 > b->scratch[KMAX - 1] || (d2 == b->scratch[KMAX - 1] && j > b->nj[KMAX - 1])))
+                        continue;
+                    int t = kk < KMAX ? kk++ : KMAX - 1;
+                    while (t > 0 && (b->scratch[t - 1] > d2 || (b->scratch[t - 1] == d2 && b->nj[t - 1] > j))) {
+                        b->scratch[t] = b->scratch[t - 1];
+                        b->nj[t] = b->nj[t - 1];
+                        b->nx[t] = b->nx[t - 1]; b->ny[t] = b->ny[t - 1]; b->nr[t] = b->nr[t - 1];
+                        t--;
+                    }
+                    b->scratch[t] = d2;
+                    b->nj[t] = j;
+                    b->nx[t] = ax + ex; b->ny[t] = ay + ey; b->nr[t] = b->br[j];
+                }
             }
-            double ex = b->bx[j] - ax, ey = b->by[j] - ay;
-            if (wrap) { ex -= rint(ex); ey -= rint(ey); }
-            b->scratch[t] = d2;
-            b->nx[t] = ax + ex; b->ny[t] = ay + ey; b->nr[t] = b->br[j];
-        }
         cfpo_square S = {ax - ri, ay - ri, ax + ri, ay + ri};
         if (S.x0 < 0) S.x0 = 0;
         if (S.y0 < 0) S.y0 = 0;
@@ -163,16 +214,27 @@ static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, 
         /* the accept rule: f rises against the whole block ... */
         const double rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
         if (!(rc > 0)) continue;
-        double nv = INFINITY;
-        for (int j = 0; j < m; j++) {
-            if (j == p) continue;
-            double ex = b->bx[j] - cxp, ey = b->by[j] - cyp;
-            if (wrap) { ex -= rint(ex); ey -= rint(ey); }
-            const double v = (ex * ex + ey * ey) * b->br[j];
-            if (v < nv) nv = v;
+        /* (rings around the candidate until the points left cannot reach
+         * the old value: the same decision as against every point) */
+        const double thr = oldf * (1 + 1e-12);
+        const int cc = cfpo_dens_bucket_of(bk, cxp, cyp);
+        int below = 0;
+        for (int k = 0; !below; k++) {
+            if (k > 1 && qlo > 0) {
+                const double e = (double)(k - 1) * h;
+                if (e * e * qlo * rc > thr * BOUND_SAFE) break;
+            }
+            const int nb = cfpo_dens_ring(bk, cc, k, b->ring);
+            if (nb < 0) break;
+            for (int r = 0; r < nb && !below; r++)
+                for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
+                    if (j == p) continue;
+                    double ex = b->bx[j] - cxp, ey = b->by[j] - cyp;
+                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                    if (!((ex * ex + ey * ey) * b->br[j] * rc > thr)) { below = 1; break; }
+                }
         }
-        const double newf = nv * rc;
-        if (!(newf > oldf * (1 + 1e-12))) continue;
+        if (below) continue;
         /* ... and no point outside the block can be nearer in f */
         if (!wrap) {
             const double e = fmin(fmin(cxp + L, 2 * L - cxp), fmin(cyp + L, 2 * L - cyp));
@@ -183,6 +245,7 @@ static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, 
         const int64_t id = b->bid[p];
         const double dd = sqrt((cxp - ax) * (cxp - ax) + (cyp - ay) * (cyp - ay)) / ri;
         if (dd > *maxd) *maxd = dd;
+        cfpo_dens_buckets_move(bk, p, cp, cc);
         b->bx[p] = cxp;
         b->by[p] = cyp;
         b->br[p] = rc;
@@ -268,6 +331,8 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
             if (md > maxd) maxd = md;
         }
     }
+    for (int t = 0; t < E->nthreads; t++)
+        if (E->tb[t].oom) return -1;
     memset(s, 0, sizeof *s);
     s->iteration = E->iter;
     s->moved = moves;
@@ -328,7 +393,8 @@ void cfpo_dens_free(cfpo_dens_engine *E)
     if (!E) return;
     if (E->tb)
         for (int t = 0; t < E->nthreads; t++) {
-            free(E->tb[t].bx); free(E->tb[t].bid); free(E->tb[t].scratch);
+            free(E->tb[t].bx); free(E->tb[t].bid); free(E->tb[t].scratch); free(E->tb[t].nj); free(E->tb[t].ring);
+            cfpo_dens_buckets_free(&E->tb[t].bk);
         }
     free(E->tb); free(E->xy); free(E->rho); free(E->cell); free(E->cidx); free(E->cstart);
     free(E);
