@@ -280,16 +280,17 @@ badp=$(awk -F, 'FNR == NR { if (FNR > 1) { if (!($16 > 0)) print "p0 " $1; want[
   { split($0, c, " [|] "); if (!(c[6] in want) || want[c[6]] == 0) print "row " c[1] " " c[3] " P0 " c[6]; else want[c[6]]-- }' "$ic" - <<<"$lown")
 check "summary.md: the P0 of each (method, n) is integration.csv's${badp:+ (bad: $badp)}" [ -z "$badp" ]
 
-# ---- the profile seeds (planned only): 10 comparison sets of every method,
-# no evolution, runtime or time-to-quality runs, 65,536 points with 10 seeds
-# (5 for the slow five), the hyperuniform variant not there
+# ---- the profile seeds (planned only): no evolution, runtime or ttq runs; the
+# comparison at 65,536 points with the profile's sets per method (fewer for
+# the slow ones, none for some); the integration experiment's 10 seeds of
+# every method at 4,096
 $BENCH run "$B" seeds --plan >"$T/plan-seeds" 2>&1
 check "seeds plan: no evolution, runtime or ttq runs" [ "$(grep -Ec '^(evolution|runtime|ttq) ' "$T/plan-seeds")" -eq 0 ]
-badc=$(for k in $(methods_keys pd iter cfpo); do c=$(grep -Ec "^comparison $k +n=4096 " "$T/plan-seeds"); [ "$c" -eq 10 ] || printf '%s(%s) ' "$k" "$c"; done)
-check "seeds plan: 10 comparison sets of every method${badc:+ (bad: $badc)}" [ -z "$badc" ]
-bads=$(for k in $(methods_keys pd iter cfpo); do c=$(grep -Ec "^integration $k +n=65536 " "$T/plan-seeds")
-  case $k in ccvt|ccdt|lfpo|gbn|lloyd) w=5 ;; hyperuniform) w=0 ;; *) w=10 ;; esac; [ "$c" -eq "$w" ] || printf '%s(%s, want %s) ' "$k" "$c" "$w"; done)
-check "seeds plan: 65,536-point seeds per method${bads:+ (bad: $bads)}" [ -z "$bads" ]
+sp() { $BENCH profile seeds | sed -n "s/^$1=//p"; }
+bads=$(cs=$(sp comp_sets); for k in $(methods_keys pd iter cfpo); do c=$(grep -Ec "^comparison $k +n=65536 " "$T/plan-seeds")
+  w=$(tr ' ' '\n' <<<"$cs" | sed -n "s/^$k://p"); w=${w:-$(sp sets)}; [ "$c" -eq "$w" ] || printf '%s(%s, want %s) ' "$k" "$c" "$w"
+  i=$(grep -Ec "^integration $k +n=4096 " "$T/plan-seeds"); [ "$i" -eq 10 ] || printf '%s(4096: %s) ' "$k" "$i"; done)
+check "seeds plan: comparison sets at 65,536 and 10 integration seeds at 4,096 per method${bads:+ (bad: $bads)}" [ -z "$bads" ]
 
 # ---- the low-frequency table: every number recomputes from spectra.csv --------------
 lowtab=$(awk '/^## Low-frequency spectrum/ { on = 1; next } on && /^## / { on = 0 } on && /^\| / && !/^\| (method|---)/' "$R/summary.md")

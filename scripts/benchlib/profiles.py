@@ -37,16 +37,14 @@ as data, and the rough cost model behind `--plan` and the time-left display.
                 successive seeds of a method started together like the
                 comparison's)
   int_seeds     seeds per (method, n) of the integration experiment;
-                int_seeds_big: (n0, seeds) fewer seeds above n0 (None);
-                int_seeds_at: {n: {key: seeds}} fewer seeds for some methods
-                at some n (the slow ones of the seeds profile)
+                int_seeds_big: (n0, seeds) fewer seeds above n0 (None)
 
 The profile `seeds` is the many-seed table of the measures of sampling
-research: every method's 10 sets of the comparison at 4,096 points (no
-evolution, runtime or time-to-quality runs) and the integration
-experiment's sets at 65,536 points (10 seeds; 5 for the methods whose run
-there takes minutes; the hyperuniform variant not there), each (method, n) averaged by cfpo-analyze into
-integration.csv with its low-frequency measures.
+research, without evolution, runtime or time-to-quality runs: the
+comparison (all its measures) at 65,536 points, 10 sets of the fast
+methods and fewer of the slow ones, and the integration experiment's 10
+seeds of every method at 4,096 points, each (method, n) averaged by
+cfpo-analyze into integration.csv with its low-frequency measures.
 
 The runtime figure uses every uncapped run (comparison and runtime), so the
 runtime plan leaves out n = comp_n on comp_threads.
@@ -70,7 +68,7 @@ def profile(name, cores):
     if name not in NAMES:
         return None
     p = dict(comp_threads=1, comp_together=cores, evo_iters=[0, 1, 2, 5, 10], comp_sets={}, int_seeds_big=None,
-             int_top={}, int_seeds_at={},
+             int_top={},
              rt_threads=threads_list(cores), ttq_target_min="0.925", ttq_target_avg="0.929",
              ttq_sizes=[4096, 65536], ttq_big=[], ttq_seeds=3, ttq_maxiter=None, ttq_limits={})
     if name == "smoke":
@@ -109,13 +107,13 @@ def profile(name, cores):
         p["ttq_configs_at"] = {65536: [("adaptive", 1), ("fpo", 1), ("adaptive", 2)]}
         p["ttq_limits"] = {("fpo", 65536): 35}
     elif name == "seeds":
-        # 65,536 points: CCVT, CCDT, LFPO, GBN and Lloyd take 1-6 min a run
-        # there by the cost model (about 18 min of runs a seed for the five),
-        # so 5 seeds instead of 10; the hyperuniform variant (O(n^2)
-        # transport sums, 3-6 min a run) only at 4,096
-        slow = ("ccvt", "ccdt", "lfpo", "gbn", "lloyd")
-        p.update(sets=10, comp_n=4096, rt_reps=1, evo_iters=[], rt_sizes={}, ttq_sizes=[], int_seeds=10,
-                 int_n=[4096, 65536], int_top=dict(hyperuniform=4096), int_seeds_at={65536: {k: 5 for k in slow}})
+        # the comparison at 65,536 points: FPO 4 sets, CCVT, GBN and Lloyd
+        # 2 (their runs take 1-6 min there by the cost model), LFPO, CCDT
+        # and the hyperuniform variant (O(n^2) transport sums) none; the
+        # integration experiment's 10 seeds of every method at 4,096
+        p.update(sets=10, comp_n=65536, rt_reps=1, evo_iters=[], rt_sizes={}, ttq_sizes=[], int_seeds=10,
+                 int_n=[4096, 65536], comp_sets=dict(fpo=4, ccvt=2, gbn=2, lloyd=2, lfpo=0, ccdt=0, hyperuniform=0),
+                 int_top=dict(lfpo=4096, ccdt=4096, hyperuniform=4096))
     else:
         # the integration experiment: 2^8 to 2^20 points, 10 seeds to 2^16
         # and 3 above, each method as far as its runtime experiment goes
@@ -142,9 +140,7 @@ def int_sizes(p, key):
     return [n for n in p["int_n"] if n <= p["int_top"].get(key, n)]
 
 
-def int_seeds(p, n, key=None):
-    if key in p["int_seeds_at"].get(n, {}):
-        return p["int_seeds_at"][n][key]
+def int_seeds(p, n):
     big = p["int_seeds_big"]
     return big[1] if big and n > big[0] else p["int_seeds"]
 

@@ -87,7 +87,7 @@ def build_plan(p, meth, cores, mpirun):
                 if n == p["comp_n"] and t == ct and P.comp_sets(p, k) >= p["rt_reps"]:
                     continue  # the comparison's runs (same n, threads, seeds)
                 for s in range(1, p["rt_reps"] + 1):
-                    if t == 1 and n != p["comp_n"] and n in P.int_sizes(p, k) and s <= P.int_seeds(p, n, k):
+                    if t == 1 and n != p["comp_n"] and n in P.int_sizes(p, k) and s <= P.int_seeds(p, n):
                         kept.add((k, n, s))
                         add("runtime", k, n, s, t, None, f"sets/runtime-{k}-n{n}-s{s}.txt", integ=(k, n))
                     else:
@@ -101,7 +101,7 @@ def build_plan(p, meth, cores, mpirun):
             if n == p["comp_n"]:
                 continue
             slot = 0
-            for s in range(1, P.int_seeds(p, n, k) + 1):
+            for s in range(1, P.int_seeds(p, n) + 1):
                 if (k, n, s) in kept:
                     continue
                 out = f"sets/integration-{k}-n{n}-s{s}.txt"
