@@ -323,7 +323,7 @@ png_ok() { # PNG signature, then an IHDR chunk with a non-zero width and height
   h=$(head -c 24 "$1" | tail -c 4 | od -An -tu1 | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }')
   [ "$w" -ge 400 ] && [ "$h" -ge 300 ] && [ "$(stat -c %s "$1")" -gt 10000 ]
 }
-FIGS="evolution comparison lowfreq convergence runtime speedup integration time-to-quality"
+FIGS="evolution comparison lowfreq convergence runtime speedup integration time-to-quality stipple"
 for f in $FIGS; do
   check "fig-$f.png is a PNG image" png_ok "$R/fig-$f.png"
   check "summary.md shows fig-$f.png" grep -q "](fig-$f.png)" "$R/summary.md"
@@ -332,10 +332,31 @@ done
 # cfpo-analyze writes pcf.txt: the g(r) figure, a panel per comparison group
 npcf=$(find "$R/data/analysis" -path '*/comparison-*/pcf.txt' | wc -l)
 check "the comparison's analyses hold pcf.txt" [ "$npcf" -ge 2 ]
-check "no other PNG than the figures, fig-pcf.png among them" [ "$(find "$R" -name '*.png' | wc -l)" -eq 9 ] && png_ok "$R/fig-pcf.png"
+check "no other PNG than the figures, fig-pcf.png among them" [ "$(find "$R" -name '*.png' | wc -l)" -eq 10 ] && png_ok "$R/fig-pcf.png"
 check "fig-pcf: one panel per comparison group with pcf.txt" [ "$(grep -c "^GRP\[" "$R/plotdata/fig-pcf.vars.gp")" -eq "$npcf" ]
 check "the low-frequency panel draws every method of the comparison" \
   [ "$(grep -c "^GRP\[[0-9]*\] = 'comparison-" "$R/plotdata/fig-lowfreq.vars.gp")" -eq "$N_COMP" ]
+
+# ---- the adaptive part: every method taking --density on the four densities --------
+ac="$R/adaptive.csv"
+dm=cfpo
+for k in $(methods_keys pd iter); do
+  b=$($BENCH methods --get "$k" command | cut -d' ' -f1)
+  "$B/$b" --help 2>/dev/null | grep -q -- --density && dm="$dm $k"
+done
+want=$(($(wc -w <<<"$dm") * 4 * $(prof ad_seeds)))
+check "adaptive.csv: a row per density and method taking --density ($dm: $want)" [ "$(($(wc -l <"$ac") - 1))" -eq "$want" ]
+bada=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+  { dm = $c["density_delta_min"]; da = $c["density_delta_avg"]
+    if (!(dm > 0 && dm <= da && da < 1.5)) printf "%s/%s(delta %s %s) ", $1, $2, dm, da
+    if ($2 == "cfpo" && $3 != '"$(prof ad_n)"') printf "%s/cfpo(n %s) ", $1, $3
+    if (!($c["count_fidelity_rms"] >= 0)) printf "%s/%s(fidelity) ", $1, $2 }' "$ac")
+check "adaptive.csv: local delta in (0, 1.5), exact n for CFPO, fidelity reported${bada:+ (bad: $bada)}" [ -z "$bada" ]
+badp=$(for k in $dm; do f="$R/data/points/adaptive-image-$k.txt"; n=$(awk -F, -v k="$k" '$1 == "image" && $2 == k && $4 == 1 { print $3 }' "$ac")
+  [ -f "$f" ] && [ "$(grep -vc '^#' "$f")" = "$n" ] || printf '%s ' "$k"; done)
+check "the stippling figure's sets: one per method, n points each${badp:+ (bad: $badp)}" [ -z "$badp" ]
+check "summary.md: the density table, a row per density and method" \
+  [ "$(awk '/^## Following a density/ { on = 1; next } on && /^## / { on = 0 } on && /^\| / && !/^\| (density|---)/' "$R/summary.md" | wc -l)" -eq "$(($(wc -w <<<"$dm") * 4))" ]
 
 # ---- summary.md: numbers recompute from runs.csv ------------------------------------
 for k in cfpo fpo; do

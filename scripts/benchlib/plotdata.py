@@ -282,8 +282,11 @@ def replot(R=None):
     integ = integration.read(R)
     # the optional figures: integration (a folder with integration.csv),
     # g(r) (where the averaged analyses hold pcf.txt); stale copies removed
+    from . import adaptive
+    adapt = adaptive.read(R)
     optional = (("integration", bool(integ) and integration.write_figure(R, meth, integ, WRITTEN),
-                 ["plotdata/integration.dat"]), ("pcf", lowfreq.write_pcf(F, meth, WRITTEN, N), []))
+                 ["plotdata/integration.dat"]), ("pcf", lowfreq.write_pcf(F, meth, WRITTEN, N), []),
+                ("stipple", bool(adapt) and adaptive.write_figure(R, meth, adapt, WRITTEN), []))
     for fig, have, data in optional:
         if have:
             figs.append(fig)
@@ -324,5 +327,5 @@ def replot(R=None):
             raise Failure(f"scripts/fig-{fig}.gp wrote no image")
         os.rename(out, f"{R}/fig-{fig}.png")
     from . import summary
-    write_text(f"{R}/summary.md", summary.text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ, figs))
+    write_text(f"{R}/summary.md", summary.text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ, figs, adapt))
     print(f"replot: figures and summary.md in {R}", file=sys.stderr)

@@ -46,6 +46,11 @@ methods and fewer of the slow ones, and the integration experiment's 10
 seeds of every method at 4,096 points, each (method, n) averaged by
 cfpo-analyze into integration.csv with its low-frequency measures.
 
+  ad_n          n of the adaptive part (None: none): every method that takes
+                --density on the test densities and the shipped image
+                (scripts/benchlib/adaptive.py), ad_seeds seeds, iterative
+                methods stopped after ad_maxiter iterations at most
+
 The runtime figure uses every uncapped run (comparison and runtime), so the
 runtime plan leaves out n = comp_n on comp_threads.
 """
@@ -68,11 +73,11 @@ def profile(name, cores):
     if name not in NAMES:
         return None
     p = dict(comp_threads=1, comp_together=cores, evo_iters=[0, 1, 2, 5, 10], comp_sets={}, int_seeds_big=None,
-             int_top={},
+             int_top={}, ad_n=None, ad_seeds=1, ad_maxiter=100,
              rt_threads=threads_list(cores), ttq_target_min="0.925", ttq_target_avg="0.929",
              ttq_sizes=[4096, 65536], ttq_big=[], ttq_seeds=3, ttq_maxiter=None, ttq_limits={})
     if name == "smoke":
-        p.update(sets=2, comp_n=1024, rt_reps=1, ttq_sizes=[1024], ttq_seeds=1, ttq_maxiter=80,
+        p.update(ad_n=4096, ad_maxiter=5, sets=2, comp_n=1024, rt_reps=1, ttq_sizes=[1024], ttq_seeds=1, ttq_maxiter=80,
                  comp_sets=dict(gbn=1), int_seeds=2, int_n=[256, 1024],
                  rt_sizes=dict(cfpo=[256, 512], simplified=[256], fpo=[256], lfpo=[256], ccvt=[256],
                                ccdt=[256], bnot=[256], dart=[4096], bs=[4096], bridson=[4096],
@@ -84,7 +89,7 @@ def profile(name, cores):
         # at 4 sets in the comparison and simplified CFPO at 6 (instead of
         # 10) pay for it, for adaptive CFPO in the comparison and for GBN and
         # Lloyd (161 s of runs less); the paper profile runs them at 10
-        p.update(sets=10, comp_n=4096, rt_reps=1, int_seeds=2, int_n=[256, 1024, 4096, 16384],
+        p.update(ad_n=4096, sets=10, comp_n=4096, rt_reps=1, int_seeds=2, int_n=[256, 1024, 4096, 16384],
                  int_top={k: 4096 for k in ("simplified", "lfpo", "ccvt", "ccdt", "gbn", "lloyd", "hyperuniform")},
                  comp_sets=dict(ccvt=4, ccdt=4, gbn=4, lloyd=4, lfpo=4, simplified=6),
                  rt_sizes=dict(cfpo=[1024, 4096, 16384], simplified=[1024, 4096], fpo=[1024, 16384],
@@ -117,7 +122,8 @@ def profile(name, cores):
     else:
         # the integration experiment: 2^8 to 2^20 points, 10 seeds to 2^16
         # and 3 above, each method as far as its runtime experiment goes
-        p.update(sets=10, comp_n=4096, rt_reps=1, comp_together=1, ttq_big=[1048576],
+        p.update(ad_n=65536, ad_seeds=3, ad_maxiter=1000, sets=10, comp_n=4096, rt_reps=1, comp_together=1,
+                 ttq_big=[1048576],
                  int_seeds=10, int_seeds_big=(65536, 3), int_n=[2 ** e for e in range(8, 21)],
                  int_top=dict(adaptive=262144, fpo=262144, simplified=262144, bnot=65536, lfpo=65536, ccvt=65536, ccdt=65536,
                               gbn=65536, lloyd=65536, hyperuniform=16384),

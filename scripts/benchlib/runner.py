@@ -423,6 +423,8 @@ class Bench:
             est_done += best
             act_done += wall
         N = len(self.plan)
+        from . import adaptive
+        adaptive.run(self, p)
         quality = [QUALITY_COLUMNS]
         for q, (run, out) in enumerate(ttq_sets, 1):
             self.progress(N, f"final-set analysis {q} of {len(ttq_sets)} (run {run})", 1, 1, 0)

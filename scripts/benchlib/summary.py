@@ -181,7 +181,7 @@ def lowfreq_by_n(p, meth, integ):
     p("")
 
 
-def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=()):
+def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), adapt=()):
     out = []
     p = out.append
     host = prof = ""
@@ -282,6 +282,9 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=()):
         integration_section(p, meth, integ)
     if runs:
         ttq_section(p, meth, runs, tmin, tavg)
+    if adapt:
+        from .adaptive import section
+        section(p, meth, adapt)
     return "\n".join(out) + "\n"
 
 
