@@ -150,6 +150,8 @@ int bl_iter_main(int argc, char **argv, const bl_method *m)
         if (cfpo_density_load(spec, &dens, err, sizeof err) != 0) cli_fail(prog, "%s", err);
         if (cfpo_density_check_n(&dens, a.n, err, sizeof err) != 0) cli_usage_error(prog, "--density %s: %s", spec, err);
         a.density = &dens;
+        const char *why = m->density_refuses ? m->density_refuses(v) : NULL;
+        if (why) cli_usage_error(prog, "%s", why);
     }
     const int vr = m->check_n(v, a.n, a.tol, err, sizeof err);
     if (vr == -1) cli_usage_error(prog, "%s", err);

@@ -59,6 +59,12 @@ static void *create_density(const bl_value *v, int64_t n, uint64_t seed, double 
     return fpo_create(n, &o, err, errlen);
 }
 
+static const char *density_refuses(const bl_value *v)
+{
+    return v[START].i == FPO_START_GRID ? "--start grid does not go with --density (the start is drawn from the density)"
+                                        : NULL;
+}
+
 static void iterate(void *E, cfpo_iter_stats *s) { fpo_iterate(E, s); }
 static void deltas(void *E, double *a, double *b) { fpo_deltas(E, a, b); }
 static const double *points(void *E) { return fpo_points(E); }
@@ -69,6 +75,7 @@ static void destroy(void *E) { fpo_free(E); }
      .about = "Farthest Point Optimization (Schloemer, Heck, Deussen 2011) on the unit torus,\n"                 \
               "on CGAL's periodic Delaunay triangulation. Prints one SUMMARY line on stdout.",                   \
      BL_OPTIONS(opts), BL_ENGINE, .method_name = method_name, .create_density = create_density,                 \
+     .density_refuses = density_refuses,                                                                         \
      .density_help = "the start drawn proportional to rho; each point moves to\n"                              \
                      "                       the Delaunay circumcentre of largest smallest measure when\n"       \
                      "                       that raises its own (--start grid does not apply)"}

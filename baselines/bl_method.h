@@ -98,6 +98,8 @@ struct bl_method {
     void (*column_values)(void *E, double *out);
     const double *(*points)(void *E);
     const char *density_help; /* --density's help: what the method does under it */
+    /* NULL, or the message when options v do not go with a density */
+    const char *(*density_refuses)(const bl_value *v);
     void (*destroy)(void *E);
 };
 

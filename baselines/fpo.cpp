@@ -430,6 +430,10 @@ fpo_engine *fpo_create(int64_t n, const fpo_options *o, char *err, size_t errlen
     }
     cfpo_grid G;
     if (cfpo_grid_init(&G, n, CFPO_VARIANT_FULL, o->seed, err, errlen) != 0) return nullptr;
+    if (o->density && o->start == FPO_START_GRID) {
+        snprintf(err, errlen, "--start grid does not go with --density (the start is drawn from the density)");
+        return nullptr;
+    }
     fpo_engine *E = new (std::nothrow) fpo_engine;
     if (!E) {
         snprintf(err, errlen, "out of memory");
