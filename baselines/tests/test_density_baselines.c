@@ -13,11 +13,15 @@
  *    the run raises it, counts per 2 x 2 block follow the density better
  *    than the start (drawn from rho, independent) and, for global FPO,
  *    within 6%; for rho = 1 the same bytes as without a density, and
- *    --start grid refused. */
+ *    --start grid refused;
+ *  - CCVT under a density: the capacity points follow it, the converged
+ *    sites per 2 x 2 block within 6%, rho = 1 gives --point-set random's
+ *    run. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "ccvt.h"
 #include "dens_draw.h"
 #include "fpo.h"
 #include "geom.h"
@@ -272,8 +276,51 @@ static void check_fpo_uniform(int local)
     cfpo_density_free(&d);
 }
 
+static void check_ccvt(void)
+{
+    cfpo_density d;
+    load("ramp:contrast=16,res=64", &d);
+    ccvt_options o;
+    ccvt_options_init(&o);
+    o.seed = 3;
+    o.m = 64;
+    o.density = &d;
+    char err[256];
+    ccvt_engine *E = ccvt_create(400, &o, err, sizeof err);
+    CHECK(E != NULL, "ccvt create: %s", err);
+    if (!E) return;
+    const double ep = count_error(&d, ccvt_points(E), 400 * 64, 2), e0 = count_error(&d, ccvt_sites(E), 400, 2);
+    CHECK(ep < 0.05, "ccvt: the capacity points off the density by %.3f (4 standard deviations: 0.05)", ep);
+    cfpo_iter_stats s;
+    for (int it = 0; it < 300; it++) {
+        ccvt_iterate(E, &s);
+        if (s.converged) break;
+    }
+    const double e = count_error(&d, ccvt_sites(E), 400, 2);
+    CHECK(s.converged && e < 0.06 && e < e0, "ccvt: sites per block off by %.3f (start %.3f), converged %d", e, e0,
+          s.converged);
+    ccvt_free(E);
+    cfpo_density_free(&d);
+    /* rho = 1: the random point set's run */
+    load("cos:a=0,res=16", &d);
+    ccvt_engine *A = ccvt_create(300, &o, err, sizeof err);
+    o.density = NULL;
+    o.points = CCVT_POINTS_RANDOM;
+    ccvt_engine *B = ccvt_create(300, &o, err, sizeof err);
+    for (int it = 0; it < 10; it++) {
+        ccvt_iterate(A, &s);
+        ccvt_iterate(B, &s);
+    }
+    CHECK(memcmp(ccvt_sites(A), ccvt_sites(B), 600 * sizeof(double)) == 0,
+          "ccvt under rho = 1 differs from --point-set random");
+    ccvt_free(A);
+    ccvt_free(B);
+    cfpo_density_free(&d);
+}
+
 int main(void)
 {
+    check_ccvt();
     check_draws();
     check_mgrid();
     check_dart();

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # test_density_cli.sh BUILD_DIR - the baselines' --density as a user meets
 # it: cfpo-dart, cfpo-fpo and cfpo-lfpo under a uniform density (cos:a=0)
-# write the bytes they write without one; exactly n points; the SUMMARY
+# write the bytes they write without one, cfpo-ccvt those of its random
+# point set (a lattice has no density); exactly n points; the SUMMARY
 # line's deltas are cfpo-analyze --density's; the stop rules work under a
 # density (a target stop writes the points of --max-iter at that
 # iteration); bad input (a bad SPEC, a missing file, a contrast beyond the
@@ -39,6 +40,16 @@ for c in cfpo-dart cfpo-fpo cfpo-lfpo; do
   expect 1 "contrast 1:1000 .*limit 1:256" -n 1000 --density ramp:contrast=1000 -o x.npy
   expect 2 "too small for this density" -n 50 --density ramp:contrast=200 -o x.npy
 done
+
+# CCVT: a uniform density gives the random point set's run
+CFPO="$B/cfpo-ccvt"
+"$CFPO" -q -n 300 --points-per-site 64 --max-iter 15 --point-set random -o u.npy >/dev/null || bad "ccvt random"
+"$CFPO" -q -n 300 --points-per-site 64 --max-iter 15 --density cos:a=0 -o c.npy >c.sum || bad "ccvt cos:a=0"
+cmp -s u.npy c.npy && ok || bad "ccvt --density cos:a=0 differs from --point-set random"
+grep -q "^DENSITY spec=cos:a=0 " c.sum && ok || bad "ccvt: no DENSITY line"
+"$CFPO" --help | grep -q -- "--density SPEC" && ok || bad "cfpo-ccvt --help lacks --density"
+expect 1 "contrast 1:1000 .*limit 1:256" -n 300 --density ramp:contrast=1000 -o x.npy
+rm -f u.npy c.npy c.sum
 
 # the stop rules under a density: a target stop at iteration K writes the
 # points of --max-iter K
