@@ -22,10 +22,11 @@ static void usage(const bl_method *m)
     for (int i = 0; i < m->noptions; i++) printf(m->options[i].help, m->options[i].def);
     if (m->create_density)
         printf("      --density SPEC   follow a density, SPEC as `cfpo --density` (an image, a\n"
-               "                       .npy array, cos:..., ramp:..., balzer): %s;\n"
-               "                       delta_min, delta_avg, the targets and the net moves in\n"
-               "                       the symmetric measure m = |x_i - x_j| (rho_i rho_j)^(1/4)\n"
-               "                       / Delta(n) (baselines/README.md)\n",
+               "                       .npy array, cos:..., ramp:..., balzer):\n"
+               "                       %s;\n"
+               "                       delta_min, delta_avg and the targets in the symmetric\n"
+               "                       measure m = |x_i - x_j| (rho_i rho_j)^(1/4) / Delta(n)\n"
+               "                       (baselines/README.md)\n",
                m->density_help ? m->density_help : "the method under the density");
     printf("      --max-iter K     stop after K iterations (default %d)\n"
            "      --tol T          a move must gain more than T * L, L = cfpo's cell side;\n"

@@ -21,7 +21,7 @@ the current iteration (Poisson-disk samplers: at the end of the call).
 from . import _args
 from . import _core
 
-METHODS = _core.methods()  # {name: {prog, kind, options, columns, rel_radius}}
+METHODS = _core.methods()  # {name: {prog, kind, options, columns, rel_radius, density}}
 
 
 def _values(method, given):

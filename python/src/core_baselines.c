@@ -74,9 +74,11 @@ static PyObject *method_dict(const bl_method *m)
         Py_XDECREF(cols);
         return NULL;
     }
-    return Py_BuildValue("{s:s,s:s,s:N,s:N,s:d}", "prog", m->prog, "kind",
+    /* density: whether the method takes density= (--density) */
+    const int dens = m->kind == BL_ITERATIVE ? m->create_density != NULL : m->pd_kind == PD_DART;
+    return Py_BuildValue("{s:s,s:s,s:N,s:N,s:d,s:N}", "prog", m->prog, "kind",
                          m->kind == BL_ITERATIVE ? "iterative" : "poisson", "options", opts, "columns", cols,
-                         "rel_radius", m->pd_rel);
+                         "rel_radius", m->pd_rel, "density", PyBool_FromLong(dens));
 }
 
 /* methods() -> {name: method dict}, in the list's order. */
