@@ -38,7 +38,7 @@ void dens_draw_point(const dens_draw *s, const double u[6], double *x, double *y
         if (s->cum[mid + 1] > t) hi = mid;
         else lo = mid + 1;
     }
-    while (lo < np - 1 && !(d->rho[lo] > 0)) lo++; /* rounding at the very top */
+    while (lo > 0 && !(d->rho[lo] > 0)) lo--; /* t rounded up to the total: the last pixel with mass */
     const int64_t i = lo % d->w, j = lo / d->w;
     double px = ((double)i + u[4]) / (double)d->w, py = ((double)j + u[5]) / (double)d->h;
     /* rounding may carry (i + u) / w into the next pixel: take the centre */

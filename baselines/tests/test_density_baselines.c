@@ -118,6 +118,16 @@ static void check_draws(void)
     CHECK(off == 0, "%d draws off the support", off);
     dens_draw_free(&s);
     cfpo_density_free(&d);
+    /* the top of the CDF when the last pixels are empty: u3 just below 1 */
+    const double w[8] = {1, 3, 0, 0, 2, 5, 0, 0};
+    CHECK(cfpo_density_from_values(w, 4, 2, "test", &d, err, sizeof err) == 0, "from_values: %s", err);
+    dens_draw_init(&s, &d);
+    const double top[6] = {0.9, 0.9, 0.5, 0x1.fffffffffffffp-1, 0.999999, 0.999999};
+    double tx, ty;
+    dens_draw_point(&s, top, &tx, &ty);
+    CHECK(cfpo_density_at(&d, tx, ty) > 0, "the draw at the CDF's top lands on an empty pixel (%g, %g)", tx, ty);
+    dens_draw_free(&s);
+    cfpo_density_free(&d);
 
     load("cos:a=0,res=16", &d);
     dens_draw_init(&s, &d);
