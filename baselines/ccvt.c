@@ -46,14 +46,6 @@ struct ccvt_engine {
     dens_draw draw;     /* its draws, during the start */
 };
 
-/* Under a density: the point the uniform numbers x, y of a draw and four
- * more of `stream` (counter 4k + j) give (dens_draw.h). */
-static void draw_at(const ccvt_engine *E, uint64_t seed, uint64_t stream, uint64_t k, double *x, double *y)
-{
-    double u[6] = {*x, *y};
-    for (int j = 0; j < 4; j++) u[2 + j] = cfpo_rand01(seed, stream, 4 * k + (uint64_t)j);
-    dens_draw_point(&E->draw, u, x, y);
-}
 
 void ccvt_options_init(ccvt_options *o)
 {
@@ -211,7 +203,7 @@ static void start_point(const ccvt_engine *E, const ccvt_options *o, int64_t col
     if (E->dens) {
         xy[0] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k);
         xy[1] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k + 1);
-        draw_at(E, o->seed, CCVT_POINT_DENS_STREAM, (uint64_t)k, &xy[0], &xy[1]);
+        dens_draw_at(&E->draw, o->seed, CCVT_POINT_DENS_STREAM, (uint64_t)k, &xy[0], &xy[1]);
     } else if (o->points == CCVT_POINTS_LATTICE) {
         xy[0] = (double)(k % cols) / (double)cols;
         xy[1] = (double)(k / cols) / (double)rows;
@@ -283,7 +275,7 @@ static int assign_nearest(ccvt_engine *E, const ccvt_options *o, int64_t cols, i
 }
 
 static ccvt_engine *sites_and_points(ccvt_engine *E, const ccvt_options *o, int64_t cols, int64_t rows, char *err,
-                          size_t errlen);
+                                     size_t errlen);
 
 ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t errlen)
 {
@@ -313,14 +305,15 @@ ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t err
 }
 
 /* The sites and the points' assignment (ccvt_create). */
-static ccvt_engine *sites_and_points(ccvt_engine *E, const ccvt_options *o, int64_t cols, int64_t rows, char *err, size_t errlen)
+static ccvt_engine *sites_and_points(ccvt_engine *E, const ccvt_options *o, int64_t cols, int64_t rows, char *err,
+                                     size_t errlen)
 {
     const int64_t n = E->n, N = n * E->m;
     if (o->assign == CCVT_ASSIGN_NEAREST) {
         for (int64_t i = 0; i < 2 * n; i++) E->site[i] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, (uint64_t)i);
         if (E->dens)
             for (int64_t i = 0; i < n; i++)
-                draw_at(E, o->seed, CCVT_SITE_DENS_STREAM, (uint64_t)i, &E->site[2 * i], &E->site[2 * i + 1]);
+                dens_draw_at(&E->draw, o->seed, CCVT_SITE_DENS_STREAM, (uint64_t)i, &E->site[2 * i], &E->site[2 * i + 1]);
         if (assign_nearest(E, o, cols, rows) != 0) {
             ccvt_free(E);
             snprintf(err, errlen, "out of memory for the start of %lld points", (long long)N);
@@ -341,7 +334,7 @@ static ccvt_engine *sites_and_points(ccvt_engine *E, const ccvt_options *o, int6
     for (int64_t i = 0; i < n; i++) {
         double x = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * (uint64_t)i);
         double y = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * (uint64_t)i + 1);
-        if (E->dens) draw_at(E, o->seed, CCVT_SITE_DENS_STREAM, (uint64_t)i, &x, &y);
+        if (E->dens) dens_draw_at(&E->draw, o->seed, CCVT_SITE_DENS_STREAM, (uint64_t)i, &x, &y);
         key[i] = (uint64_t)hilbert_key(x, y, ox, oy) << 32 | (uint64_t)i;
     }
     qsort(key, (size_t)n, sizeof *key, cmp_u64);
@@ -349,7 +342,7 @@ static ccvt_engine *sites_and_points(ccvt_engine *E, const ccvt_options *o, int6
         uint64_t i = key[r] & 0xffffffffu;
         E->site[2 * r] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * i);
         E->site[2 * r + 1] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * i + 1);
-        if (E->dens) draw_at(E, o->seed, CCVT_SITE_DENS_STREAM, i, &E->site[2 * r], &E->site[2 * r + 1]);
+        if (E->dens) dens_draw_at(&E->draw, o->seed, CCVT_SITE_DENS_STREAM, i, &E->site[2 * r], &E->site[2 * r + 1]);
     }
     /* the points, in the order of the curve: run r of m goes to site r */
     for (int64_t k = 0; k < N; k++) {

@@ -55,10 +55,8 @@ int dart_density_sample(const pd_params *p, pd_result *res, char *err, size_t er
     int64_t placed = 0;
     uint64_t dart = 0, fails = 0;
     while (placed < p->target) {
-        double u[6] = {cfpo_rand01(p->seed, DART_STREAM, 2 * dart), cfpo_rand01(p->seed, DART_STREAM, 2 * dart + 1)};
-        for (int k = 0; k < 4; k++) u[2 + k] = cfpo_rand01(p->seed, DART_DENS_STREAM, 4 * dart + (uint64_t)k);
-        double x, y;
-        dens_draw_point(&s, u, &x, &y);
+        double x = cfpo_rand01(p->seed, DART_STREAM, 2 * dart), y = cfpo_rand01(p->seed, DART_STREAM, 2 * dart + 1);
+        dens_draw_at(&s, p->seed, DART_DENS_STREAM, dart, &x, &y);
         dart++;
         if ((dart & ((1u << 22) - 1)) == 0 && p->report) p->report(p->user, placed, dart, (int64_t)fails);
         const double qx = sqrt(cfpo_density_at(d, x, y));

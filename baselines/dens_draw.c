@@ -3,6 +3,8 @@
 
 #include <stdlib.h>
 
+#include "rng.h"
+
 int dens_draw_init(dens_draw *s, const cfpo_density *d)
 {
     const int64_t np = d->w * d->h;
@@ -48,4 +50,11 @@ void dens_draw_point(const dens_draw *s, const double u[6], double *x, double *y
     }
     *x = px;
     *y = py;
+}
+
+void dens_draw_at(const dens_draw *s, uint64_t seed, uint64_t stream, uint64_t k, double *x, double *y)
+{
+    double u[6] = {*x, *y};
+    for (int j = 0; j < 4; j++) u[2 + j] = cfpo_rand01(seed, stream, 4 * k + (uint64_t)j);
+    dens_draw_point(s, u, x, y);
 }

@@ -32,4 +32,9 @@ void dens_draw_free(dens_draw *s);
  * uniform candidate's x, y). Always lands on a pixel with rho > 0. */
 void dens_draw_point(const dens_draw *s, const double u[6], double *x, double *y);
 
+/* The same with u[0], u[1] = *x, *y (the caller's uniform point, replaced
+ * by the draw) and u[2 + j] = cfpo_rand01(seed, stream, 4 k + j): draw k
+ * of a caller's stream. */
+void dens_draw_at(const dens_draw *s, uint64_t seed, uint64_t stream, uint64_t k, double *x, double *y);
+
 #endif

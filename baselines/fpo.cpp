@@ -341,10 +341,9 @@ static int make_start(fpo_engine *E)
         dens_draw s;
         if (dens_draw_init(&s, E->dens) != 0) return -1;
         for (int64_t i = 0; i < n; i++) {
-            double u[6] = {cfpo_rand01(E->o.seed, START_STREAM, 2 * (uint64_t)i),
-                           cfpo_rand01(E->o.seed, START_STREAM, 2 * (uint64_t)i + 1)};
-            for (int k = 0; k < 4; k++) u[2 + k] = cfpo_rand01(E->o.seed, START_DENS_STREAM, 4 * (uint64_t)i + (uint64_t)k);
-            dens_draw_point(&s, u, &E->xy[2 * i], &E->xy[2 * i + 1]);
+            E->xy[2 * i] = cfpo_rand01(E->o.seed, START_STREAM, 2 * (uint64_t)i);
+            E->xy[2 * i + 1] = cfpo_rand01(E->o.seed, START_STREAM, 2 * (uint64_t)i + 1);
+            dens_draw_at(&s, E->o.seed, START_DENS_STREAM, (uint64_t)i, &E->xy[2 * i], &E->xy[2 * i + 1]);
         }
         dens_draw_free(&s);
         return 0;
