@@ -55,6 +55,20 @@ static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, cha
     return ccvt_create(n, &o, err, errlen);
 }
 
+static void *create_density(const bl_value *v, int64_t n, uint64_t seed, double tol, const cfpo_density *d,
+                            char *err, size_t errlen)
+{
+    ccvt_options o;
+    ccvt_options_init(&o);
+    o.seed = seed;
+    o.tol = tol;
+    o.m = v[M].i;
+    o.update = (int)v[UPDATE].i;
+    o.assign = (int)v[ASSIGN].i;
+    o.density = d;
+    return ccvt_create(n, &o, err, errlen);
+}
+
 static void iterate(void *E, cfpo_iter_stats *s) { ccvt_iterate(E, s); }
 static void deltas(void *E, double *a, double *b) { ccvt_deltas(E, a, b); }
 static const double *points(void *E) { return ccvt_sites(E); }
@@ -76,4 +90,8 @@ const bl_method bl_ccvt = {
     BL_COLUMNS(COLUMNS),
     BL_ENGINE,
     .column_values = column_values,
+    .create_density = create_density,
+    .density_help = "the n M points and the start sites drawn proportional to\n"
+                    "                       rho, so each site's M points carry 1/n of its mass\n"
+                    "                       (--point-set plays no part)",
 };

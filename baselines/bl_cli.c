@@ -9,6 +9,7 @@
 #include "bl_loop.h"
 #include "bl_run.h"
 #include "cli.h"
+#include "density.h"
 #include "pointfile.h"
 #include "stoprule.h"
 
@@ -19,6 +20,14 @@ static void usage(const bl_method *m)
            "  -s, --seed S         random seed (default 1)\n",
            m->prog, m->about);
     for (int i = 0; i < m->noptions; i++) printf(m->options[i].help, m->options[i].def);
+    if (m->create_density)
+        printf("      --density SPEC   follow a density, SPEC as `cfpo --density` (an image, a\n"
+               "                       .npy array, cos:..., ramp:..., balzer):\n"
+               "                       %s;\n"
+               "                       delta_min, delta_avg and the targets in the symmetric\n"
+               "                       measure m = |x_i - x_j| (rho_i rho_j)^(1/4) / Delta(n)\n"
+               "                       (baselines/README.md)\n",
+               m->density_help ? m->density_help : "the method under the density");
     printf("      --max-iter K     stop after K iterations (default %d)\n"
            "      --tol T          a move must gain more than T * L, L = cfpo's cell side;\n"
            "                       converged when no point's net move over an iteration\n"
@@ -75,14 +84,15 @@ static void header(const bl_method *m, char *buf, size_t len)
 int bl_iter_main(int argc, char **argv, const bl_method *m)
 {
     const char *prog = m->prog;
-    enum { FIXED = 12, OWN = 2000 };
+    enum { FIXED = 13, OWN = 2000, DENSITY = 1004 };
     struct option longopts[FIXED + 2 * BL_MAX_OPTIONS + 1] = {
         {"points", required_argument, 0, 'n'}, {"seed", required_argument, 0, 's'},
         {"max-iter", required_argument, 0, 'm'}, {"tol", required_argument, 0, 'T'},
         {"output", required_argument, 0, 'o'}, {"trace", required_argument, 0, 'r'},
         {"quiet", no_argument, 0, 'q'}, {"help", no_argument, 0, 'h'},
         {"version", no_argument, 0, 'V'}, {"target-min", required_argument, 0, 1001},
-        {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003}};
+        {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003},
+        {"density", required_argument, 0, DENSITY}};
     /* option i: --cli is OWN + 2 i, a flag's --cli_off OWN + 2 i + 1 */
     int k = FIXED;
     for (int i = 0; i < m->noptions; i++) {
@@ -96,9 +106,9 @@ int bl_iter_main(int argc, char **argv, const bl_method *m)
     bl_defaults(m, v);
     bl_loop_args a = {.n = -1, .seed = 1, .tol = CFPO_DEFAULT_TOL, .max_iter = CFPO_DEFAULT_MAX_ITER};
     cfpo_stop_rules_init(&a.rules);
-    const char *out = NULL, *trace = NULL;
+    const char *out = NULL, *trace = NULL, *spec = NULL;
     int quiet = 0, ch;
-    char err[512];
+    char err[600];
     opterr = 0;
     while ((ch = getopt_long(argc, argv, ":n:s:o:qhV", longopts, NULL)) != -1) {
         int64_t iv;
@@ -117,6 +127,10 @@ int bl_iter_main(int argc, char **argv, const bl_method *m)
         case 1001: cli_stop_option(prog, "target-min", optarg, &a.rules); break;
         case 1002: cli_stop_option(prog, "target-avg", optarg, &a.rules); break;
         case 1003: cli_stop_option(prog, "time-limit", optarg, &a.rules); break;
+        case DENSITY:
+            if (!m->create_density) cli_usage_error(prog, "--density is not offered by %s", prog);
+            spec = optarg;
+            break;
         case 'o': out = optarg; break;
         case 'r': trace = optarg; break;
         case 'q': quiet = 1; break;
@@ -132,6 +146,14 @@ int bl_iter_main(int argc, char **argv, const bl_method *m)
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
     if (a.n < 0) cli_usage_error(prog, "the number of points is required: -n N");
     bl_check_output_name(prog, out);
+    cfpo_density dens;
+    if (spec) {
+        if (cfpo_density_load(spec, &dens, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        if (cfpo_density_check_n(&dens, a.n, err, sizeof err) != 0) cli_usage_error(prog, "--density %s: %s", spec, err);
+        a.density = &dens;
+        const char *why = m->density_refuses ? m->density_refuses(v) : NULL;
+        if (why) cli_usage_error(prog, "%s", why);
+    }
     const int vr = m->check_n(v, a.n, a.tol, err, sizeof err);
     if (vr == -1) cli_usage_error(prog, "%s", err);
     if (vr != 0) cli_fail(prog, "%s", err);
@@ -152,5 +174,11 @@ int bl_iter_main(int argc, char **argv, const bl_method *m)
                       .stop = cfpo_stop_name(o.why)};
     cli_print_summary(stdout, &sm);
     m->destroy(E);
+    if (spec) {
+        printf("DENSITY spec=%s hash=%016llx pixels=%lldx%lld contrast=%.4g support=%.4g\n", spec,
+               (unsigned long long)dens.hash, (long long)dens.w, (long long)dens.h, dens.rho_max / dens.rho_min,
+               dens.support);
+        cfpo_density_free(&dens);
+    }
     return 0;
 }

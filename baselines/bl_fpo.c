@@ -48,6 +48,23 @@ static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, cha
     return fpo_create(n, &o, err, errlen);
 }
 
+static void *create_density(const bl_value *v, int64_t n, uint64_t seed, double tol, const cfpo_density *d,
+                            char *err, size_t errlen)
+{
+    fpo_options o;
+    options_of(v, tol, &o);
+    o.seed = seed;
+    o.density = d;
+    if (fpo_validate(n, &o, err, errlen) != 0) return NULL;
+    return fpo_create(n, &o, err, errlen);
+}
+
+static const char *density_refuses(const bl_value *v)
+{
+    return v[START].i == FPO_START_GRID ? "--start grid does not go with --density (the start is drawn from the density)"
+                                        : NULL;
+}
+
 static void iterate(void *E, cfpo_iter_stats *s) { fpo_iterate(E, s); }
 static void deltas(void *E, double *a, double *b) { fpo_deltas(E, a, b); }
 static const double *points(void *E) { return fpo_points(E); }
@@ -57,7 +74,11 @@ static void destroy(void *E) { fpo_free(E); }
     {.name = row_name, .prog = row_prog, .kind = BL_ITERATIVE,                                                   \
      .about = "Farthest Point Optimization (Schloemer, Heck, Deussen 2011) on the unit torus,\n"                 \
               "on CGAL's periodic Delaunay triangulation. Prints one SUMMARY line on stdout.",                   \
-     BL_OPTIONS(opts), BL_ENGINE, .method_name = method_name}
+     BL_OPTIONS(opts), BL_ENGINE, .method_name = method_name, .create_density = create_density,                 \
+     .density_refuses = density_refuses,                                                                         \
+     .density_help = "the start drawn proportional to rho; each point moves to\n"                              \
+                     "                       the Delaunay circumcentre of largest smallest measure when\n"       \
+                     "                       that raises its own (--start grid does not apply)"}
 
 const bl_method bl_fpo = FPO_ROW("fpo", "cfpo-fpo", FPO_OPTS);
 const bl_method bl_lfpo = FPO_ROW("lfpo", "cfpo-lfpo", LFPO_OPTS);

@@ -21,7 +21,8 @@ void *bl_loop(const bl_method *m, const bl_value *v, const bl_loop_args *a, doub
               bl_outcome *o, char *err, size_t errlen)
 {
     memset(o, 0, sizeof *o);
-    void *E = m->create(v, a->n, a->seed, a->tol, err, errlen);
+    void *E = a->density ? m->create_density(v, a->n, a->seed, a->tol, a->density, err, errlen)
+                         : m->create(v, a->n, a->seed, a->tol, err, errlen);
     if (!E) return NULL;
     cfpo_iter_stats *s = &o->last;
     const double t = cli_now();

@@ -21,6 +21,7 @@ typedef struct {
     double tol;
     int max_iter;
     cfpo_stop_rules rules;
+    const cfpo_density *density; /* NULL, or the density (m->create_density) */
 } bl_loop_args;
 
 typedef struct {

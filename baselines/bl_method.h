@@ -17,6 +17,7 @@
 #include <stdint.h>
 
 #include "cfpo_types.h"
+#include "density.h"
 #include "tracecols.h"
 
 typedef enum { BL_INT, BL_REAL, BL_FLAG, BL_CHOICE } bl_type;
@@ -84,12 +85,21 @@ struct bl_method {
     int (*check_n)(const bl_value *v, int64_t n, double tol, char *err, size_t errlen);
     /* the engine for n points, seed and tol; NULL with a message */
     void *(*create)(const bl_value *v, int64_t n, uint64_t seed, double tol, char *err, size_t errlen);
+    /* the same under a density (`--density SPEC`, read during the run);
+     * NULL: the method has no density option. With rho = 1 it must give
+     * create's run, byte for byte; its deltas are then in the symmetric
+     * measure (src/dens_measure.h). */
+    void *(*create_density)(const bl_value *v, int64_t n, uint64_t seed, double tol, const cfpo_density *d,
+                            char *err, size_t errlen);
     /* NULL: a direct sampler (its start is its set, converged at once) */
     void (*iterate)(void *E, cfpo_iter_stats *s);
     void (*deltas)(void *E, double *dmin, double *davg);
     /* the values of the columns (ncolumns of them) */
     void (*column_values)(void *E, double *out);
     const double *(*points)(void *E);
+    const char *density_help; /* --density's help: what the method does under it */
+    /* NULL, or the message when options v do not go with a density */
+    const char *(*density_refuses)(const bl_value *v);
     void (*destroy)(void *E);
 };
 

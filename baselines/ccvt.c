@@ -7,6 +7,8 @@
 #include <string.h>
 
 #include "cli.h"
+#include "dens_draw.h"
+#include "dens_measure.h"
 #include "geom.h"
 #include "grid.h"
 #include "rng.h"
@@ -17,6 +19,9 @@
 #define CCVT_POINT_STREAM 0x4343565450544eULL  /* "CCVTPTN" */
 #define CCVT_OFFSET_STREAM 0x434356544f4653ULL /* "CCVTOFS" */
 #define CCVT_SITE_STREAM 0x43435654534954ULL   /* "CCVTSIT" */
+/* Under a density: four more numbers for point k (site i), counter 4k + j. */
+#define CCVT_POINT_DENS_STREAM 0x43435654504e44ULL /* "CCVTPND" */
+#define CCVT_SITE_DENS_STREAM 0x43435654534944ULL  /* "CCVTSID" */
 #define CCVT_MAX_POINTS (1LL << 31)
 
 struct ccvt_engine {
@@ -37,7 +42,10 @@ struct ccvt_engine {
     int64_t swaps;
     double energy_swapped;
     int check;          /* compute energy_swapped every iteration */
+    const cfpo_density *dens; /* NULL, or the density (deltas in its measure) */
+    dens_draw draw;     /* its draws, during the start */
 };
+
 
 void ccvt_options_init(ccvt_options *o)
 {
@@ -189,9 +197,14 @@ static int cmp_u64(const void *a, const void *b)
 
 /* Discrete point k of the start: node (k mod cols, k div cols) of the
  * cols x rows lattice from the origin (Balzer's), or uniform random. */
-static void start_point(const ccvt_options *o, int64_t cols, int64_t rows, int64_t k, double *xy)
+static void start_point(const ccvt_engine *E, const ccvt_options *o, int64_t cols, int64_t rows, int64_t k,
+                        double *xy)
 {
-    if (o->points == CCVT_POINTS_LATTICE) {
+    if (E->dens) {
+        xy[0] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k);
+        xy[1] = cfpo_rand01(o->seed, CCVT_POINT_STREAM, 2 * (uint64_t)k + 1);
+        dens_draw_at(&E->draw, o->seed, CCVT_POINT_DENS_STREAM, (uint64_t)k, &xy[0], &xy[1]);
+    } else if (o->points == CCVT_POINTS_LATTICE) {
         xy[0] = (double)(k % cols) / (double)cols;
         xy[1] = (double)(k / cols) / (double)rows;
     } else {
@@ -226,11 +239,11 @@ static int assign_nearest(ccvt_engine *E, const ccvt_options *o, int64_t cols, i
     const double side = 1.0 / (double)g;
     for (int64_t t = N - 1; t >= 0; t--) {
         double p[2];
-        if (o->points == CCVT_POINTS_LATTICE) { /* Balzer's order: x outer, y inner */
+        if (o->points == CCVT_POINTS_LATTICE && !E->dens) { /* Balzer's order: x outer, y inner */
             p[0] = (double)(t / rows) / (double)cols;
             p[1] = (double)(t % rows) / (double)rows;
         } else {
-            start_point(o, cols, rows, t, p);
+            start_point(E, o, cols, rows, t, p);
         }
         const int64_t c0 = CELL(p[0], p[1]), cx = c0 % g, cy = c0 / g;
         double best = INFINITY;
@@ -261,13 +274,16 @@ static int assign_nearest(ccvt_engine *E, const ccvt_options *o, int64_t cols, i
     return 0;
 }
 
+static ccvt_engine *sites_and_points(ccvt_engine *E, const ccvt_options *o, int64_t cols, int64_t rows, char *err,
+                                     size_t errlen);
+
 ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t errlen)
 {
     cfpo_grid G;
     if (cfpo_grid_init(&G, n, CFPO_VARIANT_PAPER, o->seed, err, errlen) != 0) return NULL;
     int64_t m = o->m > 0 ? o->m : ccvt_default_m(n), cols = 0, rows = 0;
     const int64_t N = n * m;
-    if (o->points == CCVT_POINTS_LATTICE && ccvt_lattice_shape(N, &cols, &rows) != 0) {
+    if (o->points == CCVT_POINTS_LATTICE && !o->density && ccvt_lattice_shape(N, &cols, &rows) != 0) {
         snprintf(err, errlen,
                  "n m = %lld points have no lattice of nearly square cells (best %lld x %lld); "
                  "choose another --points-per-site or --point-set random",
@@ -277,8 +293,27 @@ ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t err
     ccvt_engine *E = alloc_engine(n, m, G.L, o->tol, err, errlen);
     if (!E) return NULL;
     E->update = o->update;
+    E->dens = o->density;
+    if (E->dens && dens_draw_init(&E->draw, E->dens) != 0) {
+        ccvt_free(E);
+        snprintf(err, errlen, "out of memory for the density's draws");
+        return NULL;
+    }
+    ccvt_engine *R = sites_and_points(E, o, cols, rows, err, errlen); /* frees E on failure */
+    if (R) dens_draw_free(&R->draw);
+    return R;
+}
+
+/* The sites and the points' assignment (ccvt_create). */
+static ccvt_engine *sites_and_points(ccvt_engine *E, const ccvt_options *o, int64_t cols, int64_t rows, char *err,
+                                     size_t errlen)
+{
+    const int64_t n = E->n, N = n * E->m;
     if (o->assign == CCVT_ASSIGN_NEAREST) {
         for (int64_t i = 0; i < 2 * n; i++) E->site[i] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, (uint64_t)i);
+        if (E->dens)
+            for (int64_t i = 0; i < n; i++)
+                dens_draw_at(&E->draw, o->seed, CCVT_SITE_DENS_STREAM, (uint64_t)i, &E->site[2 * i], &E->site[2 * i + 1]);
         if (assign_nearest(E, o, cols, rows) != 0) {
             ccvt_free(E);
             snprintf(err, errlen, "out of memory for the start of %lld points", (long long)N);
@@ -299,6 +334,7 @@ ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t err
     for (int64_t i = 0; i < n; i++) {
         double x = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * (uint64_t)i);
         double y = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * (uint64_t)i + 1);
+        if (E->dens) dens_draw_at(&E->draw, o->seed, CCVT_SITE_DENS_STREAM, (uint64_t)i, &x, &y);
         key[i] = (uint64_t)hilbert_key(x, y, ox, oy) << 32 | (uint64_t)i;
     }
     qsort(key, (size_t)n, sizeof *key, cmp_u64);
@@ -306,15 +342,16 @@ ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t err
         uint64_t i = key[r] & 0xffffffffu;
         E->site[2 * r] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * i);
         E->site[2 * r + 1] = cfpo_rand01(o->seed, CCVT_SITE_STREAM, 2 * i + 1);
+        if (E->dens) dens_draw_at(&E->draw, o->seed, CCVT_SITE_DENS_STREAM, i, &E->site[2 * r], &E->site[2 * r + 1]);
     }
     /* the points, in the order of the curve: run r of m goes to site r */
     for (int64_t k = 0; k < N; k++) {
         double xy[2];
-        start_point(o, cols, rows, k, xy);
+        start_point(E, o, cols, rows, k, xy);
         key[k] = (uint64_t)hilbert_key(xy[0], xy[1], ox, oy) << 32 | (uint64_t)k;
     }
     qsort(key, (size_t)N, sizeof *key, cmp_u64);
-    for (int64_t s = 0; s < N; s++) start_point(o, cols, rows, (int64_t)(key[s] & 0xffffffffu), E->pts + 2 * s);
+    for (int64_t s = 0; s < N; s++) start_point(E, o, cols, rows, (int64_t)(key[s] & 0xffffffffu), E->pts + 2 * s);
     free(key);
     for (int64_t i = 0; i < n; i++) E->r[i] = radius(E, i);
     return E;
@@ -323,6 +360,7 @@ ccvt_engine *ccvt_create(int64_t n, const ccvt_options *o, char *err, size_t err
 void ccvt_free(ccvt_engine *E)
 {
     if (!E) return;
+    dens_draw_free(&E->draw);
     free(E->pts);
     free(E->site);
     free(E->site0);
@@ -553,7 +591,9 @@ double ccvt_energy(const ccvt_engine *E)
 
 void ccvt_deltas(ccvt_engine *E, double *dmin, double *davg)
 {
-    if (cfpo_nn_stats(E->site, (size_t)E->n, E->nn, dmin, davg) != 0) *dmin = *davg = NAN;
+    const int rc = E->dens ? cfpo_dens_nn(E->dens, E->site, (size_t)E->n, E->nn, dmin, davg)
+                           : cfpo_nn_stats(E->site, (size_t)E->n, E->nn, dmin, davg);
+    if (rc != 0) *dmin = *davg = NAN;
 }
 
 const double *ccvt_sites(const ccvt_engine *E) { return E->site; }

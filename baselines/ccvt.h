@@ -58,6 +58,7 @@
 #include <stdint.h>
 
 #include "cfpo.h"
+#include "density.h"
 
 enum { CCVT_POINTS_LATTICE = 0, CCVT_POINTS_RANDOM = 1 };
 enum { CCVT_UPDATE_PAIR = 0, CCVT_UPDATE_PASS = 1 };
@@ -70,6 +71,15 @@ typedef struct {
     int points;   /* CCVT_POINTS_LATTICE (default) or CCVT_POINTS_RANDOM */
     int update;   /* CCVT_UPDATE_PAIR (default) or CCVT_UPDATE_PASS */
     int assign;   /* CCVT_ASSIGN_NEAREST (default) or CCVT_ASSIGN_CURVE */
+    const cfpo_density *density; /* NULL: uniform. Else the capacity is
+                     the density's: the n m points and the n start sites
+                     are drawn proportional to rho (dens_draw.h, from the
+                     numbers of the random point set and sites), so every
+                     site's m points carry mass 1/n of rho, as Balzer et
+                     al. give CCVT a density; `points` plays no part (a
+                     lattice has no density), and for rho = 1 the run is
+                     CCVT_POINTS_RANDOM's, byte for byte. delta_min,
+                     delta_avg: in the symmetric measure (dens_measure.h). */
 } ccvt_options;
 
 void ccvt_options_init(ccvt_options *o);
@@ -106,7 +116,8 @@ double ccvt_energy(const ccvt_engine *E);
 void ccvt_set_check(ccvt_engine *E, int on);
 double ccvt_energy_after_swaps(const ccvt_engine *E);
 
-/* delta_min, delta_avg of the sites, normalised by Delta(n). */
+/* delta_min, delta_avg of the sites, normalised by Delta(n) (under a
+ * density: in the symmetric measure). */
 void ccvt_deltas(ccvt_engine *E, double *dmin, double *davg);
 
 const double *ccvt_sites(const ccvt_engine *E);   /* 2n doubles */

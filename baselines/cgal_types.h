@@ -26,6 +26,7 @@ namespace bl {
 struct FaceInfo {
     std::uint64_t stamp = 0;  /* 0: unregistered; else unique per registration */
     double r2 = 0, cx = 0, cy = 0; /* circumradius^2 and centre (unwrapped) */
+    double key = 0; /* FPO's heap key: r2, or under a density r2 q(c) min q(vertex) */
 };
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;

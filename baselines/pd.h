@@ -15,6 +15,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "density.h"
+
 /* BS and Bridson place new samples at distance rho = r (1 + PD_RHO_EPS)
  * from their parent and track coverage by disks of radius rho: the margin
  * keeps every placed point at least r from the others in spite of
@@ -37,6 +39,8 @@ typedef struct {
     int64_t report_step;
     pd_report_fn report;
     void *user;
+    const cfpo_density *density; /* DT only: adaptive dart throwing
+                           * (dart_density.c), NULL: uniform */
 } pd_params;
 
 typedef struct {
@@ -49,6 +53,8 @@ typedef struct {
 /* 0 on success; -1 with a message (out of memory). DT's saturation is a
  * success with res->saturated = 1 and res->n < target. */
 int dart_sample(const pd_params *p, pd_result *res, char *err, size_t errlen);
+/* DT under p->density: every pair has d^2 q_i q_j >= r^2, q = sqrt(rho). */
+int dart_density_sample(const pd_params *p, pd_result *res, char *err, size_t errlen);
 int bs_sample(const pd_params *p, pd_result *res, char *err, size_t errlen);
 int bridson_sample(const pd_params *p, pd_result *res, char *err, size_t errlen);
 

@@ -62,6 +62,12 @@ int pd_setup(int kind, int64_t n, double radius, double rel, double rel_default,
         snprintf(err, errlen, "radius %g is too small: the grid would need %.3g cells", radius, pdgrid_cells(radius));
         return -1;
     }
+    if (p->density && !(radius / sqrt(p->density->rho_min) < rmax)) {
+        snprintf(err, errlen, "radius %g is too large for the unit torus at the density's sparsest pixel "
+                 "(r / sqrt(rho_min) = %g, must be below %g); use more points or a smaller %s", radius,
+                 radius / sqrt(p->density->rho_min), rmax, w->rel);
+        return -1;
+    }
     p->r = radius;
     if (kind == PD_DART) p->target = n;
     else p->target = n > 0 ? n : (int64_t)(2.0 * rel_default * rel_default / (sqrt(3.0) * radius * radius)) + 1;
@@ -71,6 +77,7 @@ int pd_setup(int kind, int64_t n, double radius, double rel, double rel_default,
 
 int pd_sample(int kind, const pd_params *p, pd_result *res, char *err, size_t errlen)
 {
+    if (kind == PD_DART && p->density) return dart_density_sample(p, res, err, errlen);
     return kind == PD_DART ? dart_sample(p, res, err, errlen)
          : kind == PD_BS   ? bs_sample(p, res, err, errlen)
                            : bridson_sample(p, res, err, errlen);

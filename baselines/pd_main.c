@@ -15,6 +15,8 @@
 #include "bl_run.h"
 #include "cfpo.h"
 #include "cli.h"
+#include "dens_measure.h"
+#include "density.h"
 #include "pd_check.h"
 #include "pointfile.h"
 #include "stats.h"
@@ -54,6 +56,13 @@ static void usage(const bl_method *m)
            "      --rel-radius REL r = REL * Delta(n), Delta(n) = sqrt(2 / (sqrt(3) n));\n"
            "                       default %.4g: %s\n", m->pd_rel, REL_WHY[kind]);
     if (kind == PD_DART)
+        printf("      --density SPEC   adaptive dart throwing under a density, SPEC as `cfpo\n"
+               "                       --density` (an image, a .npy array, cos:..., ramp:...,\n"
+               "                       balzer): darts drawn proportional to rho, two points in\n"
+               "                       conflict when |x_i - x_j| < r / (rho_i rho_j)^(1/4), i.e.\n"
+               "                       the symmetric measure below REL; delta_min and delta_avg\n"
+               "                       in that measure\n");
+    if (kind == PD_DART)
         printf("      --max-fails F    saturation: stop when F consecutive darts are rejected\n"
                "                       (default %.0f); then nothing is written, exit 1\n",
                def_of(m, "max-fails"));
@@ -90,12 +99,12 @@ int pd_main(int argc, char **argv, const bl_method *m)
     const int kind = m->pd_kind;
     const char *prog = m->prog;
     /* the three tables' options, each once: code OWN + k for opt[k] */
-    enum { FIXED = 8, OWN = 2000, MAXU = 3 * BL_MAX_OPTIONS };
+    enum { FIXED = 9, OWN = 2000, MAXU = 3 * BL_MAX_OPTIONS, DENSITY = 1004 };
     struct option longopts[FIXED + MAXU + 1] = {
         {"points", required_argument, 0, 'n'}, {"seed", required_argument, 0, 's'},
         {"output", required_argument, 0, 'o'}, {"trace", required_argument, 0, 't'},
         {"quiet", no_argument, 0, 'q'}, {"help", no_argument, 0, 'h'},
-        {"version", no_argument, 0, 'V'}};
+        {"version", no_argument, 0, 'V'}, {"density", required_argument, 0, DENSITY}};
     const bl_option *opt[MAXU];
     const bl_method *owner[MAXU];
     char shortopts[64] = ":n:s:o:qhV";
@@ -117,12 +126,16 @@ int pd_main(int argc, char **argv, const bl_method *m)
     bl_defaults(m, v);
     int64_t n = -1;
     uint64_t seed = 1;
-    const char *out = NULL, *trace = NULL;
+    const char *out = NULL, *trace = NULL, *spec = NULL;
     int quiet = 0, ch;
-    char err[512];
+    char err[600];
     opterr = 0;
     while ((ch = getopt_long(argc, argv, shortopts, longopts, NULL)) != -1) {
         switch (ch) {
+        case DENSITY:
+            if (kind != PD_DART) cli_usage_error(prog, "--density applies to cfpo-dart only");
+            spec = optarg;
+            break;
         case 'n': n = cli_arg_points(prog, optarg); break;
         case 's': seed = cli_arg_seed(prog, optarg); break;
         case 'o': out = optarg; break;
@@ -151,6 +164,12 @@ int pd_main(int argc, char **argv, const bl_method *m)
     pd_params_of(m, v, seed, &p, &radius, &rel);
     if (pd_check_args(kind, n, radius, rel, &pd_cli_names, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
     bl_check_output_name(prog, out);
+    cfpo_density dens;
+    if (spec) {
+        if (cfpo_density_load(spec, &dens, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        if (cfpo_density_check_n(&dens, n, err, sizeof err) != 0) cli_usage_error(prog, "--density %s: %s", spec, err);
+        p.density = &dens;
+    }
     if (pd_setup(kind, n, radius, rel, m->pd_rel, &pd_cli_names, &p, err, sizeof err) != 0)
         cli_usage_error(prog, "%s", err);
 
@@ -169,13 +188,20 @@ int pd_main(int argc, char **argv, const bl_method *m)
     }
     bl_run_finish(&run, res.xy, (size_t)res.n);
     double dmin = 0, davg = 0;
-    if (res.n >= 2 && cfpo_nn_stats(res.xy, (size_t)res.n, NULL, &dmin, &davg) != 0)
+    if (res.n >= 2 && (spec ? cfpo_dens_nn(&dens, res.xy, (size_t)res.n, NULL, &dmin, &davg)
+                            : cfpo_nn_stats(res.xy, (size_t)res.n, NULL, &dmin, &davg)) != 0)
         cli_fail(prog, "out of memory for the statistics");
     cli_summary sm = {.method = m->name, .variant = "-", .n = res.n, .seed = p.seed,
                       .threads = 1, .ranks = 1, .iterations = -1, .seconds = seconds,
                       .delta_min = dmin, .delta_avg = davg, .converged = -1,
                       .peak_bytes = cli_peak_rss()};
     cli_print_summary(stdout, &sm);
+    if (spec) {
+        printf("DENSITY spec=%s hash=%016llx pixels=%lldx%lld contrast=%.4g support=%.4g\n", spec,
+               (unsigned long long)dens.hash, (long long)dens.w, (long long)dens.h, dens.rho_max / dens.rho_min,
+               dens.support);
+        cfpo_density_free(&dens);
+    }
     free(res.xy);
     return 0;
 }

@@ -21,7 +21,7 @@ the current iteration (Poisson-disk samplers: at the end of the call).
 from . import _args
 from . import _core
 
-METHODS = _core.methods()  # {name: {prog, kind, options, columns, rel_radius}}
+METHODS = _core.methods()  # {name: {prog, kind, options, columns, rel_radius, density}}
 
 
 def _values(method, given):
@@ -34,13 +34,21 @@ def _values(method, given):
     return tuple(_args.option(o, given.get(o["py"]) if o["py"] else None) for o in opts)
 
 
-def _poisson(method, n=None, seed=1, **own):
+def _density(density):
+    """density= as the C layer takes it (None, a SPEC string, a 2-D array), as cfpo.sample's."""
+    if density is None:
+        return None
+    from . import _density_arg
+    return _density_arg(density, "adaptive")
+
+
+def _poisson(method, n=None, seed=1, density=None, **own):
     nn = -1 if n is None else _args.points_n(n)
-    return _core.poisson(method, nn, _args.seed(seed), _values(method, own))[0]
+    return _core.poisson(method, nn, _args.seed(seed), _values(method, own), _density(density))[0]
 
 
 def _iterative(method, n, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None,
-               progress=None, **own):
+               progress=None, density=None, **own):
     from . import Result  # the package's result type
     nn = _args.points_n(n)
     t = _args.tol(tol, _core.default_tol)
@@ -50,11 +58,11 @@ def _iterative(method, n, seed=1, tol=None, max_iter=None, target_min=None, targ
         raise TypeError("progress: expected None or a callable(stats) -> bool")
     values = _values(method, own)
     pts, it, secs, dmin, davg, conv, stop, tr = _core.iterative(
-        method, nn, _args.seed(seed), t, mi, *stops, progress, True, values)
+        method, nn, _args.seed(seed), t, mi, *stops, progress, True, values, _density(density))
     return Result(pts, it, secs, dmin, davg, conv, stop, dict(zip(METHODS[method]["columns"], tr)))
 
 
-def dart(n, *, seed=1, radius=None, rel_radius=None, max_fails=None):
+def dart(n, *, seed=1, radius=None, rel_radius=None, max_fails=None, density=None):
     return _poisson("dart", **locals())
 
 
@@ -67,17 +75,17 @@ def bridson(n=None, *, seed=1, radius=None, rel_radius=None, k=None, plain=None)
 
 
 def fpo(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, start=None,
-        progress=None):
+        progress=None, density=None):
     return _iterative("fpo", **locals())
 
 
 def lfpo(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, start=None,
-         progress=None):
+         progress=None, density=None):
     return _iterative("lfpo", **locals())
 
 
 def ccvt(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None,
-         points_per_site=None, point_set=None, update=None, assign=None, progress=None):
+         points_per_site=None, point_set=None, update=None, assign=None, progress=None, density=None):
     return _iterative("ccvt", **locals())
 
 
@@ -118,7 +126,9 @@ _ITER_DOC = f"""
     cell side for n); seed; tol (default {_core.default_tol:g}); max_iter (default
     {_core.default_max_iter}); target_min, target_avg, time_limit: the stop rules of the
     command; progress: a callable receiving each row's statistics (a dict)
-    that stops the run by returning True. Returns a cfpo.Result whose points
+    that stops the run by returning True; density (FPO, LFPO, CCVT: the
+    command's --density): a SPEC string or a 2-D array (row = y), the
+    deltas then in the symmetric measure. Returns a cfpo.Result whose points
     are the command's bytes for the same arguments and whose trace has the
     command's columns."""
 
@@ -131,7 +141,10 @@ dart.__doc__ = f"""Dart throwing (Cook 1986): n points at least r apart (cfpo-da
 
     r = rel_radius * Delta(n) (default {_rel("dart")}) or radius itself. Saturation
     (max_fails consecutive rejected darts before n points) raises
-    RuntimeError, as the command fails.
+    RuntimeError, as the command fails. density: adaptive dart throwing
+    (cfpo-dart --density): a SPEC string as `cfpo --density` or a 2-D array
+    (row = y); darts drawn proportional to rho, two points in conflict when
+    |x_i - x_j| < r / (rho_i rho_j)^(1/4).
 {_options_doc("dart")}"""
 bs.__doc__ = f"""Boundary sampling (Dunbar & Humphreys 2006): a maximal Poisson-disk set
     (cfpo-bs). r = rel_radius * Delta(n) (default {_rel("bs")}), or radius.

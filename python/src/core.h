@@ -25,6 +25,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "density.h"
 #include "tracecols.h"
 
 /* Loads NumPy's C API (whose table core_util.c holds); 0, or -1 with
@@ -98,6 +99,10 @@ PyObject *core_pcf(PyObject *self, PyObject *args);
 PyObject *core_delaunay(PyObject *self, PyObject *args);
 PyObject *core_integration(PyObject *self, PyObject *args);
 PyObject *core_poisson(PyObject *self, PyObject *args);
+/* core_density.c: density= (None, a SPEC string or a 2-D array) into *d;
+ * 1 when loaded, 0 for None, -1 with a Python error (ValueError: the
+ * density's one line). */
+int core_density_in(PyObject *dens, cfpo_density *d);
 PyObject *core_iterative(PyObject *self, PyObject *args);
 PyObject *core_methods(PyObject *self, PyObject *args);
 

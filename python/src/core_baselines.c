@@ -74,9 +74,11 @@ static PyObject *method_dict(const bl_method *m)
         Py_XDECREF(cols);
         return NULL;
     }
-    return Py_BuildValue("{s:s,s:s,s:N,s:N,s:d}", "prog", m->prog, "kind",
+    /* density: whether the method takes density= (--density) */
+    const int dens = m->kind == BL_ITERATIVE ? m->create_density != NULL : m->pd_kind == PD_DART;
+    return Py_BuildValue("{s:s,s:s,s:N,s:N,s:d,s:N}", "prog", m->prog, "kind",
                          m->kind == BL_ITERATIVE ? "iterative" : "poisson", "options", opts, "columns", cols,
-                         "rel_radius", m->pd_rel);
+                         "rel_radius", m->pd_rel, "density", PyBool_FromLong(dens));
 }
 
 /* methods() -> {name: method dict}, in the list's order. */
@@ -110,42 +112,65 @@ static const bl_method *method_values(const char *name, bl_kind kind, PyObject *
     return m;
 }
 
-/* poisson(method, n, seed, values) -> (points, trials); n -1: not given;
- * radius and rel_radius -1: not given. */
+/* poisson(method, n, seed, values, density) -> (points, trials); n -1: not
+ * given; radius and rel_radius -1: not given; density None, a SPEC or a
+ * 2-D array (dart throwing only, as cfpo-dart --density). */
 PyObject *core_poisson(PyObject *self, PyObject *args)
 {
     (void)self;
     const char *name;
     long long n;
     unsigned long long seed;
-    PyObject *values;
-    if (!PyArg_ParseTuple(args, "sLKO", &name, &n, &seed, &values)) return NULL;
+    PyObject *values, *dens = Py_None;
+    if (!PyArg_ParseTuple(args, "sLKO|O", &name, &n, &seed, &values, &dens)) return NULL;
     bl_value v[BL_MAX_OPTIONS];
     const bl_method *m = method_values(name, BL_POISSON, values, v);
     if (!m) return NULL;
     const int kind = m->pd_kind;
+    if (dens != Py_None && kind != PD_DART) return core_error(PyExc_ValueError, "density applies to dart only");
     char err[1024];
     pd_params p;
     double radius, rel;
     pd_params_of(m, v, seed, &p, &radius, &rel);
-    if (pd_check_args(kind, n, radius, rel, &pd_py_names, err, sizeof err) != 0 ||
-        pd_setup(kind, n, radius, rel, m->pd_rel, &pd_py_names, &p, err, sizeof err) != 0)
+    if (pd_check_args(kind, n, radius, rel, &pd_py_names, err, sizeof err) != 0)
         return core_error(PyExc_ValueError, err);
+    cfpo_density d;
+    const int has = core_density_in(dens, &d);
+    if (has < 0) return NULL;
+    if (has) {
+        if (cfpo_density_check_n(&d, n, err, sizeof err) != 0) {
+            cfpo_density_free(&d);
+            return core_error(PyExc_ValueError, err);
+        }
+        p.density = &d;
+    }
+    PyObject *ret = NULL;
+    if (pd_setup(kind, n, radius, rel, m->pd_rel, &pd_py_names, &p, err, sizeof err) != 0) {
+        core_error(PyExc_ValueError, err);
+        goto done;
+    }
     pd_result res;
     int rc;
     Py_BEGIN_ALLOW_THREADS
     rc = pd_sample(kind, &p, &res, err, sizeof err);
     Py_END_ALLOW_THREADS
-    if (rc != 0) return core_error(PyExc_RuntimeError, err);
+    if (rc != 0) {
+        core_error(PyExc_RuntimeError, err);
+        goto done;
+    }
     if (core_interrupted()) {
         free(res.xy);
-        return NULL;
+        goto done;
     }
     if (pd_verdict(kind, &res, n, &p, &pd_py_names, err, sizeof err) != 0) {
         free(res.xy);
-        return core_error(PyExc_RuntimeError, err);
+        core_error(PyExc_RuntimeError, err);
+        goto done;
     }
-    return Py_BuildValue("(NK)", core_points_adopt(res.xy, (size_t)res.n), (unsigned long long)res.trials);
+    ret = Py_BuildValue("(NK)", core_points_adopt(res.xy, (size_t)res.n), (unsigned long long)res.trials);
+done:
+    if (has) cfpo_density_free(&d);
+    return ret;
 }
 
 /* ------------------------------------------------ the iterative baselines */
@@ -184,8 +209,9 @@ static int on_row(void *user, void *E, const cfpo_iter_stats *s, double el)
 }
 
 /* iterative(method, n, seed, tol, max_iter, tmin, tavg, tlimit, callback,
- * trace, values) -> (points, iterations, seconds, delta_min, delta_avg,
- * converged, stop, trace). */
+ * trace, values, density) -> (points, iterations, seconds, delta_min,
+ * delta_avg, converged, stop, trace); density None, a SPEC or a 2-D array
+ * (the methods with create_density, as their --density). */
 PyObject *core_iterative(PyObject *self, PyObject *args)
 {
     (void)self;
@@ -194,18 +220,32 @@ PyObject *core_iterative(PyObject *self, PyObject *args)
     unsigned long long seed;
     double tol, tmin, tavg, tlimit;
     int max_iter, want_trace;
-    PyObject *callback, *values;
-    if (!PyArg_ParseTuple(args, "sLKdidddOpO", &name, &n, &seed, &tol, &max_iter, &tmin, &tavg, &tlimit, &callback,
-                          &want_trace, &values))
+    PyObject *callback, *values, *dens = Py_None;
+    if (!PyArg_ParseTuple(args, "sLKdidddOpO|O", &name, &n, &seed, &tol, &max_iter, &tmin, &tavg, &tlimit, &callback,
+                          &want_trace, &values, &dens))
         return NULL;
     bl_value v[BL_MAX_OPTIONS];
     const bl_method *m = method_values(name, BL_ITERATIVE, values, v);
     if (!m) return NULL;
     char err[1024];
+    if (dens != Py_None && !m->create_density)
+        return PyErr_Format(PyExc_ValueError, "density is not offered by %s", name);
+    cfpo_density d;
+    const int has = core_density_in(dens, &d);
+    if (has < 0) return NULL;
+    const char *why = has && m->density_refuses ? m->density_refuses(v) : NULL;
+    if (has && (why || cfpo_density_check_n(&d, n, err, sizeof err) != 0)) {
+        cfpo_density_free(&d);
+        return core_error(PyExc_ValueError, why ? why : err);
+    }
     const int vr = m->check_n(v, n, tol, err, sizeof err);
-    if (vr != 0) return core_error(vr == -2 ? PyExc_MemoryError : PyExc_ValueError, err);
+    if (vr != 0) {
+        if (has) cfpo_density_free(&d);
+        return core_error(vr == -2 ? PyExc_MemoryError : PyExc_ValueError, err);
+    }
     bl_loop_args a = {.n = n, .seed = seed, .tol = tol, .max_iter = max_iter,
-                      .rules = {.target_min = tmin, .target_avg = tavg, .time_limit = tlimit}};
+                      .rules = {.target_min = tmin, .target_avg = tavg, .time_limit = tlimit},
+                      .density = has ? &d : NULL};
     row_ctx c = {.m = m, .callback = callback, .want_trace = want_trace,
                  .trace = {.cols = CFPO_TRACE_COMMON + m->ncolumns}};
     bl_outcome o;
@@ -216,6 +256,7 @@ PyObject *core_iterative(PyObject *self, PyObject *args)
     PyEval_RestoreThread(c.ts);
     if (!E) {
         free(c.trace.v);
+        if (has) cfpo_density_free(&d);
         return core_error(PyExc_ValueError, err);
     }
     PyObject *points = NULL, *tr = NULL;
@@ -224,6 +265,7 @@ PyObject *core_iterative(PyObject *self, PyObject *args)
         if ((points = core_points_new((size_t)n, &xy))) memcpy(xy, m->points(E), 2 * (size_t)n * sizeof *xy);
     }
     m->destroy(E);
+    if (has) cfpo_density_free(&d);
     if (!points) {
         free(c.trace.v);
         return NULL;

@@ -14,6 +14,31 @@
 
 #define DENS_TOL 1e-4 /* src/main_density.c's default */
 
+int core_density_in(PyObject *dens, cfpo_density *d)
+{
+    if (dens == Py_None) return 0;
+    char err[1024];
+    int rc;
+    if (PyUnicode_Check(dens)) {
+        const char *spec = PyUnicode_AsUTF8(dens);
+        if (!spec) return -1;
+        Py_BEGIN_ALLOW_THREADS
+        rc = cfpo_density_load(spec, d, err, sizeof err);
+        Py_END_ALLOW_THREADS
+    } else {
+        PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(dens, NPY_FLOAT64, 2, 2, NPY_ARRAY_IN_ARRAY);
+        if (!a) return -1;
+        rc = cfpo_density_from_values((const double *)PyArray_DATA(a), (int64_t)PyArray_DIM(a, 1),
+                                      (int64_t)PyArray_DIM(a, 0), "density", d, err, sizeof err);
+        Py_DECREF(a);
+    }
+    if (rc != 0) {
+        core_error(PyExc_ValueError, err);
+        return -1;
+    }
+    return 1;
+}
+
 PyObject *core_run_density(PyObject *self, PyObject *args)
 {
     (void)self;
@@ -31,20 +56,8 @@ PyObject *core_run_density(PyObject *self, PyObject *args)
     char err[1024];
     cfpo_density d;
     int rc;
-    if (PyUnicode_Check(dens)) {
-        const char *spec = PyUnicode_AsUTF8(dens);
-        if (!spec) return NULL;
-        Py_BEGIN_ALLOW_THREADS
-        rc = cfpo_density_load(spec, &d, err, sizeof err);
-        Py_END_ALLOW_THREADS
-    } else {
-        PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(dens, NPY_FLOAT64, 2, 2, NPY_ARRAY_IN_ARRAY);
-        if (!a) return NULL;
-        rc = cfpo_density_from_values((const double *)PyArray_DATA(a), (int64_t)PyArray_DIM(a, 1),
-                                      (int64_t)PyArray_DIM(a, 0), "density", &d, err, sizeof err);
-        Py_DECREF(a);
-    }
-    if (rc != 0) return core_error(PyExc_ValueError, err);
+    const int got = core_density_in(dens, &d);
+    if (got <= 0) return got == 0 ? core_error(PyExc_TypeError, "density: expected a SPEC or an array, got None") : NULL;
     PyArrayObject *start = NULL;
     if (init != Py_None) {
         size_t m;
