@@ -72,39 +72,43 @@ static void kernel_ft(cfpo_nufft *U)
     }
 }
 
-/* The w kernel values of a point at grid coordinate u; returns its first
- * grid index (may be negative; callers wrap). With l0 = ceil(u - alpha),
- * z = u - l0 lies in (alpha - 1, alpha] and value a is phi(z - a): on that
- * unit interval, a polynomial of degree DEG in s = 2 (z - alpha) + 1 in
- * [-1, 1], its coefficients pc[d * PW + a] fitted at init (poly_fit), as
- * FINUFFT does (no exp or sqrt per value; all w values by one Horner loop). */
-static inline int kernel_row(const cfpo_nufft *U, double u, double *v)
+/* The w kernel values of a point at grid coordinates ux and uy (vx, vy);
+ * their first grid indices (may be negative; callers wrap). With
+ * l0 = ceil(u - alpha), z = u - l0 lies in (alpha - 1, alpha] and value a
+ * is phi(z - a): on that unit interval, a polynomial of degree U->deg in
+ * s = 2 (z - alpha) + 1 in [-1, 1], its coefficients pc[d * PW + a] fitted
+ * at init (poly_fit), as FINUFFT does: no exp or sqrt per value, all w
+ * values of both axes by one Horner loop (two independent chains). */
+static inline void kernel_rows(const cfpo_nufft *U, double ux, double uy, double *vx, double *vy, int *lx, int *ly)
 {
-    const int l0 = (int)ceil(u - U->alpha);
-    const double s = 2 * (u - (double)l0 - U->alpha) + 1;
-    const double *c = U->pc + DEG * PW;
-    double t[PW];
-    for (int a = 0; a < PW; a++) t[a] = c[a];
-    for (int d = DEG - 1; d >= 0; d--) {
+    *lx = (int)ceil(ux - U->alpha);
+    *ly = (int)ceil(uy - U->alpha);
+    const double sx = 2 * (ux - (double)*lx - U->alpha) + 1, sy = 2 * (uy - (double)*ly - U->alpha) + 1;
+    const double *c = U->pc + U->deg * PW;
+    double tx[PW], ty[PW];
+    for (int a = 0; a < PW; a++) tx[a] = ty[a] = c[a];
+    for (int d = U->deg - 1; d >= 0; d--) {
         c -= PW;
-        for (int a = 0; a < PW; a++) t[a] = t[a] * s + c[a];
+        for (int a = 0; a < PW; a++) {
+            tx[a] = tx[a] * sx + c[a];
+            ty[a] = ty[a] * sy + c[a];
+        }
     }
-    for (int a = 0; a < U->w; a++) v[a] = t[a];
-    return l0;
+    for (int a = 0; a < U->w; a++) vx[a] = tx[a], vy[a] = ty[a];
 }
 
-/* The polynomials of kernel_row: interpolation at the DEG + 1 Chebyshev
+/* The polynomials of kernel_rows: interpolation at the deg + 1 Chebyshev
  * points of [-1, 1] (a Vandermonde system, solved by elimination with
  * partial pivoting; its error is measured against kernel_at by test_nufft
  * through the transforms). */
 static void poly_fit(cfpo_nufft *U)
 {
-    enum { Q = DEG + 1 };
-    double s[Q];
+    const int Q = U->deg + 1;
+    double s[DEG + 1];
     for (int i = 0; i < Q; i++) s[i] = cos(M_PI * (i + 0.5) / Q);
     memset(U->pc, 0, sizeof U->pc);
     for (int a = 0; a < U->w; a++) {
-        double A[Q][Q + 1];
+        double A[DEG + 1][DEG + 2];
         for (int i = 0; i < Q; i++) {
             double p = 1;
             for (int d = 0; d < Q; d++) A[i][d] = p, p *= s[i];
@@ -166,6 +170,7 @@ int cfpo_nufft_init(cfpo_nufft *U, int K, int w, int types, int threads, char *e
     U->w = w;
     U->alpha = 0.5 * w;
     U->beta = 2.30 * w;
+    U->deg = w + 3 < DEG ? w + 3 : DEG;
     U->threads = threads > 0 ? threads : omp_get_max_threads();
     U->stride = 2 * ((size_t)M / 2 + 1);
     U->phihat = malloc(((size_t)K + 1) * sizeof *U->phihat);
@@ -211,11 +216,15 @@ static int strip_of(int row, int S, int M)
     return s;
 }
 
-static void spread_point(const cfpo_nufft *U, double x, double y, double unit, int64_t *grid)
+/* One point's w x w contributions; W is w as a constant where it is one of
+ * the common widths (spread_point), so the loops unroll and vectorise. */
+static inline __attribute__((always_inline)) void spread_w(const cfpo_nufft *U, double x, double y, double unit,
+                                                          int64_t *grid, const int w)
 {
     double vx[MAXW], vy[MAXW];
-    const int M = U->M, w = U->w;
-    const int lx = kernel_row(U, x * M, vx), ly = kernel_row(U, y * M, vy);
+    const int M = U->M;
+    int lx, ly;
+    kernel_rows(U, x * M, y * M, vx, vy, &lx, &ly);
     const int inside = lx >= 0 && lx + w <= M;
     for (int b = 0; b < w; b++) {
         int64_t *r = grid + (size_t)wrap(ly + b, M) * U->stride;
@@ -227,6 +236,16 @@ static void spread_point(const cfpo_nufft *U, double x, double y, double unit, i
         } else {
             for (int a = 0; a < w; a++) r[wrap(lx + a, M)] += (int64_t)(c * vx[a] + 0.5);
         }
+    }
+}
+
+static void spread_point(const cfpo_nufft *U, double x, double y, double unit, int64_t *grid)
+{
+    switch (U->w) {
+    case 8: spread_w(U, x, y, unit, grid, 8); break;
+    case 10: spread_w(U, x, y, unit, grid, 10); break;
+    case 12: spread_w(U, x, y, unit, grid, 12); break;
+    default: spread_w(U, x, y, unit, grid, U->w);
     }
 }
 
@@ -320,24 +339,50 @@ void cfpo_nufft_type2_prepare(cfpo_nufft *U, const double *C)
     fftw_execute((fftw_plan)U->p2);
 }
 
-void cfpo_nufft_type2_at(const cfpo_nufft *U, double x, double y, double *re, double *im)
+/* g at one point; W as in spread_w. */
+static inline __attribute__((always_inline)) void interp_w(const cfpo_nufft *U, double x, double y, double *re,
+                                                          double *im, const int w)
 {
     double vx[MAXW], vy[MAXW];
-    const int M = U->M, w = U->w;
-    const int lx = kernel_row(U, x * M, vx), ly = kernel_row(U, y * M, vy);
-    int col[MAXW];
-    for (int a = 0; a < w; a++) col[a] = wrap(lx + a, M);
+    const int M = U->M;
+    int lx, ly;
+    kernel_rows(U, x * M, y * M, vx, vy, &lx, &ly);
     double sr = 0, si = 0;
-    for (int b = 0; b < w; b++) {
-        const double *r = U->g2 + 2 * (size_t)wrap(ly + b, M) * (size_t)M;
-        double tr = 0, ti = 0;
-        for (int a = 0; a < w; a++) {
-            tr += vx[a] * r[2 * col[a]];
-            ti += vx[a] * r[2 * col[a] + 1];
+    if (lx >= 0 && lx + w <= M) {
+        for (int b = 0; b < w; b++) {
+            const double *r = U->g2 + 2 * ((size_t)wrap(ly + b, M) * (size_t)M + (size_t)lx);
+            double tr = 0, ti = 0;
+            for (int a = 0; a < w; a++) {
+                tr += vx[a] * r[2 * a];
+                ti += vx[a] * r[2 * a + 1];
+            }
+            sr += vy[b] * tr;
+            si += vy[b] * ti;
         }
-        sr += vy[b] * tr;
-        si += vy[b] * ti;
+    } else {
+        int col[MAXW];
+        for (int a = 0; a < w; a++) col[a] = wrap(lx + a, M);
+        for (int b = 0; b < w; b++) {
+            const double *r = U->g2 + 2 * (size_t)wrap(ly + b, M) * (size_t)M;
+            double tr = 0, ti = 0;
+            for (int a = 0; a < w; a++) {
+                tr += vx[a] * r[2 * col[a]];
+                ti += vx[a] * r[2 * col[a] + 1];
+            }
+            sr += vy[b] * tr;
+            si += vy[b] * ti;
+        }
     }
     *re = sr;
     *im = si;
+}
+
+void cfpo_nufft_type2_at(const cfpo_nufft *U, double x, double y, double *re, double *im)
+{
+    switch (U->w) {
+    case 8: interp_w(U, x, y, re, im, 8); break;
+    case 10: interp_w(U, x, y, re, im, 10); break;
+    case 12: interp_w(U, x, y, re, im, 12); break;
+    default: interp_w(U, x, y, re, im, U->w);
+    }
 }

@@ -14,7 +14,8 @@
  * type 2 divides C by the same, transforms back (exp(+)) and interpolates
  * with phi. By Poisson summation the error is the aliased copies weighted
  * by phihat(m - k/M), |m - k/M| >= 3/4: about 10^-(w-1) of the largest
- * term (w = 10: about 1e-9 relative, measured by test_nufft).
+ * term (w = 10: 2e-10 for type 1 and 1.6e-9 for type 2, relative to the
+ * largest value, measured by test_nufft).
  *
  * Determinism: type 1 spreads in fixed point. Each contribution
  * phi(.) phi(.) in [0, 1] is rounded to an integer number of units 2^-s
@@ -54,6 +55,7 @@
 typedef struct {
     double pc[(CFPO_NUFFT_DEG + 1) * CFPO_NUFFT_MAXW]; /* the kernel's polynomials (nufft.c) */
     int K, w, M;      /* frequencies |kx|, |ky| <= K; kernel width; grid side */
+    int deg;          /* the polynomials' degree: w + 3, at most CFPO_NUFFT_DEG */
     double alpha, beta;
     double *phihat;   /* phihat(k / M) for k = 0..K */
     size_t stride;    /* type 1 grid: doubles per row (in-place real-to-complex) */
