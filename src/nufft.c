@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "omp_compat.h"
+#include "quadrature.h"
 
 #define MAXW CFPO_NUFFT_MAXW
 #define DEG CFPO_NUFFT_DEG
@@ -30,28 +31,6 @@ static int fft_size(int m)
     }
 }
 
-/* Nodes and weights of q-point Gauss-Legendre quadrature on [-1, 1]. */
-static void gauss_legendre(int q, double *z, double *wt)
-{
-    for (int i = 0; i < q; i++) {
-        double x = cos(M_PI * (i + 0.75) / (q + 0.5)), dp = 1;
-        for (int it = 0; it < 100; it++) {
-            double p0 = 1, p1 = x;
-            for (int j = 2; j <= q; j++) {
-                double p2 = ((2 * j - 1) * x * p1 - (j - 1) * p0) / j;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = q * (x * p1 - p0) / (x * x - 1);
-            double dx = p1 / dp;
-            x -= dx;
-            if (fabs(dx) < 1e-16) break;
-        }
-        z[i] = x;
-        wt[i] = 2 / ((1 - x * x) * dp * dp);
-    }
-}
-
 static double kernel_at(const cfpo_nufft *U, double t)
 {
     double s = 1.0 - (t / U->alpha) * (t / U->alpha);
@@ -63,7 +42,7 @@ static void kernel_ft(cfpo_nufft *U)
 {
     enum { Q = 96 };
     double z[Q], wt[Q], f[Q];
-    gauss_legendre(Q, z, wt);
+    cfpo_gauss_legendre(Q, z, wt);
     for (int i = 0; i < Q; i++) f[i] = wt[i] * kernel_at(U, U->alpha * z[i]);
     for (int kk = 0; kk <= U->K; kk++) {
         double nu = (double)kk / U->M, s = 0;
