@@ -120,7 +120,7 @@ static int transport_move(const cfpo_engine *E, const double *lxs, const double 
     cfpo_square Sx;
     if (!cfpo_policy_square(P, sqrt(floor2), &Sx)) return 0;
     double ux, uy;
-    cfpo_transport_field(&E->lf, cfpo_wrap01(x + ox), cfpo_wrap01(y + oy), omp_get_thread_num(), &ux, &uy);
+    cfpo_transport_field(&E->lf, cfpo_wrap01(x + ox), cfpo_wrap01(y + oy), &ux, &uy);
     const double u = sqrt(ux * ux + uy * uy);
     if (u > P->vmax) ux *= P->vmax / u, uy *= P->vmax / u;
     return cfpo_transport_move(x, y, ux, uy, lxs, lys, m, gi, floor2, &Sx, nx, ny);

@@ -154,13 +154,14 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
     }
     E->t_born = born;
     if (o->variant == CFPO_VARIANT_HYPERUNIFORM) {
-        if (E->nranks > 1) {
-            snprintf(err, errlen, "--variant hyperuniform runs on one rank (its transport field sums over every point)");
+        if (n / 25 * 20 > (int64_t)INT32_MAX) { /* the summed grid of about 16 n / 25 values: an int count (comm_sum_i64) */
+            snprintf(err, errlen, "--variant hyperuniform: n = %lld is too large for its transport grid",
+                     (long long)n);
             cfpo_engine_free(E);
             return NULL;
         }
-        if (cfpo_transport_init(&E->lf, n, E->nthreads) != 0) {
-            snprintf(err, errlen, "out of memory");
+        if (!comm_all(cfpo_transport_init(&E->lf, n, E->nthreads) == 0)) {
+            snprintf(err, errlen, "out of memory for the transport's grids");
             cfpo_engine_free(E);
             return NULL;
         }

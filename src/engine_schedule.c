@@ -126,7 +126,13 @@ void cfpo_engine_begin(cfpo_engine *E)
     if (E->pol.shift != E->G.shift) move_grid(E, E->pol.shift);
     if (E->pol.all)
         for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
-    if (E->pol.transport) cfpo_transport_coeffs(&E->lf, E->px, E->py, E->nloc, E->n);
+    if (E->pol.transport) {
+        /* the band's modes of the whole set: every rank's fixed-point grid,
+         * summed exactly, so the same field for any rank count */
+        if (cfpo_transport_spread(&E->lf, E->px, E->py, E->nloc, E->n) != 0) eng_fatal(E, "transport");
+        comm_sum_i64(cfpo_transport_grid(&E->lf), (int)cfpo_transport_grid_count(&E->lf));
+        cfpo_transport_finish(&E->lf, E->n);
+    }
     E->be->begin(E);
 }
 

@@ -43,7 +43,7 @@ static void usage(void)
            "                       or hyperuniform (adaptive for 40 iterations, then 70\n"
            "                       of transport sweeps that remove the density modes\n"
            "                       |k| <= 0.2 sqrt(n), delta_min kept >= 0.92 Delta, and\n"
-           "                       near sweeps; no low-frequency floor; one rank only)\n"
+           "                       near sweeps; no low-frequency floor)\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "      --max-iter K     stop after K iterations (default %d)\n"
            "      --tol T          a move must gain more than T * cell side; converged when\n"

@@ -1,126 +1,73 @@
-/* transport.c - see transport.h: the low-frequency modes, the transport field
- * and the clipped move of the hyperuniform variant. */
+/* transport.c - see transport.h: the band's transport field through the
+ * NUFFT and the clipped move of the hyperuniform variant. */
 #include "transport.h"
 
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
-#include "omp_compat.h"
-
-/* The coefficient sum runs over at most this many fixed chunks of the
- * points, summed in chunk order: the same bits for any thread count. */
-#define CHUNKS 16
 /* A spot this hair short of where the displacement meets a circle or the
  * square, so that rounding leaves it outside; the exact check decides. */
 #define SHORT (1 - 1e-9)
 
 int cfpo_transport_init(cfpo_transport *F, int64_t n, int threads)
 {
-    const int K = (int)floor(sqrt((double)n / 25.0));
-    const size_t most = (size_t)(2 * K + 1) * (size_t)(K + 1), W = (size_t)(2 * K + 1);
-    F->K = K;
-    F->m = 0;
-    F->threads = threads > 0 ? threads : 1;
-    F->k = malloc(sizeof(int) * 2 * most);
-    F->c = calloc(2 * most, sizeof(double));
-    F->part = calloc(CHUNKS * 2 * most, sizeof(double));
-    F->tab = malloc(sizeof(double) * 4 * W * (CHUNKS + (size_t)F->threads));
-    if (!F->k || !F->c || !F->part || !F->tab) {
+    char err[128];
+    F->K = (int)floor(sqrt((double)n / 25.0));
+    F->C = NULL;
+    if (F->K < 1) F->K = 1; /* below 25 points the band is empty: C stays 0 */
+    if (cfpo_nufft_init(&F->U, F->K, CFPO_TRANSPORT_WIDTH, CFPO_NUFFT_TYPE1 | CFPO_NUFFT_TYPE2, threads, err,
+                        sizeof err) != 0)
+        return -1;
+    const size_t W = 2 * (size_t)F->K + 1;
+    F->C = calloc(2 * W * W, sizeof *F->C);
+    if (!F->C) {
         cfpo_transport_free(F);
         return -1;
     }
-    for (int ky = 0; ky <= K; ky++)
-        for (int kx = -K; kx <= K; kx++) {
-            if (ky == 0 && kx <= 0) continue; /* one of each pair +-k, no k = 0 */
-            if (!cfpo_in_lowk_band(kx, ky, (int64_t)n)) continue;
-            F->k[2 * F->m] = kx;
-            F->k[2 * F->m + 1] = ky;
-            F->m++;
-        }
     return 0;
 }
 
 void cfpo_transport_free(cfpo_transport *F)
 {
-    free(F->k);
-    free(F->c);
-    free(F->part);
-    free(F->tab);
-    F->k = NULL;
-    F->c = NULL;
-    F->part = NULL;
-    F->tab = NULL;
-    F->m = 0;
+    if (F->U.phihat) cfpo_nufft_free(&F->U);
+    free(F->C);
+    F->C = NULL;
 }
 
-/* exp(-2 pi i k x) for k = -K..K at re[K + k], im[K + k], by recurrence
- * from one cosine and sine. */
-static void powers(double x, int K, double *re, double *im)
+int cfpo_transport_spread(cfpo_transport *F, const double *x, const double *y, int64_t np, int64_t n)
 {
-    const double c = cos(2 * M_PI * x), s = -sin(2 * M_PI * x);
-    re[K] = 1;
-    im[K] = 0;
-    for (int k = 1; k <= K; k++) {
-        re[K + k] = re[K + k - 1] * c - im[K + k - 1] * s;
-        im[K + k] = re[K + k - 1] * s + im[K + k - 1] * c;
-        re[K - k] = re[K + k];
-        im[K - k] = -im[K + k];
-    }
+    return cfpo_nufft_spread(&F->U, x, y, 1, (size_t)np, n);
 }
 
-void cfpo_transport_coeffs(cfpo_transport *F, const double *x, const double *y, int64_t np, int64_t n)
+int64_t *cfpo_transport_grid(cfpo_transport *F) { return cfpo_nufft_grid(&F->U); }
+size_t cfpo_transport_grid_count(const cfpo_transport *F) { return cfpo_nufft_grid_count(&F->U); }
+
+void cfpo_transport_finish(cfpo_transport *F, int64_t n)
 {
-    const int m = F->m, W = 2 * F->K + 1;
-    const int64_t nch = np < CHUNKS ? (np > 0 ? np : 1) : CHUNKS;
-    double *part = F->part;
-    memset(part, 0, sizeof(double) * (size_t)nch * 2 * (size_t)m);
-#pragma omp parallel for schedule(static) num_threads(F->threads)
-    for (int64_t ch = 0; ch < nch; ch++) {
-        double *tab = F->tab + (size_t)ch * 4 * (size_t)W;
-        double *er = tab, *ei = tab + W, *fr = tab + 2 * W, *fi = tab + 3 * W, *p = part + ch * 2 * m;
-        for (int64_t j = np * ch / nch; j < np * (ch + 1) / nch; j++) {
-            powers(x[j], F->K, er, ei);
-            powers(y[j], F->K, fr, fi);
-            for (int q = 0; q < m; q++) {
-                const int a = F->K + F->k[2 * q], b = F->K + F->k[2 * q + 1];
-                p[2 * q] += er[a] * fr[b] - ei[a] * fi[b];
-                p[2 * q + 1] += er[a] * fi[b] + ei[a] * fr[b];
+    const int K = F->K, W = 2 * K + 1;
+    cfpo_nufft_type1_finish(&F->U, n);
+    /* ux + i uy = sum_k c(k) (ky - i kx) exp(2 pi i k.x), c(k) = rho_hat(k) / (2 pi n |k|^2) */
+    for (int ky = -K; ky <= K; ky++)
+        for (int kx = -K; kx <= K; kx++) {
+            double *C = F->C + 2 * ((size_t)(ky + K) * (size_t)W + (size_t)(kx + K));
+            if (!cfpo_in_lowk_band(kx, ky, n)) {
+                C[0] = C[1] = 0;
+                continue;
             }
+            double re, im;
+            cfpo_nufft_coef(&F->U, kx, ky, &re, &im);
+            const double s = 2 * M_PI * (double)n * (double)(kx * kx + ky * ky);
+            re /= s;
+            im /= s;
+            C[0] = re * ky + im * kx;
+            C[1] = im * ky - re * kx;
         }
-    }
-    for (int q = 0; q < m; q++) {
-        double re = 0, im = 0;
-        for (int64_t ch = 0; ch < nch; ch++) {
-            re += part[ch * 2 * m + 2 * q];
-            im += part[ch * 2 * m + 2 * q + 1];
-        }
-        const double kx = F->k[2 * q], ky = F->k[2 * q + 1];
-        const double s = 2 * M_PI * (double)n * (kx * kx + ky * ky);
-        F->c[2 * q] = re / s;
-        F->c[2 * q + 1] = im / s;
-    }
+    cfpo_nufft_type2_prepare(&F->U, F->C);
 }
 
-void cfpo_transport_field(const cfpo_transport *F, double x, double y, int thread, double *ux, double *uy)
+void cfpo_transport_field(const cfpo_transport *F, double x, double y, double *ux, double *uy)
 {
-    const int W = 2 * F->K + 1;
-    double *tab = F->tab + (size_t)(CHUNKS + thread) * 4 * (size_t)W;
-    double *er = tab, *ei = tab + W, *fr = tab + 2 * W, *fi = tab + 3 * W;
-    powers(x, F->K, er, ei);
-    powers(y, F->K, fr, fi);
-    double sx = 0, sy = 0;
-    for (int q = 0; q < F->m; q++) {
-        const int a = F->K + F->k[2 * q], b = F->K + F->k[2 * q + 1];
-        /* exp(2 pi i k.x) = cos + i sin, the conjugate of the tables' product */
-        const double co = er[a] * fr[b] - ei[a] * fi[b], si = -(er[a] * fi[b] + ei[a] * fr[b]);
-        /* Re(-i c exp(2 pi i k.x)) = c_re sin + c_im cos; each pair +-k twice */
-        const double t = F->c[2 * q] * si + F->c[2 * q + 1] * co;
-        sx += F->k[2 * q] * t;
-        sy += F->k[2 * q + 1] * t;
-    }
-    *ux = 2 * sx;
-    *uy = 2 * sy;
+    cfpo_nufft_type2_at(&F->U, x, y, ux, uy);
 }
 
 /* How far (a fraction s of (vx, vy), in [0, 1]) the point can go before it

@@ -10,10 +10,15 @@
  * every point of its 3x3 block stays at least a floor, then slides along
  * what stopped it.
  *
- * Owns: the mode list, the coefficients (a sum over all points in fixed
- * chunks, so the same bits for any thread count), the field at a point and
- * the clipped move. Does not own: when the transport runs (policy.c) or
- * which points it moves (backend_cpu.c). */
+ * Both sums go through the non-uniform FFT (nufft.h), kernel width
+ * CFPO_TRANSPORT_WIDTH: type 1 for rho_hat (spread in fixed point, so the
+ * same bits for any thread count and, the parts' integer grids summed, any
+ * rank count), type 2 for u (ux + i uy as one complex field), O(n + K^2
+ * log K) a sweep instead of the direct sums' O(n K^2).
+ *
+ * Owns: the band's coefficients of u and the field at a point, the clipped
+ * move. Does not own: when the transport runs (policy.c), which points it
+ * moves (backend_cpu.c) or adding the ranks' grids (engine_schedule.c). */
 #ifndef CFPO_TRANSPORT_H
 #define CFPO_TRANSPORT_H
 
@@ -21,28 +26,34 @@
 #include <stdint.h>
 
 #include "geom.h"
+#include "nufft.h"
+
+/* The kernel width: the NUFFT's error about 10^-(w-1) of the largest term. */
+#define CFPO_TRANSPORT_WIDTH 10
 
 typedef struct {
-    int m;     /* modes, one of each pair +-k */
-    int K;     /* the largest |kx|, |ky| */
-    int *k;    /* 2 per mode: kx, ky */
-    double *c; /* 2 per mode: rho_hat(k) / (2 pi n |k|^2), real and imaginary */
-    double *part; /* the chunks' partial sums */
-    double *tab;  /* per chunk, then per thread: the exponentials of one point */
-    int threads;
+    int K;        /* the largest |kx|, |ky| of the band */
+    cfpo_nufft U; /* both directions */
+    double *C;    /* (2K + 1)^2 complex: the band's ux + i uy coefficients */
 } cfpo_transport;
 
-/* The modes of a set of n points, c zeroed, scratch for `threads` threads.
- * 0, or -1 out of memory. */
+/* The transport of a set of n points (n >= 25: the band is not empty),
+ * spreading on `threads` threads. 0, or -1 out of memory. */
 int cfpo_transport_init(cfpo_transport *F, int64_t n, int threads);
 void cfpo_transport_free(cfpo_transport *F);
 
-/* c from the np points (x[j], y[j]) of a set of n points, on F's threads;
- * the same bits for any thread count. */
-void cfpo_transport_coeffs(cfpo_transport *F, const double *x, const double *y, int64_t np, int64_t n);
+/* The np points (x[j], y[j]) of this part of a set of n points spread onto
+ * the grid (cfpo_nufft_spread); 0, or -1 out of memory. Then the caller
+ * adds the other parts' grids (cfpo_transport_grid, _grid_count) and calls
+ * cfpo_transport_finish: the field from the whole set's modes. */
+int cfpo_transport_spread(cfpo_transport *F, const double *x, const double *y, int64_t np, int64_t n);
+int64_t *cfpo_transport_grid(cfpo_transport *F);
+size_t cfpo_transport_grid_count(const cfpo_transport *F);
+void cfpo_transport_finish(cfpo_transport *F, int64_t n);
 
-/* u at (x, y) (torus coordinates), by thread `thread` of F's. */
-void cfpo_transport_field(const cfpo_transport *F, double x, double y, int thread, double *ux, double *uy);
+/* u at (x, y) (torus coordinates in [0, 1)): a pure function of the point
+ * and the last cfpo_transport_finish. */
+void cfpo_transport_field(const cfpo_transport *F, double x, double y, double *ux, double *uy);
 
 /* The point `self` of the m block points (bx, by) at (x, y), displaced by
  * (vx, vy): it goes along the displacement until the spot would come

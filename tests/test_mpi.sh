@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # test_mpi.sh BUILD_DIR MPIRUN - cfpo under mpirun: output byte-identical to
 # the one-process file for any rank count and cut (1 x P, P x 1, uneven
-# tiles), invariants checked after every migration and halo refresh
+# tiles; the hyperuniform variant too), invariants checked after every migration and halo refresh
 # (--check: point count, id checksum, ownership, every halo cell equal to
 # its owner's cell), checkpoint and resume on another rank count, a rank
 # killed mid-run leaving a usable checkpoint, and errors reported once with
@@ -52,6 +52,18 @@ done
 run 2 -n $N -t 2 -o out.npy >/dev/null 2>run.err && same out.npy ref.npy "2 ranks x 2 threads" || bad "2x2 run failed"
 run 3 -n $N -t 1 --variant simplified -o outs.bin >/dev/null 2>run.err && same outs.bin refs.bin "simplified on 3 ranks" ||
   bad "simplified on 3 ranks failed: $(head -3 run.err)"
+
+# The hyperuniform variant: its transport field from every rank's
+# fixed-point NUFFT grid, summed exactly (src/nufft.h): the same bytes.
+"$CFPO" -n $N -q -t 2 --variant hyperuniform -o refh.npy >/dev/null || bad "hyperuniform reference failed"
+for spec in "2 2x1" "3 1x3" "4 2x2 --check"; do
+  set -- $spec
+  if run "$1" -n $N -t 1 --tiles "$2" ${3:-} --variant hyperuniform -o outh.npy >/dev/null 2>run.err; then
+    same outh.npy refh.npy "hyperuniform on $1 ranks, tiles $2 ${3:-}"
+  else
+    bad "hyperuniform on $1 ranks failed: $(head -3 run.err)"
+  fi
+done
 
 # --check: invariants after every migration and halo refresh; on a tiny
 # grid (n = 100: 9 x 9 cells, tiles of 3 to 5 cells) and on 4096 points.
@@ -154,7 +166,6 @@ expect_err 2 "tiles too small" 5 -n 100 -o x.npy
 expect_err 2 "use at most 9 ranks" 11 -n 100
 expect_err 2 "does not give one tile" 2 -n $N --tiles 3x1
 expect_err 2 "text output needs one rank" 2 -n $N -o x.txt
-expect_err 1 "hyperuniform runs on one rank" 2 -n $N -t 1 --variant hyperuniform -o h.npy
 expect_err 2 "the checkpoint is for" 2 --resume ck.bin --seed 9
 head -c 1000 ck.bin >trunc.bin
 expect_err 1 "truncated" 2 --resume trunc.bin -o y.npy

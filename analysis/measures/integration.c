@@ -10,6 +10,7 @@
 #include <stdlib.h>
 
 #include "omp_compat.h"
+#include "quadrature.h"
 #include "rng.h"
 
 #define AN_BLOCK 2048
@@ -55,32 +56,10 @@ static double phi_diff(double l, double u)
     return 0.5 * (erf(u * s) - erf(l * s));
 }
 
-/* Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_N). */
-static void gauss_legendre(double *x, double *w)
-{
-    for (int i = 0; i < GL_N; i++) {
-        double t = cos(M_PI * (i + 0.75) / (GL_N + 0.5)), dp = 1;
-        for (int it = 0; it < 100; it++) {
-            double p0 = 1, p1 = t;
-            for (int k = 2; k <= GL_N; k++) {
-                const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = GL_N * (t * p1 - p0) / (t * t - 1);
-            const double dt = p1 / dp;
-            t -= dt;
-            if (fabs(dt) < 1e-16) break;
-        }
-        x[i] = t;
-        w[i] = 2 / ((1 - t * t) * dp * dp);
-    }
-}
-
 static double gauss_integral(double mx, double my, double a, double b, double c)
 {
     double gx[GL_N], gw[GL_N];
-    gauss_legendre(gx, gw);
+    cfpo_gauss_legendre(GL_N, gx, gw);
     const double sc = sqrt(c), kx = a - b * b / c, norm = sqrt(2 * M_PI / c);
     double sum = 0;
     for (int p = 0; p < GL_PANELS; p++) {

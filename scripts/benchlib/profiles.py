@@ -85,12 +85,13 @@ def profile(name, cores):
     elif name == "default":
         # the integration experiment at 2^8, 2^10, 2^12 (the comparison's) and
         # 2^14 points, 2 seeds, the slow iterative methods to 2^12 (63 s of
-        # runs by the cost model, 2 cores); CCVT, CCDT, GBN, Lloyd and LFPO
+        # runs by the cost model, 2 cores; the hyperuniform variant, its
+        # transport through the NUFFT, to 2^14 as well: 5 s more); CCVT, CCDT, GBN, Lloyd and LFPO
         # at 4 sets in the comparison and simplified CFPO at 6 (instead of
         # 10) pay for it, for adaptive CFPO in the comparison and for GBN and
         # Lloyd (161 s of runs less); the paper profile runs them at 10
         p.update(ad_n=4096, sets=10, comp_n=4096, rt_reps=1, int_seeds=2, int_n=[256, 1024, 4096, 16384],
-                 int_top={k: 4096 for k in ("simplified", "lfpo", "ccvt", "ccdt", "gbn", "lloyd", "hyperuniform")},
+                 int_top={k: 4096 for k in ("simplified", "lfpo", "ccvt", "ccdt", "gbn", "lloyd")},
                  comp_sets=dict(ccvt=4, ccdt=4, gbn=4, lloyd=4, lfpo=4, simplified=6),
                  rt_sizes=dict(cfpo=[1024, 4096, 16384], simplified=[1024, 4096], fpo=[1024, 16384],
                                lfpo=[1024], ccvt=[1024], ccdt=[1024], bnot=[1024, 4096, 16384],
@@ -114,11 +115,11 @@ def profile(name, cores):
     elif name == "seeds":
         # the comparison at 65,536 points: FPO 4 sets, CCVT, GBN and Lloyd
         # 2 (their runs take 1-6 min there by the cost model), LFPO, CCDT
-        # and the hyperuniform variant (O(n^2) transport sums) none; the
+        # none; the
         # integration experiment's 10 seeds of every method at 4,096
         p.update(sets=10, comp_n=65536, rt_reps=1, evo_iters=[], rt_sizes={}, ttq_sizes=[], int_seeds=10,
-                 int_n=[4096, 65536], comp_sets=dict(fpo=4, ccvt=2, gbn=2, lloyd=2, lfpo=0, ccdt=0, hyperuniform=0),
-                 int_top=dict(lfpo=4096, ccdt=4096, hyperuniform=4096))
+                 int_n=[4096, 65536], comp_sets=dict(fpo=4, ccvt=2, gbn=2, lloyd=2, lfpo=0, ccdt=0),
+                 int_top=dict(lfpo=4096, ccdt=4096))
     else:
         # the integration experiment: 2^8 to 2^20 points, 10 seeds to 2^16
         # and 3 above, each method as far as its runtime experiment goes
@@ -126,7 +127,7 @@ def profile(name, cores):
                  ttq_big=[1048576],
                  int_seeds=10, int_seeds_big=(65536, 3), int_n=[2 ** e for e in range(8, 21)],
                  int_top=dict(adaptive=262144, fpo=262144, simplified=262144, bnot=65536, lfpo=65536, ccvt=65536, ccdt=65536,
-                              gbn=65536, lloyd=65536, hyperuniform=16384),
+                              gbn=65536, lloyd=65536, hyperuniform=262144),
                  rt_sizes=dict(cfpo=[1024, 4096, 16384, 65536, 262144, 1048576],
                                simplified=[1024, 4096, 16384, 65536, 262144],
                                fpo=[1024, 4096, 16384, 65536, 262144], lfpo=[1024, 4096, 16384, 65536],
@@ -183,7 +184,7 @@ _MODEL = dict(cfpo=(230, 0.5, 1250, 1.1e-6), adaptive=(116, 0.5, 1250, 1.1e-6), 
               fpo=(166, 0.33, 5000, 2.5e-6), lfpo=(239, 0.55, 5000, 2.5e-6),
               ccvt=(330, 0, 5000, 1.5e-5), ccdt=(120, 0.1, 5000, 1.5e-5), bnot=(20, 0, 20, 1.05e-5),
               lloyd=(100, 0, 100, 8.5e-6), gbn=(1000, 0, 1000, 3.4e-6),
-              hyperuniform=(110, 0, 110, 2.2e-6))
+              hyperuniform=(110, 0, 110, 1.3e-6))
 # the direct samplers (white, jitter, sobol) as the Poisson-disk ones: s a point
 _PD = dict(dart=8e-6, bs=1.5e-6, bridson=5e-6, white=1e-7, jitter=1e-7, sobol=2e-7)
 
