@@ -114,9 +114,9 @@ def profile(name, cores):
         p["ttq_limits"] = {("fpo", 65536): 35}
     elif name == "seeds":
         # the comparison at 65,536 points: FPO 4 sets, CCVT, GBN and Lloyd
-        # 2 (their runs take 1-6 min there by the cost model), LFPO, CCDT
-        # none; the
-        # integration experiment's 10 seeds of every method at 4,096
+        # 2 (their runs take 1-6 min there by the cost model), LFPO and
+        # CCDT none; the integration experiment's 10 seeds of every method
+        # at 4,096
         p.update(sets=10, comp_n=65536, rt_reps=1, evo_iters=[], rt_sizes={}, ttq_sizes=[], int_seeds=10,
                  int_n=[4096, 65536], comp_sets=dict(fpo=4, ccvt=2, gbn=2, lloyd=2, lfpo=0, ccdt=0),
                  int_top=dict(lfpo=4096, ccdt=4096))
