@@ -32,75 +32,9 @@
 #include <string.h>
 
 #include "cli.h"
+#include "nufft_kernel.h"
 
-typedef struct {
-    int w, M;
-    double alpha, beta;
-} kernel;
-
-/* Smallest even m' >= m whose only prime factors are 2, 3, 5, 7. */
-static int fft_size(int m)
-{
-    for (;; m++) {
-        if (m & 1) continue;
-        int r = m;
-        static const int pr[] = {2, 3, 5, 7};
-        for (int i = 0; i < 4; i++)
-            while (r % pr[i] == 0) r /= pr[i];
-        if (r == 1) return m;
-    }
-}
-
-/* Nodes and weights of q-point Gauss-Legendre quadrature on [-1, 1]. */
-static void gauss_legendre(int q, double *z, double *wt)
-{
-    for (int i = 0; i < q; i++) {
-        double x = cos(M_PI * (i + 0.75) / (q + 0.5)), dp = 1;
-        for (int it = 0; it < 100; it++) {
-            double p0 = 1, p1 = x;
-            for (int j = 2; j <= q; j++) {
-                double p2 = ((2 * j - 1) * x * p1 - (j - 1) * p0) / j;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = q * (x * p1 - p0) / (x * x - 1);
-            double dx = p1 / dp;
-            x -= dx;
-            if (fabs(dx) < 1e-16) break;
-        }
-        z[i] = x;
-        wt[i] = 2 / ((1 - x * x) * dp * dp);
-    }
-}
-
-static double kernel_at(const kernel *k, double t)
-{
-    double s = 1.0 - (t / k->alpha) * (t / k->alpha);
-    return s > 0 ? exp(k->beta * (sqrt(s) - 1.0)) : 0.0;
-}
-
-/* phihat(kk / M) for kk = 0..K: the integral of phi(t) cos(2 pi nu t). */
-static void kernel_ft(const kernel *k, int K, double *phihat)
-{
-    enum { Q = 96 };
-    double z[Q], wt[Q], f[Q];
-    gauss_legendre(Q, z, wt);
-    for (int i = 0; i < Q; i++) f[i] = wt[i] * kernel_at(k, k->alpha * z[i]);
-    for (int kk = 0; kk <= K; kk++) {
-        double nu = (double)kk / k->M, s = 0;
-        for (int i = 0; i < Q; i++) s += f[i] * cos(2 * M_PI * nu * k->alpha * z[i]);
-        phihat[kk] = k->alpha * s;
-    }
-}
-
-/* The w kernel values of a point at grid coordinate u; returns its first
- * grid index (may be negative; callers wrap). */
-static inline int kernel_row(const kernel *k, double u, double *v)
-{
-    int l0 = (int)ceil(u - k->alpha);
-    for (int a = 0; a < k->w; a++) v[a] = kernel_at(k, u - (double)(l0 + a));
-    return l0;
-}
+typedef an_nk kernel;
 
 static inline int first_row(const kernel *k, double y)
 {
@@ -122,7 +56,7 @@ static void spread_point(const kernel *k, double x, double y, double *grid, size
 {
     double vx[32], vy[32];
     const int M = k->M, w = k->w;
-    int lx = kernel_row(k, x * M, vx), ly = kernel_row(k, y * M, vy);
+    int lx = an_nk_row(k, x * M, vx), ly = an_nk_row(k, y * M, vy);
     int inside = lx >= 0 && lx + w <= M;
     for (int b = 0; b < w; b++) {
         int row = ly + b;
@@ -201,7 +135,7 @@ int an_power_nufft(const double *xy, size_t n, int K, int width, double *P, an_n
     kernel k = {.w = width, .alpha = 0.5 * width, .beta = 2.30 * width};
     int M = 2 * (2 * K + 1);
     if (M < 2 * width) M = 2 * width;
-    k.M = M = fft_size(M);
+    k.M = M = an_nk_fft_size(M);
     const size_t stride = 2 * ((size_t)M / 2 + 1);
     double *grid = fftw_malloc(sizeof(double) * (size_t)M * stride);
     double *phihat = malloc(((size_t)K + 1) * sizeof *phihat);
@@ -236,7 +170,7 @@ int an_power_nufft(const double *xy, size_t n, int K, int width, double *P, an_n
     fftw_destroy_plan(plan);
     pthread_mutex_unlock(&planner);
     double t2 = cli_now();
-    kernel_ft(&k, K, phihat);
+    an_nk_ft(&k, K, phihat);
     deconvolve(&k, K, phihat, (const fftw_complex *)grid, n, P);
     if (info) {
         info->width = width;
