@@ -25,6 +25,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "density.h"
 #include "tracecols.h"
 
 /* Loads NumPy's C API (whose table core_util.c holds); 0, or -1 with
@@ -84,6 +85,11 @@ int core_on_iteration(const cfpo_iter_stats *s, void *user);
 int core_options_of(cfpo_options *o, unsigned long long seed, const char *variant, int threads, double tol,
                     int max_iter, double tmin, double tavg, double tlimit);
 
+/* The density `dens` names: a SPEC str or a 2-D array (row = y), as
+ * cfpo_density_load / cfpo_density_from_values take them (core_density.c).
+ * 0, or -1 with ValueError (MemoryError) set. */
+int core_density_in(PyObject *dens, cfpo_density *d);
+
 /* The module's functions, one file each. */
 PyObject *core_run_result(core_run_ctx *c, int rc, int created, const char *err, PyObject *points,
                           const cfpo_result *res, double seconds);
@@ -96,6 +102,7 @@ PyObject *core_discrepancy(PyObject *self, PyObject *args);
 PyObject *core_lowfreq(PyObject *self, PyObject *args);
 PyObject *core_pcf(PyObject *self, PyObject *args);
 PyObject *core_delaunay(PyObject *self, PyObject *args);
+PyObject *core_density_measures(PyObject *self, PyObject *args);
 PyObject *core_integration(PyObject *self, PyObject *args);
 PyObject *core_poisson(PyObject *self, PyObject *args);
 PyObject *core_iterative(PyObject *self, PyObject *args);

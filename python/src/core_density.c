@@ -2,7 +2,8 @@
  * the way `cfpo --density` runs it (src/main_density.c: the density from
  * a SPEC string or a 2-D array, the same default tolerance, start, checks
  * and points in id order), with the per-iteration callback of
- * core_sample.c. */
+ * core_sample.c; and the density of a SPEC string or an array
+ * (core_density_in), which the density measures share. */
 #include "core.h"
 
 #include <string.h>
@@ -13,6 +14,30 @@
 #include "stoprule.h"
 
 #define DENS_TOL 1e-4 /* src/main_density.c's default */
+
+int core_density_in(PyObject *dens, cfpo_density *d)
+{
+    char err[1024];
+    int rc;
+    if (PyUnicode_Check(dens)) {
+        const char *spec = PyUnicode_AsUTF8(dens);
+        if (!spec) return -1;
+        Py_BEGIN_ALLOW_THREADS
+        rc = cfpo_density_load(spec, d, err, sizeof err);
+        Py_END_ALLOW_THREADS
+    } else {
+        PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(dens, NPY_FLOAT64, 2, 2, NPY_ARRAY_IN_ARRAY);
+        if (!a) return -1;
+        rc = cfpo_density_from_values((const double *)PyArray_DATA(a), (int64_t)PyArray_DIM(a, 1),
+                                      (int64_t)PyArray_DIM(a, 0), "density", d, err, sizeof err);
+        Py_DECREF(a);
+    }
+    if (rc != 0) {
+        core_error(PyExc_ValueError, err);
+        return -1;
+    }
+    return 0;
+}
 
 PyObject *core_run_density(PyObject *self, PyObject *args)
 {
@@ -31,20 +56,7 @@ PyObject *core_run_density(PyObject *self, PyObject *args)
     char err[1024];
     cfpo_density d;
     int rc;
-    if (PyUnicode_Check(dens)) {
-        const char *spec = PyUnicode_AsUTF8(dens);
-        if (!spec) return NULL;
-        Py_BEGIN_ALLOW_THREADS
-        rc = cfpo_density_load(spec, &d, err, sizeof err);
-        Py_END_ALLOW_THREADS
-    } else {
-        PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(dens, NPY_FLOAT64, 2, 2, NPY_ARRAY_IN_ARRAY);
-        if (!a) return NULL;
-        rc = cfpo_density_from_values((const double *)PyArray_DATA(a), (int64_t)PyArray_DIM(a, 1),
-                                      (int64_t)PyArray_DIM(a, 0), "density", &d, err, sizeof err);
-        Py_DECREF(a);
-    }
-    if (rc != 0) return core_error(PyExc_ValueError, err);
+    if (core_density_in(dens, &d) != 0) return NULL;
     PyArrayObject *start = NULL;
     if (init != Py_None) {
         size_t m;
