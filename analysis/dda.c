@@ -47,7 +47,8 @@ double an_dda_bytes(size_t n, int K, double radius)
     layout L;
     plan_layout(&L, n, K, radius);
     const double M = L.k.M, patches = L.wrap ? 0 : (double)CHUNKS * L.P * L.P * 8.0;
-    return 8.0 * M * (M + 2) + patches + 40.0 * (double)n + 8.0 * (double)(K + 1) + 4096.0;
+    const double side = 2.0 * K + 1; /* the spectrum, the sets' sum, the rings */
+    return 8.0 * M * (M + 2) + patches + 40.0 * (double)n + 24.0 * side * side + 4096.0;
 }
 
 int an_dda_check_memory(size_t n, int K, double radius, double have, char *err, size_t errlen)

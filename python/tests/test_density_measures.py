@@ -22,8 +22,6 @@ def rows(path):
 
 @pytest.mark.parametrize("spec", ["ramp:contrast=16,res=256", "array"])
 def test_same_numbers(tmp_path, command, spec):
-    pts = cfpo.sample(1500, density="ramp:contrast=16,res=256", max_iter=8, seed=2)
-    cfpo.save(str(tmp_path / "p.npy"), pts)
     if spec == "array":
         y, x = np.mgrid[0:30, 0:40]
         arg = 1.0 + (x / 39.0) * 5 + (y > 12)
@@ -31,6 +29,8 @@ def test_same_numbers(tmp_path, command, spec):
         spec = "rho.npy"
     else:
         arg = spec
+    pts = cfpo.sample(1500, density=arg, max_iter=8, seed=2)
+    cfpo.save(str(tmp_path / "p.npy"), pts)
     out = command("cfpo-analyze", "--density", spec, "-o", "p.an", "p.npy").stdout
     D = density_line(out)
     m = cfpo.analysis.density(pts, arg)
@@ -49,6 +49,7 @@ def test_same_numbers(tmp_path, command, spec):
     np.testing.assert_allclose(h[:, 1], m.hist / m.hist.sum(), rtol=1e-5, atol=1e-7)
     assert m.capacities.shape == (1500,) and abs(m.capacities.sum() - 1) < 1e-12
     assert m.dda.power.shape == (2 * m.dda.K + 1,) * 2 and m.dda.radius == cfpo.analysis.DDA_RADIUS
+    assert 0.8 < m.dda.peak_freq < 1.3 and m.dda.peak > 1.5 and abs(m.dda.low) < 0.1
 
 
 def test_uniform_reduces():
