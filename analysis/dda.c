@@ -24,11 +24,44 @@
 
 enum { CHUNKS = 32 };
 
+enum { TAB_PER_UNIT = 1024 }; /* kernel table: samples per grid spacing */
+
 typedef struct {
     an_nk k;
     int half, P; /* patch: grid offsets -half..half, side P = 2 half + 1 */
     int wrap;    /* spread into the M x M grid itself */
+    double *tab; /* phi at t = -alpha + j / TAB_PER_UNIT, j = -1 .. w TAB_PER_UNIT + 2 (0 outside), from tab[1] */
 } layout;
+
+/* The table of the kernel (cubic interpolation: error about 1e-12 of its
+ * peak, far below the spreading's own 1e-7). 0, or -1 out of memory. */
+static int table_build(layout *L)
+{
+    const int N = L->k.w * TAB_PER_UNIT;
+    if (!(L->tab = malloc(((size_t)N + 4) * sizeof *L->tab))) return -1;
+    for (int j = -1; j <= N + 2; j++) {
+        const double t = -L->k.alpha + (double)j / TAB_PER_UNIT;
+        L->tab[j + 1] = j < 0 || j > N ? 0.0 : an_nk_at(&L->k, t);
+    }
+    return 0;
+}
+
+/* The w kernel values of a point at grid coordinate u, as an_nk_row, from
+ * the table: the taps are one grid spacing apart, a whole number of table
+ * steps, so they share one set of cubic Lagrange weights. */
+static inline int table_row(const layout *L, double u, double *v)
+{
+    const int l0 = (int)ceil(u - L->k.alpha);
+    const double p = (u - (double)l0 + L->k.alpha) * TAB_PER_UNIT; /* t of tap 0, in table steps from -alpha */
+    const int j = (int)p;
+    const double f = p - j, c0 = -f * (f - 1) * (f - 2) / 6, c1 = (f + 1) * (f - 1) * (f - 2) / 2,
+                 c2 = -(f + 1) * f * (f - 2) / 2, c3 = (f + 1) * f * (f - 1) / 6;
+    for (int a = 0; a < L->k.w; a++) {
+        const double *t = L->tab + (j - a * TAB_PER_UNIT); /* tab[j - 1 + 1 ...]: j - 1 .. j + 2 */
+        v[a] = c0 * t[0] + c1 * t[1] + c2 * t[2] + c3 * t[3];
+    }
+    return l0;
+}
 
 static void plan_layout(layout *L, size_t n, int K, double radius)
 {
@@ -76,7 +109,7 @@ static void spread(const layout *L, double dx, double dy, double c, double *g, s
     double vx[32], vy[32];
     const an_nk *k = &L->k;
     const int M = k->M, w = k->w;
-    const int lx = an_nk_row(k, dx * M, vx), ly = an_nk_row(k, dy * M, vy);
+    const int lx = table_row(L, dx * M, vx), ly = table_row(L, dy * M, vy);
     if (!L->wrap) {
         for (int b = 0; b < w; b++) {
             double *r = g + (size_t)(ly + b + L->half) * stride + (size_t)(lx + L->half);
@@ -218,7 +251,9 @@ int an_dda_compute(const cfpo_density *d, const double *xy, size_t n, int K, dou
     double *grid = fftw_malloc(sizeof(double) * (size_t)M * stride);
     an_cellgrid G = {0};
     int rc = -1;
-    if (!q || !phihat || !grid || (radius > 0 && an_cellgrid_build(xy, n, &G) != 0)) goto oom;
+    L.tab = NULL;
+    if (!q || !phihat || !grid || table_build(&L) != 0 || (radius > 0 && an_cellgrid_build(xy, n, &G) != 0))
+        goto oom;
     size_t m = 0;
     for (size_t i = 0; i < n; i++) {
         const double r = cfpo_density_at(d, xy[2 * i], xy[2 * i + 1]);
@@ -259,6 +294,7 @@ oom:
 out:
     free(q);
     free(phihat);
+    free(L.tab);
     fftw_free(grid);
     an_cellgrid_free(&G);
     return rc;

@@ -196,10 +196,11 @@ void an_density_print(const an_density *a, FILE *f)
     fprintf(f, "DENSITY hash=%016llx contrast=%.4g density_delta_min=%.6f density_delta_avg=%.6f "
                "count_fidelity_rms=%.6f count_fidelity_max=%.6f count_fidelity16_rms=%.6f count_fidelity16_max=%.6f "
                "blocks=%lld off_support=%.1f capacity_deviation=%.6f dda_peak=%.6f dda_peak_freq=%.6f dda_low=%.6f "
-               "dda_aniso_db=%.6f\n",
+               "dda_aniso_db=%.6f capacity_seconds=%.3f dda_seconds=%.3f\n",
             (unsigned long long)a->d.hash, a->d.rho_max / a->d.rho_min, a->dmin / s, a->davg / s, a->fid_rms / s,
             a->fid_max / s, a->fid_rms16 / s, a->fid_max16 / s, (long long)a->blocks, a->off / s,
-            a->cap_sets ? a->cap_dev / a->cap_sets : NAN, a->sum.peak, a->sum.peak_freq, a->sum.low, a->sum.aniso_db);
+            a->cap_sets ? a->cap_dev / a->cap_sets : NAN, a->sum.peak, a->sum.peak_freq, a->sum.low, a->sum.aniso_db,
+            a->cap_seconds, a->dda_seconds);
 }
 
 void an_density_free(an_density *a)

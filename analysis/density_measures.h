@@ -60,7 +60,7 @@ typedef struct {
     double *dda;                 /* the sets' spectra summed, then (an_density_finish) their mean */
     size_t n;                    /* for the summary: the (mean) number of points */
     an_dda_summary sum;
-    double cap_seconds, dda_seconds;
+    double cap_seconds, dda_seconds; /* the capacities' integrals (not the triangulation), the spectra */
 } an_density;
 
 int an_density_begin(an_density *a, const char *spec, char *err, size_t errlen);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "capacity.h"
+#include "cli.h"
 #include "delaunay.h"
 #include "density_measures.h"
 #include "power.h"
@@ -82,6 +83,11 @@ PyObject *core_density_measures(PyObject *self, PyObject *args)
     }
     char err[1024];
     int rc;
+    if (an_dda_check_memory(n, K, AN_DDA_RADIUS, cli_physical_memory(), err, sizeof err) != 0) {
+        Py_DECREF(pts);
+        work_free(&w);
+        return PyErr_Format(PyExc_MemoryError, "%s", err);
+    }
     Py_BEGIN_ALLOW_THREADS
     rc = compute(&w, (const double *)PyArray_DATA(pts), n, K, err, sizeof err);
     Py_END_ALLOW_THREADS
