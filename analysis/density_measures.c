@@ -7,10 +7,14 @@
 
 #include "cli.h"
 #include "dens_measure.h"
+#include "power.h"
+#include "report.h"
 
 int an_density_begin(an_density *a, const char *spec, char *err, size_t errlen)
 {
     memset(a, 0, sizeof *a);
+    a->radius = AN_DDA_RADIUS;
+    a->sum = (an_dda_summary){.peak = NAN, .peak_freq = NAN, .low = NAN, .aniso_db = NAN};
     return cfpo_density_load(spec, &a->d, err, errlen);
 }
 
@@ -67,7 +71,53 @@ int an_density_fidelity_min(const cfpo_density *d, const double *xy, size_t n, i
     return 0;
 }
 
-int an_density_add(an_density *a, const double *xy, size_t n, char *err, size_t errlen)
+/* The capacity deviation and the spectrum of one set. */
+static int add_structure(an_density *a, const double *xy, size_t n, const an_vcells *cells, int K, char *err,
+                         size_t errlen)
+{
+    double t0 = cli_now();
+    if (cells && cells->n == n) {
+        double *cap = malloc(n * sizeof *cap), s = 0;
+        if (!cap || an_capacity_compute(&a->d, cells, cap) != 0) {
+            free(cap);
+            snprintf(err, errlen, "out of memory for the capacities");
+            return -1;
+        }
+        for (size_t i = 0; i < n; i++) s += cap[i];
+        a->cap_dev += an_capacity_deviation(cap, n);
+        a->cap_sets++;
+        if (fabs(s - 1) > a->cap_sum_err) a->cap_sum_err = fabs(s - 1);
+        free(cap);
+    }
+    double t1 = cli_now();
+    a->cap_seconds += t1 - t0;
+    if (!a->dda) {
+        a->K = K;
+        if (!(a->dda = calloc(an_side(K) * an_side(K), sizeof *a->dda))) {
+            snprintf(err, errlen, "out of memory for the differential-domain spectrum");
+            return -1;
+        }
+    }
+    const size_t N = an_side(a->K) * an_side(a->K);
+    double *S = malloc(N * sizeof *S);
+    an_dda_info info;
+    if (!S) {
+        snprintf(err, errlen, "out of memory for the differential-domain spectrum");
+        return -1;
+    }
+    if (an_dda_compute(&a->d, xy, n, a->K, a->radius, S, &info, err, errlen) != 0) {
+        free(S);
+        return -1;
+    }
+    for (size_t t = 0; t < N; t++) a->dda[t] += S[t];
+    a->pairs += info.pairs;
+    free(S);
+    a->dda_seconds += cli_now() - t1;
+    return 0;
+}
+
+int an_density_add(an_density *a, const double *xy, size_t n, const an_vcells *cells, int K, char *err,
+                   size_t errlen)
 {
     double *m = malloc(n * sizeof *m), dmin, davg, rms, mx, rms16, mx16;
     size_t off;
@@ -94,7 +144,24 @@ int an_density_add(an_density *a, const double *xy, size_t n, char *err, size_t 
     a->fid_max16 += mx16;
     a->off += (double)off;
     a->blocks = B;
-    return 0;
+    return add_structure(a, xy, n, cells, K, err, errlen);
+}
+
+int an_density_finish(an_density *a, size_t n)
+{
+    a->n = n;
+    if (!a->dda || a->sets < 1) return 0;
+    const size_t N = an_side(a->K) * an_side(a->K);
+    for (size_t t = 0; t < N; t++) a->dda[t] /= a->sets;
+    return an_dda_summarise(a->dda, a->K, n, &a->sum);
+}
+
+int an_density_write_dda(const an_density *a, const char *raps_path, const char *spectrum_path, char *err,
+                         size_t errlen)
+{
+    if (!a->dda) return 0;
+    if (an_dda_write_raps(raps_path, a->dda, a->K, a->n, a->sets, a->radius, err, errlen) != 0) return -1;
+    return an_write_spectrum(spectrum_path, a->dda, a->K, err, errlen);
 }
 
 int an_density_write(const an_density *a, const char *path, char *err, size_t errlen)
@@ -111,6 +178,12 @@ int an_density_write(const an_density *a, const char *path, char *err, size_t er
     fprintf(f.f, "# count fidelity over %lld x %lld blocks: rms %.6f max %.6f (blocks expecting 16 or more points: "
             "rms %.6f max %.6f); off support %.1f points\n", (long long)a->blocks, (long long)a->blocks,
             a->fid_rms / s, a->fid_max / s, a->fid_rms16 / s, a->fid_max16 / s, a->off / s);
+    fprintf(f.f, "# capacity deviation (std / mean of the density's integral over each Voronoi cell) %.6f over %d "
+            "sets; largest |sum of capacities - 1| %.3g\n", a->cap_sets ? a->cap_dev / a->cap_sets : NAN,
+            a->cap_sets, a->cap_sum_err);
+    fprintf(f.f, "# differential-domain spectrum (window R = %g local spacings, %.0f pairs a set): peak %.6f at "
+            "|k| / sqrt(n) = %.4f, low-frequency mean %.6f, anisotropy %.3f dB (dda_raps.txt, dda_spectrum.txt)\n",
+            a->radius, a->pairs / s, a->sum.peak, a->sum.peak_freq, a->sum.low, a->sum.aniso_db);
     fprintf(f.f, "# nearest-neighbour measure histogram: bin centre, fraction of points\n");
     for (int b = 0; b < AN_DENS_BINS; b++)
         fprintf(f.f, "%.3f %.6g\n", (b + 0.5) * AN_DENS_BIN, tot ? (double)a->hist[b] / (double)tot : 0.0);
@@ -122,9 +195,17 @@ void an_density_print(const an_density *a, FILE *f)
     const double s = a->sets > 0 ? a->sets : 1;
     fprintf(f, "DENSITY hash=%016llx contrast=%.4g density_delta_min=%.6f density_delta_avg=%.6f "
                "count_fidelity_rms=%.6f count_fidelity_max=%.6f count_fidelity16_rms=%.6f count_fidelity16_max=%.6f "
-               "blocks=%lld off_support=%.1f\n",
+               "blocks=%lld off_support=%.1f capacity_deviation=%.6f dda_peak=%.6f dda_peak_freq=%.6f dda_low=%.6f "
+               "dda_aniso_db=%.6f capacity_seconds=%.3f dda_seconds=%.3f\n",
             (unsigned long long)a->d.hash, a->d.rho_max / a->d.rho_min, a->dmin / s, a->davg / s, a->fid_rms / s,
-            a->fid_max / s, a->fid_rms16 / s, a->fid_max16 / s, (long long)a->blocks, a->off / s);
+            a->fid_max / s, a->fid_rms16 / s, a->fid_max16 / s, (long long)a->blocks, a->off / s,
+            a->cap_sets ? a->cap_dev / a->cap_sets : NAN, a->sum.peak, a->sum.peak_freq, a->sum.low, a->sum.aniso_db,
+            a->cap_seconds, a->dda_seconds);
 }
 
-void an_density_free(an_density *a) { cfpo_density_free(&a->d); }
+void an_density_free(an_density *a)
+{
+    cfpo_density_free(&a->d);
+    free(a->dda);
+    a->dda = NULL;
+}

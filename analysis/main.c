@@ -77,7 +77,9 @@ static void usage(void)
            "                       integrands (default %d; 0: none)\n"
            "      --no-delaunay    psi6, Voronoi area variance and mesh ratio are skipped\n"
            "      --density SPEC   also the measures under a density (cfpo's --density\n"
-           "                       SPEC): DENSITY line, density.txt\n"
+           "                       SPEC), capacity deviation and the differential-domain\n"
+           "                       spectrum among them: DENSITY line, density.txt,\n"
+           "                       dda_raps.txt, dda_spectrum.txt\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "  -q, --quiet          no progress line\n"
            "  -h, --help           this help\n"
@@ -217,6 +219,8 @@ typedef struct {
     an_nufft_info nufft;
     double check_maxdiff, spectrum_seconds;
     an_density dens;
+    an_vcells cells; /* this set's Voronoi cells (--density) */
+    int have_cells;
 } run;
 
 static run R;
@@ -265,12 +269,14 @@ static void start(const char *file, size_t n)
         R.disc = malloc((size_t)R.opt.nfiles * sizeof *R.disc);
         if (!R.disc) fail("out of memory");
     }
-    if (!R.opt.no_delaunay) {
+    if (R.opt.density && an_dda_check_memory(n, R.K, AN_DDA_RADIUS, cli_physical_memory(), err, sizeof err) != 0)
+        fail("%s: %s", file, err);
+    if (!R.opt.no_delaunay || R.opt.density) {
         const double need = an_delaunay_bytes(n), have = cli_physical_memory();
         if (need > 0.9 * have)
             fail("%s: n = %zu is too large for memory: the Delaunay triangulation needs %.1f GB, this machine "
                  "has %.1f GB (--no-delaunay skips it)", file, n, need / 1e9, have / 1e9);
-        R.dt = malloc((size_t)R.opt.nfiles * sizeof *R.dt);
+        if (!R.opt.no_delaunay) R.dt = malloc((size_t)R.opt.nfiles * sizeof *R.dt);
     }
     if (R.opt.integ) R.integ = malloc((size_t)R.opt.nfiles * sizeof *R.integ);
     R.pcf_bins = an_pcf_bins(n, R.opt.pcf_sigma, R.opt.pcf_rmax);
@@ -346,11 +352,13 @@ static void structure(const char *file, const double *xy, size_t n)
         for (int b = 0; b < R.pcf_bins; b++) R.pcf[b] += R.pcf_set[b];
         R.pcf_seconds += cli_now() - t0;
     }
-    if (R.dt) {
+    if (R.dt || R.opt.density) { /* with --density, the Voronoi cells too (capacities) */
         cli_progress_line(&R.progress, 1, "set %d/%d: Delaunay", R.set + 1, R.opt.nfiles);
         const double t0 = cli_now();
-        if (an_delaunay_compute(xy, n, &R.dt[R.set], err, sizeof err) != 0) /* undefined for this set */
-            R.dt[R.set] = (an_delaunay){NAN, NAN, NAN, NAN, NAN};
+        an_delaunay dt;
+        const int bad = an_delaunay_compute_cells(xy, n, &dt, R.opt.density ? &R.cells : NULL, err, sizeof err);
+        R.have_cells = !bad && R.opt.density;
+        if (R.dt) R.dt[R.set] = bad ? (an_delaunay){NAN, NAN, NAN, NAN, NAN} : dt; /* undefined for this set */
         R.dt_seconds += cli_now() - t0;
     }
     if (R.integ) {
@@ -391,7 +399,13 @@ static void analyze_set(const char *file)
     if (R.disc) discrepancies(file, xy, n);
     structure(file, xy, n);
     if (R.opt.certify) certificate(file, xy, n);
-    if (R.opt.density && n >= 2 && an_density_add(&R.dens, xy, n, err, sizeof err) != 0) fail("%s: %s", file, err);
+    if (R.opt.density && n >= 2) {
+        cli_progress_line(&R.progress, 1, "set %d/%d: density measures", R.set + 1, R.opt.nfiles);
+        if (an_density_add(&R.dens, xy, n, R.have_cells ? &R.cells : NULL, R.K, err, sizeof err) != 0)
+            fail("%s: %s", file, err);
+    }
+    an_vcells_free(&R.cells);
+    R.have_cells = 0;
     free(xy);
 }
 
@@ -416,7 +430,13 @@ static void write_outputs(const an_report *rep, const an_measures *m)
     WRITE("stats.json", an_write_json(p, rep, err, sizeof err));
     WRITE("pcf.txt", an_measures_write_pcf(p, m, err, sizeof err));
     WRITE("pcf.gp", an_measures_write_pcf_plot(p, m, err, sizeof err));
-    if (R.opt.density) WRITE("density.txt", an_density_write(&R.dens, p, err, sizeof err));
+    if (R.opt.density) {
+        WRITE("density.txt", an_density_write(&R.dens, p, err, sizeof err));
+        char *q = an_outdir_file(&R.out, "dda_spectrum.txt");
+        if (!q) fail("out of memory");
+        WRITE("dda_raps.txt", an_density_write_dda(&R.dens, p, q, err, sizeof err));
+        free(q);
+    }
 #undef WRITE
 }
 
@@ -478,6 +498,7 @@ int main(int argc, char **argv)
         .spectrum_seconds = R.spectrum_seconds, .out = outname,
         .summary_extra = msum, .json_extra = mjson};
     rep.seconds = cli_now() - t0;
+    if (R.opt.density && an_density_finish(&R.dens, R.n) != 0) fail("out of memory");
     write_outputs(&rep, &measures);
     char err[1024];
     if (an_outdir_commit(&R.out, err, sizeof err) != 0) {

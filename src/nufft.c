@@ -18,8 +18,7 @@
 
 static pthread_mutex_t planner = PTHREAD_MUTEX_INITIALIZER;
 
-/* Smallest even m' >= m whose only prime factors are 2, 3, 5, 7. */
-static int fft_size(int m)
+int cfpo_nufft_fft_size(int m)
 {
     for (;; m++) {
         if (m & 1) continue;
@@ -144,7 +143,7 @@ int cfpo_nufft_init(cfpo_nufft *U, int K, int w, int types, int threads, char *e
     }
     int M = 2 * (2 * K + 1);
     if (M < 2 * w) M = 2 * w;
-    U->M = M = fft_size(M);
+    U->M = M = cfpo_nufft_fft_size(M);
     U->K = K;
     U->w = w;
     U->alpha = 0.5 * w;

@@ -70,6 +70,11 @@ typedef struct {
  * on `threads` threads (0: OpenMP's default). 0; -1 with a message (bad
  * request, out of memory, FFTW could not plan). */
 int cfpo_nufft_init(cfpo_nufft *U, int K, int w, int types, int threads, char *err, size_t errlen);
+
+/* The smallest even m' >= m whose only prime factors are 2, 3, 5, 7 (the
+ * FFT sizes the grid takes; also the analysis' differential-domain
+ * spectrum's). */
+int cfpo_nufft_fft_size(int m);
 void cfpo_nufft_free(cfpo_nufft *U);
 
 /* The fixed-point scale exponent s for sets of `total` points. */

@@ -3,7 +3,9 @@
  * does not depend on CGAL's iteration order. */
 #include "cgal_types.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <complex>
 #include <cstdio>
 #include <new>
@@ -23,7 +25,7 @@ struct Site {
     unsigned deg = 0;
 };
 
-int measure(const double *xy, size_t n, an_delaunay *out, char *err, size_t errlen)
+int measure(const double *xy, size_t n, an_delaunay *out, an_vcells *cells, char *err, size_t errlen)
 {
     PDT T;
     std::vector<double> pts(xy, xy + 2 * n);
@@ -63,7 +65,11 @@ int measure(const double *xy, size_t n, an_delaunay *out, char *err, size_t errl
         }
     }
     std::vector<Site> site(n);
+    std::vector<double> cv; /* the Voronoi vertices, site by site (cells) */
+    std::vector<size_t> cstart;
+    if (cells) cv.reserve(14 * n), cstart.reserve(n + 1);
     for (size_t id = 0; id < n; id++) {
+        if (cells) cstart.push_back(cv.size() / 2);
         const Vertex_handle v = vh[id];
         auto fc = T.incident_faces(v), done = fc;
         std::complex<double> z = 0;
@@ -80,6 +86,7 @@ int measure(const double *xy, size_t n, an_delaunay *out, char *err, size_t errl
             z += w2 * w2 * w2;
             /* Voronoi vertex relative to the site */
             const double ux = f->info().cx - p.x(), uy = f->info().cy - p.y();
+            if (cells) cv.push_back(xy[2 * id] + ux), cv.push_back(xy[2 * id + 1] + uy);
             if (deg == 0) { ux0 = ux; uy0 = uy; }
             else area += upx * uy - upy * ux;
             upx = ux;
@@ -87,6 +94,13 @@ int measure(const double *xy, size_t n, an_delaunay *out, char *err, size_t errl
             deg++;
         } while (++fc != done);
         area += upx * uy0 - upy * ux0;
+        if (cells && area < 0) { /* counter-clockwise */
+            const size_t b = cstart.back();
+            for (size_t a = b, c = cv.size() / 2 - 1; a < c; a++, c--) {
+                std::swap(cv[2 * a], cv[2 * c]);
+                std::swap(cv[2 * a + 1], cv[2 * c + 1]);
+            }
+        }
         site[id].z = std::abs(z);
         site[id].area = 0.5 * std::fabs(area);
         site[id].deg = deg;
@@ -103,6 +117,18 @@ int measure(const double *xy, size_t n, an_delaunay *out, char *err, size_t errl
     out->covering = std::sqrt(r2max);
     out->delta_min = std::sqrt(e2min);
     out->mesh_ratio = 2.0 * out->covering / out->delta_min;
+    if (cells) {
+        cstart.push_back(cv.size() / 2);
+        cells->start = static_cast<size_t *>(std::malloc(cstart.size() * sizeof(size_t)));
+        cells->v = static_cast<double *>(std::malloc(std::max<size_t>(cv.size(), 1) * sizeof(double)));
+        if (!cells->start || !cells->v) {
+            an_vcells_free(cells);
+            throw std::bad_alloc();
+        }
+        std::copy(cstart.begin(), cstart.end(), cells->start);
+        std::copy(cv.begin(), cv.end(), cells->v);
+        cells->n = n;
+    }
     return 0;
 }
 
@@ -110,12 +136,19 @@ int measure(const double *xy, size_t n, an_delaunay *out, char *err, size_t errl
 
 extern "C" int an_delaunay_compute(const double *xy, size_t n, an_delaunay *out, char *err, size_t errlen)
 {
+    return an_delaunay_compute_cells(xy, n, out, nullptr, err, errlen);
+}
+
+extern "C" int an_delaunay_compute_cells(const double *xy, size_t n, an_delaunay *out, an_vcells *cells, char *err,
+                                         size_t errlen)
+{
+    if (cells) *cells = an_vcells{};
     if (n < 1 || n >= ((size_t)1 << 32)) {
         std::snprintf(err, errlen, "bad n = %zu for the Delaunay measures", n);
         return -1;
     }
     try {
-        return measure(xy, n, out, err, errlen);
+        return measure(xy, n, out, cells, err, errlen);
     } catch (const std::bad_alloc &) {
         std::snprintf(err, errlen, "out of memory for the Delaunay triangulation of %zu points", n);
         return -1;

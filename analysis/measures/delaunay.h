@@ -20,11 +20,14 @@
  *               2 h / delta_min; 2 / sqrt(3) on the hexagonal lattice, the
  *               least any set can have.
  * The Voronoi cells and the circumcentres are computed in double from the
- * exact triangulation. */
+ * exact triangulation; the cells themselves (capacity.h) on request, for
+ * the capacities under a density. */
 #ifndef AN_DELAUNAY_H
 #define AN_DELAUNAY_H
 
 #include <stddef.h>
+
+#include "capacity.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -41,6 +44,11 @@ double an_delaunay_bytes(size_t n);
  * are not distinct or too few or too clustered for a triangulation of the
  * torus itself (CGAL's 1-sheeted cover), or out of memory. */
 int an_delaunay_compute(const double *xy, size_t n, an_delaunay *out, char *err, size_t errlen);
+
+/* The same, and each point's Voronoi cell into cells (an_vcells_free
+ * frees it; left empty on failure). */
+int an_delaunay_compute_cells(const double *xy, size_t n, an_delaunay *out, an_vcells *cells, char *err,
+                              size_t errlen);
 
 #ifdef __cplusplus
 }

@@ -67,13 +67,7 @@ def _density_arg(density, variant):
     """density= as the C layer takes it: a SPEC string, or a 2-D float64 array (row = y)."""
     if variant != "adaptive":
         raise ValueError("variant does not go with density (the density run has one variant)")
-    if isinstance(density, (str, bytes)) or hasattr(density, "__fspath__"):
-        import os
-        return os.fsdecode(density)
-    a = np.ascontiguousarray(density, dtype=np.float64)
-    if a.ndim != 2:
-        raise ValueError(f"density: expected a SPEC string or a 2-D array, got an array of {a.ndim} dimensions")
-    return a
+    return _args.density(density)
 
 
 def _call(want_trace, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,

@@ -132,3 +132,16 @@ def as_points(points, name="points", min_n=1):
         i = int(np.argwhere(~inside)[0][0])
         raise ValueError(f"{name}: point {i} ({float(a[i, 0])!r}, {float(a[i, 1])!r}) is outside [0,1)^2")
     return a
+
+
+def density(v):
+    """A density as the C layer takes it: a SPEC string (or a path), or a
+    2-D float64 array (row = y)."""
+    if v is None:
+        raise ValueError("density: required: a SPEC string (as cfpo --density SPEC) or a 2-D array")
+    if isinstance(v, (str, bytes)) or hasattr(v, "__fspath__"):
+        return os.fsdecode(v)
+    a = np.ascontiguousarray(v, dtype=np.float64)
+    if a.ndim != 2:
+        raise ValueError(f"density: expected a SPEC string or a 2-D array, got an array of {a.ndim} dimensions")
+    return a

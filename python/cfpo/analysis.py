@@ -232,3 +232,84 @@ def certify(points, tol=CERT_TOL):
     passed = (flags & 1) != 0
     lct = (flags & 6) == 6
     return Certificate(summary["fpd"], passed, lct, viol, target, summary)
+
+
+DDA_RADIUS = 8.0  # analysis/dda.h AN_DDA_RADIUS (local spacings)
+
+
+@dataclass
+class DDASpectrum:
+    """The differential-domain spectrum of Wei and Wang (2011) with the
+    symmetric normalisation (analysis/README.md): pair differences scaled
+    by Delta(n) / sqrt(r_i r_j), r = Delta(n) / sqrt(rho) the local
+    spacing, summed under a window of radius `radius` local spacings, the
+    window's own transform taken off. power[ky + K, kx + K] at the integer
+    k of [-K, K]^2 (1 at high frequencies; the periodogram, smoothed, when
+    rho = 1); ring_count, raps, anisotropy_db per ring 0..K (raps[0]
+    unused); peak, peak_ring, peak_freq (ring / sqrt(n)): the highest ring
+    mean; low: the mean over 0 < |k| <= 0.2 sqrt(n); anisotropy_mean_db:
+    the mean anisotropy over the rings 0.5..2 sqrt(n); pairs: the pairs
+    inside the window. cfpo-analyze's dda_raps.txt, dda_spectrum.txt and
+    DENSITY line for one set."""
+    K: int
+    radius: float
+    pairs: float
+    power: np.ndarray = field(repr=False)
+    ring_count: np.ndarray = field(repr=False)
+    raps: np.ndarray = field(repr=False)
+    anisotropy_db: np.ndarray = field(repr=False)
+    peak: float = math.nan
+    peak_ring: int = 0
+    peak_freq: float = math.nan
+    low: float = math.nan
+    anisotropy_mean_db: float = math.nan
+
+
+@dataclass
+class DensityMeasures:
+    """How a set follows a density (cfpo-analyze --density SPEC, one set;
+    analysis/README.md): delta_min, delta_avg in the symmetric measure
+    |x_i - x_j| / sqrt(r_i r_j); hist: counts of each point's smallest
+    measure in 100 bins of 0.02 (density.txt); count_fidelity_rms/max over
+    blocks (count_fidelity16_*: the blocks expecting 16 or more points),
+    blocks a side; off_support: points where rho = 0;
+    capacity_deviation: std / mean of the capacities, each point's exact
+    integral of rho (mean 1) over its Voronoi cell (capacities; None and
+    nan when the set has no Delaunay triangulation of the torus);
+    capacity_sum_error: |sum of capacities - 1|; dda: DDASpectrum."""
+    delta_min: float
+    delta_avg: float
+    hist: np.ndarray = field(repr=False)
+    count_fidelity_rms: float = math.nan
+    count_fidelity_max: float = math.nan
+    count_fidelity16_rms: float = math.nan
+    count_fidelity16_max: float = math.nan
+    blocks: int = 0
+    off_support: float = 0.0
+    capacity_deviation: float = math.nan
+    capacities: np.ndarray = field(default=None, repr=False)
+    capacity_sum_error: float = math.nan
+    dda: DDASpectrum = None
+
+
+def density(points, density, K=None):
+    """The measures of a set of at least 2 points under a density
+    (DensityMeasures): cfpo-analyze --density SPEC's numbers for one set.
+
+    density: a SPEC string as cfpo --density takes it, or a 2-D array of
+    non-negative values (row = y); K: the differential-domain spectrum's
+    frequencies [-K, K]^2 (default default_K(n), at most 4096). ValueError
+    with the command's wording for a bad density, or when no point lies
+    where the density is above 0; MemoryError when out of memory.
+    """
+    a = _args.as_points(points, min_n=2)
+    K = default_K(a.shape[0]) if K is None else _args.whole("K", K, 1, KMAX)
+    d = _args.density(density)
+    r = _core.density_measures(a, d, K)
+    dda = DDASpectrum(r["K"], r["radius"], r["pairs"], r["power"], r["ring_count"], r["raps"],
+                      r["anisotropy_db"], r["peak"], r["peak_ring"], r["peak_freq"], r["low"],
+                      r["anisotropy_mean_db"])
+    return DensityMeasures(r["delta_min"], r["delta_avg"], r["hist"].astype(np.int64), r["count_fidelity_rms"],
+                           r["count_fidelity_max"], r["count_fidelity16_rms"], r["count_fidelity16_max"],
+                           r["blocks"], r["off_support"], r["capacity_deviation"], r["capacities"],
+                           r["capacity_sum_error"], dda)

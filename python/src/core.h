@@ -97,6 +97,7 @@ PyObject *core_discrepancy(PyObject *self, PyObject *args);
 PyObject *core_lowfreq(PyObject *self, PyObject *args);
 PyObject *core_pcf(PyObject *self, PyObject *args);
 PyObject *core_delaunay(PyObject *self, PyObject *args);
+PyObject *core_density_measures(PyObject *self, PyObject *args);
 PyObject *core_integration(PyObject *self, PyObject *args);
 PyObject *core_poisson(PyObject *self, PyObject *args);
 /* core_density.c: density= (None, a SPEC string or a 2-D array) into *d;

@@ -2,7 +2,8 @@
  * the way `cfpo --density` runs it (src/main_density.c: the density from
  * a SPEC string or a 2-D array, the same default tolerance, start, checks
  * and points in id order), with the per-iteration callback of
- * core_sample.c. */
+ * core_sample.c; and the density of a SPEC string or an array
+ * (core_density_in), which the density measures share. */
 #include "core.h"
 
 #include <string.h>

@@ -80,6 +80,8 @@ static PyMethodDef methods[] = {
     {"lowfreq", core_lowfreq, METH_VARARGS, "Low-frequency measures and shift variances of a periodogram."},
     {"pcf", core_pcf, METH_VARARGS, "Pair correlation g(r) (see cfpo.analysis.pcf)."},
     {"delaunay", core_delaunay, METH_VARARGS, "psi6, Voronoi area variance, mesh ratio (see cfpo.analysis.structure)."},
+    {"density_measures", core_density_measures, METH_VARARGS,
+     "The measures under a density (see cfpo.analysis.density)."},
     {"integration", core_integration, METH_VARARGS, "UTK's integration test (see cfpo.analysis.integration)."},
     {"poisson", core_poisson, METH_VARARGS, "Poisson-disk baselines (see cfpo.baselines)."},
     {"iterative", core_iterative, METH_VARARGS, "Iterative baselines (see cfpo.baselines)."},
