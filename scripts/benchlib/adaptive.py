@@ -1,7 +1,7 @@
 """adaptive - the adaptive (density) part of `make bench`: every method that
 takes `--density` (cfpo, and each baseline whose --help names the option)
-on the test densities and the shipped image (data/astronaut-256.png, see
-data/README.md), at the profile's ad_n points, ad_seeds seeds, iterative
+but those of the profile's ad_skip, on the test densities and the shipped
+image (data/astronaut-256.png, see data/README.md), at the profile's ad_n points, ad_seeds seeds, iterative
 methods stopped after ad_maxiter iterations at most; each set analysed by
 `cfpo-analyze --no-discrepancy --density SPEC` (analysis/README.md,
 "Measures under a density"). Writes adaptive.csv (one row per run: the run's
@@ -54,7 +54,7 @@ def run(bench, p):
     if not n:
         return
     W = bench.work
-    ms = methods(bench.B, bench.meth)
+    ms = [m for m in methods(bench.B, bench.meth) if m[0] not in p.get("ad_skip", [])]
     total = len(DENSITIES) * len(ms) * p["ad_seeds"]
     rows, cols, k = [], list(RUN_FIELDS), 0
     for dk, spec, _ in DENSITIES:
