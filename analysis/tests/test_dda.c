@@ -28,6 +28,7 @@
 #include "power.h"
 #include "rings.h"
 #include "testsets.h"
+#include "testdensity.h"
 
 static int fails = 0;
 #define CHECK(c, ...)                                                    \
@@ -35,15 +36,6 @@ static int fails = 0;
         if (!(c)) { fails++; printf("FAIL %s:%d: ", __FILE__, __LINE__); \
                     printf(__VA_ARGS__); printf("\n"); }                 \
     } while (0)
-
-static void density_of(cfpo_density *d, int w, int h, uint64_t seed)
-{
-    double *v = malloc((size_t)(w * h) * sizeof *v);
-    for (int i = 0; i < w * h; i++) v[i] = 0.05 + ts_u(&seed);
-    char err[256];
-    if (cfpo_density_from_values(v, w, h, "test", d, err, sizeof err) != 0) { printf("%s\n", err); exit(1); }
-    free(v);
-}
 
 /* The definition summed directly: every ordered pair (i != j) of points on
  * the support, weight W (b = R Delta; b = 0: W = 1), minus m What. */
@@ -92,7 +84,7 @@ static double maxdiff(const double *a, const double *b, int K)
 static void test_periodogram(void)
 {
     cfpo_density d;
-    density_of(&d, 1, 1, 1);
+    test_density_random(&d, 1, 1, 1);
     const size_t n = 300;
     const int K = 20;
     double *xy = ts_uniform(n, 5), *S = malloc(an_side(K) * an_side(K) * sizeof *S),
@@ -111,7 +103,7 @@ static void test_periodogram(void)
 static void test_brute(double radius, size_t n, int K, uint64_t seed)
 {
     cfpo_density d;
-    density_of(&d, 5, 7, seed);
+    test_density_random(&d, 5, 7, seed);
     double *xy = ts_uniform(n, seed + 1), *S = malloc(an_side(K) * an_side(K) * sizeof *S),
            *B = malloc(an_side(K) * an_side(K) * sizeof *B);
     char err[256];
@@ -166,7 +158,7 @@ static void bands(const double *P, int K, size_t n, double *out, int nb)
 static void test_raps(void)
 {
     cfpo_density d;
-    density_of(&d, 1, 1, 1);
+    test_density_random(&d, 1, 1, 1);
     size_t n;
     double *xy = ts_dart(0.75 * cfpo_delta_bound(2500), 60000, 11, &n);
     const int K = (int)ceil(3 * sqrt((double)n));
@@ -198,7 +190,7 @@ static void test_raps(void)
 static void test_threads(void)
 {
     cfpo_density d;
-    density_of(&d, 16, 16, 3);
+    test_density_random(&d, 16, 16, 3);
     const size_t n = 3000;
     const int K = 60;
     double *xy = ts_uniform(n, 9), *S1 = malloc(an_side(K) * an_side(K) * sizeof *S1),

@@ -20,6 +20,7 @@
 #include "density.h"
 #include "geom.h"
 #include "sets.h"
+#include "testdensity.h"
 
 static int fails = 0;
 #define CHECK(c, ...)                                                    \
@@ -27,15 +28,6 @@ static int fails = 0;
         if (!(c)) { fails++; printf("FAIL %s:%d: ", __FILE__, __LINE__); \
                     printf(__VA_ARGS__); printf("\n"); }                 \
     } while (0)
-
-static void density_of(cfpo_density *d, int w, int h, uint64_t seed)
-{
-    double *v = malloc((size_t)(w * h) * sizeof *v);
-    for (int i = 0; i < w * h; i++) v[i] = 0.05 + cfpo_rand01(seed, 7, (uint64_t)i);
-    char err[256];
-    if (cfpo_density_from_values(v, w, h, "test", d, err, sizeof err) != 0) { printf("%s\n", err); exit(1); }
-    free(v);
-}
 
 static double wrapped_rho(const cfpo_density *d, double x, double y)
 {
@@ -45,7 +37,7 @@ static double wrapped_rho(const cfpo_density *d, double x, double y)
 static void test_polygons(void)
 {
     cfpo_density d;
-    density_of(&d, 7, 5, 1);
+    test_density_random(&d, 7, 5, 1);
     /* rectangle [0.13, 0.71] x [0.22, 0.9]: sum of overlaps */
     const double x0 = 0.13, x1 = 0.71, y0 = 0.22, y1 = 0.9, rect[8] = {x0, y0, x1, y0, x1, y1, x0, y1};
     double want = 0;
@@ -98,7 +90,7 @@ static double *capacities(const cfpo_density *d, const double *xy, size_t n, an_
 static void test_tiling(void)
 {
     cfpo_density d;
-    density_of(&d, 64, 48, 2);
+    test_density_random(&d, 64, 48, 2);
     double xy[2 * 4096];
     for (int k = 0; k < 2; k++) {
         const size_t n = k ? 4096 : 1000;
@@ -136,7 +128,7 @@ static void test_uniform(void)
 static void test_brute(void)
 {
     cfpo_density d;
-    density_of(&d, 8, 6, 6);
+    test_density_random(&d, 8, 6, 6);
     enum { n = 60, N = 2000 };
     double xy[2 * n], bf[n] = {0};
     set_white(xy, n, 7);
