@@ -29,13 +29,9 @@
 #include "rings.h"
 #include "testsets.h"
 #include "testdensity.h"
+#include "testutil.h"
 
-static int fails = 0;
-#define CHECK(c, ...)                                                    \
-    do {                                                                 \
-        if (!(c)) { fails++; printf("FAIL %s:%d: ", __FILE__, __LINE__); \
-                    printf(__VA_ARGS__); printf("\n"); }                 \
-    } while (0)
+static int passed_, failed_;
 
 /* The definition summed directly: every ordered pair (i != j) of points on
  * the support, weight W (b = R Delta; b = 0: W = 1), minus m What. */
@@ -238,7 +234,5 @@ int main(void)
     test_raps();
     test_threads();
     test_refusals();
-    if (fails) printf("%d failed\n", fails);
-    else printf("test_dda: all passed\n");
-    return fails != 0;
+    return test_report(passed_, failed_);
 }

@@ -21,13 +21,9 @@
 #include "geom.h"
 #include "sets.h"
 #include "testdensity.h"
+#include "testutil.h"
 
-static int fails = 0;
-#define CHECK(c, ...)                                                    \
-    do {                                                                 \
-        if (!(c)) { fails++; printf("FAIL %s:%d: ", __FILE__, __LINE__); \
-                    printf(__VA_ARGS__); printf("\n"); }                 \
-    } while (0)
+static int passed_, failed_;
 
 static double wrapped_rho(const cfpo_density *d, double x, double y)
 {
@@ -77,8 +73,7 @@ static double *capacities(const cfpo_density *d, const double *xy, size_t n, an_
     an_vcells c;
     char err[256];
     if (an_delaunay_compute_cells(xy, n, dt, &c, err, sizeof err) != 0) {
-        printf("FAIL: %s\n", err);
-        fails++;
+        CHECK(0, "%s", err);
         return NULL;
     }
     double *cap = malloc(n * sizeof *cap);
@@ -159,7 +154,5 @@ int main(void)
     test_tiling();
     test_uniform();
     test_brute();
-    if (fails) printf("%d failed\n", fails);
-    else printf("test_capacity: all passed\n");
-    return fails != 0;
+    return test_report(passed_, failed_);
 }
