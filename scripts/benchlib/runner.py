@@ -464,7 +464,8 @@ class Bench:
         crop = int(3 * math.sqrt(n) + 0.999)
         K = math.ceil(6 * math.sqrt(n))
         groups = [(f"evolution-it{it}", "evolution", "cfpo", str(it)) for it in p["evo_iters"]]
-        groups += [(f"comparison-{k}", "comparison", k, "-") for k in self.meth.keys("pd", "iter", "cfpo")]
+        groups += [(f"comparison-{k}", "comparison", k, "-") for k in self.meth.keys("pd", "iter", "cfpo")
+                   if P.comp_sets(p, k) > 0]  # a profile may leave a method out of the comparison (seeds)
         cells = [r.split(",") for r in rows]
         out = [SPECTRA_COLUMNS]
         for g, (grp, exp, key, it) in enumerate(groups, 1):
