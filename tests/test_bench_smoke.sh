@@ -292,6 +292,14 @@ bads=$(cs=$(sp comp_sets); for k in $(methods_keys pd iter cfpo); do c=$(grep -E
   i=$(grep -Ec "^integration $k +n=4096 " "$T/plan-seeds"); [ "$i" -eq 10 ] || printf '%s(4096: %s) ' "$k" "$i"; done)
 check "seeds plan: comparison sets at 65,536 and 10 integration seeds at 4,096 per method${bads:+ (bad: $bads)}" [ -z "$bads" ]
 
+# ---- the profile lowk (planned only): adaptive CFPO, the hyperuniform variant, FPO
+# and BNOT only, the integration experiment from 2^10 to 2^20 (FPO and BNOT to 2^16)
+$BENCH run "$B" lowk --plan >"$T/plan-lowk" 2>&1
+others=$(grep -E '^(comparison|integration|evolution|runtime|ttq) ' "$T/plan-lowk" | awk '{ print $2 }' | sort -u | tr '\n' ' ')
+check "lowk plan: only FPO, BNOT, adaptive and hyperuniform CFPO (got: $others)" [ "$others" = "adaptive bnot fpo hyperuniform " ]
+check "lowk plan: the two CFPO variants to 2^20, FPO and BNOT to 2^16" \
+  [ "$(grep -Ec '^integration (adaptive|hyperuniform) +n=1048576 ' "$T/plan-lowk")" -eq 6 ] && ! grep -Eq '^integration (fpo|bnot) +n=(262144|1048576) ' "$T/plan-lowk"
+
 # ---- the low-frequency table: every number recomputes from spectra.csv --------------
 lowtab=$(awk '/^## Low-frequency spectrum/ { on = 1; next } on && /^## / { on = 0 } on && /^\| / && !/^\| (method|---)/' "$R/summary.md")
 check "summary.md: a low-frequency table row per method ($(grep -c . <<<"$lowtab") of $N_COMP)" [ "$(grep -c . <<<"$lowtab")" -eq "$N_COMP" ]

@@ -1,7 +1,7 @@
 """benchlib - the benchmark driver's modules (scripts/bench.py is the command).
 
 methods   the one list of methods (scripts/methods.tsv) and the method key
-profiles  the plans of the profiles (smoke, default, paper, seeds) and the cost model
+profiles  the plans of the profiles (smoke, default, paper, seeds, lowk) and the cost model
 stats     medians, means, id ranges and number formats shared by the tables
 runner    `bench.py run`: the plan, the scheduler, runs.csv, quality.csv, spectra.csv
 plotdata  `bench.py replot`: the figures' data files and gnuplot

@@ -39,6 +39,9 @@ as data, and the rough cost model behind `--plan` and the time-left display.
   int_seeds     seeds per (method, n) of the integration experiment;
                 int_seeds_big: (n0, seeds) fewer seeds above n0 (None)
 
+The profile `lowk` is the hyperuniform variant's integration error
+against n beside adaptive CFPO, FPO and BNOT (int_only: those four only).
+
 The profile `seeds` is the many-seed table of the measures of sampling
 research, without evolution, runtime or time-to-quality runs: the
 comparison (all its measures) at 65,536 points, 10 sets of the fast
@@ -58,7 +61,7 @@ runtime plan leaves out n = comp_n on comp_threads.
 """
 import os
 
-NAMES = ("smoke", "default", "paper", "seeds")
+NAMES = ("smoke", "default", "paper", "seeds", "lowk")
 TTQ_ALL = [("adaptive", 1), ("fpo", 1), ("paper", 1), ("lfpo", 1), ("adaptive", 2)]
 
 
@@ -122,6 +125,14 @@ def profile(name, cores):
         p.update(sets=10, comp_n=65536, rt_reps=1, evo_iters=[], rt_sizes={}, ttq_sizes=[], int_seeds=10,
                  int_n=[4096, 65536], comp_sets=dict(fpo=4, ccvt=2, gbn=2, lloyd=2, lfpo=0, ccdt=0),
                  int_top=dict(lfpo=4096, ccdt=4096))
+    elif name == "lowk":
+        # the hyperuniform variant's integration error against n beside
+        # adaptive CFPO, FPO and BNOT: 2^10 to 2^20 points (FPO and BNOT to
+        # 2^16), 3 seeds; the comparison only at 1,024 points (3 sets of
+        # those four), no other method, no other experiment
+        four = ("fpo", "bnot", "adaptive", "hyperuniform")
+        p.update(sets=3, comp_n=1024, rt_reps=1, evo_iters=[], rt_sizes={}, ttq_sizes=[], int_seeds=3,
+                 int_n=[2 ** e for e in range(10, 21, 2)], int_top=dict(fpo=65536, bnot=65536), int_only=four)
     else:
         # the integration experiment: 2^8 to 2^20 points, 10 seeds to 2^16
         # and 3 above, each method as far as its runtime experiment goes
@@ -145,7 +156,10 @@ def profile(name, cores):
 
 
 def int_sizes(p, key):
-    """n of the integration experiment for a method of the comparison."""
+    """n of the integration experiment for a method of the comparison (none
+    for a method outside the profile's int_only, when it has one)."""
+    if p.get("int_only") and key not in p["int_only"]:
+        return []
     return [n for n in p["int_n"] if n <= p["int_top"].get(key, n)]
 
 
@@ -155,7 +169,10 @@ def int_seeds(p, n):
 
 
 def comp_sets(p, key):
-    """Sets of a method in the comparison."""
+    """Sets of a method in the comparison (a profile's int_only: those
+    methods only)."""
+    if p.get("int_only") and key not in p["int_only"]:
+        return 0
     return p["comp_sets"].get(key, p["sets"])
 
 

@@ -364,7 +364,7 @@ class Bench:
     def main(self, plan_only):
         p = P.profile(self.name, os.cpu_count() or 1)
         if p is None:
-            raise Failure(f"unknown PROFILE '{self.name}' (smoke, default, paper, seeds)", 2)
+            raise Failure(f"unknown PROFILE '{self.name}' (smoke, default, paper, seeds, lowk)", 2)
         cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
         p = P.profile(self.name, cores)
         self.p = p
