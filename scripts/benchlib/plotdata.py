@@ -261,7 +261,8 @@ def replot(R=None):
     os.makedirs(P, exist_ok=True)
     host = f"{F.hdr('host') or '?'}, {F.hdr('cores') or '?'} cores"
     evo = [s[0] for s in F.spectra if s[1] == "evolution"]
-    columns_vars(F, meth, "evolution", evo + ["comparison-cfpo"], gpdir, N, SETS)
+    if evo:  # a profile without evolution runs (seeds, lowk) may have no CFPO comparison either
+        columns_vars(F, meth, "evolution", evo + ["comparison-cfpo"], gpdir, N, SETS)
     have = {s[0] for s in F.spectra}
     columns_vars(F, meth, "comparison", [f"comparison-{k}" for k in meth.keys("pd", "iter", "cfpo")
                                           if f"comparison-{k}" in have], gpdir, N, SETS)
