@@ -21,7 +21,8 @@ uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads)
     cfpo_grid G;
     char err[8];
     if (cfpo_grid_init(&G, n, variant, 0, err, sizeof err) != 0) return 0;
-    return cfpo_engine_bytes_local(n, G.g * G.g, 0, threads);
+    const double t = variant == CFPO_VARIANT_HYPERUNIFORM ? cfpo_transport_bytes(n, n) : 0;
+    return cfpo_engine_bytes_local(n, G.g * G.g, 0, threads) + (uint64_t)t;
 }
 
 void cfpo_engine_free(cfpo_engine *E)

@@ -6,6 +6,7 @@
 #include "comm.h"
 #include "engine.h"
 #include "omp_compat.h"
+#include "transport.h"
 
 int cfpo_plan_make(cfpo_plan *p, int64_t n, const cfpo_options *o, int P, int px, int py, char *err,
                    size_t errlen)
@@ -25,6 +26,9 @@ int cfpo_plan_make(cfpo_plan *p, int64_t n, const cfpo_options *o, int P, int px
     p->threads = o->threads > 0 ? o->threads : omp_get_num_procs();
     p->bytes_per_rank = (double)cfpo_engine_bytes_local((int64_t)(p->points_max * 1.02), p->cells_max,
                                                         cfpo_tile_ring(p->wmax, p->hmax), p->threads);
+    /* the hyperuniform variant's transport grids: whole on every rank */
+    if (o->variant == CFPO_VARIANT_HYPERUNIFORM)
+        p->bytes_per_rank += cfpo_transport_bytes(n, (int64_t)(p->points_max * 1.02));
     /* Halo per phase: a rank sends the cells of its border that its
      * neighbours keep (every border cell, corners to up to three ranks):
      * 4 bytes of count per cell and 16 per point. */

@@ -34,6 +34,19 @@ void cfpo_transport_free(cfpo_transport *F)
     F->C = NULL;
 }
 
+double cfpo_transport_bytes(int64_t n, int64_t np)
+{
+    int K = (int)floor(sqrt((double)n / 25.0));
+    if (K < 1) K = 1;
+    int M = 2 * (2 * K + 1);
+    if (M < 2 * CFPO_TRANSPORT_WIDTH) M = 2 * CFPO_TRANSPORT_WIDTH;
+    M = cfpo_nufft_fft_size(M);
+    const double m = (double)M, w = 2.0 * K + 1;
+    /* type 1's real grid (M x (M/2 + 1) complex), type 2's complex grid,
+     * the band's coefficients, and the spread's order of the points */
+    return 8.0 * m * 2.0 * (double)(M / 2 + 1) + 16.0 * m * m + 16.0 * w * w + 8.0 * (double)np;
+}
+
 int cfpo_transport_spread(cfpo_transport *F, const double *x, const double *y, int64_t np, int64_t n)
 {
     return cfpo_nufft_spread(&F->U, x, y, 1, (size_t)np, n);

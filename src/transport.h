@@ -41,6 +41,10 @@ typedef struct {
  * spreading on `threads` threads. 0, or -1 out of memory. */
 int cfpo_transport_init(cfpo_transport *F, int64_t n, int threads);
 void cfpo_transport_free(cfpo_transport *F);
+/* The memory cfpo_transport_init takes for a set of n points, and the most
+ * a sweep adds while it spreads np of them (its order), in bytes: what
+ * --dry-run adds for the hyperuniform variant. */
+double cfpo_transport_bytes(int64_t n, int64_t np);
 
 /* The np points (x[j], y[j]) of this part of a set of n points spread onto
  * the grid (cfpo_nufft_spread); 0, or -1 out of memory. Then the caller

@@ -188,5 +188,18 @@ else
   bad "dry run failed: $(cat dry.err)"
 fi
 
+# --dry-run counts the hyperuniform variant's transport grids: the memory it
+# adds over the adaptive variant's model is the extra a real run measures
+# (peak resident sizes of both variants through the first transport sweep).
+val() { grep -o " $1=[0-9]*" "$2" | cut -d= -f2; }
+for v in adaptive hyperuniform; do
+  "$CFPO" -n 262144 --variant $v --dry-run >dry-$v.out 2>&1 || bad "dry run of $v failed"
+  "$CFPO" -n 262144 --variant $v --max-iter 42 -q -t 2 -o mem-$v.npy >mem-$v.out 2>&1 || bad "run of $v failed"
+done
+awk -v dm="$(( $(val bytes_per_rank dry-hyperuniform.out) - $(val bytes_per_rank dry-adaptive.out) ))" \
+    -v dp="$(( $(val peak_bytes mem-hyperuniform.out) - $(val peak_bytes mem-adaptive.out) ))" \
+    'BEGIN { exit !(dm > 0.8 * dp && dm < 1.25 * dp) }' && ok ||
+  bad "dry run: the hyperuniform variant's extra memory is modelled as $(( $(val bytes_per_rank dry-hyperuniform.out) - $(val bytes_per_rank dry-adaptive.out) )) bytes, measured $(( $(val peak_bytes mem-hyperuniform.out) - $(val peak_bytes mem-adaptive.out) ))"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
