@@ -220,6 +220,7 @@ static inline __attribute__((always_inline)) void spread_w(const cfpo_nufft *U, 
 static void spread_point(const cfpo_nufft *U, double x, double y, double unit, int64_t *grid)
 {
     switch (U->w) {
+    case 6: spread_w(U, x, y, unit, grid, 6); break;
     case 8: spread_w(U, x, y, unit, grid, 8); break;
     case 10: spread_w(U, x, y, unit, grid, 10); break;
     case 12: spread_w(U, x, y, unit, grid, 12); break;
@@ -358,6 +359,7 @@ static inline __attribute__((always_inline)) void interp_w(const cfpo_nufft *U, 
 void cfpo_nufft_type2_at(const cfpo_nufft *U, double x, double y, double *re, double *im)
 {
     switch (U->w) {
+    case 6: interp_w(U, x, y, re, im, 6); break;
     case 8: interp_w(U, x, y, re, im, 8); break;
     case 10: interp_w(U, x, y, re, im, 10); break;
     case 12: interp_w(U, x, y, re, im, 12); break;

@@ -28,9 +28,9 @@ static const double relax_strong[2] = {3.0, 1.8}, relax_mild[2] = {1.8, 1.4};
  * (two cells, no over-relaxation) and HU_ROUND - 1 transport sweeps. Every
  * transport sweep keeps each point min(r0, HU_CAP Delta(n)) from all;
  * moves longer than HU_VMAX Delta(n) are shortened to it. */
-#define HU_FROM 41
-#define HU_FIRST 20
-#define HU_ROUNDS 10
+#define HU_FROM 29
+#define HU_FIRST 16
+#define HU_ROUNDS 8
 #define HU_ROUND 5
 #define HU_CAP 0.92
 #define HU_VMAX 0.3
@@ -38,6 +38,11 @@ static const double relax_strong[2] = {3.0, 1.8}, relax_mild[2] = {1.8, 1.4};
 static int adaptive_like(int variant)
 {
     return variant == CFPO_VARIANT_ADAPTIVE || variant == CFPO_VARIANT_HYPERUNIFORM;
+}
+
+int cfpo_policy_stage_from(const cfpo_grid *G)
+{
+    return G->variant == CFPO_VARIANT_HYPERUNIFORM ? HU_FROM : 0;
 }
 
 int cfpo_policy_last(const cfpo_grid *G)

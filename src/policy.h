@@ -63,6 +63,8 @@ typedef struct {
 /* The last iteration of a run of grid G (the hyperuniform variant's), or
  * 0 where the convergence rule alone ends a run. */
 int cfpo_policy_last(const cfpo_grid *G);
+/* The first iteration of the hyperuniform stage (0 for other variants). */
+int cfpo_policy_stage_from(const cfpo_grid *G);
 
 /* The decisions for iteration k of a run of grid G, the run being in its
  * near phase (near) with delta(X) / Delta(n) = dmin as last measured (1

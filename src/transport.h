@@ -29,7 +29,7 @@
 #include "nufft.h"
 
 /* The kernel width: the NUFFT's error about 10^-(w-1) of the largest term. */
-#define CFPO_TRANSPORT_WIDTH 10
+#define CFPO_TRANSPORT_WIDTH 6
 
 typedef struct {
     int K;        /* the largest |kx|, |ky| of the band */

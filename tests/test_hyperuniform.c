@@ -16,6 +16,7 @@
 
 #include "cfpo.h"
 #include "engine.h"
+#include "policy.h"
 #include "testutil.h"
 
 static int passed_, failed_;
@@ -96,18 +97,20 @@ static void test_floor(void)
     double prev, avg;
     cfpo_engine_deltas(E, &prev, &avg);
     int bad = 0, phases = 0, moved_stage = 0;
-    for (int it = 1; it <= 110; it++) {
+    const int from = cfpo_policy_stage_from(cfpo_engine_grid(E)), last = cfpo_policy_last(cfpo_engine_grid(E));
+    CHECK(from > 10 && last > from, "stage from iteration %d to %d", from, last);
+    for (int it = 1; it <= last; it++) {
         cfpo_engine_begin(E);
         const double at_start = prev;
         for (int c = 0; c < ncol; c++) {
             int64_t solved;
             const int64_t mv = cfpo_engine_phase(E, c, &solved);
-            if (it <= 30) continue; /* test_engine checks the adaptive rule */
-            if (it > 40) moved_stage += mv > 0;
+            if (it < from - 10) continue; /* test_engine checks the adaptive rule */
+            if (it >= from) moved_stage += mv > 0;
             double dmin;
             cfpo_engine_deltas(E, &dmin, &avg);
             /* the engine's deltas are brute force's to 3e-14 (test_engine) */
-            const double floor_ = it <= 40 ? at_start : fmin(prev, cap);
+            const double floor_ = it < from ? at_start : fmin(prev, cap);
             if (dmin < floor_ - 1e-12) {
                 bad++;
                 fprintf(stderr, "delta_min fell from %.17g to %.17g (iteration %d, phase %d)\n", floor_, dmin, it, c);
@@ -137,8 +140,11 @@ static void test_spectrum(void)
         double dmin, davg;
         brute_deltas(xy, n, &dmin, &davg);
         const double p0 = p0_direct(xy, n);
-        CHECK(r.converged && r.iterations == 110, "seed %llu: %d iterations, converged %d", (unsigned long long)seed,
-              r.iterations, r.converged);
+        cfpo_grid G;
+        char gerr[128];
+        CHECK(cfpo_grid_init(&G, n, CFPO_VARIANT_HYPERUNIFORM, seed, gerr, sizeof gerr) == 0, "grid: %s", gerr);
+        CHECK(r.converged && r.iterations == cfpo_policy_last(&G), "seed %llu: %d iterations (the schedule has %d), converged %d",
+              (unsigned long long)seed, r.iterations, cfpo_policy_last(&G), r.converged);
         CHECK(p0 < 2e-4, "seed %llu: P0 = %.3g, not below 2e-4", (unsigned long long)seed, p0);
         p0s[seed - 1] = p0;
         CHECK(dmin >= 0.92 - 1e-9 && davg >= 0.929, "seed %llu: delta_min %.6f, delta_avg %.6f",
