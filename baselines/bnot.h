@@ -10,6 +10,9 @@
  * sites are the torus's); the capacity solve (the weights that give every
  * power cell the area 1/n); the Lloyd step (every site to the centroid of
  * its power cell); the transport energy and the iteration statistics.
+ * Under a density rho (bnot_create_density) "area" below means rho's mass,
+ * centroids and moments are rho-weighted and an edge's length is rho's
+ * integral along it (dens_poly.h); everything else is unchanged.
  * Does not own: the stopping loop, files or the command line (main_bnot.c).
  *
  * The algorithm (the paper's alternation of a capacity solve and a Lloyd
