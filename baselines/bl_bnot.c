@@ -51,6 +51,19 @@ static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, cha
     return bnot_create_rule(n, NULL, seed, 0, tol, &r, err, errlen);
 }
 
+/* the same under a density: the start drawn from rho, rho's masses */
+static void *create_density(const bl_value *v, int64_t n, uint64_t seed, double tol, const cfpo_density *d,
+                            char *err, size_t errlen)
+{
+    bnot_rule r;
+    bnot_rule_init(&r);
+    r.epsilon = v[EPSILON].d;
+    r.breaker = (int)v[BREAKER].i;
+    r.max_rounds = (int)v[MAX_ROUNDS].i;
+    r.round_iters = (int)v[ROUND_ITERS].i;
+    return bnot_create_density(n, NULL, seed, 0, tol, &r, d, 0, err, errlen);
+}
+
 static void iterate(void *E, cfpo_iter_stats *s) { bnot_iterate(E, s); }
 static void deltas(void *E, double *a, double *b) { bnot_deltas(E, a, b); }
 static const double *points(void *E) { return bnot_points(E); }
@@ -86,4 +99,9 @@ const bl_method bl_bnot = {
     BL_COLUMNS(COLUMNS),
     BL_ENGINE,
     .column_values = column_values,
+    .create_density = create_density,
+    .density_help = "the start drawn proportional to rho; every power cell's\n"
+                    "                       capacity is its mass of rho (1/n each), the Lloyd\n"
+                    "                       step goes to rho-weighted centroids, the Newton\n"
+                    "                       Hessian integrates rho along the power edges",
 };

@@ -6,7 +6,7 @@
 #include "bnot_types.hpp"
 
 static bnot_engine *make(int64_t n, const double *xy, uint64_t seed, double L, double tol, double cap_tol,
-                         const bnot_rule *rule, char *err, size_t errlen)
+                         const bnot_rule *rule, const cfpo_density *dens, int flags, char *err, size_t errlen)
 {
     if (n >= (int64_t)UINT32_MAX) {
         snprintf(err, errlen, "n = %lld is too large (ids are 32-bit)", (long long)n);
@@ -38,6 +38,19 @@ static bnot_engine *make(int64_t n, const double *xy, uint64_t seed, double L, d
         E->xy.resize(2 * N);
         for (int64_t i = 0; i < 2 * n; i++)
             E->xy[(size_t)i] = xy ? xy[i] : cfpo_rand01(seed, START_STREAM, (uint64_t)i);
+        if (dens) {
+            E->dens = dens;
+            /* the uniform start thinned to rho: for rho = 1 the same points */
+            dens_draw draw;
+            if (!xy) {
+                if (dens_draw_init(&draw, dens) != 0) throw std::bad_alloc();
+                for (int64_t k = 0; k < n; k++)
+                    dens_draw_at(&draw, seed, START_DENS_STREAM, (uint64_t)k, &E->xy[2 * k], &E->xy[2 * k + 1]);
+                dens_draw_free(&draw);
+            }
+            E->pixels = (flags & BNOT_DENS_PIXELS) || !(dens->support == 1.0 && dens->rho_min == dens->rho_max);
+            if (E->pixels && dens_poly_init(&E->dp, dens) != 0) throw std::bad_alloc();
+        }
         E->w.assign(N, 0.0);
         E->area.assign(N, 0.0);
         E->mom.assign(N, 0.0);
@@ -68,15 +81,29 @@ bnot_engine *bnot_create(int64_t n, uint64_t seed, double tol, char *err, size_t
 {
     cfpo_grid G;
     if (cfpo_grid_init(&G, n, CFPO_VARIANT_PAPER, seed, err, errlen) != 0) return nullptr;
-    return make(n, nullptr, seed, G.L, tol, BNOT_CAP_TOL, nullptr, err, errlen);
+    return make(n, nullptr, seed, G.L, tol, BNOT_CAP_TOL, nullptr, nullptr, 0, err, errlen);
 }
 
 bnot_engine *bnot_create_rule(int64_t n, const double *xy, uint64_t seed, double L, double tol,
                               const bnot_rule *r, char *err, size_t errlen)
 {
+    return bnot_create_density(n, xy, seed, L, tol, r, nullptr, 0, err, errlen);
+}
+
+bnot_engine *bnot_create_density(int64_t n, const double *xy, uint64_t seed, double L, double tol,
+                                 const bnot_rule *r, const cfpo_density *d, int flags, char *err, size_t errlen)
+{
     bnot_rule def;
     bnot_rule_init(&def);
     if (!r) r = &def;
+    if (d && !(r->epsilon > 0)) { /* the run to a move tolerance */
+        if (!(L > 0)) {
+            cfpo_grid G;
+            if (cfpo_grid_init(&G, n, CFPO_VARIANT_PAPER, seed, err, errlen) != 0) return nullptr;
+            L = G.L;
+        }
+        return make(n, xy, seed, L, tol, BNOT_CAP_TOL, nullptr, d, flags, err, errlen);
+    }
     if (!(r->epsilon > 0) || r->max_rounds < 1 || r->round_iters < 1 || r->max_newton < 1 || r->max_teleport < 0 ||
         !(r->jitter >= 0)) {
         snprintf(err, errlen, "bad BNOT schedule (epsilon %g, rounds %d, round iterations %d, Newton steps %d)",
@@ -88,13 +115,13 @@ bnot_engine *bnot_create_rule(int64_t n, const double *xy, uint64_t seed, double
         if (cfpo_grid_init(&G, n, CFPO_VARIANT_PAPER, seed, err, errlen) != 0) return nullptr;
         L = G.L;
     }
-    return make(n, xy, seed, L, tol, BNOT_CAP_TOL, r, err, errlen);
+    return make(n, xy, seed, L, tol, BNOT_CAP_TOL, r, d, flags, err, errlen);
 }
 
 bnot_engine *bnot_create_from(int64_t n, const double *xy, double L, double tol, double cap_tol, char *err,
                               size_t errlen)
 {
-    return make(n, xy, 0, L, tol, cap_tol, nullptr, err, errlen);
+    return make(n, xy, 0, L, tol, cap_tol, nullptr, nullptr, 0, err, errlen);
 }
 
 void bnot_free(bnot_engine *E) { delete E; }

@@ -10,6 +10,9 @@
  * sites are the torus's); the capacity solve (the weights that give every
  * power cell the area 1/n); the Lloyd step (every site to the centroid of
  * its power cell); the transport energy and the iteration statistics.
+ * Under a density rho (bnot_create_density) "area" below means rho's mass,
+ * centroids and moments are rho-weighted and an edge's length is rho's
+ * integral along it (dens_poly.h); everything else is unchanged.
  * Does not own: the stopping loop, files or the command line (main_bnot.c).
  *
  * The algorithm (the paper's alternation of a capacity solve and a Lloyd
@@ -81,6 +84,7 @@
 #include <stdint.h>
 
 #include "cfpo.h"
+#include "density.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -122,6 +126,19 @@ bnot_engine *bnot_create_from(int64_t n, const double *xy, double L, double tol,
  * also drives the breaker. tol only counts the moved sites of the stats. */
 bnot_engine *bnot_create_rule(int64_t n, const double *xy, uint64_t seed, double L, double tol,
                               const bnot_rule *r, char *err, size_t errlen);
+/* Under a density d (which must outlive the engine): the start (xy NULL)
+ * is the uniform start thinned to d (dens_draw.h: for d = 1 the same
+ * points); cells' areas, centroids and moments, and the Hessian's edge
+ * lengths, are d's mass, d-weighted centroids and moments and d's
+ * integral along the edges (dens_poly.h); the deltas in d's symmetric
+ * measure (src/dens_measure.h). r as bnot_create_rule (NULL: the
+ * authors' defaults); with d, r->epsilon 0 gives the run to tol (as
+ * bnot_create, L 0: cfpo's cell side). A constant d takes the
+ * uniform formulas (equal for rho = 1) unless flags has
+ * BNOT_DENS_PIXELS (tests). d NULL: bnot_create_rule. */
+#define BNOT_DENS_PIXELS 1
+bnot_engine *bnot_create_density(int64_t n, const double *xy, uint64_t seed, double L, double tol,
+                                 const bnot_rule *r, const cfpo_density *d, int flags, char *err, size_t errlen);
 void bnot_free(bnot_engine *E);
 
 /* One Lloyd step then the capacity solve (the authors' schedule: one

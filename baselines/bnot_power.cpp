@@ -13,7 +13,16 @@
  * site lies outside its own cell); the Hessian row of the site from its
  * edges; the margin check. A failed check doubles the margin and builds
  * again. The weights keep mean 0 (they start at 0 and every Newton
- * direction is centred; the diagram only sees their differences). */
+ * direction is centred; the diagram only sees their differences).
+ *
+ * Under a density rho (de Goes et al. 2012 pose the transport from a
+ * density; their published periodic code has rho = 1 only): a cell's
+ * "area" is its mass, the integral of rho over it, its centroid and
+ * second moment are rho-weighted, and a Hessian entry is the integral of
+ * rho along the power edge over 2 |p_i - p_j| (the edge moves by dw /
+ * (2 |p_i - p_j|) when w_j changes); all exact for the piecewise-constant
+ * rho (dens_poly.h). A constant density takes the uniform formulas, equal
+ * to those integrals for rho = 1, so that run is the run without one. */
 #include "bnot_types.hpp"
 
 /* The triangulation of the sites and their copies within the margin. */
@@ -96,12 +105,24 @@ static int cell(bnot_engine *E, int64_t i, double wmax)
         if (u->info().id != (uint32_t)i) {
             const double ex = cx - g->info().cx, ey = cy - g->info().cy;
             const double sx = u->point().x() - px, sy = u->point().y() - py;
+            /* dA_i/dw_j = -(int of rho along e_ij) / (2 |p_i - p_j|) */
+            const double len = E->pixels ? dens_poly_segment(&E->dp, cx, cy, g->info().cx, g->info().cy)
+                                         : std::sqrt(ex * ex + ey * ey);
             E->col.push_back(u->info().id);
-            E->val.push_back(std::sqrt(ex * ex + ey * ey) / (2.0 * std::sqrt(sx * sx + sy * sy)));
+            E->val.push_back(len / (2.0 * std::sqrt(sx * sx + sy * sy)));
         }
     } while (++fc != done);
-    double A = 0, gx = 0, gy = 0, M = 0;
     const size_t k = E->cs.size() / 2;
+    if (E->pixels) { /* the density's mass, first and second moments */
+        double mo[4];
+        dens_poly_moments(&E->dp, px, py, E->cs.data(), k, mo);
+        E->area[(size_t)i] = mo[0];
+        E->cen[2 * i] = mo[0] > 0 ? mo[1] / mo[0] : 0;
+        E->cen[2 * i + 1] = mo[0] > 0 ? mo[2] / mo[0] : 0;
+        E->mom[(size_t)i] = mo[3];
+        return 0;
+    }
+    double A = 0, gx = 0, gy = 0, M = 0;
     for (size_t j = 0; j < k; j++) {
         const double ux = E->cs[2 * j], uy = E->cs[2 * j + 1];
         const double vx = E->cs[2 * ((j + 1) % k)], vy = E->cs[2 * ((j + 1) % k) + 1];
@@ -255,5 +276,7 @@ void bnot_solve(bnot_engine *E)
 
 extern "C" void bnot_deltas(bnot_engine *E, double *dmin, double *davg)
 {
-    if (cfpo_nn_stats(E->xy.data(), (size_t)E->n, nullptr, dmin, davg) != 0) *dmin = *davg = NAN;
+    const int rc = E->dens ? cfpo_dens_nn(E->dens, E->xy.data(), (size_t)E->n, nullptr, dmin, davg)
+                           : cfpo_nn_stats(E->xy.data(), (size_t)E->n, nullptr, dmin, davg);
+    if (rc != 0) *dmin = *davg = NAN;
 }

@@ -19,8 +19,11 @@
 #include <vector>
 
 #include "bnot.h"
+#include "dens_poly.h"
 extern "C" {
 #include "cli.h"
+#include "dens_draw.h"
+#include "dens_measure.h"
 #include "geom.h"
 #include "grid.h"
 #include "rng.h"
@@ -31,6 +34,8 @@ extern "C" {
 namespace bnot_detail {
 
 const uint64_t START_STREAM = 0x424e4f5453545254ULL; /* "BNOTSTRT" */
+/* the start's thinning and inverse-CDF numbers under a density (dens_draw.h) */
+const uint64_t START_DENS_STREAM = 0x424e4f5444454e53ULL; /* "BNOTDENS" */
 const double CG_RTOL = 1e-3;
 const int MAX_NEWTON = 100;
 /* the authors' rule (bnot_rule.cpp) */
@@ -96,6 +101,15 @@ struct bnot_engine {
     std::vector<double> xy0, stepv;
     std::vector<uint8_t> flag;
     std::vector<uint32_t> pick;
+    /* under a density: the density (deltas in its measure) and, when it is
+     * not constant (or pixels forces it), its integrals over the cells */
+    const cfpo_density *dens = nullptr;
+    dens_poly dp = {nullptr, nullptr};
+    bool pixels = false;
+    bnot_engine() = default;
+    bnot_engine(const bnot_engine &) = delete;
+    bnot_engine &operator=(const bnot_engine &) = delete;
+    ~bnot_engine() { dens_poly_free(&dp); }
 };
 
 /* The diagram for E->w and everything derived from it (bnot_power.cpp). */

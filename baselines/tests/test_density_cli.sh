@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # test_density_cli.sh BUILD_DIR - the baselines' --density as a user meets
-# it: cfpo-dart, cfpo-fpo and cfpo-lfpo under a uniform density (cos:a=0)
-# write the bytes they write without one, cfpo-ccvt those of its random
+# it: cfpo-dart, cfpo-fpo, cfpo-lfpo and cfpo-bnot under a uniform density
+# (cos:a=0) write the bytes they write without one, cfpo-ccvt those of its random
 # point set (a lattice has no density); exactly n points; the SUMMARY
 # line's deltas are cfpo-analyze --density's; the stop rules work under a
 # density (a target stop writes the points of --max-iter at that
@@ -51,6 +51,30 @@ grep -q "^DENSITY spec=cos:a=0 " c.sum && ok || bad "ccvt: no DENSITY line"
 expect 1 "contrast 1:1000 .*limit 1:256" -n 300 --density ramp:contrast=1000 -o x.npy
 rm -f u.npy c.npy c.sum
 
+# BNOT: a uniform density gives the bytes without one (the authors'
+# schedule and the run to tol); under the ramp exactly n points, the
+# SUMMARY deltas cfpo-analyze --density's; the bad SPECs as above
+CFPO="$B/cfpo-bnot"
+for e in "" "--epsilon 0 --max-iter 6"; do
+  "$CFPO" -q -n 1000 -s 3 $e -o u.npy >/dev/null || bad "bnot $e uniform"
+  "$CFPO" -q -n 1000 -s 3 $e --density cos:a=0 -o c.npy >c.sum || bad "bnot $e cos:a=0"
+  cmp -s u.npy c.npy && ok || bad "bnot $e --density cos:a=0 writes other bytes than without a density"
+done
+"$CFPO" -q -n 1000 -s 3 --density ramp:contrast=16 -o r.npy >r.sum || bad "bnot ramp run"
+[ "$(stat -c %s r.npy)" -eq $((128 + 1000 * 16)) ] && ok || bad "bnot --density: not exactly 1000 points"
+s=$(sed -n 's/^SUMMARY .* delta_min=\([^ ]*\) delta_avg=\([^ ]*\) .*/\1 \2/p' r.sum)
+a=$("$AN" -q -o an --no-discrepancy --no-delaunay --integration 0 --density ramp:contrast=16 r.npy |
+    sed -n 's/^DENSITY .*density_delta_min=\([^ ]*\) density_delta_avg=\([^ ]*\) .*/\1 \2/p')
+[ -n "$s" ] && [ "$s" = "$a" ] && ok || bad "bnot: SUMMARY deltas '$s', cfpo-analyze --density '$a'"
+grep -q "^DENSITY spec=ramp:contrast=16 hash=" r.sum && ok || bad "bnot: no DENSITY line"
+"$CFPO" --help | grep -q -- "--density SPEC" && ok || bad "cfpo-bnot --help lacks --density"
+rm -rf u.npy c.npy r.npy c.sum r.sum an
+expect 1 "not an image" -n 1000 --density swirl -o x.npy
+expect 1 "cannot open" -n 1000 --density missing.png -o x.npy
+expect 1 "truncated PGM" -n 1000 --density t.pgm -o x.npy
+expect 1 "contrast 1:1000 .*limit 1:256" -n 1000 --density ramp:contrast=1000 -o x.npy
+expect 2 "too small for this density" -n 50 --density ramp:contrast=200 -o x.npy
+
 # the stop rules under a density: a target stop at iteration K writes the
 # points of --max-iter K
 CFPO="$B/cfpo-fpo"
@@ -64,7 +88,7 @@ expect 2 "start grid does not go with --density" -n 1000 --density cos --start g
 for c in cfpo-bs cfpo-bridson; do
   CFPO="$B/$c"; expect 2 "applies to cfpo-dart only" -n 1000 --density cos -o x.npy
 done
-for c in cfpo-ccdt cfpo-bnot; do
+for c in cfpo-ccdt; do
   CFPO="$B/$c"; expect 2 "is not offered by $c" -n 1000 --density cos -o x.npy
 done
 

@@ -95,7 +95,7 @@ def ccdt(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None
 
 
 def bnot(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, epsilon=None,
-         breaker=None, max_rounds=None, round_iters=None, progress=None):
+         breaker=None, max_rounds=None, round_iters=None, progress=None, density=None):
     return _iterative("bnot", **locals())
 
 
@@ -126,8 +126,8 @@ _ITER_DOC = f"""
     cell side for n); seed; tol (default {_core.default_tol:g}); max_iter (default
     {_core.default_max_iter}); target_min, target_avg, time_limit: the stop rules of the
     command; progress: a callable receiving each row's statistics (a dict)
-    that stops the run by returning True; density (FPO, LFPO, CCVT: the
-    command's --density): a SPEC string or a 2-D array (row = y), the
+    that stops the run by returning True; density (FPO, LFPO, CCVT, BNOT:
+    the command's --density): a SPEC string or a 2-D array (row = y), the
     deltas then in the symmetric measure. Returns a cfpo.Result whose points
     are the command's bytes for the same arguments and whose trace has the
     command's columns."""
@@ -192,7 +192,9 @@ bnot.__doc__ = """Blue noise through optimal transport (de Goes et al. 2012) (cf
     play no part). breaker: False stops after the first round. max_rounds:
     rounds at most. round_iters: iterations a round at most.
     With epsilon > 0, tol only decides which sites count as moved in the
-    statistics.
+    statistics. density: the start drawn from rho, every power cell's
+    capacity its mass of rho (1/n each), rho-weighted centroids, rho
+    integrated along the power edges in the Newton solve.
 """ + _options_doc("bnot") + _ITER_DOC
 
 

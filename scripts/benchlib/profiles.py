@@ -58,7 +58,8 @@ cfpo-analyze into integration.csv with its low-frequency measures.
                 (scripts/benchlib/adaptive.py), ad_seeds seeds, iterative
                 methods stopped after ad_maxiter iterations at most; ad_skip:
                 methods left out (LFPO and CCVT but in the paper profile:
-                minutes a run under a density, CCVT's random start)
+                minutes a run under a density, CCVT's random start; BNOT
+                runs in every profile: 17.5 s for its four runs at 4,096)
 
 The runtime figure uses every uncapped run (comparison and runtime), so the
 runtime plan leaves out n = comp_n on comp_threads.
