@@ -182,8 +182,9 @@ cfpo_dens_dist *cfpo_dens_dist_create(const cfpo_density *d, int64_t g, char *er
 {
     const int P = comm_size();
     if ((int64_t)P > cfpo_dens_dist_max_ranks(g)) {
-        snprintf(err, errlen, "the density's grid has %lld cells a side at this n: at most %lld ranks (this run has %d)",
-                 (long long)g, (long long)cfpo_dens_dist_max_ranks(g), P);
+        const int64_t m = cfpo_dens_dist_max_ranks(g);
+        snprintf(err, errlen, "the grid has %lld x %lld cells, enough for at most %lld rank%s (this run has %d): "
+                 "use fewer ranks or more points", (long long)g, (long long)g, (long long)m, m == 1 ? "" : "s", P);
         return NULL;
     }
     cfpo_dens_dist *T = calloc(1, sizeof *T);

@@ -260,6 +260,16 @@ static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, 
     return moves;
 }
 
+int64_t cfpo_dens_grid(const cfpo_density *d, int64_t n)
+{
+    const double rmax = cfpo_delta_bound((double)n) / sqrt(d->rho_min);
+    int64_t g = (int64_t)floor(1.0 / (CELL_SPACINGS * rmax));
+    g -= g % 3;
+    if (g < 3) g = 3;
+    if (g > 3 * 8192) g = 3 * 8192;
+    return g;
+}
+
 cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_options *o, const double *start,
                                    int iter0, char *err, size_t errlen)
 {
@@ -270,11 +280,7 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     E->n = n;
     E->o = *o;
     E->D = cfpo_delta_bound((double)n);
-    const double rmax = E->D / sqrt(d->rho_min);
-    int64_t g = (int64_t)floor(1.0 / (CELL_SPACINGS * rmax));
-    g -= g % 3;
-    if (g < 3) g = 3;
-    if (g > 3 * 8192) g = 3 * 8192;
+    const int64_t g = cfpo_dens_grid(d, n);
     E->g = g;
     E->L = 1.0 / (double)g;
     E->iter = iter0;

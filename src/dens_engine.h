@@ -32,6 +32,9 @@ typedef struct cfpo_dens_engine cfpo_dens_engine;
  * start stands at. o: seed, threads, max_iter, tol (of a move, in local
  * spacings: converged when no point moves that far in an iteration), stop
  * rules, progress. NULL with one line in err on failure. */
+/* The cells a side of the grid for n points under d. */
+int64_t cfpo_dens_grid(const cfpo_density *d, int64_t n);
+
 cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_options *o, const double *start,
                                    int iter0, char *err, size_t errlen);
 

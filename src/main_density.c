@@ -12,6 +12,7 @@
 #include "cli.h"
 #include "comm.h"
 #include "dens_ckpt.h"
+#include "dens_dist.h"
 #include "dens_engine.h"
 #include "density.h"
 #include "omp_compat.h"
@@ -106,6 +107,11 @@ int cfpo_density_main(const cfpo_density_cmd *c)
     }
     if (n < 0) cli_usage_error(prog, "the number of points is required: -n N");
     if (cfpo_density_check_n(&d, n, err, sizeof err) != 0) cli_usage_error(prog, "--density %s: %s", c->spec, err);
+    const int64_t g = cfpo_dens_grid(&d, n), most = cfpo_dens_dist_max_ranks(g);
+    if (comm_size() > most) /* a rank needs cells of every colour (dens_dist.h) */
+        cli_usage_error(prog, "--density %s at n=%lld: the grid has %lld x %lld cells, enough for at most %lld rank%s "
+                        "(this run has %d); use fewer ranks or more points", c->spec, (long long)n, (long long)g,
+                        (long long)g, (long long)most, most == 1 ? "" : "s", comm_size());
     if (c->checkpoint && c->out && strcmp(c->checkpoint, c->out) == 0)
         cli_usage_error(prog, "--checkpoint and --output name the same file");
     if (c->out && pf_format_of(c->out) == PF_UNKNOWN)
