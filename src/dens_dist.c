@@ -398,29 +398,29 @@ int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t 
     return comm_all(ok) ? 0 : -1;
 }
 
-int cfpo_dens_dist_gather(const cfpo_dens_dist *T, const cfpo_dens_store *s, int64_t n, double *all)
+int cfpo_dens_dist_gather_values(const cfpo_dens_dist *T, const cfpo_dens_store *s, int64_t n, const double *v, int k,
+                                 double *all)
 {
     (void)T;
-    double *buf = malloc((size_t)(s->own ? s->own : 1) * 3 * sizeof *buf);
+    const size_t rec = (size_t)(k + 1) * sizeof(double); /* id, then the k values */
+    char *buf = malloc((size_t)(s->own ? s->own : 1) * rec);
     if (!comm_all(buf != NULL)) { free(buf); return -1; }
     for (int64_t i = 0; i < s->own; i++) {
-        const int64_t id = s->gid[i];
-        memcpy(&buf[3 * i], &id, sizeof id);
-        buf[3 * i + 1] = s->xy[2 * i];
-        buf[3 * i + 2] = s->xy[2 * i + 1];
+        memcpy(buf + (size_t)i * rec, &s->gid[i], sizeof(int64_t));
+        memcpy(buf + (size_t)i * rec + sizeof(int64_t), v + (size_t)k * (size_t)i, (size_t)k * sizeof(double));
     }
     void *got;
     size_t bytes;
-    const int rc = comm_allgatherv(buf, (size_t)s->own * 3 * sizeof *buf, &got, &bytes);
+    const int rc = comm_allgatherv(buf, (size_t)s->own * rec, &got, &bytes);
     free(buf);
     if (rc != 0) return -1;
-    const size_t m = bytes / (3 * sizeof(double));
+    const size_t m = bytes / rec;
     int ok = (int64_t)m == n;
-    for (size_t k = 0; ok && k < m; k++) {
+    for (size_t t = 0; ok && t < m; t++) {
         int64_t id;
-        memcpy(&id, (char *)got + k * 3 * sizeof(double), sizeof id);
+        memcpy(&id, (char *)got + t * rec, sizeof id);
         if (id < 0 || id >= n) { ok = 0; break; }
-        memcpy(&all[2 * id], (char *)got + k * 3 * sizeof(double) + sizeof id, 2 * sizeof(double));
+        memcpy(&all[(size_t)k * (size_t)id], (char *)got + t * rec + sizeof id, (size_t)k * sizeof(double));
     }
     free(got);
     return ok ? 0 : -1;

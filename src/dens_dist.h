@@ -85,9 +85,11 @@ int cfpo_dens_dist_migrate(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, dou
 int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t *cstart, const int64_t *cidx,
                            int colour);
 
-/* Collective: the whole set of n points (2 n doubles, id order) into all,
- * on every rank. 0, or -1 when out of memory on any rank. */
-int cfpo_dens_dist_gather(const cfpo_dens_dist *T, const cfpo_dens_store *s, int64_t n, double *all);
+/* Collective: k doubles of each of the n points (own point i's at v + k i:
+ * its position with v = s->xy, k = 2) into all (k n doubles, id order), on
+ * every rank. 0, or -1 when out of memory on any rank. */
+int cfpo_dens_dist_gather_values(const cfpo_dens_dist *T, const cfpo_dens_store *s, int64_t n, const double *v, int k,
+                                 double *all);
 
 void cfpo_dens_dist_free(cfpo_dens_dist *T);
 

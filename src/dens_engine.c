@@ -336,16 +336,45 @@ static int fit_cells(cfpo_dens_engine *E)
     return 0;
 }
 
-/* delta_min and delta_avg of the whole set (several ranks: gathered in id
- * order, so that the sum runs in the same order as on one rank). */
-static int measure(cfpo_dens_engine *E, double *dmin, double *davg)
+/* Several ranks, after an iteration (the halo current): each own point's
+ * smallest measure against the rank's points, into m. 1 when every one
+ * is exact: a point it does not hold lies outside the 3 x 3 cells around
+ * the point's cell, at least e away (e: the distance to that block's
+ * edge), so its measure is at least e (q_i q_min)^(1/2) / Delta. */
+static int measure_own(cfpo_dens_engine *E, double *m)
 {
-    const double *xy = E->s.xy;
-    if (E->T) {
-        if (cfpo_dens_dist_gather(E->T, &E->s, E->n, E->all) != 0) return -1;
-        xy = E->all;
+    if (cfpo_dens_nn_first(E->d, E->s.xy, (size_t)E->s.loc, (size_t)E->s.own, E->D, m) != 0) return -1;
+    const double lo = sqrt(E->d->rho_min), G = (double)E->g;
+    for (int64_t i = 0; i < E->s.own; i++) {
+        if (!(E->s.q[i] > 0)) continue;
+        const double gx = cfpo_wrap01(E->s.xy[2 * i] - E->sx) * G, gy = cfpo_wrap01(E->s.xy[2 * i + 1] - E->sy) * G;
+        const double fx = gx - floor(gx), fy = gy - floor(gy);
+        const double e = fmin(fmin(1 + fx, 2 - fx), fmin(1 + fy, 2 - fy)) * E->L;
+        if (!(m[i] * (1 + 1e-9) < e * sqrt(E->s.q[i] * lo) / E->D)) return 0;
     }
-    return comm_all(cfpo_dens_nn(E->d, xy, (size_t)E->n, NULL, dmin, davg) == 0) ? 0 : -1;
+    return 1;
+}
+
+/* delta_min and delta_avg of the whole set. Several ranks: each point's
+ * measure from its rank's points when that is provably exact (else from
+ * the whole set, gathered), the measures gathered in id order and summed
+ * in that order, as on one rank: the same bits. */
+static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
+{
+    if (!E->T) return cfpo_dens_nn(E->d, E->s.xy, (size_t)E->n, NULL, dmin, davg);
+    double *m = malloc((size_t)(E->s.own + 1) * sizeof *m);
+    int got = m ? (halo ? measure_own(E, m) : 0) : -1;
+    if (!comm_all(got >= 0)) { free(m); return -1; }
+    if (!comm_all(got == 1)) { /* a start far from the density: the whole set on every rank */
+        free(m);
+        if (cfpo_dens_dist_gather_values(E->T, &E->s, E->n, E->s.xy, 2, E->all) != 0) return -1;
+        return comm_all(cfpo_dens_nn(E->d, E->all, (size_t)E->n, NULL, dmin, davg) == 0) ? 0 : -1;
+    }
+    const int rc = cfpo_dens_dist_gather_values(E->T, &E->s, E->n, m, 1, E->all);
+    free(m);
+    if (rc != 0) return -1;
+    cfpo_dens_nn_sum(E->all, (size_t)E->n, dmin, davg);
+    return 0;
 }
 
 int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
@@ -398,7 +427,7 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
     s->solved = E->n;
     s->max_disp = maxd;
     s->max_move = maxd;
-    if (measure(E, &s->delta_min, &s->delta_avg) != 0) return -1;
+    if (measure(E, &s->delta_min, &s->delta_avg, 1) != 0) return -1;
     s->converged = cfpo_net_converged(moves, maxd, E->o.tol);
     s->seconds = omp_get_wtime() - t0;
     return 0;
@@ -412,7 +441,7 @@ int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_sa
     memset(&s, 0, sizeof s);
     memset(res, 0, sizeof *res);
     s.iteration = E->iter;
-    if (measure(E, &s.delta_min, &s.delta_avg) != 0) {
+    if (measure(E, &s.delta_min, &s.delta_avg, 0) != 0) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }
@@ -442,7 +471,7 @@ int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_sa
 const double *cfpo_dens_points(const cfpo_dens_engine *E)
 {
     if (!E->T) return E->s.xy;
-    return cfpo_dens_dist_gather(E->T, &E->s, E->n, E->all) == 0 ? E->all : NULL;
+    return cfpo_dens_dist_gather_values(E->T, &E->s, E->n, E->s.xy, 2, E->all) == 0 ? E->all : NULL;
 }
 
 int64_t cfpo_dens_own_points(const cfpo_dens_engine *E) { return E->s.own; }
