@@ -1,5 +1,5 @@
-/* dens_engine.h - layer 3: CFPO under a density, on one rank with OpenMP
- * (docs/method.md, "Density").
+/* dens_engine.h - layer 3: CFPO under a density, with OpenMP, on one rank
+ * or, under mpirun, on several (dens_dist.h) (docs/method.md, "Density").
  *
  * The torus is cut into g x g square cells of side L >= 1.25 r_max (r_max
  * = Delta(n) / sqrt(rho_min), the sparsest local spacing), g a multiple of
