@@ -6,7 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "comm.h"
 #include "dens_buckets.h"
+#include "dens_dist.h"
 #include "dens_measure.h"
 #include "dens_solve.h"
 #include "dens_start.h"
@@ -36,8 +38,10 @@ struct cfpo_dens_engine {
     int64_t n, g;
     cfpo_options o;
     double D, L, sx, sy;
-    double *xy, *rho; /* positions and sqrt of their pixels' densities (q), id order */
-    int64_t *cell, *cstart, *cidx;
+    cfpo_dens_store s; /* positions and sqrt of their pixels' densities (q): all, in id order, on one rank */
+    cfpo_dens_dist *T; /* several ranks: the cut (NULL on one) */
+    double *all;       /* several ranks: the whole set, gathered for the measure and the output */
+    int64_t *cell, *cstart, *cidx, ccap;
     int nthreads;
     tbuf *tb;
     int iter;
@@ -47,24 +51,22 @@ struct cfpo_dens_engine {
 
 static int64_t cell_of(const cfpo_dens_engine *E, double x, double y)
 {
-    const double gx = cfpo_wrap01(x - E->sx), gy = cfpo_wrap01(y - E->sy);
-    int64_t ix = (int64_t)(gx * (double)E->g), iy = (int64_t)(gy * (double)E->g);
-    if (ix >= E->g) ix = E->g - 1;
-    if (iy >= E->g) iy = E->g - 1;
-    return iy * E->g + ix;
+    return cfpo_dens_cell_of(E->g, E->sx, E->sy, x, y);
 }
 
-/* Cells of this iteration's grid, points in id order inside each. */
+/* Cells of this iteration's grid, points in id order inside each (the
+ * store's order: own points by id, then each halo cell's from its owner,
+ * by id). */
 static void build_cells(cfpo_dens_engine *E)
 {
     const int64_t G = E->g * E->g;
     memset(E->cstart, 0, (size_t)(G + 1) * sizeof *E->cstart);
-    for (int64_t i = 0; i < E->n; i++) {
-        E->cell[i] = cell_of(E, E->xy[2 * i], E->xy[2 * i + 1]);
+    for (int64_t i = 0; i < E->s.loc; i++) {
+        E->cell[i] = cell_of(E, E->s.xy[2 * i], E->s.xy[2 * i + 1]);
         E->cstart[E->cell[i] + 1]++;
     }
     for (int64_t c = 0; c < G; c++) E->cstart[c + 1] += E->cstart[c];
-    for (int64_t i = 0; i < E->n; i++) E->cidx[E->cstart[E->cell[i]]++] = i;
+    for (int64_t i = 0; i < E->s.loc; i++) E->cidx[E->cstart[E->cell[i]]++] = i;
     for (int64_t c = G; c > 0; c--) E->cstart[c] = E->cstart[c - 1];
     E->cstart[0] = 0;
 }
@@ -126,10 +128,10 @@ static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, 
             const double mx = ((double)dx + 0.5) * L, my = ((double)dy + 0.5) * L;
             for (int64_t s = E->cstart[c]; s < E->cstart[c + 1]; s++) {
                 const int64_t j = E->cidx[s];
-                double u = E->xy[2 * j] - ox, v = E->xy[2 * j + 1] - oy;
+                double u = E->s.xy[2 * j] - ox, v = E->s.xy[2 * j + 1] - oy;
                 b->bx[m] = u - rint(u - mx);
                 b->by[m] = v - rint(v - my);
-                b->br[m] = E->rho[j];
+                b->br[m] = E->s.q[j];
                 b->bid[m] = j;
                 m++;
             }
@@ -249,13 +251,23 @@ static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, 
         b->bx[p] = cxp;
         b->by[p] = cyp;
         b->br[p] = rc;
-        E->xy[2 * id] = x;
-        E->xy[2 * id + 1] = y;
-        E->rho[id] = rc;
+        E->s.xy[2 * id] = x;
+        E->s.xy[2 * id + 1] = y;
+        E->s.q[id] = rc;
         moves++;
-        if (E->on_move) E->on_move(E->xy, id, E->move_user);
+        if (E->on_move) E->on_move(E->s.xy, id, E->move_user);
     }
     return moves;
+}
+
+int64_t cfpo_dens_grid(const cfpo_density *d, int64_t n)
+{
+    const double rmax = cfpo_delta_bound((double)n) / sqrt(d->rho_min);
+    int64_t g = (int64_t)floor(1.0 / (CELL_SPACINGS * rmax));
+    g -= g % 3;
+    if (g < 3) g = 3;
+    if (g > 3 * 8192) g = 3 * 8192;
+    return g;
 }
 
 cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_options *o, const double *start,
@@ -268,28 +280,24 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     E->n = n;
     E->o = *o;
     E->D = cfpo_delta_bound((double)n);
-    const double rmax = E->D / sqrt(d->rho_min);
-    int64_t g = (int64_t)floor(1.0 / (CELL_SPACINGS * rmax));
-    g -= g % 3;
-    if (g < 3) g = 3;
-    if (g > 3 * 8192) g = 3 * 8192;
+    const int64_t g = cfpo_dens_grid(d, n);
     E->g = g;
     E->L = 1.0 / (double)g;
     E->iter = iter0;
     E->nthreads = o->threads > 0 ? o->threads : omp_get_num_procs();
-    E->xy = malloc((size_t)n * 2 * sizeof *E->xy);
-    E->rho = malloc((size_t)n * sizeof *E->rho);
+    E->s.own = E->s.loc = n;
+    E->ccap = n;
     E->cell = malloc((size_t)n * sizeof *E->cell);
     E->cidx = malloc((size_t)n * sizeof *E->cidx);
     E->cstart = malloc((size_t)(g * g + 1) * sizeof *E->cstart);
     E->tb = calloc((size_t)E->nthreads, sizeof *E->tb);
-    if (!E->xy || !E->rho || !E->cell || !E->cidx || !E->cstart || !E->tb ||
-        (start ? (memcpy(E->xy, start, (size_t)n * 2 * sizeof *E->xy), 0) : cfpo_dens_start(d, n, o->seed, E->xy)) != 0) {
+    if (cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cstart || !E->tb ||
+        (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0) : cfpo_dens_start(d, n, o->seed, E->s.xy)) != 0) {
         snprintf(err, errlen, "out of memory for %lld points", (long long)n);
         cfpo_dens_free(E);
         return NULL;
     }
-    for (int64_t i = 0; i < n; i++) E->rho[i] = sqrt(cfpo_density_at(d, E->xy[2 * i], E->xy[2 * i + 1]));
+    for (int64_t i = 0; i < n; i++) E->s.q[i] = sqrt(cfpo_density_at(d, E->s.xy[2 * i], E->s.xy[2 * i + 1]));
     if (start) { /* a given set: no cell far fuller than the density allows (a block's work grows with its count squared) */
         build_cells(E);
         const double most = 4 * (double)n * E->L * E->L * d->rho_max + 64;
@@ -302,7 +310,71 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
                 return NULL;
             }
     }
+    if (comm_size() > 1) { /* several ranks: each keeps its cells' points */
+        E->T = cfpo_dens_dist_create(d, g, err, errlen);
+        E->all = malloc((size_t)n * 2 * sizeof *E->all);
+        if (!E->T || !comm_all(E->all != NULL) || cfpo_dens_dist_keep(E->T, &E->s, 0, 0) != 0) {
+            if (E->T) snprintf(err, errlen, "out of memory for %lld points", (long long)n);
+            cfpo_dens_free(E);
+            return NULL;
+        }
+    }
     return E;
+}
+
+/* The cell arrays hold the store's points. 0, or -1. */
+static int fit_cells(cfpo_dens_engine *E)
+{
+    if (E->s.loc <= E->ccap) return 0;
+    const int64_t cap = E->s.loc + E->s.loc / 4 + 16;
+    int64_t *cell = realloc(E->cell, (size_t)cap * sizeof *cell);
+    if (cell) E->cell = cell;
+    int64_t *cidx = realloc(E->cidx, (size_t)cap * sizeof *cidx);
+    if (cidx) E->cidx = cidx;
+    if (!cell || !cidx) return -1;
+    E->ccap = cap;
+    return 0;
+}
+
+/* Several ranks, after an iteration (the halo current): each own point's
+ * smallest measure against the rank's points, into m. 1 when every one
+ * is exact: a point it does not hold lies outside the 3 x 3 cells around
+ * the point's cell, at least e away (e: the distance to that block's
+ * edge), so its measure is at least e (q_i q_min)^(1/2) / Delta. */
+static int measure_own(cfpo_dens_engine *E, double *m)
+{
+    if (cfpo_dens_nn_first(E->d, E->s.xy, (size_t)E->s.loc, (size_t)E->s.own, E->D, m) != 0) return -1;
+    const double lo = sqrt(E->d->rho_min), G = (double)E->g;
+    for (int64_t i = 0; i < E->s.own; i++) {
+        if (!(E->s.q[i] > 0)) continue;
+        const double gx = cfpo_wrap01(E->s.xy[2 * i] - E->sx) * G, gy = cfpo_wrap01(E->s.xy[2 * i + 1] - E->sy) * G;
+        const double fx = gx - floor(gx), fy = gy - floor(gy);
+        const double e = fmin(fmin(1 + fx, 2 - fx), fmin(1 + fy, 2 - fy)) * E->L;
+        if (!(m[i] * (1 + 1e-9) < e * sqrt(E->s.q[i] * lo) / E->D)) return 0;
+    }
+    return 1;
+}
+
+/* delta_min and delta_avg of the whole set. Several ranks: each point's
+ * measure from its rank's points when that is provably exact (else from
+ * the whole set, gathered), the measures gathered in id order and summed
+ * in that order, as on one rank: the same bits. */
+static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
+{
+    if (!E->T) return cfpo_dens_nn(E->d, E->s.xy, (size_t)E->n, NULL, dmin, davg);
+    double *m = malloc((size_t)(E->s.own + 1) * sizeof *m);
+    int got = m ? (halo ? measure_own(E, m) : 0) : -1;
+    if (!comm_all(got >= 0)) { free(m); return -1; }
+    if (!comm_all(got == 1)) { /* a start far from the density: the whole set on every rank */
+        free(m);
+        if (cfpo_dens_dist_gather_values(E->T, &E->s, E->n, E->s.xy, 2, E->all) != 0) return -1;
+        return comm_all(cfpo_dens_nn(E->d, E->all, (size_t)E->n, NULL, dmin, davg) == 0) ? 0 : -1;
+    }
+    const int rc = cfpo_dens_dist_gather_values(E->T, &E->s, E->n, m, 1, E->all);
+    free(m);
+    if (rc != 0) return -1;
+    cfpo_dens_nn_sum(E->all, (size_t)E->n, dmin, davg);
+    return 0;
 }
 
 int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
@@ -311,6 +383,7 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
     E->iter++;
     E->sx = cfpo_rand01(E->o.seed, 0xD5E1ull, (uint64_t)E->iter) * E->L;
     E->sy = cfpo_rand01(E->o.seed, 0xD5E2ull, (uint64_t)E->iter) * E->L;
+    if (E->T && (cfpo_dens_dist_migrate(E->T, &E->s, E->sx, E->sy) != 0 || !comm_all(fit_cells(E) == 0))) return -1;
     build_cells(E);
     const int64_t g = E->g, per = g / 3;
     int64_t mx = 0;
@@ -319,11 +392,23 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
             const int64_t m = block_count(E, cx, cy);
             if (m > mx) mx = m;
         }
-    if (ensure_buffers(E, (size_t)mx) != 0) return -1;
+    if (!comm_all(ensure_buffers(E, (size_t)mx) == 0)) return -1;
     int64_t moves = 0;
     double maxd = 0;
     for (int colour = 0; colour < 9; colour++) {
         const int64_t bx = colour % 3, by = colour / 3;
+        if (E->T) { /* this rank's cells of the colour, then their copies to the ranks that keep them */
+            int64_t m;
+            const int64_t *cells = cfpo_dens_dist_cells(E->T, colour, &m);
+#pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves) reduction(max : maxd)
+            for (int64_t t = 0; t < m; t++) {
+                double md = 0;
+                moves += solve_cell(E, &E->tb[omp_get_thread_num()], cells[t] % g, cells[t] / g, &md);
+                if (md > maxd) maxd = md;
+            }
+            if (cfpo_dens_dist_refresh(E->T, &E->s, E->cstart, E->cidx, colour) != 0) return -1;
+            continue;
+        }
 #pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves) reduction(max : maxd)
         for (int64_t t = 0; t < per * per; t++) {
             double md = 0;
@@ -331,15 +416,18 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
             if (md > maxd) maxd = md;
         }
     }
-    for (int t = 0; t < E->nthreads; t++)
-        if (E->tb[t].oom) return -1;
+    int oom = 0;
+    for (int t = 0; t < E->nthreads; t++) oom |= E->tb[t].oom;
+    if (!comm_all(!oom)) return -1;
+    comm_sum_i64(&moves, 1);
+    comm_max_d(&maxd, 1);
     memset(s, 0, sizeof *s);
     s->iteration = E->iter;
     s->moved = moves;
     s->solved = E->n;
     s->max_disp = maxd;
     s->max_move = maxd;
-    if (cfpo_dens_nn(E->d, E->xy, (size_t)E->n, NULL, &s->delta_min, &s->delta_avg) != 0) return -1;
+    if (measure(E, &s->delta_min, &s->delta_avg, 1) != 0) return -1;
     s->converged = cfpo_net_converged(moves, maxd, E->o.tol);
     s->seconds = omp_get_wtime() - t0;
     return 0;
@@ -353,7 +441,7 @@ int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_sa
     memset(&s, 0, sizeof s);
     memset(res, 0, sizeof *res);
     s.iteration = E->iter;
-    if (cfpo_dens_nn(E->d, E->xy, (size_t)E->n, NULL, &s.delta_min, &s.delta_avg) != 0) {
+    if (measure(E, &s.delta_min, &s.delta_avg, 0) != 0) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }
@@ -365,6 +453,7 @@ int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_sa
         if (cfpo_dens_iterate(E, &s) != 0) { snprintf(err, errlen, "out of memory mid-run"); return -1; }
         if (E->o.progress && E->o.progress(&s, E->o.user)) stop = CFPO_STOP_CALLER;
         if (stop == CFPO_STOP_NONE) stop = cfpo_stop_check(&E->o.stop, &s, omp_get_wtime() - t0, E->o.max_iter);
+        if (E->T) comm_bcast(&stop, sizeof stop, 0); /* rank 0's clock decides a time limit for all */
         if (save && every > 0 && (E->iter % every == 0 || stop != CFPO_STOP_NONE) &&
             save(E, E->iter, s.converged, user, err, errlen) != 0)
             return -1;
@@ -379,7 +468,13 @@ int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_sa
     return 0;
 }
 
-const double *cfpo_dens_points(const cfpo_dens_engine *E) { return E->xy; }
+const double *cfpo_dens_points(const cfpo_dens_engine *E)
+{
+    if (!E->T) return E->s.xy;
+    return cfpo_dens_dist_gather_values(E->T, &E->s, E->n, E->s.xy, 2, E->all) == 0 ? E->all : NULL;
+}
+
+int64_t cfpo_dens_own_points(const cfpo_dens_engine *E) { return E->s.own; }
 
 void cfpo_dens_on_move(cfpo_dens_engine *E, cfpo_dens_move_fn fn, void *user)
 {
@@ -396,6 +491,8 @@ void cfpo_dens_free(cfpo_dens_engine *E)
             free(E->tb[t].bx); free(E->tb[t].bid); free(E->tb[t].scratch); free(E->tb[t].nj); free(E->tb[t].ring);
             cfpo_dens_buckets_free(&E->tb[t].bk);
         }
-    free(E->tb); free(E->xy); free(E->rho); free(E->cell); free(E->cidx); free(E->cstart);
+    free(E->tb); free(E->cell); free(E->cidx); free(E->cstart); free(E->all);
+    cfpo_dens_store_free(&E->s);
+    cfpo_dens_dist_free(E->T);
     free(E);
 }

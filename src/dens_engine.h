@@ -1,5 +1,5 @@
-/* dens_engine.h - layer 3: CFPO under a density, on one rank with OpenMP
- * (docs/method.md, "Density").
+/* dens_engine.h - layer 3: CFPO under a density, with OpenMP, on one rank
+ * or, under mpirun, on several (dens_dist.h) (docs/method.md, "Density").
  *
  * The torus is cut into g x g square cells of side L >= 1.25 r_max (r_max
  * = Delta(n) / sqrt(rho_min), the sparsest local spacing), g a multiple of
@@ -14,7 +14,8 @@
  * distance to the block's edge, their density at least rho_min). A
  * rejected move changes nothing; so every move raises the moved point's
  * smallest measure, and the smallest measure over all pairs never falls.
- * The output does not depend on the thread count.
+ * The output does not depend on the thread count, nor, under mpirun, on
+ * the rank count: each rank solves the cells it owns (dens_dist.h).
  * Owns: the grid, the colour schedule, the accept rule, the run loop. */
 #ifndef CFPO_DENS_ENGINE_H
 #define CFPO_DENS_ENGINE_H
@@ -31,6 +32,9 @@ typedef struct cfpo_dens_engine cfpo_dens_engine;
  * start stands at. o: seed, threads, max_iter, tol (of a move, in local
  * spacings: converged when no point moves that far in an iteration), stop
  * rules, progress. NULL with one line in err on failure. */
+/* The cells a side of the grid for n points under d. */
+int64_t cfpo_dens_grid(const cfpo_density *d, int64_t n);
+
 cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_options *o, const double *start,
                                    int iter0, char *err, size_t errlen);
 
@@ -45,7 +49,11 @@ typedef int (*cfpo_dens_save_fn)(const cfpo_dens_engine *E, int iteration, int c
 int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_save_fn save, void *user, char *err,
                   size_t errlen);
 
-const double *cfpo_dens_points(const cfpo_dens_engine *E); /* 2 n doubles, id order */
+/* 2 n doubles, id order. Under several ranks (dens_dist.h) collective: the
+ * whole set gathered on every rank (NULL when out of memory on any). */
+const double *cfpo_dens_points(const cfpo_dens_engine *E);
+/* The points this rank owns (n on one rank). */
+int64_t cfpo_dens_own_points(const cfpo_dens_engine *E);
 
 /* For the tests: fn(points, id, user) after every accepted move (from the
  * thread that made it). */

@@ -14,18 +14,18 @@
 
 static inline double wrapd(double d) { return d - rint(d); }
 
-int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg)
+int cfpo_dens_nn_first(const cfpo_density *d, const double *xy, size_t n, size_t k, double D, double *mm)
 {
     int64_t g = (int64_t)floor(sqrt((double)n / 2));
     if (g < 1) g = 1;
     if (g > 4096) g = 4096;
-    const double L = 1.0 / (double)g, D = cfpo_delta_bound((double)n);
+    const double L = 1.0 / (double)g;
     size_t *start = calloc((size_t)(g * g) + 1, sizeof *start), *fill = malloc((size_t)(g * g) * sizeof *fill);
-    size_t *idx = malloc(n * sizeof *idx);
-    double *rho = malloc(n * sizeof *rho), *mm = m ? m : malloc(n * sizeof *mm);
-    int64_t *cell = malloc(n * sizeof *cell);
+    size_t *idx = malloc((n ? n : 1) * sizeof *idx);
+    double *rho = malloc((n ? n : 1) * sizeof *rho);
+    int64_t *cell = malloc((n ? n : 1) * sizeof *cell);
     int rc = -1;
-    if (!start || !fill || !idx || !rho || !mm || !cell) goto done;
+    if (!start || !fill || !idx || !rho || !cell) goto done;
     for (size_t i = 0; i < n; i++) {
         int64_t cx = (int64_t)(xy[2 * i] * (double)g), cy = (int64_t)(xy[2 * i + 1] * (double)g);
         cx = cx < 0 ? 0 : cx >= g ? g - 1 : cx;
@@ -39,7 +39,7 @@ int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, d
     for (size_t i = 0; i < n; i++) idx[fill[cell[i]]++] = i;
     const double lo = sqrt(d->rho_min);
 #pragma omp parallel for schedule(dynamic, 1024)
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < k; i++) {
         const double x = xy[2 * i], y = xy[2 * i + 1], ri = rho[i];
         if (!(ri > 0)) { mm[i] = 0; continue; }
         const int64_t cx = cell[i] % g, cy = cell[i] / g;
@@ -70,6 +70,26 @@ int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, d
         }
         mm[i] = sqrt(best * ri) / D; /* d (q_i q_j)^(1/2) / Delta */
     }
+    rc = 0;
+done:
+    free(start); free(fill); free(idx); free(rho); free(cell);
+    return rc;
+}
+
+int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg)
+{
+    double *mm = m ? m : malloc(n * sizeof *mm);
+    if (!mm || cfpo_dens_nn_first(d, xy, n, n, cfpo_delta_bound((double)n), mm) != 0) {
+        if (!m) free(mm);
+        return -1;
+    }
+    cfpo_dens_nn_sum(mm, n, delta_min, delta_avg);
+    if (!m) free(mm);
+    return 0;
+}
+
+void cfpo_dens_nn_sum(const double *mm, size_t n, double *delta_min, double *delta_avg)
+{
     double mn = INFINITY, sum = 0;
     for (size_t i = 0; i < n; i++) {
         if (mm[i] < mn) mn = mm[i];
@@ -77,9 +97,4 @@ int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, d
     }
     *delta_min = mn;
     *delta_avg = sum / (double)n;
-    rc = 0;
-done:
-    free(start); free(fill); free(idx); free(rho); free(cell);
-    if (!m) free(mm);
-    return rc;
 }

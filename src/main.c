@@ -425,7 +425,7 @@ static int run_density(const cmdline *c)
     if (c->cfg.resume && !dens_ckpt_is(c->cfg.resume))
         cli_usage_error(prog, "--resume %s: not a density checkpoint (made without --density, or not a checkpoint)", c->cfg.resume);
     char err[512];
-    if (comm_size() == 1 && cfpo_runfiles_check(c->out, c->trace, c->cfg.checkpoint, 1, err, sizeof err) != 0)
+    if (cfpo_runfiles_check(c->out, c->trace, c->cfg.checkpoint, 1, err, sizeof err) != 0) /* rank 0 writes them whole */
         cli_usage_error(prog, "%s", err);
     cfpo_density_cmd d = {.spec = c->density, .n = c->n, .o = c->o, .given_seed = c->given_seed,
                           .given_tol = c->given_tol, .out = c->out, .trace = c->trace,

@@ -68,16 +68,7 @@ awk 'BEGIN{for(i=0;i<3000;i++) printf "0.5 %.9f\n", 0.5+i*1e-9}' >clump.txt
 expect 1 "too clustered" --density cos:a=0.9 --init clump.txt -o x.npy
 rm -f u.npy u.bin h.npy ck.bin clump.txt
 
-# several ranks: refused with one line (rank 0's), no file
-MPIRUN=$(command -v mpirun || true)
-if [ -n "$MPIRUN" ]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-  timeout 60 "$MPIRUN" --oversubscribe -np 2 "$CFPO" -q -n 1000 --density cos -o m.npy >out.log 2>err.log
-  rc=$?
-  if [ $rc -ne 2 ] || [ -e m.npy ] || ! grep -q "one rank" err.log || [ "$(grep -c "one rank" err.log)" -ne 1 ]; then
-    bad "mpirun -np 2 --density: exit $rc, $(cat err.log)"
-  else ok; fi
-fi
+# several ranks: tests/test_dens_mpi.sh (label mpi)
 
 # uniform density: the measures equal today's
 "$CFPO" -q -n 2000 --max-iter 5 -o uni.npy >/dev/null

@@ -1,0 +1,96 @@
+/* dens_dist.h - layer 3: the density engine (dens_engine.c) on several
+ * ranks (docs/mpi.md, "Under a density").
+ *
+ * Ownership is by cell of the engine's g x g grid, cut anew every iteration
+ * for its shift (from the density alone, so every rank computes the same
+ * cut without a message). The cut balances mass, not area: the density is
+ * integrated over the shifted cells, the cells are ordered column by column
+ * (up the even columns, down the odd ones), and the order is cut into P
+ * runs of equal mass, so a rank holds whole columns and part of one or two
+ * more, and its points are n / P to within about one cell's count (points
+ * follow the mass). A grid of g cells a side has (g / 3)^2 cells of one
+ * colour; more ranks than that are refused.
+ *
+ * Every iteration, after the new shift: each rank sends the points that
+ * left its cells to their cells' owners (all-to-all), merges what stays and
+ * what came in by id, then fetches its halo: the points of the cells within
+ * one cell of its own, from their owners, each rank's in id order. The
+ * engine's cells, built by a stable sort of this store (own points first),
+ * then hold their points in id order, as on one rank. After each of the
+ * nine colour phases, the cells of the colour just solved are sent to the
+ * ranks that keep them as halo (positions and q only: points stay in their
+ * cells within an iteration). Each 3 x 3 block is then assembled from the
+ * same points in the same order as on one rank, so every decision, and
+ * the output, are the same bytes for any rank count.
+ * Owns: the cut, the store of a rank's points, migration, halo fetch and
+ * refresh, the gather of the whole set. Does not own: the solve, stats. */
+#ifndef CFPO_DENS_DIST_H
+#define CFPO_DENS_DIST_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "density.h"
+#include "geom.h"
+
+/* A rank's points: its own [0, own) in id order, then halo copies [own,
+ * loc). gid NULL on one rank (local index = id). q = sqrt(rho) at the
+ * point. */
+typedef struct {
+    int64_t own, loc, cap;
+    double *xy, *q;
+    int64_t *gid;
+} cfpo_dens_store;
+
+/* The cell (iy g + ix) of (x, y) in the grid of g cells shifted by (sx, sy). */
+static inline int64_t cfpo_dens_cell_of(int64_t g, double sx, double sy, double x, double y)
+{
+    const double gx = cfpo_wrap01(x - sx), gy = cfpo_wrap01(y - sy);
+    int64_t ix = (int64_t)(gx * (double)g), iy = (int64_t)(gy * (double)g);
+    if (ix >= g) ix = g - 1;
+    if (iy >= g) iy = g - 1;
+    return iy * g + ix;
+}
+
+/* Grows the store's arrays to hold cap points (gid too when with_gid). 0, or -1. */
+int cfpo_dens_store_reserve(cfpo_dens_store *s, int64_t cap, int with_gid);
+void cfpo_dens_store_free(cfpo_dens_store *s);
+
+typedef struct cfpo_dens_dist cfpo_dens_dist;
+
+/* The most ranks a grid of g cells a side supports: (g / 3)^2. */
+int64_t cfpo_dens_dist_max_ranks(int64_t g);
+
+/* The cut of the g x g cells under d over comm_size() ranks (the same on
+ * every rank). NULL with one line in err when there are too many ranks for
+ * g, or out of memory. */
+cfpo_dens_dist *cfpo_dens_dist_create(const cfpo_density *d, int64_t g, char *err, size_t errlen);
+
+/* This rank's cells of one colour (ix mod 3 + 3 (iy mod 3)), increasing. */
+const int64_t *cfpo_dens_dist_cells(const cfpo_dens_dist *T, int colour, int64_t *count);
+
+/* s holds the whole set (own = loc = n, no gid): keeps this rank's points
+ * under the shift (sx, sy), with their ids. 0, or -1 when out of memory. */
+int cfpo_dens_dist_keep(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, double sy);
+
+/* Collective: cuts the cells for the new shift, drops the halo, moves
+ * every point to the owner of its cell, then fetches the halo. 0, or -1 when out of memory
+ * on any rank. */
+int cfpo_dens_dist_migrate(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, double sy);
+
+/* Collective, after a colour's phase: sends this rank's cells of the
+ * colour to the ranks that keep them as halo, and writes the copies it
+ * gets. cstart/cidx: the engine's cells (local indices). 0, or -1 when out
+ * of memory or when a copy does not match its cell (a bug). */
+int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t *cstart, const int64_t *cidx,
+                           int colour);
+
+/* Collective: k doubles of each of the n points (own point i's at v + k i:
+ * its position with v = s->xy, k = 2) into all (k n doubles, id order), on
+ * every rank. 0, or -1 when out of memory on any rank. */
+int cfpo_dens_dist_gather_values(const cfpo_dens_dist *T, const cfpo_dens_store *s, int64_t n, const double *v, int k,
+                                 double *all);
+
+void cfpo_dens_dist_free(cfpo_dens_dist *T);
+
+#endif

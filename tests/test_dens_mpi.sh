@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# test_dens_mpi.sh BUILD_DIR MPIRUN - `cfpo --density` under mpirun: the
+# same bytes (output and trace statistics) as one process for P = 2, 3, 4
+# ranks and 1 or 2 threads on cos, the ramp, Balzer's field and the shipped
+# image; each rank's points within 20% of n / P (the cut balances mass);
+# checkpoint on one rank count, resume and --init on others, the same
+# bytes; a rank count too large for the grid refused once, no file left.
+set -u
+HERE=$(cd "$(dirname "$0")" && pwd)
+B=$(cd "$1" && pwd)
+MPIRUN=$2
+CFPO="$B/cfpo"
+IMG="$HERE/../data/astronaut-256.png"
+T=$(mktemp -d /tmp/cfpo-dmpi-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 1
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
+run() { # run P ARGS...: cfpo on P ranks, 120 s at most
+  local p=$1; shift
+  timeout 120 "$MPIRUN" --oversubscribe -np "$p" "$CFPO" -q "$@"
+}
+
+# name, SPEC, n, iterations: the image needs 32,768 points for a grid of
+# 9 x 9 cells (up to 9 ranks)
+cases=("cos cos:a=0.9 16384 4" "ramp ramp:contrast=16 16384 4" "balzer balzer 16384 4" "img $IMG 32768 3")
+for cs in "${cases[@]}"; do
+  set -- $cs
+  name=$1 spec=$2 n=$3 it=$4
+  "$CFPO" -q -n "$n" --density "$spec" --max-iter "$it" -t 2 -o "$name.npy" --trace "$name.tsv" >/dev/null ||
+    bad "$name: one-process reference failed"
+  for pt in "2 1" "3 1" "4 1" "2 2"; do
+    set -- $pt
+    rm -f out.npy
+    if run "$1" -n "$n" --density "$spec" --max-iter "$it" -t "$2" -o out.npy --trace out.tsv >run.out 2>run.err; then
+      cmp -s out.npy "$name.npy" && ok || bad "$name on $1 ranks x $2 threads: output differs from one process"
+      cmp -s <(cut -f1-6 out.tsv) <(cut -f1-6 "$name.tsv") && ok || bad "$name on $1 ranks: trace statistics differ"
+      grep -q "ranks=$1 " run.out && ok || bad "$name on $1 ranks: the summary does not say ranks=$1"
+      # every rank's points within 20% of n / P (the test densities; the
+      # image too at this n)
+      pts=$(grep -o 'RANKS ranks=[0-9]* points=[0-9,]*' run.out | sed 's/.*points=//')
+      if [ -n "$pts" ] && echo "$pts" | tr , '\n' |
+        awk -v n="$n" -v p="$1" '{ c++; if ($1 < 0.8 * n / p || $1 > 1.2 * n / p) e = 1 } END { exit e || c != p }'; then ok
+      else bad "$name on $1 ranks: points per rank '$pts', not within 20% of $n / $1"; fi
+    else
+      bad "$name on $1 ranks x $2 threads: run failed: $(head -3 run.err)"
+    fi
+  done
+done
+
+# Checkpoint on 2 ranks after 2 of cos's 4 iterations; resume on 3, 4
+# and 1: the bytes of the uninterrupted run. The checkpoint's bytes equal
+# one process's. --init on 4 ranks against one process.
+run 2 -n 16384 --density cos:a=0.9 --max-iter 2 -t 1 --checkpoint ck.bin --checkpoint-every 2 -o h.npy >/dev/null 2>ck.err ||
+  bad "checkpointed run on 2 ranks failed: $(head -3 ck.err)"
+"$CFPO" -q -n 16384 --density cos:a=0.9 --max-iter 2 -t 1 --checkpoint ck1.bin -o h1.npy >/dev/null
+cmp -s ck.bin ck1.bin && ok || bad "the checkpoint written on 2 ranks differs from one process's"
+ls ck.bin.tmp* >/dev/null 2>&1 && bad "a temporary checkpoint was left behind" || ok
+for p in 1 3 4; do
+  rm -f res.npy
+  if [ $p = 1 ]; then "$CFPO" -q -t 1 --density cos:a=0.9 --resume ck.bin --max-iter 4 -o res.npy >/dev/null 2>res.err
+  else run $p -t 1 --density cos:a=0.9 --resume ck.bin --max-iter 4 -o res.npy >/dev/null 2>res.err; fi
+  cmp -s res.npy cos.npy && ok || bad "resume on $p ranks: not the uninterrupted bytes ($(head -2 res.err))"
+done
+# (cos's points under Balzer's field: some nearest neighbours in the measure
+# lie beyond a rank's halo, so the measure falls back to the whole set)
+"$CFPO" -q -t 1 --density balzer --init cos.npy --max-iter 2 -o i1.npy --trace i1.tsv >/dev/null
+run 4 -t 2 --density balzer --init cos.npy --max-iter 2 -o i4.npy --trace i4.tsv >/dev/null 2>i.err
+cmp -s <(cut -f1-6 i1.tsv) <(cut -f1-6 i4.tsv) && ok || bad "--init on 4 ranks: trace statistics differ"
+cmp -s i1.npy i4.npy && ok || bad "--init on 4 ranks differs from one process ($(head -2 i.err))"
+# text output: rank 0 writes the gathered set
+run 2 -n 16384 --density cos:a=0.9 --max-iter 4 -t 1 -o out.txt >/dev/null 2>t.err &&
+  "$CFPO" -q -n 16384 --density cos:a=0.9 --max-iter 4 -t 1 -o ref.txt >/dev/null && cmp -s out.txt ref.txt && ok ||
+  bad "text output on 2 ranks differs ($(head -2 t.err))"
+
+# Errors: one message for the whole job, every rank exits 2 (or 1), no file.
+expect_err() { # CODE PATTERN P ARGS...
+  local code=$1 pat=$2 p=$3; shift 3
+  local before; before=$(ls -A | sort)
+  timeout 60 "$MPIRUN" --oversubscribe -np "$p" "$CFPO" "$@" >e.out 2>e.err
+  local rc=$?
+  local msgs; msgs=$(grep -c '^cfpo:' e.err)
+  local after; after=$(ls -A | grep -v -e '^e.out$' -e '^e.err$' | sort)
+  if [ $rc -ne "$code" ]; then bad "mpirun -np $p cfpo $*: exit $rc, expected $code: $(cat e.err)"
+  elif [ "$msgs" -ne 1 ]; then bad "mpirun -np $p cfpo $*: $msgs messages: $(grep '^cfpo:' e.err)"
+  elif ! grep -q -- "$pat" e.err; then bad "mpirun -np $p cfpo $*: message lacks '$pat': $(grep '^cfpo:' e.err)"
+  elif [ "$after" != "$(echo "$before" | grep -v -e '^e.out$' -e '^e.err$')" ]; then bad "cfpo $*: left files"
+  else ok; fi
+}
+# 8,192 points on the image: a grid of 3 x 3 cells, one rank at most;
+# 16,384 on cos: 30 x 30 cells, 100 ranks at most
+expect_err 2 "grid has 3 x 3 cells, enough for at most 1 rank (this run has 2)" 2 -n 8192 --density "$IMG" -o x.npy
+expect_err 1 "made with another density" 2 --density cos:a=0.8 --resume ck.bin -o x.npy
+expect_err 2 "made with a density" 3 --resume ck.bin -o x.npy
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
