@@ -44,7 +44,8 @@ against n beside adaptive CFPO, FPO and BNOT (int_only: those four only).
 
 The profile `density` is the adaptive part alone at 65,536 points, 3
 seeds (the density issue's medians), iterative methods capped at 150
-iterations.
+iterations; CFPO, DT and density FPO (LFPO, CCVT and BNOT take minutes a
+run at that n).
 
 The profile `seeds` is the many-seed table of the measures of sampling
 research, without evolution, runtime or time-to-quality runs: the
@@ -141,9 +142,9 @@ def profile(name, cores):
     elif name == "density":
         # the adaptive part alone at 65,536 points, 3 seeds, iterative
         # methods stopped after 150 iterations (LFPO and CCVT left out as in
-        # the default profile); the comparison only at 1,024 points (one
+        # the default profile, BNOT too: about 200 s a run there); the comparison only at 1,024 points (one
         # set of adaptive CFPO), no other experiment
-        p.update(ad_n=65536, ad_seeds=3, ad_maxiter=150, sets=1, comp_n=1024, rt_reps=1, evo_iters=[], rt_sizes={},
+        p.update(ad_n=65536, ad_seeds=3, ad_maxiter=150, ad_skip=["lfpo", "ccvt", "bnot"], sets=1, comp_n=1024, rt_reps=1, evo_iters=[], rt_sizes={},
                  ttq_sizes=[], int_seeds=1, int_n=[1024], int_only=("adaptive",))
     else:
         # the integration experiment: 2^8 to 2^20 points, 10 seeds to 2^16
