@@ -40,7 +40,7 @@ static void usage(void)
            "                       paper (the published algorithm: S = cell grown by\n"
            "                       L - Delta, stratified start; 'cfpo' is an alias),\n"
            "                       simplified (4 phases, S = own cell)\n"
-           "                       or hyperuniform (adaptive for 28 iterations, then 56\n"
+           "                       or hyperuniform (adaptive for 28 iterations, then 47\n"
            "                       of transport sweeps that remove the density modes\n"
            "                       |k| <= 0.2 sqrt(n), delta_min kept >= 0.92 Delta, and\n"
            "                       near sweeps; no low-frequency floor)\n"

@@ -29,8 +29,8 @@ static const double relax_strong[2] = {3.0, 1.8}, relax_mild[2] = {1.8, 1.4};
  * transport sweep keeps each point min(r0, HU_CAP Delta(n)) from all;
  * moves longer than HU_VMAX Delta(n) are shortened to it. */
 #define HU_FROM 29
-#define HU_FIRST 16
-#define HU_ROUNDS 8
+#define HU_FIRST 12
+#define HU_ROUNDS 7
 #define HU_ROUND 5
 #define HU_CAP 0.92
 #define HU_VMAX 0.3

@@ -179,20 +179,20 @@ else
 fi
 
 # The hyperuniform variant's schedule steps by iteration too (its stage from
-# 29: transport sweeps, near sweeps at 45, 50, ..., 80; the end at 84): a resume before the
+# 29: transport sweeps, near sweeps at 41, 46, ..., 71; the end at 75): a resume before the
 # stage, inside its first transport block and just before a near sweep of
 # it ends in the uninterrupted run's bytes.
 "$CFPO" -q -n $N -t 2 --variant hyperuniform -o hu.bin >/dev/null || bad "hyperuniform run"
-for k in 28 33 44; do
+for k in 28 33 40; do
   "$CFPO" -q -n $N -t 2 --variant hyperuniform --max-iter $k --checkpoint hu$k.ck --checkpoint-every $k \
     >/dev/null || bad "hyperuniform run to $k"
   "$CFPO" -q -t 1 --resume hu$k.ck -o hu$k.bin >/dev/null && cmp -s hu$k.bin hu.bin && ok ||
     bad "hyperuniform: resume from iteration $k differs from the uninterrupted run"
 done
 # Its last checkpoint (converged, after the near sweeps of its stage) reads back.
-"$CFPO" -q -n $N -t 2 --variant hyperuniform --checkpoint hu84.ck --checkpoint-every 84 >/dev/null ||
+"$CFPO" -q -n $N -t 2 --variant hyperuniform --checkpoint hu75.ck --checkpoint-every 75 >/dev/null ||
   bad "hyperuniform run to its end"
-"$CFPO" -q -t 1 --resume hu84.ck -o hu84.bin >/dev/null && cmp -s hu84.bin hu.bin && ok ||
+"$CFPO" -q -t 1 --resume hu75.ck -o hu75.bin >/dev/null && cmp -s hu75.bin hu.bin && ok ||
   bad "hyperuniform: its converged checkpoint does not resume to its points"
 
 echo "$pass passed, $fail failed"
