@@ -1,6 +1,8 @@
 /* capacity.c - see capacity.h. */
 #include "capacity.h"
 
+#include "density_walk.h"
+
 #include <math.h>
 #include <stdlib.h>
 
@@ -23,25 +25,28 @@ static int table_build(table *t, const cfpo_density *d)
     return 0;
 }
 
-static int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-
 /* F(x, y) = int_0^x rho(t, y) dt, continued past [0, 1) by the row sums. */
 static double F(const table *t, double x, double y)
 {
     const int64_t w = t->d->w, h = t->d->h;
     const int64_t i = (int64_t)floor(x * (double)w), j = (int64_t)floor(y * (double)h);
-    const int64_t jj = j - floor_div(j, h) * h, qi = floor_div(i, w), ii = i - qi * w;
+    const int64_t jj = j - cfpo_floor_div(j, h) * h, qi = cfpo_floor_div(i, w), ii = i - qi * w;
     const double *p = t->pre + jj * (w + 1);
     return (double)qi * p[w] + p[ii] + t->d->rho[jj * w + ii] * (x - (double)i / (double)w);
 }
 
-/* The first boundary m / s strictly ahead of v0 going the way of dv, as the
- * parameter t; the boundary index in *m. */
-static double first_cross(double v0, double dv, double s, int64_t *m)
+typedef struct {
+    const table *t;
+    double x0, y0, dx, dy, sum;
+} edge_ctx;
+
+static void edge_piece(void *vc, double t0, double t1, int64_t i, int64_t j)
 {
-    if (dv == 0) return INFINITY;
-    *m = dv > 0 ? (int64_t)floor(v0 * s) + 1 : (int64_t)ceil(v0 * s) - 1;
-    return ((double)*m / s - v0) / dv;
+    (void)i;
+    (void)j;
+    edge_ctx *c = vc;
+    const double tm = 0.5 * (t0 + t1);
+    c->sum += F(c->t, c->x0 + tm * c->dx, c->y0 + tm * c->dy) * (t1 - t0);
 }
 
 /* int F dy along the segment (x0, y0) -> (x1, y1), cut at every pixel edge. */
@@ -49,22 +54,9 @@ static double edge(const table *t, double x0, double y0, double x1, double y1)
 {
     const double dx = x1 - x0, dy = y1 - y0;
     if (dy == 0) return 0;
-    const double sw = (double)t->d->w, sh = (double)t->d->h;
-    int64_t mx = 0, my = 0;
-    double tx = first_cross(x0, dx, sw, &mx), ty = first_cross(y0, dy, sh, &my), tc = 0, sum = 0;
-    const int64_t sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
-    while (tc < 1) {
-        double tn = tx < ty ? tx : ty;
-        if (tn > 1) tn = 1;
-        if (tn > tc) {
-            const double tm = 0.5 * (tc + tn);
-            sum += F(t, x0 + tm * dx, y0 + tm * dy) * (tn - tc);
-        }
-        if (tx <= tn) { mx += sx; tx = ((double)mx / sw - x0) / dx; }
-        if (ty <= tn) { my += sy; ty = ((double)my / sh - y0) / dy; }
-        tc = tn;
-    }
-    return sum * dy;
+    edge_ctx c = {t, x0, y0, dx, dy, 0};
+    cfpo_density_walk(t->d, x0, y0, dx, dy, edge_piece, &c);
+    return c.sum * dy;
 }
 
 static double polygon(const table *t, const double *v, size_t m)

@@ -1,6 +1,8 @@
 /* dens_poly.c - see dens_poly.h. */
 #include "dens_poly.h"
 
+#include "density_walk.h"
+
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -34,48 +36,6 @@ void dens_poly_free(dens_poly *t)
     t->pre = NULL;
 }
 
-static int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-
-/* A piece of a segment inside one pixel: parameters [t0, t1], the pixel's
- * global column i and row j (any integers; the density repeats). */
-typedef void (*piece_fn)(void *ctx, double t0, double t1, int64_t i, int64_t j);
-
-/* The first grid line m / s strictly ahead of v0 going the way of dv, as
- * the parameter t; the line's index in *m. */
-static double first_cross(double v0, double dv, double s, int64_t *m)
-{
-    if (dv == 0) return INFINITY;
-    *m = dv > 0 ? (int64_t)floor(v0 * s) + 1 : (int64_t)ceil(v0 * s) - 1;
-    return ((double)*m / s - v0) / dv;
-}
-
-/* The segment (x0, y0) + t (dx, dy), t in [0, 1], cut at every pixel
- * column and row; the pixel of each piece is that of its midpoint. */
-static void walk(const cfpo_density *d, double x0, double y0, double dx, double dy, piece_fn fn, void *ctx)
-{
-    const double sw = (double)d->w, sh = (double)d->h;
-    int64_t mx = 0, my = 0;
-    double tx = first_cross(x0, dx, sw, &mx), ty = first_cross(y0, dy, sh, &my), tc = 0;
-    const int64_t sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
-    while (tc < 1) {
-        double tn = tx < ty ? tx : ty;
-        if (tn > 1) tn = 1;
-        if (tn > tc) {
-            const double tm = 0.5 * (tc + tn);
-            fn(ctx, tc, tn, (int64_t)floor((x0 + tm * dx) * sw), (int64_t)floor((y0 + tm * dy) * sh));
-        }
-        if (tx <= tn) {
-            mx += sx;
-            tx = ((double)mx / sw - x0) / dx;
-        }
-        if (ty <= tn) {
-            my += sy;
-            ty = ((double)my / sh - y0) / dy;
-        }
-        tc = tn;
-    }
-}
-
 typedef struct {
     const dens_poly *t;
     double x0, y0, dx, dy, px, py;
@@ -87,7 +47,7 @@ typedef struct {
 static void prefix(const dens_poly *t, int64_t jj, int64_t i, double c, double x, double H[3])
 {
     const int64_t w = t->d->w;
-    const int64_t q = floor_div(i, w), ii = i - q * w;
+    const int64_t q = cfpo_floor_div(i, w), ii = i - q * w;
     const double qd = (double)q, xl = x - qd, e = (double)ii / (double)w;
     double loc[3];
     for (int l = 0; l < 3; l++) {
@@ -122,7 +82,7 @@ static void poly_piece(void *vc, double t0, double t1, int64_t i, int64_t j)
 {
     poly_ctx *c = vc;
     const cfpo_density *d = c->t->d;
-    const int64_t jj = j - floor_div(j, d->h) * d->h, ii = i - floor_div(i, d->w) * d->w;
+    const int64_t jj = j - cfpo_floor_div(j, d->h) * d->h, ii = i - cfpo_floor_div(i, d->w) * d->w;
     const double rho = d->rho[jj * d->w + ii];
     static const double g = 0.28867513459481288225; /* 1 / (2 sqrt 3) */
     const double h = t1 - t0, wgt = 0.5 * h * c->dy;
@@ -148,7 +108,7 @@ void dens_poly_moments(const dens_poly *t, double px, double py, const double *v
         c.dx = px + v[2 * b] - c.x0;
         c.dy = py + v[2 * b + 1] - c.y0;
         if (c.dy == 0) continue; /* G dy vanishes */
-        walk(t->d, c.x0, c.y0, c.dx, c.dy, poly_piece, &c);
+        cfpo_density_walk(t->d, c.x0, c.y0, c.dx, c.dy, poly_piece, &c);
     }
     for (int q = 0; q < 4; q++) out[q] = c.acc[q];
 }
@@ -161,7 +121,7 @@ typedef struct {
 static void seg_piece(void *vc, double t0, double t1, int64_t i, int64_t j)
 {
     seg_ctx *c = vc;
-    const int64_t jj = j - floor_div(j, c->d->h) * c->d->h, ii = i - floor_div(i, c->d->w) * c->d->w;
+    const int64_t jj = j - cfpo_floor_div(j, c->d->h) * c->d->h, ii = i - cfpo_floor_div(i, c->d->w) * c->d->w;
     c->sum += c->d->rho[jj * c->d->w + ii] * (t1 - t0);
 }
 
@@ -170,6 +130,6 @@ double dens_poly_segment(const dens_poly *t, double x0, double y0, double x1, do
     const double dx = x1 - x0, dy = y1 - y0;
     if (dx == 0 && dy == 0) return 0;
     seg_ctx c = {t->d, 0};
-    walk(t->d, x0, y0, dx, dy, seg_piece, &c);
+    cfpo_density_walk(t->d, x0, y0, dx, dy, seg_piece, &c);
     return c.sum * sqrt(dx * dx + dy * dy);
 }

@@ -11,9 +11,9 @@
  * cut where it crosses a pixel column or row, and on each piece (one
  * pixel) G is a polynomial of degree <= 3 in the edge's parameter,
  * integrated exactly by the two-point Gauss rule. Segment: the sum of each
- * piece's rho times its length. The same approach as the analysis's
- * capacity (analysis/capacity.c), which gives the mass only; the baselines
- * do not link the analysis, so this is their own, with the moments.
+ * piece's rho times its length. The analysis's capacity (analysis/capacity.c)
+ * gives the mass the same way; both cut their edges with
+ * cfpo_density_walk (src/density_walk.h).
  * Does not own: the density (density.c), the cells (bnot_power.cpp). */
 #ifndef CFPO_BASELINES_DENS_POLY_H
 #define CFPO_BASELINES_DENS_POLY_H

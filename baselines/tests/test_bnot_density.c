@@ -160,7 +160,8 @@ static void brute_force(const cfpo_density *d, int64_t n, int iters, int g)
     const double *p = bnot_points(E), *w = bnot_weights(E), *A = bnot_areas(E), *C = bnot_centroids(E);
     double wspread = 0, sum = 0;
     for (int64_t i = 0; i < n; i++) wspread = fmax(wspread, fabs(w[i]) * (double)n), sum += A[i];
-    double *ms = calloc((size_t)n, sizeof *ms), *sx = calloc((size_t)n, sizeof *sx), *sy = calloc((size_t)n, sizeof *sy);
+    const size_t cnt = n > 0 ? (size_t)n : 1;
+    double *ms = calloc(cnt, sizeof *ms), *sx = calloc(cnt, sizeof *sx), *sy = calloc(cnt, sizeof *sy);
     const double h = 1.0 / g;
     for (int a = 0; a < g; a++)
         for (int b = 0; b < g; b++) {
