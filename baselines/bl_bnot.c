@@ -38,16 +38,23 @@ static int check_n(const bl_value *v, int64_t n, double tol, char *err, size_t e
     return bl_check_n_memory("bnot", n, tol, bytes, err, errlen);
 }
 
-/* epsilon > 0: the authors' schedule; 0: the run to tol */
-static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
+/* The schedule's options as given. */
+static bnot_rule rule_of(const bl_value *v)
 {
-    if (!(v[EPSILON].d > 0)) return bnot_create(n, seed, tol, err, errlen);
     bnot_rule r;
     bnot_rule_init(&r);
     r.epsilon = v[EPSILON].d;
     r.breaker = (int)v[BREAKER].i;
     r.max_rounds = (int)v[MAX_ROUNDS].i;
     r.round_iters = (int)v[ROUND_ITERS].i;
+    return r;
+}
+
+/* epsilon > 0: the authors' schedule; 0: the run to tol */
+static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
+{
+    if (!(v[EPSILON].d > 0)) return bnot_create(n, seed, tol, err, errlen);
+    const bnot_rule r = rule_of(v);
     return bnot_create_rule(n, NULL, seed, 0, tol, &r, err, errlen);
 }
 
@@ -55,12 +62,7 @@ static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, cha
 static void *create_density(const bl_value *v, int64_t n, uint64_t seed, double tol, const cfpo_density *d,
                             char *err, size_t errlen)
 {
-    bnot_rule r;
-    bnot_rule_init(&r);
-    r.epsilon = v[EPSILON].d;
-    r.breaker = (int)v[BREAKER].i;
-    r.max_rounds = (int)v[MAX_ROUNDS].i;
-    r.round_iters = (int)v[ROUND_ITERS].i;
+    const bnot_rule r = rule_of(v);
     return bnot_create_density(n, NULL, seed, 0, tol, &r, d, 0, err, errlen);
 }
 

@@ -42,7 +42,9 @@ static int check_n(const bl_value *v, int64_t n, double tol, char *err, size_t e
     return bl_check_n_memory("ccvt", n, tol, bytes, err, errlen);
 }
 
-static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
+/* The options as given (--point-set is not consulted under a density:
+ * the capacity points are drawn from it). */
+static ccvt_options options_of(const bl_value *v, uint64_t seed, double tol)
 {
     ccvt_options o;
     ccvt_options_init(&o);
@@ -52,19 +54,19 @@ static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, cha
     o.points = (int)v[POINT_SET].i;
     o.update = (int)v[UPDATE].i;
     o.assign = (int)v[ASSIGN].i;
+    return o;
+}
+
+static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
+{
+    const ccvt_options o = options_of(v, seed, tol);
     return ccvt_create(n, &o, err, errlen);
 }
 
 static void *create_density(const bl_value *v, int64_t n, uint64_t seed, double tol, const cfpo_density *d,
                             char *err, size_t errlen)
 {
-    ccvt_options o;
-    ccvt_options_init(&o);
-    o.seed = seed;
-    o.tol = tol;
-    o.m = v[M].i;
-    o.update = (int)v[UPDATE].i;
-    o.assign = (int)v[ASSIGN].i;
+    ccvt_options o = options_of(v, seed, tol);
     o.density = d;
     return ccvt_create(n, &o, err, errlen);
 }

@@ -21,6 +21,8 @@ pass=0; fail=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 check() { local what=$1; shift; if "$@"; then ok; else bad "$what"; fi; }
+# check WHAT holds 'A && B ...': the whole list decides (not A alone)
+holds() { eval "$1"; }
 cd "$SRC" || exit 1
 # the methods (scripts/methods.tsv): SUMMARY method names as regular
 # expressions, all / not iterative / iterative, and the comparison's keys
@@ -298,7 +300,17 @@ $BENCH run "$B" lowk --plan >"$T/plan-lowk" 2>&1
 others=$(grep -E '^(comparison|integration|evolution|runtime|ttq) ' "$T/plan-lowk" | awk '{ print $2 }' | sort -u | tr '\n' ' ')
 check "lowk plan: only FPO, BNOT, adaptive and hyperuniform CFPO (got: $others)" [ "$others" = "adaptive bnot fpo hyperuniform " ]
 check "lowk plan: the two CFPO variants to 2^20, FPO and BNOT to 2^16" \
-  [ "$(grep -Ec '^integration (adaptive|hyperuniform) +n=1048576 ' "$T/plan-lowk")" -eq 6 ] && ! grep -Eq '^integration (fpo|bnot) +n=(262144|1048576) ' "$T/plan-lowk"
+  holds '[ "$(grep -Ec "^integration (adaptive|hyperuniform) +n=1048576 " "$T/plan-lowk")" -eq 6 ] && ! grep -Eq "^integration (fpo|bnot) +n=(262144|1048576) " "$T/plan-lowk"'
+
+# ---- the profile density (planned only): the adaptive part alone at 65,536
+# points, 3 seeds, CFPO, DT and density FPO (LFPO, CCVT and BNOT left out);
+# of the other experiments only the comparison's one set of adaptive CFPO
+$BENCH run "$B" density --plan >"$T/plan-density" 2>&1
+dp() { $BENCH profile density | sed -n "s/^$1=//p"; }
+check "density plan: one comparison run of adaptive CFPO, nothing else ($(grep -Ec '^(comparison|integration|evolution|runtime|ttq) ' "$T/plan-density") runs)" \
+  holds '[ "$(grep -Ec "^(comparison|integration|evolution|runtime|ttq) " "$T/plan-density")" -eq 1 ] && grep -Eq "^comparison adaptive +n=1024 " "$T/plan-density"'
+check "density profile: the adaptive part at 65,536 points, 3 seeds, without LFPO, CCVT and BNOT (got n=$(dp ad_n) seeds=$(dp ad_seeds) skip=$(dp ad_skip))" \
+  [ "$(dp ad_n) $(dp ad_seeds) $(tr ' ' '\n' <<<"$(dp ad_skip)" | sort | tr '\n' ' ')" = "65536 3 bnot ccvt lfpo " ]
 
 # ---- the low-frequency table: every number recomputes from spectra.csv --------------
 lowtab=$(awk '/^## Low-frequency spectrum/ { on = 1; next } on && /^## / { on = 0 } on && /^\| / && !/^\| (method|---)/' "$R/summary.md")
@@ -391,7 +403,7 @@ check "replot left runs.csv, spectra.csv and integration.csv alone" [ "$(md5sum 
 old="$T/old"; cp -r "$R" "$old"
 awk -F, '/^#/ || $2 != "ttq"' "$R/runs.csv" >"$old/runs.csv"; rm -f "$old/quality.csv" "$old/fig-time-to-quality.png"
 if $BENCH replot "$old" >/dev/null 2>"$T/rerr2"; then ok; else bad "replot of a folder without ttq runs: $(tail -n 1 "$T/rerr2")"; fi
-check "no ttq runs: no time-to-quality figure or section" [ ! -e "$old/fig-time-to-quality.png" ] && ! grep -q "Time to quality" "$old/summary.md"
+check "no ttq runs: no time-to-quality figure or section" holds '[ ! -e "$old/fig-time-to-quality.png" ] && ! grep -q "Time to quality" "$old/summary.md"'
 check "no ttq runs: the integration figure still drawn" png_ok "$old/fig-integration.png"
 rm -rf "$old"
 # a folder written before the measures: spectra.csv of 19 columns, no integration.csv
@@ -399,7 +411,7 @@ old="$T/old2"; cp -r "$R" "$old"
 cut -d, -f1-19 "$R/spectra.csv" >"$old/spectra.csv"; rm -f "$old/integration.csv"
 if $BENCH replot "$old" >/dev/null 2>"$T/rerr3"; then ok; else bad "replot of a folder before the measures: $(tail -n 1 "$T/rerr3")"; fi
 check "before the measures: no integration figure, no low-frequency table" \
-  [ ! -e "$old/fig-integration.png" ] && ! grep -q "^## Low-frequency" "$old/summary.md" && ! grep -q "^## Integration" "$old/summary.md"
+  holds '[ ! -e "$old/fig-integration.png" ] && ! grep -q "^## Low-frequency" "$old/summary.md" && ! grep -q "^## Integration" "$old/summary.md"'
 check "before the measures: the low-frequency panel still drawn (raps.txt)" png_ok "$old/fig-lowfreq.png"
 # pair correlation: a pcf.txt in an averaged analysis gives the g(r) figure;
 # without one, it goes (silently)
@@ -408,10 +420,10 @@ printf '# pair correlation, test data\n# r/Delta g\n0.1 0\n0.5 0\n0.9 1.8\n1.2 1
 cp "$old/data/analysis/comparison-cfpo/pcf.txt" "$old/data/analysis/comparison-fpo/pcf.txt"
 if $BENCH replot "$old" >/dev/null 2>"$T/rerr4"; then ok; else bad "replot with pcf.txt: $(tail -n 1 "$T/rerr4")"; fi
 check "pcf.txt present: fig-pcf.png a PNG, shown in summary.md, one panel per such method" \
-  png_ok "$old/fig-pcf.png" && grep -q "](fig-pcf.png)" "$old/summary.md" && [ "$(grep -c "^GRP\[" "$old/plotdata/fig-pcf.vars.gp")" -eq 2 ]
+  holds 'png_ok "$old/fig-pcf.png" && grep -q "](fig-pcf.png)" "$old/summary.md" && [ "$(grep -c "^GRP\[" "$old/plotdata/fig-pcf.vars.gp")" -eq 2 ]'
 rm -f "$old"/data/analysis/*/pcf.txt
 if $BENCH replot "$old" >/dev/null 2>"$T/rerr5"; then ok; else bad "replot after pcf.txt went: $(tail -n 1 "$T/rerr5")"; fi
-check "pcf.txt gone: no g(r) figure, no mention" [ ! -e "$old/fig-pcf.png" ] && ! grep -q "fig-pcf" "$old/summary.md"
+check "pcf.txt gone: no g(r) figure, no mention" holds '[ ! -e "$old/fig-pcf.png" ] && ! grep -q "fig-pcf" "$old/summary.md"'
 rm -rf "$old"
 (cd "$T/res/.." && mkdir -p results && cp -r "$R" results/ && python3 "$SRC/scripts/bench.py" replot >/dev/null 2>&1)
 check "replot without an argument takes the newest folder under results/" [ -s "$T/results/$(basename "$R")/fig-speedup.png" ]

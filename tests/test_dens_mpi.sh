@@ -7,21 +7,8 @@
 # bytes; a rank count too large for the grid refused once, no file left.
 set -u
 HERE=$(cd "$(dirname "$0")" && pwd)
-B=$(cd "$1" && pwd)
-MPIRUN=$2
-CFPO="$B/cfpo"
 IMG="$HERE/../data/astronaut-256.png"
-T=$(mktemp -d /tmp/cfpo-dmpi-XXXXXX)
-trap 'rm -rf "$T"' EXIT
-cd "$T" || exit 1
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-pass=0 fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
-run() { # run P ARGS...: cfpo on P ranks, 120 s at most
-  local p=$1; shift
-  timeout 120 "$MPIRUN" --oversubscribe -np "$p" "$CFPO" -q "$@"
-}
+. "$HERE/mpi_common.sh" "$1" "$2" cfpo-dmpi
 
 # name, SPEC, n, iterations: the image needs 32,768 points for a grid of
 # 9 x 9 cells (up to 9 ranks)
@@ -76,19 +63,6 @@ run 2 -n 16384 --density cos:a=0.9 --max-iter 4 -t 1 -o out.txt >/dev/null 2>t.e
   bad "text output on 2 ranks differs ($(head -2 t.err))"
 
 # Errors: one message for the whole job, every rank exits 2 (or 1), no file.
-expect_err() { # CODE PATTERN P ARGS...
-  local code=$1 pat=$2 p=$3; shift 3
-  local before; before=$(ls -A | sort)
-  timeout 60 "$MPIRUN" --oversubscribe -np "$p" "$CFPO" "$@" >e.out 2>e.err
-  local rc=$?
-  local msgs; msgs=$(grep -c '^cfpo:' e.err)
-  local after; after=$(ls -A | grep -v -e '^e.out$' -e '^e.err$' | sort)
-  if [ $rc -ne "$code" ]; then bad "mpirun -np $p cfpo $*: exit $rc, expected $code: $(cat e.err)"
-  elif [ "$msgs" -ne 1 ]; then bad "mpirun -np $p cfpo $*: $msgs messages: $(grep '^cfpo:' e.err)"
-  elif ! grep -q -- "$pat" e.err; then bad "mpirun -np $p cfpo $*: message lacks '$pat': $(grep '^cfpo:' e.err)"
-  elif [ "$after" != "$(echo "$before" | grep -v -e '^e.out$' -e '^e.err$')" ]; then bad "cfpo $*: left files"
-  else ok; fi
-}
 # 8,192 points on the image: a grid of 3 x 3 cells, one rank at most;
 # 16,384 on cos: 30 x 30 cells, 100 ranks at most
 expect_err 2 "grid has 3 x 3 cells, enough for at most 1 rank (this run has 2)" 2 -n 8192 --density "$IMG" -o x.npy

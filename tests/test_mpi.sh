@@ -7,20 +7,7 @@
 # killed mid-run leaving a usable checkpoint, and errors reported once with
 # every rank exiting non-zero.
 set -u
-B=$(cd "$1" && pwd)
-MPIRUN=$2
-CFPO="$B/cfpo"
-T=$(mktemp -d /tmp/cfpo-mpi-XXXXXX)
-trap 'rm -rf "$T"' EXIT
-cd "$T" || exit 1
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-pass=0 fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
-run() { # run P ARGS...: cfpo on P ranks, 120 s at most
-  local p=$1; shift
-  timeout 120 "$MPIRUN" --oversubscribe -np "$p" "$CFPO" -q "$@"
-}
+. "$(cd "$(dirname "$0")" && pwd)/mpi_common.sh" "$1" "$2" cfpo-mpi
 
 # The reference: one process, no mpirun, 2 threads.
 N=4096
@@ -145,21 +132,6 @@ else
 fi
 
 # Errors: one message for the whole job, every rank non-zero, no files.
-expect_err() { # CODE PATTERN P ARGS...
-  local code=$1 pat=$2 p=$3; shift 3
-  local before; before=$(ls -A | sort)
-  timeout 60 "$MPIRUN" --oversubscribe -np "$p" "$CFPO" "$@" >e.out 2>e.err
-  local rc=$?
-  local msgs; msgs=$(grep -c '^cfpo:' e.err)
-  local after; after=$(ls -A | grep -v -e '^e.out$' -e '^e.err$' | sort)
-  if [ $rc -eq 0 ]; then bad "mpirun -np $p cfpo $*: exit 0"
-  elif [ "$msgs" -ne 1 ]; then bad "mpirun -np $p cfpo $*: $msgs messages: $(grep '^cfpo:' e.err)"
-  elif ! grep -q -- "$pat" e.err; then bad "mpirun -np $p cfpo $*: message lacks '$pat': $(grep '^cfpo:' e.err)"
-  elif [ "$after" != "$(echo "$before" | grep -v -e '^e.out$' -e '^e.err$')" ]; then bad "cfpo $*: left files"
-  else ok; fi
-  # every rank exits with the same code: mpirun reports it
-  [ $rc -eq "$code" ] && ok || bad "mpirun -np $p cfpo $*: exit $rc, expected $code"
-}
 expect_err 2 "unknown option" 3 -n $N --bogus
 expect_err 2 "not a positive whole number" 2 -n abc
 expect_err 2 "tiles too small" 5 -n 100 -o x.npy

@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "bnot.h"
+#include "power_brute.h"
 #include "rng.h"
 #include "testutil.h"
 
@@ -114,15 +115,8 @@ static void brute_force(int64_t n, int iters, int g)
     for (int a = 0; a < g; a++)
         for (int b = 0; b < g; b++) {
             const double x = (a + 0.5) / g, y = (b + 0.5) / g;
-            double best = HUGE_VAL, bx = 0, by = 0;
-            int64_t bi = -1;
-            for (int64_t i = 0; i < n; i++)
-                for (int oy = -1; oy <= 1; oy++)
-                    for (int ox = -1; ox <= 1; ox++) {
-                        const double cx = p[2 * i] + ox, cy = p[2 * i + 1] + oy;
-                        const double d = (x - cx) * (x - cx) + (y - cy) * (y - cy) - w[i];
-                        if (d < best) { best = d; bi = i; bx = x - ox; by = y - oy; }
-                    }
+            double bx, by;
+            const int64_t bi = power_cell_brute(p, w, n, x, y, &bx, &by);
             cnt[bi] += 1;
             sx[bi] += bx; /* the sample in the frame of the site itself */
             sy[bi] += by;

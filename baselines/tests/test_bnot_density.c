@@ -27,6 +27,7 @@
 
 #include "bnot.h"
 #include "dens_poly.h"
+#include "power_brute.h"
 #include "rng.h"
 #include "testdensity.h"
 #include "testutil.h"
@@ -166,15 +167,8 @@ static void brute_force(const cfpo_density *d, int64_t n, int iters, int g)
     for (int a = 0; a < g; a++)
         for (int b = 0; b < g; b++) {
             const double x = (a + 0.5) * h, y = (b + 0.5) * h, r = cfpo_density_at(d, x, y) * h * h;
-            double best = HUGE_VAL, bx = 0, by = 0;
-            int64_t bi = -1;
-            for (int64_t i = 0; i < n; i++)
-                for (int oy = -1; oy <= 1; oy++)
-                    for (int ox = -1; ox <= 1; ox++) {
-                        const double cx = p[2 * i] + ox, cy = p[2 * i + 1] + oy;
-                        const double dd = (x - cx) * (x - cx) + (y - cy) * (y - cy) - w[i];
-                        if (dd < best) { best = dd; bi = i; bx = x - ox; by = y - oy; }
-                    }
+            double bx, by;
+            const int64_t bi = power_cell_brute(p, w, n, x, y, &bx, &by);
             ms[bi] += r;
             sx[bi] += r * bx;
             sy[bi] += r * by;
