@@ -9,12 +9,16 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "density.h"
 #include "engine.h"
+#include "engines.h"
+#include "run_loop.h"
 #include "grid.h"
+#include "policy.h"
 
 double cfpo_default_tol(int variant)
 {
-    return variant == CFPO_VARIANT_ADAPTIVE || variant == CFPO_VARIANT_HYPERUNIFORM ? CFPO_ADAPTIVE_TOL : CFPO_DEFAULT_TOL;
+    return cfpo_policy_default_tol(variant, 0);
 }
 
 void cfpo_options_init(cfpo_options *o)
@@ -115,18 +119,45 @@ int cfpo_validate(int64_t n, const cfpo_options *o, char *err, size_t errlen)
     return 0;
 }
 
-int cfpo_sample(int64_t n, const cfpo_options *o, double *xy, cfpo_result *res, char *err,
-                size_t errlen)
+/* One run through the one interface (engines.h, run_loop.h); d may be NULL. */
+static int sample(int64_t n, const cfpo_options *o, const cfpo_density *d, double *xy, cfpo_result *res, char *err,
+                  size_t errlen)
 {
-    cfpo_engine *E = cfpo_engine_create(n, o, err, errlen);
-    if (!E) return -1;
+    if (validate_options(o, err, errlen) != 0) return -1;
+    if (d && !cfpo_density_is_flat(d) && cfpo_density_check_n(d, n, err, errlen) != 0) return -1;
+    cfpo_engine_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfpo_run_engine R;
+    if (cfpo_engines_open(n, o, &cfg, d, cli_now(), &R, err, errlen) != 0) return -1;
     cfpo_result r;
-    if (cfpo_engine_run(E, &r, err, errlen) != 0) {
-        cfpo_engine_free(E);
-        return -1;
-    }
-    cfpo_engine_points(E, xy);
-    cfpo_engine_free(E);
-    if (res) *res = r;
-    return 0;
+    const int rc = cfpo_run_loop(&R, NULL, 0, &r, err, errlen);
+    if (rc == 0) R.ops->copy(R.E, xy);
+    R.ops->free(R.E);
+    if (rc == 0 && res) *res = r;
+    return rc;
+}
+
+int cfpo_sample(int64_t n, const cfpo_options *o, double *xy, cfpo_result *res, char *err, size_t errlen)
+{
+    return sample(n, o, NULL, xy, res, err, errlen);
+}
+
+int cfpo_sample_density(int64_t n, const cfpo_options *o, const char *density, double *xy, cfpo_result *res,
+                        char *err, size_t errlen)
+{
+    cfpo_density d;
+    if (cfpo_density_load(density, &d, err, errlen) != 0) return -1;
+    const int rc = sample(n, o, &d, xy, res, err, errlen);
+    cfpo_density_free(&d);
+    return rc;
+}
+
+int cfpo_sample_density_values(int64_t n, const cfpo_options *o, const double *rho, int64_t w, int64_t h, double *xy,
+                               cfpo_result *res, char *err, size_t errlen)
+{
+    cfpo_density d;
+    if (cfpo_density_from_values(rho, w, h, "density", &d, err, errlen) != 0) return -1;
+    const int rc = sample(n, o, &d, xy, res, err, errlen);
+    cfpo_density_free(&d);
+    return rc;
 }

@@ -12,8 +12,8 @@
  *     if (cfpo_sample(n, &o, xy, &r, err, sizeof err) != 0) fprintf(stderr, "%s\n", err);
  *
  * xy receives n points (x0 y0 x1 y1 ...) on the unit torus [0,1)^2 in id
- * order. The result is a pure function of (n, seed, variant, tol,
- * max_iter): the number of threads and the skipping of unchanged
+ * order (cfpo_sample_density below follows a density). The result is a
+ * pure function of (n, seed, variant, tol, max_iter): the number of threads and the skipping of unchanged
  * neighbourhoods never change a bit of it. Link with -lcfpo -lm and OpenMP.
  *
  * Layer 4 (the library's front): may include cfpo_types.h only; its
@@ -57,6 +57,22 @@ int cfpo_validate_ranks(int64_t n, const cfpo_options *o, int64_t rank_points, i
  * message in err. */
 int cfpo_sample(int64_t n, const cfpo_options *o, double *xy, cfpo_result *res, char *err,
                 size_t errlen);
+
+/* cfpo_sample under a density (docs/method.md, "Density"): n points on
+ * the unit torus whose counts follow rho, given as `cfpo --density` takes
+ * it (an image FILE.png / FILE.pgm, a 2-D FILE.npy, cos:..., ramp:...,
+ * balzer). o->tol is the move tolerance in local spacings: pass
+ * CFPO_DENSITY_TOL for the command's default. The variant must be the
+ * adaptive one. The same bytes as `cfpo -n N --density SPEC` with the same
+ * seed and tolerance; a flat density gives cfpo_sample's. 0, or -1 with
+ * one line in err (a bad density or n too small for it among them). */
+int cfpo_sample_density(int64_t n, const cfpo_options *o, const char *density, double *xy, cfpo_result *res,
+                        char *err, size_t errlen);
+
+/* The same with the density as w x h non-negative values, row j = y
+ * (normalised here; zero-density pixels get no point). */
+int cfpo_sample_density_values(int64_t n, const cfpo_options *o, const double *rho, int64_t w, int64_t h, double *xy,
+                               cfpo_result *res, char *err, size_t errlen);
 
 #ifdef __cplusplus
 }

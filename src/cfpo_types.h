@@ -26,6 +26,9 @@ enum { CFPO_VARIANT_PAPER = 0, CFPO_VARIANT_SIMPLIFIED = 1, CFPO_VARIANT_ADAPTIV
  * FPO's delta_min at convergence (docs/method.md). */
 #define CFPO_DEFAULT_TOL 1e-4
 #define CFPO_ADAPTIVE_TOL 3e-5
+/* Under a density: a move must gain more than this many local spacings in
+ * the measure (policy.h chooses among the three). */
+#define CFPO_DENSITY_TOL 1e-4
 /* The largest tolerance any command, option set or checkpoint may carry
  * (the one bound, checked everywhere a tolerance comes in). */
 #define CFPO_TOL_MAX 0.49

@@ -38,23 +38,45 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
                 size_t errlen)
 {
     memset(c, 0, sizeof *c);
-    if (size < CKPT_HEADER) {
+    c->bytes = CKPT_HEADER_V3;
+    if (size < CKPT_HEADER_V3) {
         snprintf(err, errlen, "%s: not a cfpo checkpoint (%llu bytes, shorter than its 64-byte header)", path,
                  (unsigned long long)size);
+        return -1;
+    }
+    if (memcmp(h, "CFPODENS", 8) == 0) {
+        snprintf(err, errlen, "%s: a density checkpoint of cfpo 0.1.0 before its one checkpoint format; this "
+                 "cfpo does not read it (run again from --init with its points, or with the older cfpo)", path);
         return -1;
     }
     uint64_t variant, converged, n;
     if (memcmp(h, MAGIC_V2, 8) == 0) {
         c->version = (int)get32(h + 8);
-        if (get32(h + 8) != 2 && get32(h + 8) != CKPT_VERSION) {
-            snprintf(err, errlen, "%s: checkpoint version %lu is not one this cfpo reads (1, 2 or 3)", path,
+        if (get32(h + 8) != 2 && get32(h + 8) != 3 && get32(h + 8) != CKPT_VERSION) {
+            snprintf(err, errlen, "%s: checkpoint version %lu is not one this cfpo reads (1 to 4)", path,
                      (unsigned long)get32(h + 8));
             return -1;
         }
-        if (get32(h + 12) != CKPT_HEADER) {
-            snprintf(err, errlen, "%s: corrupt checkpoint: header size field %lu, expected 64", path,
-                     (unsigned long)get32(h + 12));
+        c->bytes = c->version == CKPT_VERSION ? CKPT_HEADER : CKPT_HEADER_V3;
+        if (get32(h + 12) != (uint32_t)c->bytes) {
+            snprintf(err, errlen, "%s: corrupt checkpoint: header size field %lu, expected %d", path,
+                     (unsigned long)get32(h + 12), c->bytes);
             return -1;
+        }
+        if (size < (uint64_t)c->bytes) {
+            snprintf(err, errlen, "%s: not a cfpo checkpoint (%llu bytes, shorter than its %d-byte header)", path,
+                     (unsigned long long)size, c->bytes);
+            return -1;
+        }
+        if (c->version == CKPT_VERSION) {
+            c->hash = get64(h + 64);
+            const uint64_t rb = get64(h + 72);
+            memcpy(&c->davg_ref, &rb, 8);
+            if (!(c->davg_ref >= 0 && c->davg_ref < 2) || (c->hash == 0 && c->davg_ref != 0)) {
+                snprintf(err, errlen, "%s: corrupt checkpoint: field davg_ref = %g is not in [0, 2)%s", path,
+                         c->davg_ref, c->hash == 0 ? " and 0 without a density" : "");
+                return -1;
+            }
         }
         n = get64(h + 16);
         c->seed = get64(h + 24);
@@ -119,21 +141,22 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
         return -1;
     }
     const int64_t nmin = cfpo_grid_min_n(c->variant);
-    if (n < (uint64_t)nmin || n > (size - CKPT_HEADER) / 16) {
+    const uint64_t hb = (uint64_t)c->bytes;
+    if (n < (uint64_t)nmin || n > (size - hb) / 16) {
         if (n < (uint64_t)nmin)
             snprintf(err, errlen, "%s: corrupt checkpoint: field n = %llu is below the smallest n of variant %s (%lld)",
                      path, (unsigned long long)n, c->variant == CFPO_VARIANT_SIMPLIFIED ? "simplified" : c->variant == CFPO_VARIANT_PAPER ? "paper" : c->variant == CFPO_VARIANT_HYPERUNIFORM ? "hyperuniform" : "adaptive", (long long)nmin);
         else
             snprintf(err, errlen, "%s: checkpoint field n = %llu needs %llu bytes or more, file has %llu (truncated?)",
                      path, (unsigned long long)n, (unsigned long long)n < UINT64_MAX / 16 - 4 ?
-                     (unsigned long long)(CKPT_HEADER + 16 * n) : (unsigned long long)UINT64_MAX,
+                     (unsigned long long)(hb + 16 * n) : (unsigned long long)UINT64_MAX,
                      (unsigned long long)size);
         return -1;
     }
     c->n = (int64_t)n;
-    if (size != CKPT_HEADER + 16 * n) {
+    if (size != hb + 16 * n) {
         snprintf(err, errlen, "%s: checkpoint of %llu points should be %llu bytes, file has %llu (trailing data)",
-                 path, (unsigned long long)n, (unsigned long long)(CKPT_HEADER + 16 * n), (unsigned long long)size);
+                 path, (unsigned long long)n, (unsigned long long)(hb + 16 * n), (unsigned long long)size);
         return -1;
     }
     return 0;
@@ -155,14 +178,18 @@ void ckpt_encode(const ckpt_header *c, unsigned char *h)
     put64(h + 48, (uint64_t)c->iteration);
     put32(h + 56, (uint32_t)c->near);
     put32(h + 60, c->crc);
+    put64(h + 64, c->hash);
+    uint64_t rb;
+    memcpy(&rb, &c->davg_ref, 8);
+    put64(h + 72, rb);
 }
 
-uint32_t ckpt_crc_header(const unsigned char *h)
+uint32_t ckpt_crc_header(const unsigned char *h, int bytes)
 {
     unsigned char z[CKPT_HEADER];
-    memcpy(z, h, CKPT_HEADER);
+    memcpy(z, h, (size_t)bytes);
     put32(z + 60, 0);
-    return (uint32_t)crc32(crc32(0L, Z_NULL, 0), z, CKPT_HEADER);
+    return (uint32_t)crc32(crc32(0L, Z_NULL, 0), z, (uInt)bytes);
 }
 
 uint32_t ckpt_crc_more(uint32_t crc, const void *buf, size_t bytes)
@@ -185,10 +212,11 @@ uint32_t ckpt_crc_join(uint32_t a, uint32_t b, uint64_t bbytes)
 int ckpt_check_buffer(const char *path, const unsigned char *buf, size_t len, ckpt_header *c, char *err,
                       size_t errlen)
 {
-    if (len < CKPT_HEADER) return ckpt_decode(path, buf, len, c, err, errlen);
+    if (len < CKPT_HEADER_V3) return ckpt_decode(path, buf, len, c, err, errlen);
     if (ckpt_decode(path, buf, len, c, err, errlen) != 0) return -1;
+    const size_t hb = (size_t)c->bytes;
     if (c->version >= 2) {
-        uint32_t crc = ckpt_crc_more(ckpt_crc_header(buf), buf + CKPT_HEADER, len - CKPT_HEADER);
+        uint32_t crc = ckpt_crc_more(ckpt_crc_header(buf, c->bytes), buf + hb, len - hb);
         if (crc != c->crc) {
             snprintf(err, errlen, "%s: corrupt checkpoint: checksum 0x%08lx does not match the contents (0x%08lx)",
                      path, (unsigned long)c->crc, (unsigned long)crc);
@@ -198,12 +226,12 @@ int ckpt_check_buffer(const char *path, const unsigned char *buf, size_t len, ck
     for (int64_t i = 0; i < c->n; i++) {
         double v[2];
         for (int k = 0; k < 2; k++) {
-            uint64_t u = get64(buf + CKPT_HEADER + 16 * i + 8 * k);
+            uint64_t u = get64(buf + hb + 16 * i + 8 * k);
             memcpy(&v[k], &u, 8);
         }
         if (!(v[0] >= 0 && v[0] < 1 && v[1] >= 0 && v[1] < 1)) {
             snprintf(err, errlen, "%s: corrupt checkpoint: point %lld at offset %llu is not in [0,1)^2", path,
-                     (long long)i, (unsigned long long)(CKPT_HEADER + 16 * (uint64_t)i));
+                     (long long)i, (unsigned long long)(hb + 16 * (uint64_t)i));
             return -1;
         }
     }

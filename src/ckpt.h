@@ -1,10 +1,11 @@
 /* ckpt.h - the checkpoint file format: its 64-byte header, read and
  * written, every field validated, and its checksum.
  *
- * Version 3 (written now), little-endian:
+ * Version 4 (written now, by the uniform and the density engines alike),
+ * little-endian:
  *    0  magic "CFPOCKPT"       8 bytes
- *    8  version = 3            u32
- *   12  header bytes = 64      u32
+ *    8  version = 4            u32
+ *   12  header bytes = 80      u32
  *   16  n                      u64   points (id order after the header)
  *   24  seed                   u64
  *   32  variant                u32   CFPO_VARIANT_*
@@ -16,12 +17,19 @@
  *                                    else 0
  *   60  crc32                  u32   zlib's crc32 of the header (this
  *                                    field as 0) followed by the points
- * then n points of 16 bytes (x, y as little-endian float64).
+ *   64  density hash           u64   cfpo_density.hash of the run's density
+ *                                    (density.h), 0 for a run without one
+ *   72  davg_ref               f64   the density schedule's delta_avg one
+ *                                    window back (policy.h), in [0, 2);
+ *                                    0 without a density
+ * then n points of 16 bytes (x, y as little-endian float64), in id order.
+ * Version 3: the same up to byte 64, with a 64-byte header (no density).
  * Version 2: the same, with 0 at 56 (written before the near phase
  * existed: its runs solved exactly throughout, so it reads as near = 0).
  * Version 1 (magic "CFPOCKP1", no checksum): n, seed, variant, tol,
  * iteration, converged as u64 / f64 at 8, 16, ..., 48, then 8 zero bytes;
- * still read, its fields validated the same way.
+ * still read, its fields validated the same way. The density engine's own
+ * format of 0.1.0 (magic "CFPODENS") is refused in one line.
  *
  * Owns: the layout, the validation of every field (one-line errors naming
  * the file and the field), the checksum's arithmetic.
@@ -32,12 +40,16 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define CKPT_HEADER 64
-#define CKPT_VERSION 3
+#define CKPT_HEADER 80    /* version 4's header; the most bytes a header has */
+#define CKPT_HEADER_V3 64 /* versions 1 to 3 */
+#define CKPT_VERSION 4
 #define CKPT_ITER_MAX 1000000000
 
 typedef struct {
-    int version; /* 1, 2 or 3 */
+    int version; /* 1 to 4 */
+    int bytes;   /* the header's size: 64, or 80 for version 4 */
+    uint64_t hash; /* version 4: the density's hash, 0 without a density */
+    double davg_ref; /* version 4: the density schedule's state, 0 without */
     int64_t n;
     uint64_t seed;
     int variant;
@@ -48,19 +60,20 @@ typedef struct {
     uint32_t crc; /* versions 2 and 3 */
 } ckpt_header;
 
-/* Validates the header h of a checkpoint file of `size` bytes. 0, or -1
+/* Validates the header h (the file's first min(size, CKPT_HEADER) bytes,
+ * zero-padded to CKPT_HEADER) of a checkpoint file of `size` bytes. 0, or -1
  * with one line naming the file and the field in err. */
 int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_header *out, char *err,
                 size_t errlen);
 
-/* A version-3 header of c (c->crc goes into its field). */
+/* A version-4 header of c (c->crc goes into its field), CKPT_HEADER bytes. */
 void ckpt_encode(const ckpt_header *c, unsigned char *h);
 
 /* The checksum of a version-2 or -3 file: ckpt_crc_header over the header's
  * bytes (its crc field taken as 0), continued by ckpt_crc_more over the
  * point bytes in order; pieces computed apart join with ckpt_crc_join
  * (zlib's crc32_combine). */
-uint32_t ckpt_crc_header(const unsigned char *h);
+uint32_t ckpt_crc_header(const unsigned char *h, int bytes);
 uint32_t ckpt_crc_more(uint32_t crc, const void *buf, size_t bytes);
 uint32_t ckpt_crc_join(uint32_t a, uint32_t b, uint64_t bbytes);
 

@@ -361,7 +361,7 @@ done:
 }
 
 int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t *cstart, const int64_t *cidx,
-                           int colour)
+                           int colour, unsigned char *dirty, int64_t g)
 {
     int ok = 1;
     for (int a = 0; a < T->nnb; a++) {
@@ -387,13 +387,17 @@ int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t 
         for (int64_t t = 0; t < L->n; t++) len += (size_t)(cstart[L->v[t] + 1] - cstart[L->v[t]]) * 3 * sizeof(double);
         if (len != T->msg[a].recvbytes) { ok = 0; continue; }
         const double *p = (const double *)T->msg[a].recv;
-        for (int64_t t = 0; t < L->n; t++)
-            for (int64_t e = cstart[L->v[t]]; e < cstart[L->v[t] + 1]; e++) {
+        for (int64_t t = 0; t < L->n; t++) {
+            int changed = 0;
+            for (int64_t e = cstart[L->v[t]]; e < cstart[L->v[t] + 1]; e++, p += 3) {
                 const int64_t j = cidx[e];
-                s->xy[2 * j] = *p++;
-                s->xy[2 * j + 1] = *p++;
-                s->q[j] = *p++;
+                changed |= s->xy[2 * j] != p[0] || s->xy[2 * j + 1] != p[1] || s->q[j] != p[2];
+                s->xy[2 * j] = p[0];
+                s->xy[2 * j + 1] = p[1];
+                s->q[j] = p[2];
             }
+            if (changed && dirty) cfpo_dens_mark_block(dirty, g, L->v[t]);
+        }
     }
     return comm_all(ok) ? 0 : -1;
 }

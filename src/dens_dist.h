@@ -52,6 +52,15 @@ static inline int64_t cfpo_dens_cell_of(int64_t g, double sx, double sy, double 
     return iy * g + ix;
 }
 
+/* Marks the 3 x 3 cells around cell c of the g x g grid (those whose
+ * block holds c): their next solve may move a point. */
+static inline void cfpo_dens_mark_block(unsigned char *dirty, int64_t g, int64_t c)
+{
+    const int64_t cx = c % g, cy = c / g;
+    for (int64_t dy = -1; dy <= 1; dy++)
+        for (int64_t dx = -1; dx <= 1; dx++) dirty[((cy + dy + g) % g) * g + (cx + dx + g) % g] = 1;
+}
+
 /* Grows the store's arrays to hold cap points (gid too when with_gid). 0, or -1. */
 int cfpo_dens_store_reserve(cfpo_dens_store *s, int64_t cap, int with_gid);
 void cfpo_dens_store_free(cfpo_dens_store *s);
@@ -80,10 +89,12 @@ int cfpo_dens_dist_migrate(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, dou
 
 /* Collective, after a colour's phase: sends this rank's cells of the
  * colour to the ranks that keep them as halo, and writes the copies it
- * gets. cstart/cidx: the engine's cells (local indices). 0, or -1 when out
- * of memory or when a copy does not match its cell (a bug). */
+ * gets. cstart/cidx: the engine's cells (local indices). A copy that
+ * differs from what the rank held marks its 3 x 3 cells in dirty (g x g;
+ * may be NULL). 0, or -1 when out of memory or when a copy does not match
+ * its cell (a bug). */
 int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t *cstart, const int64_t *cidx,
-                           int colour);
+                           int colour, unsigned char *dirty, int64_t g);
 
 /* Collective: k doubles of each of the n points (own point i's at v + k i:
  * its position with v = s->xy, k = 2) into all (k n doubles, id order), on

@@ -14,6 +14,7 @@
 #include "dens_start.h"
 #include "geom.h"
 #include "omp_compat.h"
+#include "policy.h"
 #include "rng.h"
 #include "stoprule.h"
 
@@ -22,7 +23,8 @@
 #define CELL_SPACINGS 1.25 /* L >= CELL_SPACINGS r_max */
 #define BUCKET_FROM 64     /* blocks of fewer points are scanned whole (one bucket) */
 #define BUCKET_PER 2.0     /* points a bucket on average */
-#define BOUND_SAFE (1 + 1e-9) /* a ring's distance bound must beat the value by this much */
+#define BOUND_SAFE (1 + 1e-9)
+#define DENS_SHIFT_EVERY 4 /* the grid keeps an offset for this many iterations */ /* a ring's distance bound must beat the value by this much */
 
 typedef struct { /* one thread's buffers */
     double *bx, *by, *br, *nx, *ny, *nr, *nd, *scratch;
@@ -42,9 +44,14 @@ struct cfpo_dens_engine {
     cfpo_dens_dist *T; /* several ranks: the cut (NULL on one) */
     double *all;       /* several ranks: the whole set, gathered for the measure and the output */
     int64_t *cell, *cstart, *cidx, ccap;
+    unsigned char *dirty; /* per cell: 1 when its 3 x 3 block changed since it was last solved without a move */
+    int64_t solved;       /* this iteration's points solved on this rank */
     int nthreads;
     tbuf *tb;
-    int iter;
+    int iter, placed; /* placed: the grid has an offset (sx, sy) */
+    int iters_run;    /* iterations made by this engine (not before a resume) */
+    double davg_ref;  /* the schedule's delta_avg one window back (policy.h) */
+    double t_compute, t_migrate, t_halo; /* this rank's seconds in each */
     cfpo_dens_move_fn on_move;
     void *move_user;
 };
@@ -149,7 +156,7 @@ static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, 
     double qlo = INFINITY;
     for (int j = 0; j < m; j++)
         if (b->br[j] < qlo) qlo = b->br[j];
-    const double h = bk->h;
+    const double h = bk->h, gain = E->o.tol * E->D;
     int64_t moves = 0;
     for (int p = c0; p < c1; p++) {
         const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
@@ -212,7 +219,9 @@ static int64_t solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, 
         double cxp, cyp, fc;
         if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, S, E->d, ox, oy, &cxp, &cyp, &fc, b->scratch + KMAX))
             continue;
-        if (!(fc > oldf * (1 + 1e-12))) continue;
+        /* a move must gain more than tol local spacings in the measure
+         * (sqrt(f) / Delta), as the uniform path's must gain tol L */
+        if (!(sqrt(fc) > sqrt(oldf) + gain && fc > oldf * (1 + 1e-12))) continue;
         /* the accept rule: f rises against the whole block ... */
         const double rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
         if (!(rc > 0)) continue;
@@ -290,8 +299,9 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     E->cell = malloc((size_t)n * sizeof *E->cell);
     E->cidx = malloc((size_t)n * sizeof *E->cidx);
     E->cstart = malloc((size_t)(g * g + 1) * sizeof *E->cstart);
+    E->dirty = malloc((size_t)(g * g));
     E->tb = calloc((size_t)E->nthreads, sizeof *E->tb);
-    if (cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cstart || !E->tb ||
+    if (cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cstart || !E->dirty || !E->tb ||
         (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0) : cfpo_dens_start(d, n, o->seed, E->s.xy)) != 0) {
         snprintf(err, errlen, "out of memory for %lld points", (long long)n);
         cfpo_dens_free(E);
@@ -377,13 +387,44 @@ static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
     return 0;
 }
 
+/* Solves cell c unless nothing in its block changed since it was last
+ * solved without a move (then the solve would move nothing again: it
+ * reads only the block); marks the cells whose blocks a move changed.
+ * Cells of one colour have disjoint 3 x 3 neighbourhoods, so the marks of
+ * cells solved in parallel never meet. */
+static int64_t visit_cell(cfpo_dens_engine *E, tbuf *b, int64_t c, double *maxd, int64_t *solved)
+{
+    if (!E->dirty[c]) return 0;
+    *solved += E->cstart[c + 1] - E->cstart[c];
+    const int64_t moves = solve_cell(E, b, c % E->g, c / E->g, maxd);
+    E->dirty[c] = 0;
+    if (moves) cfpo_dens_mark_block(E->dirty, E->g, c);
+    return moves;
+}
+
+/* The grid's offset for iteration k: one random offset in [0, L)^2 for
+ * each group of four iterations 4j + 1 .. 4j + 4 (docs/method.md,
+ * "Density"); between moves the unchanged cells are skipped. */
+static void grid_offset(const cfpo_dens_engine *E, int k, double *sx, double *sy)
+{
+    const uint64_t grp = (uint64_t)((k - 1) / DENS_SHIFT_EVERY);
+    *sx = cfpo_rand01(E->o.seed, 0xD5E1ull, grp) * E->L;
+    *sy = cfpo_rand01(E->o.seed, 0xD5E2ull, grp) * E->L;
+}
+
 int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
 {
     const double t0 = omp_get_wtime();
     E->iter++;
-    E->sx = cfpo_rand01(E->o.seed, 0xD5E1ull, (uint64_t)E->iter) * E->L;
-    E->sy = cfpo_rand01(E->o.seed, 0xD5E2ull, (uint64_t)E->iter) * E->L;
+    double sx, sy;
+    grid_offset(E, E->iter, &sx, &sy);
+    if (!E->placed || sx != E->sx || sy != E->sy || !E->o.skip) memset(E->dirty, 1, (size_t)(E->g * E->g));
+    E->placed = 1;
+    E->sx = sx;
+    E->sy = sy;
+    double tm = omp_get_wtime();
     if (E->T && (cfpo_dens_dist_migrate(E->T, &E->s, E->sx, E->sy) != 0 || !comm_all(fit_cells(E) == 0))) return -1;
+    E->t_migrate += omp_get_wtime() - tm;
     build_cells(E);
     const int64_t g = E->g, per = g / 3;
     int64_t mx = 0;
@@ -393,79 +434,114 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
             if (m > mx) mx = m;
         }
     if (!comm_all(ensure_buffers(E, (size_t)mx) == 0)) return -1;
-    int64_t moves = 0;
+    int64_t moves = 0, solved = 0;
     double maxd = 0;
     for (int colour = 0; colour < 9; colour++) {
         const int64_t bx = colour % 3, by = colour / 3;
         if (E->T) { /* this rank's cells of the colour, then their copies to the ranks that keep them */
             int64_t m;
             const int64_t *cells = cfpo_dens_dist_cells(E->T, colour, &m);
-#pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves) reduction(max : maxd)
+#pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves, solved) reduction(max : maxd)
             for (int64_t t = 0; t < m; t++) {
                 double md = 0;
-                moves += solve_cell(E, &E->tb[omp_get_thread_num()], cells[t] % g, cells[t] / g, &md);
+                moves += visit_cell(E, &E->tb[omp_get_thread_num()], cells[t], &md, &solved);
                 if (md > maxd) maxd = md;
             }
-            if (cfpo_dens_dist_refresh(E->T, &E->s, E->cstart, E->cidx, colour) != 0) return -1;
+            const double th = omp_get_wtime();
+            E->t_compute += th - tm;
+            if (cfpo_dens_dist_refresh(E->T, &E->s, E->cstart, E->cidx, colour, E->dirty, g) != 0) return -1;
+            tm = omp_get_wtime();
+            E->t_halo += tm - th;
             continue;
         }
-#pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves) reduction(max : maxd)
+#pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves, solved) reduction(max : maxd)
         for (int64_t t = 0; t < per * per; t++) {
             double md = 0;
-            moves += solve_cell(E, &E->tb[omp_get_thread_num()], bx + 3 * (t % per), by + 3 * (t / per), &md);
+            moves += visit_cell(E, &E->tb[omp_get_thread_num()], (by + 3 * (t / per)) * g + bx + 3 * (t % per), &md,
+                                &solved);
             if (md > maxd) maxd = md;
         }
     }
+    if (!E->T) E->t_compute += omp_get_wtime() - tm;
+    E->iters_run++;
     int oom = 0;
     for (int t = 0; t < E->nthreads; t++) oom |= E->tb[t].oom;
     if (!comm_all(!oom)) return -1;
-    comm_sum_i64(&moves, 1);
+    int64_t v[2] = {moves, solved};
+    comm_sum_i64(v, 2);
+    moves = v[0];
     comm_max_d(&maxd, 1);
     memset(s, 0, sizeof *s);
     s->iteration = E->iter;
     s->moved = moves;
-    s->solved = E->n;
+    s->solved = v[1];
     s->max_disp = maxd;
     s->max_move = maxd;
     if (measure(E, &s->delta_min, &s->delta_avg, 1) != 0) return -1;
-    s->converged = cfpo_net_converged(moves, maxd, E->o.tol);
+    s->converged = cfpo_net_converged(moves, maxd, E->o.tol) ||
+                   cfpo_policy_density_stalled(E->iter, s->delta_avg, &E->davg_ref);
     s->seconds = omp_get_wtime() - t0;
+    comm_max_d(&s->seconds, 1);
     return 0;
 }
 
-int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_save_fn save, void *user, char *err,
-                  size_t errlen)
+int cfpo_dens_measure(cfpo_dens_engine *E, double *dmin, double *davg)
 {
-    const double t0 = omp_get_wtime();
-    cfpo_iter_stats s;
-    memset(&s, 0, sizeof s);
-    memset(res, 0, sizeof *res);
-    s.iteration = E->iter;
-    if (measure(E, &s.delta_min, &s.delta_avg, 0) != 0) {
-        snprintf(err, errlen, "out of memory");
+    return measure(E, dmin, davg, 0);
+}
+
+int cfpo_dens_iteration(const cfpo_dens_engine *E) { return E->iter; }
+double cfpo_dens_davg_ref(const cfpo_dens_engine *E) { return E->davg_ref; }
+void cfpo_dens_set_davg_ref(cfpo_dens_engine *E, double ref) { E->davg_ref = ref; }
+
+int cfpo_dens_write_points(cfpo_dens_engine *E, comm_file *f, uint64_t base, char *err, size_t errlen)
+{
+    /* Own points are in id order: write them in pieces of CH points, each
+     * piece one collective write of its runs of consecutive ids. */
+    const int64_t CH = (int64_t)1 << 20, own = E->s.own;
+    int64_t rounds = (own + CH - 1) / CH;
+    comm_max_i64(&rounds, 1);
+    uint64_t *first = malloc((size_t)CH * sizeof *first), *len = malloc((size_t)CH * sizeof *len);
+    int ok = first && len;
+    if (!comm_all(ok)) {
+        free(first); free(len);
+        snprintf(err, errlen, "out of memory while writing");
         return -1;
     }
-    int stop = CFPO_STOP_NONE;
-    if (E->o.progress && E->o.progress(&s, E->o.user)) stop = CFPO_STOP_CALLER;
-    if (stop == CFPO_STOP_NONE && E->iter >= E->o.max_iter) stop = CFPO_STOP_MAX_ITER;
-    if (stop == CFPO_STOP_NONE && cfpo_stop_targets_met(&E->o.stop, s.delta_min, s.delta_avg)) stop = CFPO_STOP_TARGET;
-    while (stop == CFPO_STOP_NONE) {
-        if (cfpo_dens_iterate(E, &s) != 0) { snprintf(err, errlen, "out of memory mid-run"); return -1; }
-        if (E->o.progress && E->o.progress(&s, E->o.user)) stop = CFPO_STOP_CALLER;
-        if (stop == CFPO_STOP_NONE) stop = cfpo_stop_check(&E->o.stop, &s, omp_get_wtime() - t0, E->o.max_iter);
-        if (E->T) comm_bcast(&stop, sizeof stop, 0); /* rank 0's clock decides a time limit for all */
-        if (save && every > 0 && (E->iter % every == 0 || stop != CFPO_STOP_NONE) &&
-            save(E, E->iter, s.converged, user, err, errlen) != 0)
-            return -1;
+    for (int64_t r = 0; r < rounds; r++) {
+        int64_t a = r * CH, b = a + CH < own ? a + CH : own;
+        if (a > b) a = b;
+        int64_t nr = 0;
+        for (int64_t i = a; i < b; i++) {
+            const uint64_t id = E->s.gid ? (uint64_t)E->s.gid[i] : (uint64_t)i;
+            if (nr > 0 && first[nr - 1] + len[nr - 1] == id) len[nr - 1]++;
+            else { first[nr] = id; len[nr] = 1; nr++; }
+        }
+        if (comm_file_write_runs(f, base, 16, E->s.xy + 2 * a, nr, first, len) != 0) ok = 0;
     }
-    res->iterations = E->iter;
-    res->converged = s.converged && stop == CFPO_STOP_CONVERGED;
-    res->seconds = omp_get_wtime() - t0;
-    res->delta_min = s.delta_min;
-    res->delta_avg = s.delta_avg;
-    res->cells_per_side = E->g;
-    res->stop = stop;
+    free(first); free(len);
+    if (!comm_all(ok)) {
+        snprintf(err, errlen, "write failed (disk full or file system error)");
+        return -1;
+    }
     return 0;
+}
+
+void cfpo_dens_timing(const cfpo_dens_engine *E, cfpo_engine_timing *t)
+{
+    double v[3] = {E->t_compute, E->t_migrate, E->t_halo}, mn[3], mx[3], sm[3];
+    for (int i = 0; i < 3; i++) mn[i] = mx[i] = sm[i] = v[i];
+    comm_min_d(mn, 3);
+    comm_max_d(mx, 3);
+    comm_sum_d(sm, 3);
+    memset(t, 0, sizeof *t);
+    double *dst[3] = {t->compute, t->migrate, t->halo};
+    for (int i = 0; i < 3; i++) {
+        dst[i][0] = mn[i];
+        dst[i][1] = sm[i] / comm_size();
+        dst[i][2] = mx[i];
+    }
+    t->phases = 9 * (int64_t)E->iters_run;
 }
 
 const double *cfpo_dens_points(const cfpo_dens_engine *E)
@@ -491,7 +567,7 @@ void cfpo_dens_free(cfpo_dens_engine *E)
             free(E->tb[t].bx); free(E->tb[t].bid); free(E->tb[t].scratch); free(E->tb[t].nj); free(E->tb[t].ring);
             cfpo_dens_buckets_free(&E->tb[t].bk);
         }
-    free(E->tb); free(E->cell); free(E->cidx); free(E->cstart); free(E->all);
+    free(E->tb); free(E->dirty); free(E->cell); free(E->cidx); free(E->cstart); free(E->all);
     cfpo_dens_store_free(&E->s);
     cfpo_dens_dist_free(E->T);
     free(E);

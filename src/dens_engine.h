@@ -23,31 +23,40 @@
 #include <stdint.h>
 
 #include "cfpo_types.h"
+#include "comm.h"
 #include "density.h"
+#include "engine_iface.h"
 
 typedef struct cfpo_dens_engine cfpo_dens_engine;
 
-/* n points under d; start: 2 n doubles to start from (--init, a
- * checkpoint), or NULL for cfpo_dens_start's; iter0: the iteration the
- * start stands at. o: seed, threads, max_iter, tol (of a move, in local
- * spacings: converged when no point moves that far in an iteration), stop
- * rules, progress. NULL with one line in err on failure. */
 /* The cells a side of the grid for n points under d. */
 int64_t cfpo_dens_grid(const cfpo_density *d, int64_t n);
 
+/* n points under d; start: 2 n doubles to start from (--init, a
+ * checkpoint), or NULL for cfpo_dens_start's; iter0: the iteration the
+ * start stands at. o: seed, threads, tol (a move must gain more than tol
+ * local spacings in the measure; converged when no point moved that far
+ * in an iteration), skip. NULL with one line in err on failure. */
 cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_options *o, const double *start,
                                    int iter0, char *err, size_t errlen);
 
 /* One iteration (nine phases); its statistics into *s. 0, or -1 when out of memory. */
 int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s);
 
-/* Runs until a stop rule holds; every `every` iterations (0: never)
- * calls save(E, iteration, converged, user), and stops with -1 when it
- * fails (err filled by it). */
-typedef int (*cfpo_dens_save_fn)(const cfpo_dens_engine *E, int iteration, int converged, void *user, char *err,
-                                 size_t errlen);
-int cfpo_dens_run(cfpo_dens_engine *E, cfpo_result *res, int every, cfpo_dens_save_fn save, void *user, char *err,
-                  size_t errlen);
+/* The set's delta_min and delta_avg (collective). 0, or -1 when out of
+ * memory. */
+int cfpo_dens_measure(cfpo_dens_engine *E, double *dmin, double *davg);
+/* The iteration the engine stands at. */
+int cfpo_dens_iteration(const cfpo_dens_engine *E);
+/* The schedule's stop rule's state (policy.h, cfpo_policy_density_stalled),
+ * kept by checkpoints. */
+double cfpo_dens_davg_ref(const cfpo_dens_engine *E);
+void cfpo_dens_set_davg_ref(cfpo_dens_engine *E, double ref);
+/* Collective: every rank writes its points into f, id k at base + 16 k. */
+int cfpo_dens_write_points(cfpo_dens_engine *E, comm_file *f, uint64_t base, char *err, size_t errlen);
+/* Collective: per-rank seconds in the solves, the migration and the halo
+ * refreshes (no byte counts). */
+void cfpo_dens_timing(const cfpo_dens_engine *E, cfpo_engine_timing *t);
 
 /* 2 n doubles, id order. Under several ranks (dens_dist.h) collective: the
  * whole set gathered on every rank (NULL when out of memory on any). */

@@ -115,6 +115,11 @@ static int load_points(cfpo_engine *E, char *err, size_t errlen)
     if (!path) return eng_make_initial(E, err, errlen);
     cfpo_checkpoint_info info;
     if (cfpo_checkpoint_peek(path, &info, err, errlen) != 0) return -1;
+    if (info.hash != E->cfg.density_hash) {
+        snprintf(err, errlen, "%s: the checkpoint was made %s", path,
+                 info.hash ? "with another density (or none is given)" : "without a density");
+        return -1;
+    }
     if (info.n != E->n || info.seed != E->o.seed || info.variant != E->o.variant || info.tol != E->o.tol) {
         snprintf(err, errlen, "%s: checkpoint is for another run (n, seed, variant or tol differ)", path);
         return -1;

@@ -13,7 +13,7 @@
  * for each iteration (policy: margin, grid shift, solver, over-relaxation),
  * MPI itself (comm), the command line.
  * May include: cfpo_types.h (layer 0), geom.h (1), grid.h, tiles.h,
- * comm.h, pointfile.h (2). Never cfpo.h (the library's front, above).
+ * comm.h, pointfile.h (2), engine_iface.h (3). Never cfpo.h (the library's front, above).
  *
  * With one rank the tile is the whole torus and a cell's neighbours across
  * the seam are its own cells (column -1 is column g - 1, shifted by -1):
@@ -42,6 +42,7 @@
 
 #include "cfpo_types.h"
 #include "comm.h"
+#include "engine_iface.h"
 #include "grid.h"
 #include "pointfile.h"
 #include "tiles.h"
@@ -59,6 +60,9 @@ typedef struct {
                                 variant's start; every rank passes all n */
     const char *checkpoint;  /* write a checkpoint here ... */
     int checkpoint_every;    /* ... every this many iterations */
+    uint64_t density_hash;   /* a flat density's hash (engines.h): written
+                                into checkpoints and asked of a resumed one;
+                                0 without a density */
 } cfpo_engine_config;
 
 /* Allocates and makes the initial set (collective over all ranks). NULL
@@ -116,18 +120,16 @@ int cfpo_engine_write_points(cfpo_engine *E, comm_file *f, uint64_t base, char *
 int cfpo_engine_write(cfpo_engine *E, pf_writer *w, char *err, size_t errlen);
 
 /* Runs to convergence or max_iter (writing checkpoints when configured),
- * calling o->progress on every rank; fills res. 0, or -1 with a message
- * when a checkpoint could not be written (on every rank). */
+ * calling o->progress on every rank; fills res: the one run loop
+ * (run_loop.h) over this engine's table. 0, or -1 with a message when a
+ * checkpoint could not be written or memory ran out (on every rank). */
 int cfpo_engine_run(cfpo_engine *E, cfpo_result *res, char *err, size_t errlen);
 
-/* Per-rank totals over the run, as min, mean and max over ranks
- * (collective). Bytes are those this rank sent. */
-typedef struct {
-    double compute[3], migrate[3], halo[3];
-    double halo_bytes[3], migrate_bytes[3];
-    int64_t phases;
-    int64_t checked_migrations, checked_halos; /* with config.check */
-} cfpo_engine_timing;
+/* The engine's table of the one interface (engine_ops.c); the run engine
+ * R then runs E (R->o: E's options). */
+void cfpo_engine_as_run(cfpo_engine *E, cfpo_run_engine *R);
+
+/* Per-rank totals over the run (engine_iface.h's cfpo_engine_timing). */
 void cfpo_engine_timing_get(cfpo_engine *E, cfpo_engine_timing *t);
 
 /* Reads a checkpoint's header (every rank reads it). */
@@ -137,6 +139,7 @@ typedef struct {
     int variant, converged;
     int near; /* the run was still in its near phase */
     double tol;
+    uint64_t hash; /* the density's (version 4), 0 for a run without one */
 } cfpo_checkpoint_info;
 int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err, size_t errlen);
 

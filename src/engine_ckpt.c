@@ -8,27 +8,12 @@
 #include <string.h>
 
 #include "ckpt.h"
-#include "tmpguard.h"
-
-static int read_header(const char *path, ckpt_header *c, char *err, size_t errlen)
-{
-    uint64_t size;
-    comm_file *f = comm_file_open_read(path, &size, err, errlen);
-    if (!f) return -1;
-    unsigned char h[CKPT_HEADER] = {0};
-    int ok = size < CKPT_HEADER || comm_file_read_at(f, 0, h, CKPT_HEADER) == 0;
-    comm_file_close(f);
-    if (!ok) {
-        snprintf(err, errlen, "%s: cannot read the checkpoint header", path);
-        return -1;
-    }
-    return ckpt_decode(path, h, size, c, err, errlen);
-}
+#include "ckpt_io.h"
 
 int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err, size_t errlen)
 {
     ckpt_header c;
-    if (read_header(path, &c, err, errlen) != 0) return -1;
+    if (ckpt_read_header(path, &c, err, errlen) != 0) return -1;
     info->n = c.n;
     info->seed = c.seed;
     info->variant = c.variant;
@@ -36,23 +21,8 @@ int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err
     info->iteration = c.iteration;
     info->converged = c.converged;
     info->near = c.near;
+    info->hash = c.hash;
     return 0;
-}
-
-/* The checksum of the byte range of every rank's share, joined in rank
- * order (shares are consecutive: rank r's follows rank r - 1's). */
-static uint32_t join_shares(const cfpo_engine *E, uint32_t head, uint32_t mine, int *oom)
-{
-    int64_t *all = malloc((size_t)E->nranks * sizeof *all);
-    if (!all) { *oom = 1; return 0; }
-    comm_allgather_i64((int64_t)mine, all);
-    uint32_t crc = head;
-    for (int r = 0; r < E->nranks; r++) {
-        const int64_t lo = E->n * r / E->nranks, hi = E->n * (r + 1) / E->nranks;
-        crc = ckpt_crc_join(crc, (uint32_t)all[r], 16 * (uint64_t)(hi - lo));
-    }
-    free(all);
-    return crc;
 }
 
 /* delta(X) never decreases (docs/method.md), so no state cfpo reaches
@@ -138,11 +108,11 @@ static int scatter_add(scatter *s, int q, double x, double y, int64_t i)
 /* Points [a, b) of the file into the messages; the checksum grows over
  * them. 0; -1 (read failure or out of memory); *badpos gets the first
  * point outside [0,1)^2. */
-static int read_piece(cfpo_engine *E, comm_file *f, scatter *s, int64_t a, int64_t b, uint32_t *crc,
+static int read_piece(cfpo_engine *E, comm_file *f, uint64_t hb, scatter *s, int64_t a, int64_t b, uint32_t *crc,
                       int64_t *badpos)
 {
     for (int q = 0; q < s->P; q++) s->sb[q] = 0;
-    if (b > a && comm_file_read_at(f, CKPT_HEADER + 16 * (uint64_t)a, s->buf, (size_t)(b - a) * 16) != 0) return -1;
+    if (b > a && comm_file_read_at(f, hb + 16 * (uint64_t)a, s->buf, (size_t)(b - a) * 16) != 0) return -1;
     *crc = ckpt_crc_more(*crc, s->buf, (size_t)(b - a) * 16);
     for (int64_t i = a; i < b; i++) {
         const double x = s->buf[2 * (i - a)], y = s->buf[2 * (i - a) + 1];
@@ -179,8 +149,8 @@ static int take_piece(cfpo_engine *E, scatter *s, size_t *have)
  * pieces of 2^20) and sends each to its cell's owner; this rank's points
  * land in tx/ty/tid (*have of them), *crc is the checksum of its share.
  * 0, or -1 with a message. */
-static int read_points(cfpo_engine *E, comm_file *f, const char *path, size_t *have, uint32_t *crc, char *err,
-                       size_t errlen)
+static int read_points(cfpo_engine *E, comm_file *f, uint64_t hb, const char *path, size_t *have, uint32_t *crc,
+                       char *err, size_t errlen)
 {
     const int64_t lo = E->n * E->rank / E->nranks, hi = E->n * (E->rank + 1) / E->nranks;
     const int64_t CH = (int64_t)1 << 20;
@@ -194,7 +164,7 @@ static int read_points(cfpo_engine *E, comm_file *f, const char *path, size_t *h
     for (int64_t r = 0; r < rounds; r++) {
         int64_t a = lo + r * CH, b = a + CH < hi ? a + CH : hi;
         if (a > b) a = b;
-        if (!bad && read_piece(E, f, &s, a, b, crc, &badpos) != 0) bad = 1;
+        if (!bad && read_piece(E, f, hb, &s, a, b, crc, &badpos) != 0) bad = 1;
         if (!comm_all(!bad)) break;
         if (comm_alltoallv(s.send, s.sb, s.recv, s.rb) != 0 || take_piece(E, &s, have) != 0) bad = 1;
         if (!comm_all(!bad)) break;
@@ -204,7 +174,7 @@ static int read_points(cfpo_engine *E, comm_file *f, const char *path, size_t *h
     if (comm_all(!bad)) return 0;
     if (badpos >= 0)
         snprintf(err, errlen, "%s: corrupt checkpoint: point %lld at offset %llu is not in [0,1)^2", path,
-                 (long long)badpos, (unsigned long long)(CKPT_HEADER + 16 * (uint64_t)badpos));
+                 (long long)badpos, (unsigned long long)(hb + 16 * (uint64_t)badpos));
     else snprintf(err, errlen, "%s: cannot read the checkpoint (or out of memory)", path);
     return -1;
 }
@@ -216,7 +186,7 @@ static int check_crc(cfpo_engine *E, const char *path, const ckpt_header *hd, co
 {
     if (hd->version < 2) return 0;
     int oom = 0;
-    const uint32_t all = join_shares(E, ckpt_crc_header(h), crc, &oom);
+    const uint32_t all = ckpt_join_shares(E->n, ckpt_crc_header(h, hd->bytes), crc, &oom);
     if (!comm_all(!oom)) {
         snprintf(err, errlen, "out of memory");
         return -1;
@@ -293,22 +263,22 @@ int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
 {
     const char *path = E->cfg.resume;
     ckpt_header hd;
-    if (!comm_all(read_header(path, &hd, err, errlen) == 0)) return -1;
+    if (!comm_all(ckpt_read_header(path, &hd, err, errlen) == 0)) return -1;
     int64_t bound;
     double d0;
     if (start_cell_bound(E, &bound, &d0, err, errlen) != 0) return -1;
     uint64_t size;
     comm_file *f = comm_file_open_read(path, &size, err, errlen);
     if (!f) return -1;
-    unsigned char h[CKPT_HEADER];
-    if (!comm_all(comm_file_read_at(f, 0, h, CKPT_HEADER) == 0)) {
+    unsigned char h[CKPT_HEADER] = {0};
+    if (!comm_all(comm_file_read_at(f, 0, h, (size_t)hd.bytes) == 0)) {
         comm_file_close(f);
         snprintf(err, errlen, "%s: cannot read the checkpoint (or out of memory)", path);
         return -1;
     }
     size_t have;
     uint32_t crc;
-    const int rc = read_points(E, f, path, &have, &crc, err, errlen);
+    const int rc = read_points(E, f, (uint64_t)hd.bytes, path, &have, &crc, err, errlen);
     comm_file_close(f);
     if (rc != 0 || check_crc(E, path, &hd, h, crc, err, errlen) != 0) return -1;
     if (bucket_points(E, path, have, bound, d0, err, errlen) != 0) return -1;
@@ -321,56 +291,14 @@ int eng_load_checkpoint(cfpo_engine *E, char *err, size_t errlen)
     return check_distance(E, path, d0, err, errlen);
 }
 
-/* The checksum of what was written: every rank reads its share of the
- * temporary file back (so it also proves the points reached the file). */
-static int written_crc(cfpo_engine *E, comm_file *f, const unsigned char *h, uint32_t *out)
+static int put_points(void *engine, comm_file *f, uint64_t base, char *err, size_t errlen)
 {
-    if (comm_file_sync(f) != 0) return -1;
-    char e2[256];
-    uint64_t size;
-    comm_file *r = comm_file_open_read(comm_file_tmpname(f), &size, e2, sizeof e2);
-    if (!r) return -1;
-    const int64_t lo = E->n * E->rank / E->nranks, hi = E->n * (E->rank + 1) / E->nranks;
-    const size_t CH = (size_t)1 << 24;
-    unsigned char *buf = malloc(CH);
-    uint32_t crc = 0;
-    int ok = buf != NULL && size == CKPT_HEADER + 16 * (uint64_t)E->n;
-    for (uint64_t off = 16 * (uint64_t)lo; ok && off < 16 * (uint64_t)hi; off += CH) {
-        size_t b = 16 * (uint64_t)hi - off < CH ? (size_t)(16 * (uint64_t)hi - off) : CH;
-        ok = comm_file_read_at(r, CKPT_HEADER + off, buf, b) == 0;
-        if (ok) crc = ckpt_crc_more(crc, buf, b);
-    }
-    free(buf);
-    comm_file_close(r);
-    int oom = 0;
-    if (!comm_all(ok)) return -1;
-    *out = join_shares(E, ckpt_crc_header(h), crc, &oom);
-    return comm_all(!oom) ? 0 : -1;
+    return cfpo_engine_write_points(engine, f, base, err, errlen);
 }
 
 int eng_write_checkpoint(cfpo_engine *E, int iteration, int converged, char *err, size_t errlen)
 {
-    comm_file *f = comm_file_create(E->cfg.checkpoint, err, errlen);
-    if (!f) return -1;
-    /* The temporary is removed on SIGINT/SIGTERM like the output's. */
-    char *tmp = E->rank == 0 && comm_file_tmpname(f) ? strdup(comm_file_tmpname(f)) : NULL;
-    if (tmp) tmpguard_file(tmp);
-    ckpt_header c = {.version = CKPT_VERSION, .n = E->n, .seed = E->o.seed, .variant = E->o.variant,
-                     .tol = E->o.tol, .iteration = iteration, .converged = converged ? 1 : 0, .near = E->near,
-                     .crc = 0};
-    unsigned char h[CKPT_HEADER];
-    ckpt_encode(&c, h);
-    int ok = E->rank != 0 || comm_file_write_at(f, 0, h, sizeof h) == 0;
-    char e2[256];
-    if (cfpo_engine_write_points(E, f, CKPT_HEADER, e2, sizeof e2) != 0) ok = 0;
-    if (comm_all(ok) && written_crc(E, f, h, &c.crc) == 0) {
-        ckpt_encode(&c, h);
-        ok = E->rank != 0 || comm_file_write_at(f, 0, h, sizeof h) == 0;
-    } else {
-        ok = 0;
-    }
-    int rc = comm_file_commit(f, ok, err, errlen);
-    if (tmp) tmpguard_forget(tmp);
-    free(tmp);
-    return rc;
+    ckpt_header c = {.n = E->n, .seed = E->o.seed, .variant = E->o.variant, .tol = E->o.tol,
+                     .iteration = iteration, .converged = converged ? 1 : 0, .near = E->near, .hash = E->cfg.density_hash};
+    return ckpt_write(E->cfg.checkpoint, &c, put_points, E, err, errlen);
 }

@@ -11,13 +11,18 @@
 #include "cfpo.h"
 #include "cli.h"
 #include "comm.h"
+#include "dens_dist.h"
+#include "dens_engine.h"
+#include "dens_ops.h"
+#include "density.h"
 #include "engine.h"
-#include "main_density.h"
-#include "dens_ckpt.h"
+#include "engines.h"
 #include "omp_compat.h"
 #include "plan.h"
 #include "pointfile.h"
+#include "run_loop.h"
 #include "runfiles.h"
+#include "runsignal.h"
 #include "solver_simd.h"
 #include "stoprule.h"
 #include "tracecols.h"
@@ -59,7 +64,8 @@ static void usage(void)
            "      --density SPEC   follow a density: an image (FILE.png, FILE.pgm; dark =\n"
            "                       dense, FILE.png:invert for light = dense), a 2-D array\n"
            "                       (FILE.npy, row = y) or cos:a=0.9,kx=1,ky=0, ramp:contrast=16,\n"
-           "                       balzer (docs/cli.md); one rank\n"
+           "                       balzer (docs/cli.md); one rank or several; the run\n"
+           "                       ends by itself (docs/method.md, \"Density\")\n"
            "  -q, --quiet          no progress line\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
            "      --tiles AxB      cut into A x B tiles (default: the most square cut)\n"
@@ -79,7 +85,8 @@ static void usage(void)
            "  -V, --version        version\n\n"
            "With several ranks the output must be .npy or raw; it is the same file,\n"
            "byte for byte, as one process writes.\n"
-           "Exit status: 0 success, 1 runtime failure, 2 usage error.\n",
+           "Exit status: 0 success, 1 runtime failure, 2 usage error, 3 stopped by SIGTERM\n"
+           "or SIGUSR1 after writing the --checkpoint file (continue with --resume).\n",
            omp_get_num_procs(), CFPO_DEFAULT_MAX_ITER, CFPO_ADAPTIVE_TOL, CFPO_DEFAULT_TOL, PF_EXTENSIONS);
 }
 
@@ -190,6 +197,8 @@ typedef struct {
     int64_t n, dry_ranks;
     const char *out, *trace, *init, *density;
     double *init_xy; /* the points of --init */
+    cfpo_density d;  /* with --density */
+    const cfpo_density *dp; /* &d with --density, else NULL */
     int quiet, dry, every;
     int given_seed, given_variant, given_tol;
 } cmdline;
@@ -302,6 +311,14 @@ static void take_from_checkpoint(cmdline *c)
     char err[512];
     cfpo_checkpoint_info info;
     if (cfpo_checkpoint_peek(c->cfg.resume, &info, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    if (info.hash && !c->dp)
+        cli_usage_error(prog, "--resume %s: the checkpoint was made with a density; give the same --density SPEC",
+                        c->cfg.resume);
+    if (c->dp && info.hash != c->dp->hash)
+        cli_fail(prog, "--resume %s: the checkpoint was made %s (hash %016llx, --density %s has %016llx)",
+                 c->cfg.resume, info.hash ? "with another density" : "without a density",
+                 (unsigned long long)info.hash, c->density, (unsigned long long)c->dp->hash);
+    if (c->dp && !cfpo_density_is_flat(c->dp)) info.variant = c->o.variant; /* the density engine has one */
     if ((c->n >= 0 && c->n != info.n) || (c->given_seed && c->o.seed != info.seed) ||
         (c->given_variant && c->o.variant != info.variant) || (c->given_tol && c->o.tol != info.tol))
         cli_usage_error(prog, "--resume %s: the checkpoint is for n=%lld seed=%llu variant=%s tol=%g; "
@@ -327,12 +344,33 @@ static void take_from_points(cmdline *c)
     c->cfg.start_xy = c->init_xy;
 }
 
+/* --density: enough points for it, and cells for every rank. */
+static void density_fits(const cmdline *c)
+{
+    char err[512];
+    if (cfpo_density_check_n(c->dp, c->n, err, sizeof err) != 0)
+        cli_usage_error(prog, "--density %s: %s", c->density, err);
+    const int64_t g = cfpo_dens_grid(c->dp, c->n), most = cfpo_dens_dist_max_ranks(g);
+    if (comm_size() > most) /* a rank needs cells of every colour (dens_dist.h) */
+        cli_usage_error(prog, "--density %s at n=%lld: the grid has %lld x %lld cells, enough for at most %lld rank%s "
+                        "(this run has %d); use fewer ranks or more points", c->density, (long long)c->n,
+                        (long long)g, (long long)g, (long long)most, most == 1 ? "" : "s", comm_size());
+}
+
 /* Options that only make sense together, the defaults that depend on
  * others, the checkpoint's run. */
 static void settle_options(cmdline *c)
 {
-    if (c->density && c->dry) cli_usage_error(prog, "--dry-run does not go with --density");
-    if (!c->given_tol) c->o.tol = cfpo_default_tol(c->o.variant);
+    if (c->density) {
+        if (c->dry) cli_usage_error(prog, "--dry-run does not go with --density");
+        if (c->given_variant)
+            cli_usage_error(prog, "--variant does not go with --density (the density run has one variant)");
+        if (c->cfg.px > 0 || c->cfg.check) cli_usage_error(prog, "--tiles and --check do not go with --density");
+        char err[600];
+        if (cfpo_density_load(c->density, &c->d, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        c->dp = &c->d;
+    }
+    if (!c->given_tol) c->o.tol = cfpo_engines_default_tol(c->o.variant, c->dp);
     if (c->every > 0 && !c->cfg.checkpoint) cli_usage_error(prog, "--checkpoint-every needs --checkpoint FILE");
     if (c->cfg.checkpoint) c->cfg.checkpoint_every = c->every > 0 ? c->every : 100;
     if (c->dry_ranks > 0 && !c->dry)
@@ -343,6 +381,7 @@ static void settle_options(cmdline *c)
     if (c->cfg.resume) take_from_checkpoint(c);
     if (c->init) take_from_points(c);
     if (c->n < 0) cli_usage_error(prog, "the number of points is required: -n N");
+    if (c->dp && !cfpo_density_is_flat(c->dp)) density_fits(c);
 }
 
 /* The run's files and this machine's room for it (not for --dry-run). */
@@ -351,16 +390,19 @@ static void validate(const cmdline *c)
     char err[512];
     if (cfpo_runfiles_check(c->out, c->trace, c->cfg.checkpoint, comm_size(), err, sizeof err) != 0)
         cli_usage_error(prog, "%s", err);
+    if (c->dp && !cfpo_density_is_flat(c->dp)) return; /* the density engine checks its memory as it allocates */
     int vr = cfpo_plan_check(c->n, &c->o, c->cfg.px, c->cfg.py, err, sizeof err);
     if (vr == -1) cli_usage_error(prog, "%s", err);
     if (vr != 0) cli_fail(prog, "%s", err);
 }
 
-/* Runs the engine with progress and trace; writes the files. Returns the
- * engine (for the report); exits on failure, leaving no file. */
-static cfpo_engine *run(cmdline *c, run_ctx *ctx, cfpo_result *res)
+/* Runs the engine with progress and trace; writes the files. Fills R
+ * (for the report); exits on failure, leaving no file. A run stopped by
+ * SIGTERM or SIGUSR1 after its checkpoint writes no output (res->stop
+ * says so). */
+static void run(cmdline *c, run_ctx *ctx, cfpo_run_engine *R, cfpo_result *res)
 {
-    char err[512];
+    char err[600];
     cfpo_runfiles *files = cfpo_runfiles_open(c->out, c->trace, c->cfg.checkpoint, c->n, err, sizeof err);
     if (!files) cli_fail(prog, "%s", err);
     *ctx = (run_ctx){.n = c->n, .max_iter = c->o.max_iter, .stop = c->o.stop, .trace = cfpo_runfiles_trace(files)};
@@ -368,35 +410,71 @@ static cfpo_engine *run(cmdline *c, run_ctx *ctx, cfpo_result *res)
     c->o.progress = on_iteration;
     c->o.user = ctx;
     ctx->t0 = cli_now();
-    cfpo_engine *E = cfpo_engine_create_ex(c->n, &c->o, &c->cfg, err, sizeof err);
-    int rc = E ? cfpo_engine_run(E, res, err, sizeof err) : -1;
+    if (c->cfg.checkpoint) runsignal_install(); /* after the files' clean-up handler: SIGTERM saves */
+    int rc = cfpo_engines_open(c->n, &c->o, &c->cfg, c->dp, ctx->t0, R, err, sizeof err);
+    if (rc == 0) rc = cfpo_run_loop(R, c->cfg.checkpoint, c->cfg.checkpoint ? c->cfg.checkpoint_every : 0, res, err,
+                                    sizeof err);
+    runsignal_restore();
     cli_progress_end(&ctx->prog);
     ctx->seconds = cli_now() - ctx->t0;
     if (rc != 0) {
         cfpo_runfiles_abort(files);
         cli_fail(prog, "%s", err);
     }
-    if (cfpo_runfiles_commit(files, E, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-    return E;
+    if (res->stop == CFPO_STOP_SIGNAL) {
+        cfpo_runfiles_abort(files);
+        return;
+    }
+    if (cfpo_runfiles_commit(files, R, err, sizeof err) != 0) cli_fail(prog, "%s", err);
 }
 
-/* The SUMMARY line, and with several ranks the RANKS line (collective). */
-static void report(const cmdline *c, cfpo_engine *E, const cfpo_result *res, double seconds)
+/* Several ranks under a density: each rank's points against n / P. */
+static void print_density_ranks(const cfpo_engine_timing *tm, const int64_t *own, int P, int64_t n)
+{
+    int64_t lo = own[0], hi = own[0];
+    printf("RANKS ranks=%d points=", P);
+    for (int r = 0; r < P; r++) {
+        printf("%s%lld", r ? "," : "", (long long)own[r]);
+        lo = own[r] < lo ? own[r] : lo;
+        hi = own[r] > hi ? own[r] : hi;
+    }
+    printf(" min_over_mean=%.3f max_over_mean=%.3f compute_s=%.3f/%.3f/%.3f migrate_s=%.3f/%.3f/%.3f "
+           "halo_s=%.3f/%.3f/%.3f\n", (double)lo * P / (double)n, (double)hi * P / (double)n, tm->compute[0],
+           tm->compute[1], tm->compute[2], tm->migrate[0], tm->migrate[1], tm->migrate[2], tm->halo[0],
+           tm->halo[1], tm->halo[2]);
+}
+
+/* The SUMMARY line (and DENSITY with a density), and with several ranks
+ * the RANKS line (collective). */
+static void report(const cmdline *c, cfpo_run_engine *R, const cfpo_result *res, double seconds)
 {
     uint64_t peak, peak_max;
     cfpo_plan_peak_memory(&peak, &peak_max);
     cfpo_engine_timing tm;
-    cfpo_engine_timing_get(E, &tm);
-    if (comm_rank() != 0) return;
-    const int P = comm_size();
-    cli_summary sm = {.method = "cfpo", .variant = cfpo_variant_name(c->o.variant), .n = c->n,
+    R->ops->timing(R->E, &tm);
+    const int P = comm_size(), dens = strcmp(R->ops->name, "density") == 0;
+    int64_t *own = dens ? calloc((size_t)P, sizeof *own) : NULL;
+    if (dens && !comm_all(own != NULL)) cli_fail(prog, "out of memory");
+    if (dens) comm_allgather_i64(cfpo_dens_run_own_points(R), own);
+    if (comm_rank() != 0) {
+        free(own);
+        return;
+    }
+    cli_summary sm = {.method = c->dp ? "cfpo-density" : "cfpo",
+                      .variant = dens ? "density" : cfpo_variant_name(c->o.variant), .n = c->n,
                       .seed = c->o.seed, .threads = c->o.threads > 0 ? c->o.threads : omp_get_num_procs(),
                       .ranks = P, .iterations = res->iterations, .seconds = seconds,
                       .delta_min = res->delta_min, .delta_avg = res->delta_avg,
                       .converged = res->converged, .peak_bytes = peak, .stop = cfpo_stop_name(res->stop)};
     cli_print_summary(stdout, &sm);
-    if (P > 1) {
-        const cfpo_tiling *T = cfpo_engine_tiling(E);
+    if (c->dp)
+        printf("DENSITY spec=%s hash=%016llx pixels=%lldx%lld contrast=%.4g support=%.4g cells=%lld engine=%s\n",
+               c->density, (unsigned long long)c->dp->hash, (long long)c->dp->w, (long long)c->dp->h,
+               c->dp->rho_max / c->dp->rho_min, c->dp->support, (long long)R->ops->cells_per_side(R->E),
+               R->ops->name);
+    if (P > 1 && dens) print_density_ranks(&tm, own, P, c->n);
+    if (P > 1 && !dens) {
+        const cfpo_tiling *T = cfpo_engine_tiling(R->E);
         const double ph = tm.phases > 0 ? (double)tm.phases : 1;
         printf("RANKS ranks=%d tiles=%dx%d phases=%lld compute_s=%.3f/%.3f/%.3f migrate_s=%.3f/%.3f/%.3f "
                "halo_s=%.3f/%.3f/%.3f halo_bytes_per_phase=%.0f/%.0f/%.0f "
@@ -410,30 +488,11 @@ static void report(const cmdline *c, cfpo_engine *E, const cfpo_result *res, dou
     if (c->cfg.check)
         fprintf(stderr, "cfpo: check: %lld migrations and %lld halo refreshes verified on rank 0\n",
                 (long long)tm.checked_migrations, (long long)tm.checked_halos);
+    if (res->stop == CFPO_STOP_SIGNAL)
+        fprintf(stderr, "cfpo: stopped by a signal at iteration %d; checkpoint %s written, no output; continue "
+                "with --resume %s\n", res->iterations, c->cfg.checkpoint, c->cfg.checkpoint);
     fflush(stdout);
-}
-
-/* --density: the run under a density (main_density.c), one rank. */
-static int run_density(const cmdline *c)
-{
-    if (c->dry) cli_usage_error(prog, "--dry-run does not go with --density");
-    if (c->given_variant) cli_usage_error(prog, "--variant does not go with --density (the density run has one variant)");
-    if (c->cfg.px > 0 || c->cfg.check || c->dry_ranks > 0)
-        cli_usage_error(prog, "--tiles, --check and --ranks do not go with --density");
-    if (c->cfg.resume && c->init) cli_usage_error(prog, "--init does not go with --resume");
-    if (c->every > 0 && !c->cfg.checkpoint) cli_usage_error(prog, "--checkpoint-every needs --checkpoint FILE");
-    if (c->cfg.resume && !dens_ckpt_is(c->cfg.resume))
-        cli_usage_error(prog, "--resume %s: not a density checkpoint (made without --density, or not a checkpoint)", c->cfg.resume);
-    char err[512];
-    if (cfpo_runfiles_check(c->out, c->trace, c->cfg.checkpoint, 1, err, sizeof err) != 0) /* rank 0 writes them whole */
-        cli_usage_error(prog, "%s", err);
-    cfpo_density_cmd d = {.spec = c->density, .n = c->n, .o = c->o, .given_seed = c->given_seed,
-                          .given_tol = c->given_tol, .out = c->out, .trace = c->trace,
-                          .checkpoint = c->cfg.checkpoint, .resume = c->cfg.resume, .init = c->init,
-                          .every = c->every, .quiet = c->quiet, .ranks = comm_size()};
-    int rc = cfpo_density_main(&d);
-    comm_finalize();
-    return rc;
+    free(own);
 }
 
 int main(int argc, char **argv)
@@ -443,9 +502,6 @@ int main(int argc, char **argv)
     if (!cfpo_solver_name()) cli_usage_error(prog, "CFPO_SOLVER: bad value '%s' (plain, avx2, avx512 or auto)", getenv("CFPO_SOLVER"));
     cmdline c = {0};
     parse(argc, argv, &c);
-    if (c.cfg.resume && !c.density && dens_ckpt_is(c.cfg.resume))
-        cli_usage_error(prog, "--resume %s: the checkpoint was made with a density; give the same --density SPEC", c.cfg.resume);
-    if (c.density) return run_density(&c);
     settle_options(&c);
     if (c.dry) {
         int rc = dry_run(c.n, &c.o, c.dry_ranks > 0 ? (int)c.dry_ranks : comm_size(), c.cfg.px, c.cfg.py);
@@ -455,10 +511,12 @@ int main(int argc, char **argv)
     validate(&c);
     run_ctx ctx;
     cfpo_result res;
-    cfpo_engine *E = run(&c, &ctx, &res);
-    report(&c, E, &res, ctx.seconds);
-    cfpo_engine_free(E);
+    cfpo_run_engine R;
+    run(&c, &ctx, &R, &res);
+    report(&c, &R, &res, ctx.seconds);
+    R.ops->free(R.E);
     free(c.init_xy);
+    if (c.dp) cfpo_density_free(&c.d);
     comm_finalize();
-    return 0;
+    return res.stop == CFPO_STOP_SIGNAL ? 3 : 0;
 }

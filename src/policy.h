@@ -40,6 +40,37 @@
 #include "geom.h"
 #include "grid.h"
 
+/* The default tolerance of a run: of the variant on the uniform torus,
+ * or, under a density that is not flat (density), CFPO_DENSITY_TOL (the
+ * density engine, docs/method.md "Density": a move must gain more than
+ * this many local spacings in the measure, and a run has converged when no
+ * point moved that far in an iteration). The one place a run's default is
+ * chosen (cfpo_types.h holds the three values). */
+static inline double cfpo_policy_default_tol(int variant, int density)
+{
+    if (density) return CFPO_DENSITY_TOL;
+    return variant == CFPO_VARIANT_ADAPTIVE || variant == CFPO_VARIANT_HYPERUNIFORM ? CFPO_ADAPTIVE_TOL
+                                                                                      : CFPO_DEFAULT_TOL;
+}
+
+/* The density engine's schedule ends a run (docs/method.md, "Density"):
+ * every CFPO_POLICY_DENSITY_WINDOW iterations it compares delta_avg with
+ * its value one window earlier (*ref, 0 before the first window ends) and
+ * calls the run converged when it rose by less than
+ * CFPO_POLICY_DENSITY_STALL; the tail after that polishes delta_avg by
+ * less than 1e-3 over hundreds of iterations. Returns 1 when iteration k
+ * ends the run; updates *ref at each window's end. A pure function of the
+ * iteration, the measured delta_avg and *ref (which a checkpoint keeps). */
+#define CFPO_POLICY_DENSITY_WINDOW 16
+#define CFPO_POLICY_DENSITY_STALL 4e-5
+static inline int cfpo_policy_density_stalled(int k, double davg, double *ref)
+{
+    if (k <= 0 || k % CFPO_POLICY_DENSITY_WINDOW != 0) return 0;
+    const int stalled = *ref > 0 && davg - *ref < CFPO_POLICY_DENSITY_STALL;
+    *ref = davg;
+    return stalled;
+}
+
 /* The decisions for one iteration. */
 typedef struct {
     int iteration;  /* k, the iteration they are for (0: before the first) */

@@ -1,10 +1,12 @@
-/* runfiles.h - layer 4: the files of one cfpo run across ranks: the
- * points (text through one rank's writer; .npy and raw written by every
- * rank into one shared file) and the trace (rank 0). Each is written to a
+/* runfiles.h - layer 4: the files of one cfpo run across ranks, for
+ * every engine (engine_iface.h): the points (text through one rank's
+ * writer; .npy and raw written by every rank into one shared file through
+ * MPI-IO) and the trace (rank 0; its rows kept in memory during the run).
+ * Nothing is created during the run: at the end each file is written to a
  * temporary beside its final name, registered with the signal clean-up,
- * and renamed into place only at the end; a failed or interrupted run
- * leaves no file behind.
- * May include: cfpo_types.h, engine.h (layers 0-3). */
+ * and renamed into place only when all were written whole; a failed or
+ * interrupted run (even by kill -9) leaves no file behind.
+ * May include: cfpo_types.h, engine_iface.h (layers 0-3). */
 #ifndef CFPO_RUNFILES_H
 #define CFPO_RUNFILES_H
 
@@ -12,7 +14,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "engine.h"
+#include "engine_iface.h"
 
 typedef struct cfpo_runfiles cfpo_runfiles;
 
@@ -24,21 +26,23 @@ typedef struct cfpo_runfiles cfpo_runfiles;
 int cfpo_runfiles_check(const char *out, const char *trace, const char *checkpoint, int ranks, char *err,
                         size_t errlen);
 
-/* Collective: opens the temporaries of `out` (n points) and `trace`
- * (either may be NULL), writes the trace's header, and tries that a
- * checkpoint can be created beside `checkpoint` (may be NULL), so a bad path
- * fails before the work. NULL with a message on every rank when one cannot
- * be created (nothing left behind). */
+/* Collective: tries that `out` (n points), `trace` and `checkpoint` (any
+ * may be NULL) can be created (a temporary beside each, made and
+ * removed), so a bad path fails before the work; starts the trace in
+ * memory with its header. NULL with a message on every rank when one
+ * cannot be created (nothing left behind). */
 cfpo_runfiles *cfpo_runfiles_open(const char *out, const char *trace, const char *checkpoint, int64_t n,
                                   char *err, size_t errlen);
 
-/* The trace stream on rank 0 (NULL elsewhere, or without a trace). */
+/* The trace stream on rank 0 (NULL elsewhere, or without a trace): rows
+ * written to it reach the file at commit. */
 FILE *cfpo_runfiles_trace(const cfpo_runfiles *f);
 
-/* Collective: writes the engine's points, finishes every file, and only
- * when all were written whole puts them in place; frees f. 0, or -1 with a
- * message (then no file was replaced and no temporary is left). */
-int cfpo_runfiles_commit(cfpo_runfiles *f, cfpo_engine *E, char *err, size_t errlen);
+/* Collective: writes the engine's points and the trace, finishes every
+ * file, and only when all were written whole puts them in place; frees f.
+ * 0, or -1 with a message (then no file was replaced and no temporary is
+ * left). */
+int cfpo_runfiles_commit(cfpo_runfiles *f, const cfpo_run_engine *R, char *err, size_t errlen);
 
 /* Collective: removes every temporary; frees f (NULL: nothing). */
 void cfpo_runfiles_abort(cfpo_runfiles *f);

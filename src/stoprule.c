@@ -54,6 +54,7 @@ const char *cfpo_stop_name(int why)
     case CFPO_STOP_TIME: return "time";
     case CFPO_STOP_MAX_ITER: return "max-iter";
     case CFPO_STOP_CALLER: return "caller";
+    case CFPO_STOP_SIGNAL: return "signal";
     default: return "-";
     }
 }

@@ -50,11 +50,24 @@ flip() {
 N=4096
 "$CFPO" -q -n $N --max-iter 20 -o ref.bin >/dev/null || bad "reference run"
 "$CFPO" -q -n $N --max-iter 10 --checkpoint ck.bin --checkpoint-every 10 >/dev/null || bad "checkpointed run"
-[ "$(head -c 8 ck.bin)" = CFPOCKPT ] && [ "$(od -An -tu4 -j8 -N4 ck.bin | tr -d ' ')" = 3 ] && ok ||
-  bad "checkpoint is not version 3 ($(head -c 8 ck.bin | od -c | head -1))"
+[ "$(head -c 8 ck.bin)" = CFPOCKPT ] && [ "$(od -An -tu4 -j8 -N4 ck.bin | tr -d ' ')" = 4 ] &&
+  [ "$(od -An -tu4 -j12 -N4 ck.bin | tr -d ' ')" = 80 ] && [ "$(od -An -tx1 -j64 -N16 ck.bin | tr -d ' 0\n')" = "" ] &&
+  [ "$(stat -c %s ck.bin)" = $((80 + 16 * N)) ] && ok ||
+  bad "checkpoint is not version 4 with no density ($(head -c 16 ck.bin | od -c | head -1))"
+# The same state as a version-3 file (64-byte header), from which the older
+# versions below are made: read as before.
+python3 - ck.bin ck3.bin <<'PY'
+import struct, sys, zlib
+d = open(sys.argv[1], 'rb').read()
+h = bytearray(d[:64]); struct.pack_into('<II', h, 8, 3, 64); struct.pack_into('<I', h, 60, 0)
+struct.pack_into('<I', h, 60, zlib.crc32(bytes(h) + d[80:]) & 0xffffffff)
+open(sys.argv[2], 'wb').write(bytes(h) + d[80:])
+PY
+"$CFPO" -q --max-iter 20 --resume ck3.bin -o res3.bin >/dev/null && cmp -s res3.bin ref.bin && ok ||
+  bad "resume from a version-3 checkpoint differs from the uninterrupted run"
 [ "$(od -An -tu4 -j56 -N4 ck.bin | tr -d ' ')" = 1 ] && ok || bad "a checkpoint in the near phase has near != 1"
 "$CFPO" -q --max-iter 20 --resume ck.bin -o res.bin >/dev/null && cmp -s res.bin ref.bin && ok ||
-  bad "resume from a version-3 checkpoint differs from the uninterrupted run"
+  bad "resume from a version-4 checkpoint differs from the uninterrupted run"
 # The schedule steps by iteration (two-cell near solves before 7, strong
 # over-relaxation from 4 and before 20): checkpoints just before each step
 # resume to the uninterrupted run's bytes.
@@ -80,14 +93,14 @@ PY
 }
 # Version 2 (and 1, below) came from runs that solved exactly throughout:
 # they resume as near = 0, the same bytes as a version-3 file saying so.
-rehead ck.bin exact.ck 3 0
-rehead ck.bin old2.ck 2 0
+rehead ck3.bin exact.ck 3 0
+rehead ck3.bin old2.ck 2 0
 "$CFPO" -q --max-iter 20 --resume exact.ck -o res0.bin >/dev/null || bad "resume from near = 0"
 cmp -s res0.bin res.bin && bad "near = 0 resumed as the near phase" || ok
 "$CFPO" -q --max-iter 20 --resume old2.ck -o res2.bin >/dev/null 2>e.log && cmp -s res2.bin res0.bin && ok ||
   bad "version-2 checkpoint not read as near = 0: $(cat e.log)"
-rehead ck.bin res2.ck 2 1;                      refused res2.ck "reserved"
-rehead ck.bin near7.ck 3 7;                     refused near7.ck "near = 7"
+rehead ck3.bin res2.ck 2 1;                      refused res2.ck "reserved"
+rehead ck3.bin near7.ck 3 7;                     refused near7.ck "near = 7"
 
 # One flipped bit anywhere is refused: a point, the seed, the iteration,
 # the checksum itself.
@@ -100,7 +113,7 @@ grep -q checksum e.log && ok || bad "a flipped bit is not reported as a checksum
 # Version-1 files (no checksum): still read, same result; fields validated.
 v1() { # v1 FILE N VARIANT TOL_BITS_HEX ITER CONVERGED [RESERVED]: header + ck.bin's points
   { printf CFPOCKP1; le 8 "$2"; le 8 1; le 8 "$3"
-    printf "$4"; le 8 "$5"; le 8 "$6"; le 8 "${7:-0}"; tail -c +65 ck.bin; } >"$1"
+    printf "$4"; le 8 "$5"; le 8 "$6"; le 8 "${7:-0}"; tail -c +65 ck3.bin; } >"$1"
 }
 TOL=$(od -An -tx1 -j40 -N8 ck.bin | tr -d ' \n' | sed 's/../\\x&/g') # this run's tol, as bytes
 v1 good.v1 $N 2 "$TOL" 10 0
@@ -114,28 +127,30 @@ v1 res.v1 $N 2 "$TOL" 10 0 1;                  refused res.v1 "reserved"
 v1 small.v1 5 2 "$TOL" 10 0;                   refused small.v1 "n = 5"
 v1 big.v1 $((N + 1)) 2 "$TOL" 10 0;            refused big.v1 "truncated"
 v1 long.v1 $((N - 1)) 2 "$TOL" 10 0;           refused long.v1 "trailing"
-# Version 2 fields: a version this cfpo does not know, converged = 7.
-cp ck.bin ver.ck; patch ver.ck 8 '\x04';        refused ver.ck "version 4"
+# Version 4 fields: a version this cfpo does not know, converged = 7; the
+# density schedule's state without a density.
+cp ck.bin ver.ck; patch ver.ck 8 '\x05';        refused ver.ck "version 5"
 cp ck.bin conv.ck; patch conv.ck 36 '\x07';     refused conv.ck "converged"
 cp ck.bin nconv.ck; patch nconv.ck 36 '\x01';   refused nconv.ck "near = 1 with converged"
 cp ck.bin nvar.ck; patch nvar.ck 32 '\x00';     refused nvar.ck "near = 1 with a variant"
 cp ck.bin var.ck; patch var.ck 32 '\x02\x00\x00\x01'; refused var.ck "variant"
+cp ck.bin dref.ck; patch dref.ck 72 '\x00\x00\x00\x00\x00\x00\xe0\x3f'; refused dref.ck "davg_ref"
 printf 'CFPOCKPT' >short.ck;                    refused short.ck "not a cfpo checkpoint"
 
 # A state no run can reach: 2000 points on one spot (a run never brings
 # points closer than its start's minimum distance). Refused at once, not
 # after minutes of solving one crowded cell.
-{ for i in $(seq 2000); do tail -c +$((64 + 16 * 7 + 1)) ck.bin | head -c 16; done; tail -c +$((64 + 16 * 2000 + 1)) ck.bin; } >pts.raw
+{ for i in $(seq 2000); do tail -c +$((64 + 16 * 7 + 1)) ck3.bin | head -c 16; done; tail -c +$((64 + 16 * 2000 + 1)) ck3.bin; } >pts.raw
 { printf CFPOCKP1; le 8 $N; le 8 1; le 8 2; printf "$TOL"; le 8 10; le 8 0; le 8 0; cat pts.raw; } >crowd.v1
 refused crowd.v1 "puts 20[0-9][0-9] points in cell"
 # Two points on one spot, nothing crowded: the distance itself is refused.
-{ tail -c +$((64 + 16 * 7 + 1)) ck.bin | head -c 16; tail -c +$((64 + 16 + 1)) ck.bin; } >pts2.raw
+{ tail -c +$((64 + 16 * 7 + 1)) ck3.bin | head -c 16; tail -c +$((64 + 16 + 1)) ck3.bin; } >pts2.raw
 { printf CFPOCKP1; le 8 $N; le 8 1; le 8 2; printf "$TOL"; le 8 10; le 8 0; le 8 0; cat pts2.raw; } >twin.v1
 refused twin.v1 "closer than"
 # A clump spaced wider than the start's minimum distance but far fuller
 # than any run makes: 306 points in a square of half a cell side (n = 4096:
 # a 57 x 57 grid), so one cell holds at least 76 whatever the grid's shift.
-python3 - ck.bin clump.v1 <<'PY'
+python3 - ck3.bin clump.v1 <<'PY'
 import struct, sys
 d = open(sys.argv[1], 'rb').read()
 N, L = 4096, 1 / 57
@@ -166,17 +181,59 @@ else
   bad "no switch to exact solves in the trace (S='$S')"
 fi
 
-# A signal while a checkpoint is written leaves no temporary behind: the
-# first fsync (the first checkpoint's commit) raises SIGTERM.
+# SIGTERM (a batch scheduler's warning) while a checkpoint is written: the
+# first fsync (the first checkpoint's commit) raises it. With --checkpoint
+# the run finishes that checkpoint, writes one more at the next iteration
+# boundary and exits 3 with no output and no temporary; --resume then gives
+# the uninterrupted run's bytes. Without --checkpoint the signal ends the
+# run (143) while its output is committed, and nothing is left.
 if [ -f "$B/tests/libsigterm_fsync.so" ]; then
   LD_PRELOAD="$B/tests/libsigterm_fsync.so" "$CFPO" -q -n $N --max-iter 5 --checkpoint sig.ck \
-    --checkpoint-every 1 -o sig.bin >/dev/null 2>&1
+    --checkpoint-every 1 -o sig.bin >/dev/null 2>sig.err
   rc=$?
-  [ $rc -eq 143 ] && ok || bad "SIGTERM during a checkpoint: exit $rc, expected 143"
-  ls -A | grep -q '^sig\.' && bad "SIGTERM during a checkpoint left: $(ls -A | grep '^sig\.')" || ok
+  [ $rc -eq 3 ] && ok || bad "SIGTERM during a checkpoint: exit $rc, expected 3 ($(cat sig.err))"
+  grep -q "stopped by a signal at iteration [0-9]*; checkpoint sig.ck written" sig.err && ok ||
+    bad "SIGTERM: the message does not say where the run stopped: $(cat sig.err)"
+  ls -A | grep '^sig\.' | grep -qv -e '^sig\.ck$' -e '^sig\.err$' && bad "SIGTERM left: $(ls -A | grep '^sig\.')" || ok
+  "$CFPO" -q -n $N --max-iter 5 -o ref5.bin >/dev/null || bad "reference run to 5"
+  "$CFPO" -q --max-iter 5 --resume sig.ck -o sigr.bin >/dev/null && cmp -s sigr.bin ref5.bin && ok ||
+    bad "resume after SIGTERM: not the uninterrupted bytes"
+  LD_PRELOAD="$B/tests/libsigterm_fsync.so" "$CFPO" -q -n $N --max-iter 2 -o sig2.bin >/dev/null 2>&1
+  rc=$?
+  [ $rc -eq 143 ] && ok || bad "SIGTERM during the output's commit: exit $rc, expected 143"
+  ls -A | grep -q '^sig2\.' && bad "SIGTERM during the output's commit left: $(ls -A | grep '^sig2\.')" || ok
 else
   bad "tests/libsigterm_fsync.so not built"
 fi
+
+# SIGUSR1 from outside mid-run, as a scheduler sends it: the same (exit 3,
+# a checkpoint, no output; the resume gives the uninterrupted bytes). The
+# run is long (no limit, 2^16 points); the signal comes after 1 s. A
+# kill -9 during a run leaves no file beside the output (nothing is opened
+# before the end).
+"$CFPO" -q -n 65536 -t 1 --checkpoint usr.ck --checkpoint-every 1000 -o usr.bin >/dev/null 2>usr.err &
+pid=$!
+sleep 1
+kill -USR1 $pid
+wait $pid
+rc=$?
+[ $rc -eq 3 ] && [ -f usr.ck ] && [ ! -e usr.bin ] && ok ||
+  bad "SIGUSR1: exit $rc (expected 3), checkpoint $(ls usr.ck 2>&1), output $(ls usr.bin 2>&1): $(cat usr.err)"
+it=$(sed -n 's/.*at iteration \([0-9]*\);.*/\1/p' usr.err)
+if [ -n "$it" ]; then
+  "$CFPO" -q -n 65536 -t 1 --max-iter $((it + 2)) -o usr-ref.bin >/dev/null || bad "reference run"
+  "$CFPO" -q -t 2 --max-iter $((it + 2)) --resume usr.ck -o usr-res.bin >/dev/null && cmp -s usr-res.bin usr-ref.bin && ok ||
+    bad "resume after SIGUSR1 at iteration $it: not the uninterrupted bytes"
+else
+  bad "SIGUSR1: no iteration in the message: $(cat usr.err)"
+fi
+"$CFPO" -q -n 65536 -t 1 --trace k9.tsv -o k9.bin >/dev/null 2>&1 &
+pid=$!
+sleep 1
+kill -9 $pid
+wait $pid 2>/dev/null
+ls -A | grep -q '^k9\.' && bad "kill -9 during a run left: $(ls -A | grep '^k9\.')" || ok
+rm -f usr.* usr-* k9.* sig*.* ref5.bin
 
 # The hyperuniform variant's schedule steps by iteration too (its stage from
 # 29: transport sweeps, near sweeps at 41, 46, ..., 71; the end at 75): a resume before the

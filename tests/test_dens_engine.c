@@ -14,6 +14,8 @@
 
 #include "density_measures.h"
 #include "dens_engine.h"
+#include "dens_ops.h"
+#include "run_loop.h"
 #include "dens_measure.h"
 #include "density.h"
 #include "geom.h"
@@ -60,7 +62,24 @@ static cfpo_options opts(int threads, int iters)
     o.threads = threads;
     o.max_iter = iters;
     o.tol = 1e-4;
+    o.skip = 1;
     return o;
+}
+
+/* The run of the command (the one loop over the density engine's table)
+ * to o's iteration cap; R->E's engine stays for its points. 0 or -1. */
+static int run(const cfpo_density *d, int64_t n, const cfpo_options *o, cfpo_run_engine *R, cfpo_result *r,
+               char *err, size_t errlen)
+{
+    if (cfpo_dens_open(d, n, o, NULL, 0, 0, 0, R, err, errlen) != 0) return -1;
+    return cfpo_run_loop(R, NULL, 0, r, err, errlen);
+}
+
+static const double *points_of(cfpo_run_engine *R, double *xy, int64_t n)
+{
+    R->ops->copy(R->E, xy);
+    (void)n;
+    return xy;
 }
 
 static void never_falls(const char *spec, int64_t n, int iters)
@@ -111,14 +130,15 @@ static void support_and_threads(void)
     char err[512];
     const int64_t n = 2000;
     double *ref = NULL;
-    for (int t = 1; t <= 3; t++) {
+    double *p = malloc((size_t)n * 2 * sizeof *p);
+    for (int t = 1; t <= 3 && p; t++) {
         cfpo_options o = opts(t, 12);
-        cfpo_dens_engine *E = cfpo_dens_create(&d, n, &o, NULL, 0, err, sizeof err);
-        CHECK(E != NULL, "%s", err);
-        if (!E) break;
+        cfpo_run_engine R;
         cfpo_result r;
-        cfpo_dens_run(E, &r, 0, NULL, NULL, err, sizeof err);
-        const double *p = cfpo_dens_points(E);
+        const int rc = run(&d, n, &o, &R, &r, err, sizeof err);
+        CHECK(rc == 0, "%s", err);
+        if (rc != 0) break;
+        points_of(&R, p, n);
         if (t == 1) {
             ref = malloc((size_t)n * 2 * sizeof *ref);
             memcpy(ref, p, (size_t)n * 2 * sizeof *ref);
@@ -130,8 +150,9 @@ static void support_and_threads(void)
             CHECK(off == 0 && outside == 0, "%lld points on zero-density pixels, %lld off the torus", (long long)off,
                   (long long)outside);
         } else CHECK(memcmp(ref, p, (size_t)n * 2 * sizeof *ref) == 0, "%d threads: other bytes than 1 thread", t);
-        cfpo_dens_free(E);
+        R.ops->free(R.E);
     }
+    free(p);
     free(ref);
     cfpo_density_free(&d);
 }
@@ -149,18 +170,23 @@ static void fidelity(const char *spec)
     const int64_t n = 4096;
     cfpo_options o = opts(2, 40);
     o.tol = 0;
-    cfpo_dens_engine *E = cfpo_dens_create(&d, n, &o, NULL, 0, err, sizeof err);
+    cfpo_run_engine R;
     cfpo_result r;
-    CHECK(E && cfpo_dens_run(E, &r, 0, NULL, NULL, err, sizeof err) == 0, "%s: %s", spec, err);
-    if (!E) { cfpo_density_free(&d); return; }
+    const int rc = run(&d, n, &o, &R, &r, err, sizeof err);
+    CHECK(rc == 0, "%s: %s", spec, err);
+    if (rc != 0) { cfpo_density_free(&d); return; }
+    double *xy = malloc((size_t)n * 2 * sizeof *xy);
+    if (!xy) { R.ops->free(R.E); cfpo_density_free(&d); return; }
+    points_of(&R, xy, n);
     double rms, mx;
     size_t off;
-    an_density_fidelity(&d, cfpo_dens_points(E), (size_t)n, 8, &rms, &mx, &off);
+    an_density_fidelity(&d, xy, (size_t)n, 8, &rms, &mx, &off);
     CHECK(rms < 0.06 && mx < 0.25 && off == 0, "%s: count fidelity rms %.4f max %.4f off %zu", spec, rms, mx, off);
     CHECK(r.delta_min >= 0.8, "%s: delta_min %.4f after %d iterations", spec, r.delta_min, r.iterations);
     printf("%s n=4096, %d iterations: delta_min %.4f delta_avg %.4f, fidelity rms %.4f max %.4f\n", spec, r.iterations,
            r.delta_min, r.delta_avg, rms, mx);
-    cfpo_dens_free(E);
+    free(xy);
+    R.ops->free(R.E);
     cfpo_density_free(&d);
 }
 

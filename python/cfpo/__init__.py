@@ -86,9 +86,7 @@ def _call(want_trace, n, seed, variant, threads, tol, max_iter, target_min, targ
     dens = None if density is None else _density_arg(density, variant)
     cb, line = _callback(progress, nn if nn > 0 else start.shape[0], mi, stops)
     try:
-        if dens is not None:
-            return _core.run_density(nn, _args.seed(seed), th, t, mi, *stops, start, cb, want_trace, dens)
-        return _core.run(nn, _args.seed(seed), variant, th, t, mi, *stops, start, cb, want_trace)
+        return _core.run(nn, _args.seed(seed), variant, th, t, mi, *stops, start, cb, want_trace, dens)
     finally:
         if line is not None:
             line.end()

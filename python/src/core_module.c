@@ -72,7 +72,6 @@ static PyObject *core_format_of(PyObject *self, PyObject *args)
 
 static PyMethodDef methods[] = {
     {"run", core_run, METH_VARARGS, "CFPO run (see cfpo.run)."},
-    {"run_density", core_run_density, METH_VARARGS, "CFPO run under a density (see cfpo.run, density=)."},
     {"deltas", core_deltas, METH_VARARGS, "Nearest-neighbour statistics (see cfpo.analysis.deltas)."},
     {"spectrum", core_spectrum, METH_VARARGS, "Power spectrum and its measures (see cfpo.analysis.spectrum)."},
     {"certify", core_certify, METH_VARARGS, "FPD certificate (see cfpo.analysis.certify)."},

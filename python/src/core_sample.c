@@ -1,5 +1,6 @@
-/* core_sample.c - cfpo._core.run: one CFPO run through the engine, the
- * way the `cfpo` command runs it (src/main.c: the same options, checks,
+/* core_sample.c - cfpo._core.run: one CFPO run, with or without a
+ * density, through the one engine interface and run loop, the way the
+ * `cfpo` command runs it (src/main.c: the same options, defaults, checks,
  * start and points in id order), with the per-iteration callback in
  * Python's hands: Ctrl-C, the caller's callback and the trace. */
 #include "core.h"
@@ -9,6 +10,8 @@
 #include "cfpo.h"
 #include "cli.h"
 #include "engine.h"
+#include "engines.h"
+#include "run_loop.h"
 #include "plan.h"
 #include "stoprule.h"
 
@@ -62,6 +65,43 @@ int core_options_of(cfpo_options *o, unsigned long long seed, const char *varian
     return 0;
 }
 
+/* The start of --init (or None) into *start and n; -1 with an exception. */
+static int take_init(PyObject *init, long long *n, PyArrayObject **start)
+{
+    *start = NULL;
+    if (init == Py_None) return 0;
+    size_t m;
+    if (!(*start = core_points_in(init, &m))) return -1;
+    if (*n >= 0 && (size_t)*n != m) {
+        Py_CLEAR(*start);
+        PyErr_Format(PyExc_ValueError, "init: the array holds %zu points, n says %lld; leave n out or give the same",
+                     m, *n);
+        return -1;
+    }
+    *n = (long long)m;
+    return 0;
+}
+
+/* What the command checks before a run (src/main.c): n for the density,
+ * or the plan's memory without one. 0, or -1 with an exception. */
+static int check_run(long long n, const cfpo_options *o, const cfpo_density *d)
+{
+    char err[1024];
+    if (n < 0) {
+        PyErr_Format(PyExc_ValueError, "the number of points is required: n");
+        return -1;
+    }
+    if (d && !cfpo_density_is_flat(d)) {
+        if (cfpo_density_check_n(d, n, err, sizeof err) == 0) return 0;
+        core_error(PyExc_ValueError, err);
+        return -1;
+    }
+    const int vr = cfpo_plan_check(n, o, 0, 0, err, sizeof err);
+    if (vr == 0) return 0;
+    core_error(vr == -2 ? PyExc_MemoryError : PyExc_ValueError, err);
+    return -1;
+}
+
 PyObject *core_run(PyObject *self, PyObject *args)
 {
     (void)self;
@@ -70,44 +110,38 @@ PyObject *core_run(PyObject *self, PyObject *args)
     const char *variant;
     int threads, max_iter, want_trace;
     double tol, tmin, tavg, tlimit;
-    PyObject *init, *callback;
-    if (!PyArg_ParseTuple(args, "LKsididddOOp", &n, &seed, &variant, &threads, &tol, &max_iter, &tmin, &tavg,
-                          &tlimit, &init, &callback, &want_trace))
+    PyObject *init, *callback, *dens;
+    if (!PyArg_ParseTuple(args, "LKsididddOOpO", &n, &seed, &variant, &threads, &tol, &max_iter, &tmin, &tavg,
+                          &tlimit, &init, &callback, &want_trace, &dens))
         return NULL;
     cfpo_options o;
     if (core_options_of(&o, seed, variant, threads, tol, max_iter, tmin, tavg, tlimit) != 0) return NULL;
+    cfpo_density d;
+    const int got = core_density_in(dens, &d);
+    if (got < 0) return NULL;
+    const cfpo_density *dp = got ? &d : NULL;
+    if (tol < 0) o.tol = cfpo_engines_default_tol(o.variant, dp);
     cfpo_engine_config cfg;
     memset(&cfg, 0, sizeof cfg);
-    PyArrayObject *start = NULL;
-    if (init != Py_None) {
-        size_t m;
-        if (!(start = core_points_in(init, &m))) return NULL;
-        if (n >= 0 && (size_t)n != m) {
-            Py_DECREF(start);
-            return PyErr_Format(PyExc_ValueError, "init: the array holds %zu points, n says %lld; "
-                                "leave n out or give the same", m, n);
-        }
-        n = (long long)m;
-        cfg.start_xy = (const double *)PyArray_DATA(start);
-    }
-    char err[1024];
-    const int vr = cfpo_plan_check(n, &o, 0, 0, err, sizeof err);
-    if (vr != 0) {
+    PyArrayObject *start;
+    if (take_init(init, &n, &start) != 0 || check_run(n, &o, dp) != 0) {
         Py_XDECREF(start);
-        return core_error(vr == -2 ? PyExc_MemoryError : PyExc_ValueError, err);
+        if (dp) cfpo_density_free(&d);
+        return NULL;
     }
+    if (start) cfg.start_xy = (const double *)PyArray_DATA(start);
+    char err[1024];
     core_run_ctx c = {.callback = callback, .want_trace = want_trace, .trace = {.cols = CFPO_TRACE_COLUMNS}};
     o.progress = core_on_iteration;
     o.user = &c;
     cfpo_result res;
     int rc = -1;
-    double seconds;
     c.t0 = cli_now();
     c.ts = PyEval_SaveThread();
-    cfpo_engine *E = cfpo_engine_create_ex(n, &o, &cfg, err, sizeof err);
-    const int created = E != NULL;
-    if (E) rc = cfpo_engine_run(E, &res, err, sizeof err);
-    seconds = cli_now() - c.t0;
+    cfpo_run_engine R;
+    const int created = cfpo_engines_open(n, &o, &cfg, dp, c.t0, &R, err, sizeof err) == 0;
+    if (created) rc = cfpo_run_loop(&R, NULL, 0, &res, err, sizeof err);
+    const double seconds = cli_now() - c.t0;
     PyEval_RestoreThread(c.ts);
     Py_XDECREF(start);
     PyObject *points = NULL;
@@ -116,15 +150,16 @@ PyObject *core_run(PyObject *self, PyObject *args)
         points = core_points_new((size_t)n, &xy);
         if (points) {
             Py_BEGIN_ALLOW_THREADS
-            cfpo_engine_points(E, xy);
+            R.ops->copy(R.E, xy);
             Py_END_ALLOW_THREADS
         }
     }
-    cfpo_engine_free(E);
+    if (created) R.ops->free(R.E);
+    if (dp) cfpo_density_free(&d);
     return core_run_result(&c, rc, created, err, points, &res, seconds);
 }
 
-/* The end of a run (core_run, core_run_density): the failure as an exception
+/* The end of a run (core_run): the failure as an exception
  * (RuntimeError once the engine was created, ValueError before; none when the
  * callback or an interrupt already raised one), else the tuple (points,
  * iterations, seconds, delta_min, delta_avg, converged, stop, trace or

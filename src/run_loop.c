@@ -1,0 +1,60 @@
+/* run_loop.c - see run_loop.h. */
+#include "run_loop.h"
+
+#include <stdio.h>
+
+#include "omp_compat.h"
+#include "runsignal.h"
+#include "stoprule.h"
+
+/* Stop rule and progress callback after statistics s (elapsed: seconds
+ * since the engine's creation began, the largest over ranks, so every
+ * rank stops at the same iteration). */
+static int decide(const cfpo_run_engine *R, const cfpo_iter_stats *s, double elapsed)
+{
+    int why = cfpo_stop_check(&R->o.stop, s, elapsed, R->o.max_iter);
+    if (R->o.progress && R->o.progress(s, R->o.user) && !why) why = CFPO_STOP_CALLER;
+    return why;
+}
+
+/* A signal reached some rank (the same answer on every rank). */
+static int signalled(void)
+{
+    int64_t v = runsignal_caught() != 0;
+    comm_max_i64(&v, 1);
+    return v != 0;
+}
+
+int cfpo_run_loop(cfpo_run_engine *R, const char *checkpoint, int every, cfpo_result *res, char *err,
+                  size_t errlen)
+{
+    const double t0 = omp_get_wtime();
+    cfpo_iter_stats s = {0};
+    if (R->ops->now(R->E, &s, err, errlen) != 0) return -1;
+    s.seconds = omp_get_wtime() - t0;
+    double elapsed = omp_get_wtime() - R->t_born;
+    comm_max_d(&elapsed, 1);
+    int why = decide(R, &s, elapsed);
+    int rc = 0;
+    while (!why) {
+        if (checkpoint && signalled()) { /* a checkpoint of where the run stands, then stop */
+            why = CFPO_STOP_SIGNAL;
+            if (R->ops->checkpoint(R->E, checkpoint, s.iteration, s.converged, err, errlen) != 0) rc = -1;
+            break;
+        }
+        if (R->ops->step(R->E, &s, err, errlen) != 0) return -1;
+        elapsed += s.seconds;
+        why = decide(R, &s, elapsed);
+        /* every `every` iterations, and where the run stops (to go on from
+         * with --resume and other limits) */
+        if (checkpoint && every > 0 && (s.iteration % every == 0 || why) &&
+            R->ops->checkpoint(R->E, checkpoint, s.iteration, s.converged, err, errlen) != 0) {
+            rc = -1;
+            break;
+        }
+    }
+    *res = (cfpo_result){.iterations = s.iteration, .converged = s.converged, .stop = why,
+                         .seconds = omp_get_wtime() - t0, .delta_min = s.delta_min, .delta_avg = s.delta_avg,
+                         .cells_per_side = R->ops->cells_per_side(R->E)};
+    return rc;
+}

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# test_dens_stop.sh BUILD_DIR - the density schedule ends a run by itself
+# (docs/method.md, "Density"): `cfpo --density SPEC` with no limit stops,
+# converged, on every test density (cos, the ramp 1:16, Balzer's field, the
+# shipped image) and on one no other test uses (two Gaussian bumps and a
+# disc with a sharp edge, made here), within MAX iterations: without the
+# schedule's stop rule the same runs creep on for 500 to 600 iterations
+# and more. delta_min never falls along the way (the trace).
+set -u
+HERE=$(cd "$(dirname "$0")" && pwd)
+B=$(cd "$1" && pwd)
+CFPO="$B/cfpo"
+T=$(mktemp -d /tmp/cfpo-dstop-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 1
+. "$HERE/cli_expect.sh"
+MAX=320
+
+# the unseen density: 0.3 + two Gaussian bumps, a disc of 6 with a sharp edge (dark = dense)
+awk 'BEGIN { R = 128; printf "P2 %d %d 255\n", R, R
+  for (j = 0; j < R; j++) { y = 1 - (j + 0.5) / R
+    for (i = 0; i < R; i++) { x = (i + 0.5) / R
+      r = 0.3 + 2 * g(x, y, 0.3, 0.3, 0.08) + 1.5 * g(x, y, 0.7, 0.6, 0.12)
+      dx = w(x - 0.65); dy = w(y - 0.25); if (dx * dx + dy * dy < 0.01) r = 6
+      v = int(255 * (1 - r / 6.05) + 0.5); printf "%d ", (v > 254 ? 254 : v) } printf "\n" } }
+  function w(d) { return d - int(d + (d < 0 ? -0.5 : 0.5)) }
+  function g(x, y, cx, cy, s,  dx, dy) { dx = w(x - cx); dy = w(y - cy); return exp(-(dx * dx + dy * dy) / (2 * s * s)) }' >unseen.pgm
+
+for case in "1024 cos:a=0.9" "1024 ramp:contrast=16" "1024 balzer" "1024 unseen.pgm" "2600 $HERE/../data/astronaut-256.png"; do
+  set -- $case
+  name=$(basename "$2")
+  if ! "$CFPO" -q -t 2 -n "$1" --density "$2" --trace tr.tsv >sum.txt 2>err.txt; then
+    bad "$name: exit $? ($(head -2 err.txt))"; continue
+  fi
+  it=$(sed -n 's/.* iterations=\([0-9]*\) .*/\1/p' sum.txt)
+  grep -q ' converged=yes .*stop=converged' sum.txt && [ -n "$it" ] && [ "$it" -le $MAX ] && ok ||
+    bad "$name: did not stop by itself within $MAX iterations: $(head -1 sum.txt)"
+  awk -F'\t' 'NR > 2 && $2 + 0 < prev { exit 1 } NR > 1 { prev = $2 + 0 }' tr.tsv && ok ||
+    bad "$name: delta_min fell during the run"
+  echo "$name n=$1: $(sed -n 's/.*\(iterations=[0-9]*\).*\(delta_min=[^ ]*\) \(delta_avg=[^ ]*\).*/\1 \2 \3/p' sum.txt)"
+done
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
