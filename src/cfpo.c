@@ -124,7 +124,14 @@ static int sample(int64_t n, const cfpo_options *o, const cfpo_density *d, doubl
                   size_t errlen)
 {
     if (validate_options(o, err, errlen) != 0) return -1;
-    if (d && !cfpo_density_is_flat(d) && cfpo_density_check_n(d, n, err, errlen) != 0) return -1;
+    if (d && !cfpo_density_is_flat(d)) {
+        if (o->variant != CFPO_VARIANT_ADAPTIVE) {
+            snprintf(err, errlen, "variant %s does not go with a density (the density run has one variant)",
+                     cfpo_variant_name(o->variant));
+            return -1;
+        }
+        if (cfpo_density_check_n(d, n, err, errlen) != 0) return -1;
+    }
     cfpo_engine_config cfg;
     memset(&cfg, 0, sizeof cfg);
     cfpo_run_engine R;

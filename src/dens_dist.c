@@ -36,6 +36,8 @@ struct cfpo_dens_dist {
     comm_msg *msg;   /* [a], for nb[a]; the receive buffers kept */
     char **sbuf;
     size_t *scap;
+    double sx, sy; /* the offset of the last cut */
+    int placed;    /* a cut was made */
 };
 
 static int push(ivec *v, int64_t x)
@@ -77,48 +79,20 @@ void cfpo_dens_store_free(cfpo_dens_store *s)
 
 int64_t cfpo_dens_dist_max_ranks(int64_t g) { return (g / 3) * (g / 3); }
 
-/* The 1-D overlaps of npix pixels with g cells shifted by sh: pixel i
- * covers [i g / npix - sh g, (i + 1) g / npix - sh g) in cell units. */
-static int overlaps(int64_t npix, int64_t g, double sh, int64_t **off, int64_t **cell, double **wt)
+/* The points of each cell under the shift (sx, sy) (g g doubles,
+ * row-major): of the store's own points, summed over the ranks when `all`
+ * (on one rank's whole set, before the first cut, not). Collective. */
+static double *cell_points(const cfpo_dens_dist *T, const cfpo_dens_store *s, double sx, double sy, int all)
 {
-    const int64_t per = g / npix + 3;
-    *off = malloc((size_t)(npix + 1) * sizeof **off);
-    *cell = malloc((size_t)(npix * per) * sizeof **cell);
-    *wt = malloc((size_t)(npix * per) * sizeof **wt);
-    if (!*off || !*cell || !*wt) return -1;
-    int64_t m = 0;
-    for (int64_t i = 0; i < npix; i++) {
-        (*off)[i] = m;
-        const double a = (double)i * (double)g / (double)npix - sh * (double)g,
-                     b = (double)(i + 1) * (double)g / (double)npix - sh * (double)g;
-        for (int64_t k = (int64_t)floor(a); (double)k < b && m < (i + 1) * per; k++) {
-            const double w = fmin(b, (double)(k + 1)) - fmax(a, (double)k);
-            if (!(w > 0)) continue;
-            (*cell)[m] = ((k % g) + g) % g;
-            (*wt)[m++] = w;
-        }
+    const int64_t g = T->g;
+    double *M = calloc((size_t)(g * g), sizeof *M);
+    if (M)
+        for (int64_t i = 0; i < s->own; i++) M[cfpo_dens_cell_of(g, sx, sy, s->xy[2 * i], s->xy[2 * i + 1])] += 1;
+    if (!comm_all(M != NULL)) {
+        free(M);
+        return NULL;
     }
-    (*off)[npix] = m;
-    return 0;
-}
-
-/* The density's mass in each cell (g g doubles, row-major), up to a factor. */
-static double *cell_mass(const cfpo_density *d, int64_t g, double sx, double sy)
-{
-    int64_t *xo = NULL, *xc = NULL, *yo = NULL, *yc = NULL;
-    double *xw = NULL, *yw = NULL, *row = malloc((size_t)g * sizeof *row), *M = calloc((size_t)(g * g), sizeof *M);
-    int ok = row && M && overlaps(d->w, g, sx, &xo, &xc, &xw) == 0 && overlaps(d->h, g, sy, &yo, &yc, &yw) == 0;
-    for (int64_t j = 0; ok && j < d->h; j++) {
-        memset(row, 0, (size_t)g * sizeof *row);
-        for (int64_t i = 0; i < d->w; i++) {
-            const double r = d->rho[j * d->w + i];
-            for (int64_t e = xo[i]; e < xo[i + 1]; e++) row[xc[e]] += r * xw[e];
-        }
-        for (int64_t e = yo[j]; e < yo[j + 1]; e++)
-            for (int64_t cx = 0; cx < g; cx++) M[yc[e] * g + cx] += yw[e] * row[cx];
-    }
-    free(xo); free(xc); free(xw); free(yo); free(yc); free(yw); free(row);
-    if (!ok) { free(M); return NULL; }
+    if (all) comm_sum_d(M, (int)(g * g));
     return M;
 }
 
@@ -135,12 +109,15 @@ static int colour_of(int64_t g, int64_t c) { return (int)((c % g) % 3 + 3 * ((c 
 
 /* The cut for the shift (sx, sy): owners, this rank's cells, neighbours
  * and the refresh lists. 0, or -1 when out of memory. */
-static int recut(cfpo_dens_dist *T, double sx, double sy)
+static int recut(cfpo_dens_dist *T, const cfpo_dens_store *s, double sx, double sy, int all)
 {
     const int64_t g = T->g;
     const int P = T->P;
-    double *M = cell_mass(T->d, g, sx, sy);
+    double *M = cell_points(T, s, sx, sy, all);
     if (!M) return -1;
+    T->sx = sx;
+    T->sy = sy;
+    T->placed = 1;
     double total = 0, acc = 0;
     for (int64_t c = 0; c < g * g; c++) total += M[c];
     for (int64_t k = 0; k < g * g; k++) { /* up the even columns, down the odd ones */
@@ -217,7 +194,7 @@ const int64_t *cfpo_dens_dist_cells(const cfpo_dens_dist *T, int colour, int64_t
 
 int cfpo_dens_dist_keep(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, double sy)
 {
-    if (!comm_all(recut(T, sx, sy) == 0 && cfpo_dens_store_reserve(s, s->cap, 1) == 0)) return -1;
+    if (recut(T, s, sx, sy, 0) != 0 || !comm_all(cfpo_dens_store_reserve(s, s->cap, 1) == 0)) return -1;
     int64_t k = 0;
     for (int64_t i = 0; i < s->own; i++)
         if (T->owner[cfpo_dens_cell_of(T->g, sx, sy, s->xy[2 * i], s->xy[2 * i + 1])] == T->me) {
@@ -294,8 +271,11 @@ static int fetch_halo(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, double s
 int cfpo_dens_dist_migrate(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, double sy)
 {
     const int P = T->P;
+    /* The same offset: no point left its cell (moves stay in their cells)
+     * and every halo copy is current (refreshed after each colour). */
+    if (T->placed && sx == T->sx && sy == T->sy) return 0;
     s->loc = s->own;
-    if (!comm_all(recut(T, sx, sy) == 0)) return -1;
+    if (recut(T, s, sx, sy, 1) != 0) return -1;
     void **send = calloc((size_t)P, sizeof *send), **recv = calloc((size_t)P, sizeof *recv);
     size_t *sbytes = calloc((size_t)P, sizeof *sbytes), *rbytes = calloc((size_t)P, sizeof *rbytes),
            *scap = calloc((size_t)P, sizeof *scap);

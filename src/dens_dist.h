@@ -1,17 +1,18 @@
 /* dens_dist.h - layer 3: the density engine (dens_engine.c) on several
  * ranks (docs/mpi.md, "Under a density").
  *
- * Ownership is by cell of the engine's g x g grid, cut anew every iteration
- * for its shift (from the density alone, so every rank computes the same
- * cut without a message). The cut balances mass, not area: the density is
- * integrated over the shifted cells, the cells are ordered column by column
- * (up the even columns, down the odd ones), and the order is cut into P
- * runs of equal mass, so a rank holds whole columns and part of one or two
- * more, and its points are n / P to within about one cell's count (points
- * follow the mass). A grid of g cells a side has (g / 3)^2 cells of one
- * colour; more ranks than that are refused.
+ * Ownership is by cell of the engine's g x g grid, cut anew whenever the
+ * grid takes a new offset (every fourth iteration). The cut balances
+ * points, not area or mass: every rank counts its points in each shifted
+ * cell, the counts are summed over the ranks (the same numbers on every
+ * rank), the cells are ordered column by column (up the even columns, down
+ * the odd ones), and the order is cut into P runs of equal count, so a
+ * rank holds whole columns and part of one or two more, and n / P points
+ * to within about one cell's count, even when the set is still far from
+ * the density (a start, an --init set). A grid of g cells a side has
+ * (g / 3)^2 cells of one colour; more ranks than that are refused.
  *
- * Every iteration, after the new shift: each rank sends the points that
+ * At each new offset: each rank sends the points that
  * left its cells to their cells' owners (all-to-all), merges what stays and
  * what came in by id, then fetches its halo: the points of the cells within
  * one cell of its own, from their owners, each rank's in id order. The
@@ -83,8 +84,10 @@ const int64_t *cfpo_dens_dist_cells(const cfpo_dens_dist *T, int colour, int64_t
 int cfpo_dens_dist_keep(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, double sy);
 
 /* Collective: cuts the cells for the new shift, drops the halo, moves
- * every point to the owner of its cell, then fetches the halo. 0, or -1 when out of memory
- * on any rank. */
+ * every point to the owner of its cell, then fetches the halo; nothing
+ * when the shift is the last cut's (points stay in their cells within an
+ * offset's iterations, and the halo is kept current by the refreshes). 0,
+ * or -1 when out of memory on any rank. */
 int cfpo_dens_dist_migrate(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, double sy);
 
 /* Collective, after a colour's phase: sends this rank's cells of the

@@ -3,20 +3,27 @@
  *
  * The torus is cut into g x g square cells of side L >= 1.25 r_max (r_max
  * = Delta(n) / sqrt(rho_min), the sparsest local spacing), g a multiple of
- * 3, the grid shifted by a random offset every iteration, the cells
+ * 3, the grid shifted by a random offset every fourth iteration, the cells
  * coloured (x mod 3, y mod 3): nine phases, each solving its cells in
  * parallel, whose 3 x 3 blocks are disjoint. Each point of a cell, in id
  * order, gets a candidate from the local solve (dens_solve.h) inside the
  * box of half-side r_i around it, clipped to its cell, and moves there
- * only when its squared symmetric measure f rises against every other
- * point of the block, and when no point outside the block can have f
- * below the old value (their distance is at least the candidate's
- * distance to the block's edge, their density at least rho_min). A
- * rejected move changes nothing; so every move raises the moved point's
- * smallest measure, and the smallest measure over all pairs never falls.
+ * only when its measure rises by more than tol local spacings, its squared
+ * symmetric measure f rises against every other point of the block, and
+ * no point outside the block can have f below the old value (their
+ * distance is at least the candidate's distance to the block's edge, their
+ * density at least rho_min). A rejected move changes nothing; so every
+ * move raises the moved point's smallest measure, and the smallest measure
+ * over all pairs never falls. A cell whose block did not change since it
+ * was last solved without a move is skipped (it would move nothing). The
+ * run has converged when no point moved by tol, or when delta_avg stalls
+ * (policy.h, cfpo_policy_density_stalled).
  * The output does not depend on the thread count, nor, under mpirun, on
  * the rank count: each rank solves the cells it owns (dens_dist.h).
- * Owns: the grid, the colour schedule, the accept rule, the run loop. */
+ * The run loop, checkpoints and files are the one interface's
+ * (dens_ops.h, run_loop.h).
+ * Owns: the grid, the colour schedule, the accept rule, the skipping, the
+ * schedule's per-iteration decisions. */
 #ifndef CFPO_DENS_ENGINE_H
 #define CFPO_DENS_ENGINE_H
 

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "density_measures.h"
+#include "cfpo.h"
 #include "dens_engine.h"
 #include "dens_ops.h"
 #include "run_loop.h"
@@ -190,8 +191,53 @@ static void fidelity(const char *spec)
     cfpo_density_free(&d);
 }
 
+/* The library's front (cfpo.h): cfpo_sample_density gives the bytes of
+ * the one loop over the density engine; cfpo_sample_density_values of a
+ * flat array gives cfpo_sample's (the uniform torus); a bad density and n
+ * too small for one are refused with one line. */
+static void library(void)
+{
+    char err[512];
+    const int64_t n = 2000;
+    cfpo_density d;
+    if (cfpo_density_load("cos:a=0.9,res=64", &d, err, sizeof err) != 0) { CHECK(0, "%s", err); return; }
+    cfpo_options o = opts(2, 10);
+    o.variant = CFPO_VARIANT_ADAPTIVE;
+    double *a = malloc((size_t)n * 2 * sizeof *a), *b = malloc((size_t)n * 2 * sizeof *b);
+    cfpo_run_engine R;
+    cfpo_result r, r2;
+    if (!a || !b || run(&d, n, &o, &R, &r, err, sizeof err) != 0) {
+        CHECK(0, "reference run: %s", err);
+        free(a); free(b); cfpo_density_free(&d);
+        return;
+    }
+    points_of(&R, a, n);
+    R.ops->free(R.E);
+    CHECK(cfpo_sample_density(n, &o, "cos:a=0.9,res=64", b, &r2, err, sizeof err) == 0, "%s", err);
+    CHECK(memcmp(a, b, (size_t)n * 2 * sizeof *a) == 0 && r2.iterations == r.iterations,
+          "cfpo_sample_density: other bytes than the engine's run");
+    double flat[16];
+    for (int i = 0; i < 16; i++) flat[i] = 3.0;
+    cfpo_options u;
+    cfpo_options_init(&u);
+    u.max_iter = 10;
+    u.threads = 2;
+    CHECK(cfpo_sample(n, &u, a, &r, err, sizeof err) == 0, "%s", err);
+    CHECK(cfpo_sample_density_values(n, &u, flat, 4, 4, b, &r2, err, sizeof err) == 0, "%s", err);
+    CHECK(memcmp(a, b, (size_t)n * 2 * sizeof *a) == 0, "a flat density: other bytes than cfpo_sample's");
+    err[0] = 0;
+    CHECK(cfpo_sample_density(n, &o, "swirl", b, &r2, err, sizeof err) == -1 && err[0] && !strchr(err, '\n'),
+          "a bad density: '%s'", err);
+    err[0] = 0;
+    CHECK(cfpo_sample_density(50, &o, "ramp:contrast=200", b, &r2, err, sizeof err) == -1 && strstr(err, "too small"),
+          "n too small for the density: '%s'", err);
+    free(a); free(b);
+    cfpo_density_free(&d);
+}
+
 int main(void)
 {
+    library();
     never_falls("cos:a=0.9,res=64", 300, 6);
     never_falls("ramp:contrast=16,res=64", 300, 6);
     never_falls("balzer:res=64", 500, 4);
