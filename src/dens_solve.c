@@ -17,12 +17,15 @@ double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int
 }
 
 int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, cfpo_square S,
-                    const cfpo_density *d, double ox, double oy, double *cx, double *cy, double *f, double *scratch)
+                    const cfpo_density *d, double ox, double oy, double floor_f, double *cx, double *cy, double *f,
+                    double *scratch)
 {
     const size_t cap = 2 * ((size_t)k + 8);
     double *bufa = scratch, *bufb = bufa + cap;
     const double corner[4][2] = {{S.x0, S.y0}, {S.x1, S.y0}, {S.x1, S.y1}, {S.x0, S.y1}};
-    double best = -1;
+    double best = floor_f; /* only a vertex above it counts: polygons and
+                              evaluations that cannot beat it stop early */
+    int found = 0;
     const double qmax = sqrt(d->rho_max);
     *cx = 0.5 * (S.x0 + S.x1);
     *cy = 0.5 * (S.y0 + S.y1);
@@ -110,9 +113,10 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
                 best = val;
                 *cx = px;
                 *cy = py;
+                found = 1;
             }
         }
     }
-    *f = best;
-    return best >= 0;
+    *f = found ? best : -1;
+    return found;
 }

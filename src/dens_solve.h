@@ -27,10 +27,16 @@ static inline size_t cfpo_dens_scratch(int k) { return 5 * ((size_t)k + 8) + 16;
 
 /* Neighbours (yx, yy) with q = sqrt(rho) in yr (k of them, in a local frame whose
  * origin is (ox, oy) on the torus), the box S (local frame). Returns the
- * best vertex's f into *f and its position into (cx, cy), or 0 when no
- * vertex lies on a non-zero pixel (then *f = -1). */
+ * best vertex's f into *f and its position into (cx, cy) when it is above
+ * floor_f, or 0 when no vertex on a non-zero pixel is (then *f = -1). The
+ * engine passes the moving point's own value (a candidate must beat it):
+ * polygons and evaluations that cannot beat it stop early, and the vertex
+ * returned is the one the solve with floor_f < 0 returns whenever that
+ * one beats floor_f (the same vertices, in the same order, strict
+ * comparisons). */
 int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, cfpo_square S,
-                    const cfpo_density *d, double ox, double oy, double *cx, double *cy, double *f, double *scratch);
+                    const cfpo_density *d, double ox, double oy, double floor_f, double *cx, double *cy, double *f,
+                    double *scratch);
 
 /* f at c (local frame) against the k neighbours. */
 double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy);

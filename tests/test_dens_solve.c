@@ -36,7 +36,7 @@ static void trials(const char *spec, int exact, int count)
     unsigned long long seed = 12345;
     const double s = 0.05; /* the box's half side */
     double yx[10], yy[10], yr[10], scratch[200];
-    int bad_val = 0, bad_box = 0, bad_exact = 0, bad_above = 0, n = 0;
+    int bad_val = 0, bad_box = 0, bad_exact = 0, bad_above = 0, bad_floor = 0, n = 0;
     double ratio_sum = 0, ratio_min = INFINITY;
     for (int t = 0; t < count; t++) {
         const double ox = urand(&seed), oy = urand(&seed);
@@ -55,8 +55,15 @@ static void trials(const char *spec, int exact, int count)
         for (int j = 0; j < k; j++) yr[j] = cfpo_dens_local_q(&d, ox, oy, yx[j], yy[j]);
         cfpo_square S = {-s, -s, s, s};
         double cx, cy, f;
-        if (!cfpo_dens_solve(yx, yy, yr, k, S, &d, ox, oy, &cx, &cy, &f, scratch)) continue;
+        if (!cfpo_dens_solve(yx, yy, yr, k, S, &d, ox, oy, -1, &cx, &cy, &f, scratch)) continue;
         n++;
+        /* a floor below the best gives the same vertex; at or above it, none */
+        const double floors[4] = {0, 0.5 * f, f * (1 - 1e-9), f};
+        for (int q = 0; q < 4; q++) {
+            double fx, fy, ff;
+            const int got = cfpo_dens_solve(yx, yy, yr, k, S, &d, ox, oy, floors[q], &fx, &fy, &ff, scratch);
+            if (q < 3 ? !(got && fx == cx && fy == cy && ff == f) : got) bad_floor++;
+        }
         const double fv = cfpo_dens_value(yx, yy, yr, k, cfpo_dens_local_q(&d, ox, oy, cx, cy), cx, cy);
         if (!(fabs(fv - f) <= 1e-12 * fabs(f))) bad_val++;
         if (cx < S.x0 || cx > S.x1 || cy < S.y0 || cy > S.y1) bad_box++;
@@ -85,6 +92,8 @@ static void trials(const char *spec, int exact, int count)
     }
     CHECK(n > count / 2, "%s: only %d of %d solves found a vertex", spec, n, count);
     CHECK(bad_val == 0, "%s: %d solves whose value is not the objective at their point", spec, bad_val);
+    CHECK(bad_floor == 0, "%s: %d solves where a floor below the best changed the vertex, or one at it found one", spec,
+          bad_floor);
     CHECK(bad_box == 0, "%s: %d solves outside the box", spec, bad_box);
     if (exact) CHECK(bad_exact == 0, "%s: %d solves below the enumeration's maximum (uniform: the solve is exact)", spec, bad_exact);
     else CHECK(bad_above == 0, "%s: %d solves above the enumeration's maximum plus its resolution", spec, bad_above);

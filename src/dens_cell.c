@@ -1,0 +1,167 @@
+/* dens_cell.c - layer 3: one cell's solves under a density: each point
+ * of the cell in id order, its old value, its neighbours, the candidate
+ * (dens_solve.h) and the accept rule (dens_engine.h, docs/method.md
+ * "Density"). */
+#include <math.h>
+#include <stdlib.h>
+
+#include "dens_impl.h"
+#include "dens_solve.h"
+#include "geom.h"
+
+static int grow_ring(tbuf *b, size_t need)
+{
+    free(b->ring);
+    b->ring = malloc(need * sizeof *b->ring);
+    b->ring_cap = b->ring ? need : 0;
+    return b->ring ? 0 : -1;
+}
+
+/* Solves the points of cell (cx, cy) one after another; returns the moves
+ * made, the largest move (in local spacings) into *maxd. */
+int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, double *maxd)
+{
+    const int64_t g = E->g;
+    const double L = E->L, ox = (double)cx * L + E->sx, oy = (double)cy * L + E->sy;
+    const int wrap = g < 6; /* the block spans the torus: differences wrap */
+    int m = 0, c0 = 0, c1 = 0;
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            const int64_t c = ((cy + dy + g) % g) * g + (cx + dx + g) % g;
+            if (dx == 0 && dy == 0) c0 = m;
+            const double mx = ((double)dx + 0.5) * L, my = ((double)dy + 0.5) * L;
+            for (int64_t s = E->cstart[c]; s < E->cstart[c + 1]; s++) {
+                const int64_t j = E->cidx[s];
+                double u = E->s.xy[2 * j] - ox, v = E->s.xy[2 * j + 1] - oy;
+                b->bx[m] = u - rint(u - mx);
+                b->by[m] = v - rint(v - my);
+                b->br[m] = E->s.q[j];
+                b->bid[m] = j;
+                m++;
+            }
+            if (dx == 0 && dy == 0) c1 = m;
+        }
+    const double lo = sqrt(E->d->rho_min), rmax = E->D / lo, hi = L * (1 - 1e-9);
+    /* the block's buckets (one for a small block), and the smallest q in
+     * it, which bounds the measure of the points a ring scan leaves out */
+    cfpo_dens_buckets *bk = &b->bk;
+    if (cfpo_dens_buckets_build(bk, b->bx, b->by, m, -L, -L, 3 * L, wrap, m < BUCKET_FROM ? (double)m + 1 : BUCKET_PER) != 0
+        || ((size_t)(8 * bk->B + 1) > b->ring_cap && grow_ring(b, (size_t)(8 * bk->B + 1)) != 0)) {
+        b->oom = 1;
+        return 0;
+    }
+    double qlo = INFINITY;
+    for (int j = 0; j < m; j++)
+        if (b->br[j] < qlo) qlo = b->br[j];
+    const double h = bk->h, gain = E->o.tol * E->D;
+    int64_t moves = 0;
+    for (int p = c0; p < c1; p++) {
+        const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
+        const double ri = ra > 0 ? E->D / ra : rmax, R2 = REACH * REACH * ri * ri;
+        const int cp = cfpo_dens_bucket_of(bk, ax, ay);
+        /* old: the smallest d^2 q_j over the block, by rings around the
+         * point until the points left are too far to go below it */
+        double old = INFINITY;
+        for (int k = 0;; k++) {
+            if (k > 1 && qlo > 0) {
+                const double e = (double)(k - 1) * h;
+                if (e * e * qlo >= old * BOUND_SAFE) break;
+            }
+            const int nb = cfpo_dens_ring(bk, cp, k, b->ring);
+            if (nb < 0) break;
+            for (int r = 0; r < nb; r++)
+                for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
+                    if (j == p) continue;
+                    double ex = b->bx[j] - ax, ey = b->by[j] - ay;
+                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                    const double v = (ex * ex + ey * ey) * b->br[j];
+                    if (v < old) old = v;
+                }
+        }
+        const double oldf = old * ra;
+        /* the KMAX nearest within reach, nearest first (ties: block order),
+         * from the buckets that cover the reach */
+        int kk = 0, fx, nx_, fy, ny_;
+        const double R = REACH * ri;
+        cfpo_dens_span(bk, ax - R, ax + R, bk->x0, &fx, &nx_);
+        cfpo_dens_span(bk, ay - R, ay + R, bk->y0, &fy, &ny_);
+        for (int iy = 0; iy < ny_; iy++)
+            for (int ix = 0; ix < nx_; ix++) {
+                const int c = ((fy + iy) % bk->B) * bk->B + (fx + ix) % bk->B;
+                for (int j = bk->head[c]; j >= 0; j = bk->next[j]) {
+                    if (j == p) continue;
+                    double ex = b->bx[j] - ax, ey = b->by[j] - ay;
+                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                    const double d2 = ex * ex + ey * ey;
+                    if (!(d2 < R2)) continue;
+                    if (kk == KMAX && (d2 > b->scratch[KMAX - 1] || (d2 == b->scratch[KMAX - 1] && j > b->nj[KMAX - 1])))
+                        continue;
+                    int t = kk < KMAX ? kk++ : KMAX - 1;
+                    while (t > 0 && (b->scratch[t - 1] > d2 || (b->scratch[t - 1] == d2 && b->nj[t - 1] > j))) {
+                        b->scratch[t] = b->scratch[t - 1];
+                        b->nj[t] = b->nj[t - 1];
+                        b->nx[t] = b->nx[t - 1]; b->ny[t] = b->ny[t - 1]; b->nr[t] = b->nr[t - 1];
+                        t--;
+                    }
+                    b->scratch[t] = d2;
+                    b->nj[t] = j;
+                    b->nx[t] = ax + ex; b->ny[t] = ay + ey; b->nr[t] = b->br[j];
+                }
+            }
+        cfpo_square S = {ax - ri, ay - ri, ax + ri, ay + ri};
+        if (S.x0 < 0) S.x0 = 0;
+        if (S.y0 < 0) S.y0 = 0;
+        if (S.x1 > hi) S.x1 = hi;
+        if (S.y1 > hi) S.y1 = hi;
+        double cxp, cyp, fc;
+        if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, S, E->d, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX))
+            continue;
+        /* a move must gain more than tol local spacings in the measure
+         * (sqrt(f) / Delta), as the uniform path's must gain tol L */
+        if (!(sqrt(fc) > sqrt(oldf) + gain && fc > oldf * (1 + 1e-12))) continue;
+        /* the accept rule: f rises against the whole block ... */
+        const double rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
+        if (!(rc > 0)) continue;
+        /* (rings around the candidate until the points left cannot reach
+         * the old value: the same decision as against every point) */
+        const double thr = oldf * (1 + 1e-12);
+        const int cc = cfpo_dens_bucket_of(bk, cxp, cyp);
+        int below = 0;
+        for (int k = 0; !below; k++) {
+            if (k > 1 && qlo > 0) {
+                const double e = (double)(k - 1) * h;
+                if (e * e * qlo * rc > thr * BOUND_SAFE) break;
+            }
+            const int nb = cfpo_dens_ring(bk, cc, k, b->ring);
+            if (nb < 0) break;
+            for (int r = 0; r < nb && !below; r++)
+                for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
+                    if (j == p) continue;
+                    double ex = b->bx[j] - cxp, ey = b->by[j] - cyp;
+                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                    if (!((ex * ex + ey * ey) * b->br[j] * rc > thr)) { below = 1; break; }
+                }
+        }
+        if (below) continue;
+        /* ... and no point outside the block can be nearer in f */
+        if (!wrap) {
+            const double e = fmin(fmin(cxp + L, 2 * L - cxp), fmin(cyp + L, 2 * L - cyp));
+            if (!(e * e * lo * rc >= oldf)) continue;
+        }
+        const double x = cfpo_wrap01(ox + cxp), y = cfpo_wrap01(oy + cyp);
+        if (cell_of(E, x, y) != cy * g + cx) continue; /* rounding left the cell */
+        const int64_t id = b->bid[p];
+        const double dd = sqrt((cxp - ax) * (cxp - ax) + (cyp - ay) * (cyp - ay)) / ri;
+        if (dd > *maxd) *maxd = dd;
+        cfpo_dens_buckets_move(bk, p, cp, cc);
+        b->bx[p] = cxp;
+        b->by[p] = cyp;
+        b->br[p] = rc;
+        E->s.xy[2 * id] = x;
+        E->s.xy[2 * id + 1] = y;
+        E->s.q[id] = rc;
+        moves++;
+        if (E->on_move) E->on_move(E->s.xy, id, E->move_user);
+    }
+    return moves;
+}

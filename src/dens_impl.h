@@ -1,0 +1,62 @@
+/* dens_impl.h - layer 3: the density engine's state, shared by its two
+ * files: dens_engine.c (lifetime, grid, schedule, measure, points out) and
+ * dens_cell.c (one cell's solves and the accept rule). Not for use
+ * outside them (dens_engine.h is the engine's interface). */
+#ifndef CFPO_DENS_IMPL_H
+#define CFPO_DENS_IMPL_H
+
+#include <stdint.h>
+
+#include "dens_buckets.h"
+#include "dens_dist.h"
+#include "dens_engine.h"
+
+#define KMAX 40        /* neighbours the solve looks at, nearest first */
+#define REACH 2.5      /* ... within REACH local spacings */
+#define CELL_SPACINGS 1.25 /* L >= CELL_SPACINGS r_max */
+#define BUCKET_FROM 64     /* blocks of fewer points are scanned whole (one bucket) */
+#define BUCKET_PER 2.0     /* points a bucket on average */
+#define BOUND_SAFE (1 + 1e-9)   /* a ring's distance bound must beat the value by this much */
+#define DENS_SHIFT_EVERY 4      /* the grid keeps an offset for this many iterations */
+
+typedef struct { /* one thread's buffers */
+    double *bx, *by, *br, *nx, *ny, *nr, *nd, *scratch;
+    int64_t *bid;
+    int *nj, *ring; /* the nearest's block indices; a ring's buckets */
+    size_t cap, ring_cap;
+    cfpo_dens_buckets bk;
+    int oom;
+} tbuf;
+
+struct cfpo_dens_engine {
+    const cfpo_density *d;
+    int64_t n, g;
+    cfpo_options o;
+    double D, L, sx, sy;
+    cfpo_dens_store s; /* positions and sqrt of their pixels' densities (q): all, in id order, on one rank */
+    cfpo_dens_dist *T; /* several ranks: the cut (NULL on one) */
+    double *all;       /* several ranks: the whole set, gathered for the measure and the output */
+    int64_t *cell, *cstart, *cidx, ccap;
+    unsigned char *dirty; /* per cell: 1 when its 3 x 3 block changed since it was last solved without a move */
+    int64_t solved;       /* this iteration's points solved on this rank */
+    int nthreads;
+    tbuf *tb;
+    int iter, placed; /* placed: the grid has an offset (sx, sy) */
+    int iters_run;    /* iterations made by this engine (not before a resume) */
+    double davg_ref;  /* the schedule's delta_avg one window back (policy.h) */
+    double t_compute, t_migrate, t_halo; /* this rank's seconds in each */
+    cfpo_dens_move_fn on_move;
+    void *move_user;
+};
+
+static inline int64_t cell_of(const cfpo_dens_engine *E, double x, double y)
+{
+    return cfpo_dens_cell_of(E->g, E->sx, E->sy, x, y);
+}
+
+/* Solves the points of cell (cx, cy) one after another (dens_cell.c);
+ * returns the moves made, the largest move (in local spacings) into
+ * *maxd; sets b->oom when out of memory. */
+int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, double *maxd);
+
+#endif
