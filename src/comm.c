@@ -76,7 +76,7 @@ int comm_local_size(void)
     return 1;
 }
 
-void comm_barrier(void)
+static void comm_barrier(void)
 {
 #ifdef CFPO_HAVE_MPI
     if (active) MPI_Barrier(MPI_COMM_WORLD);
@@ -94,7 +94,6 @@ void comm_barrier(void)
 
 void comm_sum_i64(int64_t *v, int count) { REDUCE(v, count, MPI_INT64_T, MPI_SUM); }
 void comm_max_i64(int64_t *v, int count) { REDUCE(v, count, MPI_INT64_T, MPI_MAX); }
-void comm_min_i64(int64_t *v, int count) { REDUCE(v, count, MPI_INT64_T, MPI_MIN); }
 void comm_min_d(double *v, int count) { REDUCE(v, count, MPI_DOUBLE, MPI_MIN); }
 void comm_max_d(double *v, int count) { REDUCE(v, count, MPI_DOUBLE, MPI_MAX); }
 void comm_sum_d(double *v, int count) { REDUCE(v, count, MPI_DOUBLE, MPI_SUM); }
