@@ -6,14 +6,14 @@
 #   gnuplot -e "VARS='DIR/plotdata/fig-stipple.vars.gp'; OUT='x.png'" scripts/fig-stipple.gp
 # Expects DIR, IMG (a PNG of IW x IH pixels), N, R (the dots' radius in
 # units of the torus side), the crop CX0, CX1, CY0, CY1, NM, arrays LBL[NM]
-# and FILE[NM].
+# and FILE[NM]; PW (optional, default 520) a panel's width in pixels.
 # The dots are circles of one radius R, chosen (scripts/benchlib/density.py)
 # so that their total area n pi R^2 is the image's mean darkness: where
 # the points follow rho = 1 - grey/255, the dots' share of a patch is its
 # darkness, so the tones read as they would in print (overlaps aside).
 load VARS
 NC = NM + 1
-PW = 520            # a panel's width in pixels; the plot inside it is square
+if (!exists("PW")) PW = 520  # a panel's width in pixels (the plot inside it is square)
 GAP = 10            # pixels between panels
 TTL = 40            # pixels for a panel's title
 TOP = 70            # pixels for the figure's title
