@@ -76,12 +76,12 @@ int comm_local_size(void)
     return 1;
 }
 
+#ifdef CFPO_HAVE_MPI
 static void comm_barrier(void)
 {
-#ifdef CFPO_HAVE_MPI
     if (active) MPI_Barrier(MPI_COMM_WORLD);
-#endif
 }
+#endif
 
 #ifdef CFPO_HAVE_MPI
 #define REDUCE(v, count, type, op)                                                   \
