@@ -371,7 +371,7 @@ class Bench:
         P.omp_env()
         for c in self.meth.binaries() + ["cfpo-analyze"]:
             if not os.access(f"{self.B}/{c}", os.X_OK):
-                raise Failure(f"{self.B}/{c} not built (run make)")
+                raise Failure(f"{self.B}/{c} not built (run make; the baselines on CGAL need CGAL, see CMake's output)")
         mpirun = shutil.which("mpirun")
         self.plan = build_plan(p, self.meth, cores, mpirun)
         if plan_only:
