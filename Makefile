@@ -14,20 +14,22 @@ CMAKE_ARGS = -DCMAKE_BUILD_TYPE=$(TYPE) -DCFPO_NATIVE=$(NATIVE)
 all: build
 
 # Missing Debian packages, by group (scripts/install-deps.sh: installed
-# as root on Debian, only reported anywhere else). Plain `make` needs the
-# core group only; fuzzing, the Python package and the benchmark add theirs.
+# as root on Debian, only reported anywhere else). Plain `make` asks for
+# the core and cgal groups (without CGAL it still builds cfpo and all that
+# does not need CGAL, and says what it left out); fuzzing needs no CGAL;
+# the Python package and the benchmark need every baseline, so CGAL too.
 deps:
-	@scripts/install-deps.sh core
+	@scripts/install-deps.sh core cgal
 deps-fuzz:
 	@scripts/install-deps.sh core fuzz
 deps-python:
-	@scripts/install-deps.sh core python
+	@scripts/install-deps.sh core cgal python
 deps-bench:
-	@scripts/install-deps.sh core bench
+	@scripts/install-deps.sh core cgal bench
 # Every test: the Python package's (label python) and the benchmark's smoke
 # run (label bench) among them.
 deps-test:
-	@scripts/install-deps.sh core python bench
+	@scripts/install-deps.sh core cgal python bench
 
 $(BUILD)/CMakeCache.txt: | deps
 	cmake -S . -B $(BUILD) $(CMAKE_ARGS) >/dev/null
@@ -79,7 +81,7 @@ help:
 	@echo "  make bench         method comparison and figures (PROFILE=smoke|default|paper|seeds|lowk|density); results/<date>-<host>/"
 	@echo "  make replot        redraw figures and summary.md of RESULTS=results/... (default: newest)"
 	@echo "  make bench-core    core CFPO benchmark, sweeps and convergence (PROFILE=smoke|default)"
-	@echo "  make deps-GROUP    missing Debian packages of GROUP = fuzz, python, bench (with core)"
+	@echo "  make deps-GROUP    missing Debian packages of GROUP = fuzz, python, bench (with core; all but fuzz with cgal)"
 	@echo "  make clean         remove build folders"
 	@echo "Build settings:"
 	@echo "  build type   $(TYPE)   (TYPE=Debug|Release|RelWithDebInfo)"

@@ -18,14 +18,9 @@ int an_density_begin(an_density *a, const char *spec, char *err, size_t errlen)
     return cfpo_density_load(spec, &a->d, err, errlen);
 }
 
-int an_density_fidelity(const cfpo_density *d, const double *xy, size_t n, int64_t B, double *rms, double *maxabs,
-                        size_t *off)
-{
-    return an_density_fidelity_min(d, xy, n, B, 0, rms, maxabs, off);
-}
-
-int an_density_fidelity_min(const cfpo_density *d, const double *xy, size_t n, int64_t B, double emin, double *rms,
-                            double *maxabs, size_t *off)
+/* The count fidelity over the blocks expecting at least emin points. */
+static int an_density_fidelity_min(const cfpo_density *d, const double *xy, size_t n, int64_t B, double emin,
+                                   double *rms, double *maxabs, size_t *off)
 {
     double *mass = calloc((size_t)(B * B), sizeof *mass);
     int64_t *cnt = calloc((size_t)(B * B), sizeof *cnt);
@@ -69,6 +64,12 @@ int an_density_fidelity_min(const cfpo_density *d, const double *xy, size_t n, i
     free(mass);
     free(cnt);
     return 0;
+}
+
+int an_density_fidelity(const cfpo_density *d, const double *xy, size_t n, int64_t B, double *rms, double *maxabs,
+                        size_t *off)
+{
+    return an_density_fidelity_min(d, xy, n, B, 0, rms, maxabs, off);
 }
 
 /* The capacity deviation and the spectrum of one set. */

@@ -83,10 +83,6 @@ int an_density_write_dda(const an_density *a, const char *raps_path, const char 
 int an_density_fidelity(const cfpo_density *d, const double *xy, size_t n, int64_t B, double *rms, double *maxabs,
                         size_t *off);
 
-/* The same over the blocks expecting at least emin points. */
-int an_density_fidelity_min(const cfpo_density *d, const double *xy, size_t n, int64_t B, double emin, double *rms,
-                            double *maxabs, size_t *off);
-
 /* density.txt: the means as '#' lines, then the histogram (bin centre,
  * fraction). 0, or -1 with one line in err. */
 int an_density_write(const an_density *a, const char *path, char *err, size_t errlen);

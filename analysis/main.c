@@ -76,6 +76,10 @@ static void usage(void)
            "      --integration M  UTK's integration test with M Gaussian and M Heaviside\n"
            "                       integrands (default %d; 0: none)\n"
            "      --no-delaunay    psi6, Voronoi area variance and mesh ratio are skipped\n"
+#ifndef CFPO_HAVE_CGAL
+           "                       (always in this build, made without CGAL; so are the\n"
+           "                       capacities under --density)\n"
+#endif
            "      --density SPEC   also the measures under a density (cfpo's --density\n"
            "                       SPEC), capacity deviation and the differential-domain\n"
            "                       spectrum among them: DENSITY line, density.txt,\n"
@@ -173,6 +177,9 @@ static void parse(int argc, char **argv, options *o)
     o->files = argv + optind;
     o->nfiles = argc - optind;
     if (o->nfiles < 1) cli_usage_error(prog, "no input file");
+#ifndef CFPO_HAVE_CGAL
+    o->no_delaunay = 1; /* a build without CGAL has no Delaunay measures (delaunay_none.c) */
+#endif
 }
 
 static int default_K(size_t n)

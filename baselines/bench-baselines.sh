@@ -22,7 +22,8 @@
 # several partial runs) without running anything.
 # Example (quick): REPS=1 SIZES=4096 PD_SIZES=65536 baselines/bench-baselines.sh build
 set -euo pipefail
-# the methods: scripts/methods.tsv (kinds iter and pd, read by scripts/bench.py),
+# the methods: scripts/methods.tsv (kinds iter and pd, read by scripts/bench.py;
+# the direct samplers, kind direct, converge to nothing and are left out),
 # plus cfpo on 1 and 2 threads
 BENCH_PY="$(cd "$(dirname "$0")/../scripts" && pwd)/bench.py"
 ITER_KEYS=$(python3 "$BENCH_PY" methods iter)

@@ -153,7 +153,6 @@ void bnot_iterate(bnot_engine *E, cfpo_iter_stats *s);
  * the round (from 1), the breaker's perturbations so far and the regular
  * sites it found last. */
 double bnot_grad_norm(const bnot_engine *E);
-double bnot_grad_threshold(const bnot_engine *E);
 int bnot_phase(const bnot_engine *E);
 /* the phase the last iteration's step was taken in (its |g| was judged
  * against 2 tau when 1, tau when 2) */

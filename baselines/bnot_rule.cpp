@@ -215,7 +215,6 @@ void bnot_rule_iterate(bnot_engine *E, cfpo_iter_stats *s)
 
 extern "C" {
 double bnot_grad_norm(const bnot_engine *E) { return E->gnorm; }
-double bnot_grad_threshold(const bnot_engine *E) { return E->gthr; }
 int bnot_phase(const bnot_engine *E) { return E->phase; }
 int bnot_step_phase(const bnot_engine *E) { return E->step_phase; }
 int bnot_round(const bnot_engine *E) { return E->round; }

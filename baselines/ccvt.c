@@ -599,4 +599,3 @@ void ccvt_deltas(ccvt_engine *E, double *dmin, double *davg)
 const double *ccvt_sites(const ccvt_engine *E) { return E->site; }
 const double *ccvt_points(const ccvt_engine *E) { return E->pts; }
 int64_t ccvt_m(const ccvt_engine *E) { return E->m; }
-double ccvt_scale(const ccvt_engine *E) { return E->L; }

@@ -123,6 +123,5 @@ void ccvt_deltas(ccvt_engine *E, double *dmin, double *davg);
 const double *ccvt_sites(const ccvt_engine *E);   /* 2n doubles */
 const double *ccvt_points(const ccvt_engine *E);  /* 2nm doubles, by slot */
 int64_t ccvt_m(const ccvt_engine *E);
-double ccvt_scale(const ccvt_engine *E);
 
 #endif

@@ -58,12 +58,6 @@ typedef struct {
 
 void fpo_options_init(fpo_options *o);
 
-/* Bytes the engine needs for n points: CGAL's periodic triangulation
- * (vertices, about 2n faces with their offsets), the circumradius heap,
- * the points and caches. About 680 bytes a point measured at n = 2^18
- * (peak resident set of cfpo-fpo); the model rounds up to 720. */
-uint64_t fpo_bytes(int64_t n);
-
 /* Checks n without allocating: 0; -1 with a one-line message when n is
  * too small for the grid the tolerance is measured on (the same minimum
  * as cfpo); -2 when the triangulation would not fit in memory. */
@@ -86,9 +80,6 @@ void fpo_deltas(fpo_engine *E, double *dmin, double *davg);
 
 /* The points in id order (x0 y0 x1 y1 ...), 2n doubles owned by E. */
 const double *fpo_points(const fpo_engine *E);
-
-/* The scale L = 1/g (cfpo's cell side) used for the tolerance. */
-double fpo_scale(const fpo_engine *E);
 
 /* Checks: CGAL's is_valid() of the triangulation, vertex count == n, every
  * vertex's stored point equal to the point array, every face registered

@@ -11,7 +11,7 @@ measures are the C tools' own: cfpo, the baselines, cfpo-analyze, cfpo-bench).
   bench.py methods --get KEY FIELD        one field of a method's row
   bench.py profile PROFILE                a profile's plan as NAME=VALUE lines
 
-PROFILE: smoke, default (the default), paper, seeds or lowk. Environment: CFPO_RESULTS
+PROFILE: smoke, default (the default), paper, seeds, lowk or density. Environment: CFPO_RESULTS
 (results root, default results/), CFPO_BENCH_KEEP=1 (keep the temporary
 folder of a failed run). The modules: scripts/benchlib/.
 """
@@ -51,7 +51,7 @@ def main(argv):
             from benchlib import profiles
             p = profiles.profile(args[0], len(os.sched_getaffinity(0)))
             if p is None:
-                raise common.Failure(f"unknown PROFILE '{args[0]}' (smoke, default, paper, seeds, lowk)", 2)
+                raise common.Failure(f"unknown PROFILE '{args[0]}' (smoke, default, paper, seeds, lowk, density)", 2)
             out = {}
             for k, v in p.items():
                 if k == "rt_sizes":

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # install-deps.sh [--check] [GROUP...] - what the project needs, by group:
-#   core    the build and its tests: compilers, CMake, MPI, FFTW, zlib, CGAL
+#   core    the build: compilers, CMake, MPI, FFTW, zlib, libpng (cfpo,
+#           cfpo-analyze and the baselines that need no CGAL)
+#   cgal    CGAL and its number types: the baselines that triangulate (FPO,
+#           LFPO, CCDT, BNOT, Lloyd), cfpo-analyze's Delaunay measures, and
+#           what needs every baseline (the Python package, make bench, the
+#           tests of those); without it CMake leaves them out and says so
 #   fuzz    clang and libFuzzer (make fuzz)
 #   python  Python's headers and venv module (make python, the python test)
 #   bench   python3 and gnuplot (make bench, make replot, make bench-core)
-# No group: core. On a Debian-based system, as root, the missing Debian
+# No group: core and cgal (what plain `make` asks for). On a Debian-based system, as root, the missing Debian
 # packages of those groups are installed with apt-get (idempotent: when
 # everything is present it returns in well under a second). Anywhere else
 # (no dpkg/apt-get, not root, or CFPO_NO_APT=1) nothing is installed: what is missing is found by looking
@@ -20,11 +25,11 @@ groups=()
 for a in "$@"; do
   case "$a" in
     --check) check_only=1 ;;
-    core | fuzz | python | bench) groups+=("$a") ;;
-    *) echo "install-deps: unknown argument '$a' (groups: core fuzz python bench; --check)" >&2; exit 2 ;;
+    core | cgal | fuzz | python | bench) groups+=("$a") ;;
+    *) echo "install-deps: unknown argument '$a' (groups: core cgal fuzz python bench; --check)" >&2; exit 2 ;;
   esac
 done
-[ ${#groups[@]} -gt 0 ] || groups=(core)
+[ ${#groups[@]} -gt 0 ] || groups=(core cgal)
 
 # Debian packages of each group.
 pkgs_core=(
@@ -36,7 +41,9 @@ pkgs_core=(
   libfftw3-dev      # FFTW3 for the spectra
   zlib1g-dev        # crc32: checkpoint checksums
   libpng-dev        # PNG density images (cfpo --density)
-  libcgal-dev       # CGAL (periodic Delaunay) for the FPO baseline
+)
+pkgs_cgal=(
+  libcgal-dev       # CGAL (periodic Delaunay): FPO, LFPO, CCDT, BNOT, Lloyd, the Delaunay measures
   libgmp-dev libmpfr-dev  # CGAL's exact number types
 )
 pkgs_fuzz=(clang libclang-rt-dev)       # libFuzzer and its sanitizers
@@ -77,6 +84,7 @@ wanted=()
 for g in "${groups[@]}"; do
   case "$g" in
     core) wanted+=("${pkgs_core[@]}") ;;
+    cgal) wanted+=("${pkgs_cgal[@]}") ;;
     fuzz) wanted+=("${pkgs_fuzz[@]}") ;;
     python) wanted+=("${pkgs_python[@]}") ;;
     bench) wanted+=("${pkgs_bench[@]}") ;;

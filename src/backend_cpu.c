@@ -63,7 +63,11 @@ static int gather_plain(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox
     return m;
 }
 
-int eng_gather_block(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre)
+/* The points of the 3x3 block around own cell (lx, ly) in the cell's frame
+ * (origin at its lower-left corner), cells row by row, ids ascending in
+ * each: the canonical order of Y. Returns the count; *centre is the index
+ * of the centre cell's first point. */
+static int eng_gather_block(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre)
 {
     if (eng_plain_block(E, lx, ly)) return gather_plain(E, lx, ly, ox_, oy_, centre);
     if (E->G.shift != 0) return gather_shifted(E, lx, ly, ox_, oy_, centre);

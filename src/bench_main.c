@@ -1,4 +1,4 @@
-/* bench_main.c - `cfpo-bench`: the core benchmark (never a test).
+/* bench_main.c - layer 5: `cfpo-bench`: the core benchmark (never a test).
  *
  *   cfpo-bench sweep    -n N -t T [-k K]  full sweeps (every point solved):
  *                                         seconds per sweep; us per point and per

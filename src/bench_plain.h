@@ -1,4 +1,4 @@
-/* bench_plain.h - the plain engine of cfpo-bench (bench_plain.c). */
+/* bench_plain.h - layer 5: the plain engine of cfpo-bench (bench_plain.c). */
 #ifndef CFPO_BENCH_PLAIN_H
 #define CFPO_BENCH_PLAIN_H
 

@@ -1,4 +1,4 @@
-/* bench_solver.h - the solver's capture and replay modes of cfpo-bench
+/* bench_solver.h - layer 5: the solver's capture and replay modes of cfpo-bench
  * (bench_solver.c). */
 #ifndef CFPO_BENCH_SOLVER_H
 #define CFPO_BENCH_SOLVER_H

@@ -266,16 +266,10 @@ static inline void eng_colour_cell(const eng_colour *C, int64_t t, int64_t *lx, 
 
 /* Shared between the engine's files. */
 int eng_ensure_cap(cfpo_engine *E, size_t need);
-/* The points of the 3x3 block around own cell (lx, ly) in the cell's frame
- * (origin at its lower-left corner), cells row by row, ids ascending in
- * each: the canonical order of Y. Returns the count; *centre is the index
- * of the centre cell's first point (backend_cpu.c). */
-int eng_gather_block(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre);
 void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly);
 void eng_sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi);
 int eng_build_neighbours(cfpo_engine *E);
 int eng_refresh_halo(cfpo_engine *E);
-void eng_check_fail(const cfpo_engine *E, const char *what);
 /* Out of memory while `what`, mid-run: back to cfpo_engine_run (one rank;
  * it returns -1 with the message) or, on several ranks, the job ends. */
 void eng_fatal(cfpo_engine *E, const char *what);

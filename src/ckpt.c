@@ -6,7 +6,7 @@
 #include <string.h>
 #include <zlib.h>
 
-#include "cfpo.h"
+#include "cfpo_types.h"
 #include "grid.h"
 #include "policy.h"
 

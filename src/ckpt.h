@@ -1,4 +1,4 @@
-/* ckpt.h - the checkpoint file format: its 64-byte header, read and
+/* ckpt.h - layer 3: the checkpoint file format: its 64-byte header, read and
  * written, every field validated, and its checksum.
  *
  * Version 4 (written now, by the uniform and the density engines alike),

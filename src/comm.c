@@ -76,12 +76,12 @@ int comm_local_size(void)
     return 1;
 }
 
-void comm_barrier(void)
-{
 #ifdef CFPO_HAVE_MPI
+static void comm_barrier(void)
+{
     if (active) MPI_Barrier(MPI_COMM_WORLD);
-#endif
 }
+#endif
 
 #ifdef CFPO_HAVE_MPI
 #define REDUCE(v, count, type, op)                                                   \
@@ -94,7 +94,6 @@ void comm_barrier(void)
 
 void comm_sum_i64(int64_t *v, int count) { REDUCE(v, count, MPI_INT64_T, MPI_SUM); }
 void comm_max_i64(int64_t *v, int count) { REDUCE(v, count, MPI_INT64_T, MPI_MAX); }
-void comm_min_i64(int64_t *v, int count) { REDUCE(v, count, MPI_INT64_T, MPI_MIN); }
 void comm_min_d(double *v, int count) { REDUCE(v, count, MPI_DOUBLE, MPI_MIN); }
 void comm_max_d(double *v, int count) { REDUCE(v, count, MPI_DOUBLE, MPI_MAX); }
 void comm_sum_d(double *v, int count) { REDUCE(v, count, MPI_DOUBLE, MPI_SUM); }

@@ -26,14 +26,12 @@ int comm_rank(void);
 int comm_size(void);
 /* Ends every rank of the job at once (MPI_Abort), or exits on one rank. */
 void comm_abort(int code) __attribute__((noreturn));
-void comm_barrier(void);
 /* Ranks on this machine (sharing its memory). */
 int comm_local_size(void);
 
 /* In-place reductions over all ranks. */
 void comm_sum_i64(int64_t *v, int count);
 void comm_max_i64(int64_t *v, int count);
-void comm_min_i64(int64_t *v, int count);
 void comm_min_d(double *v, int count);
 void comm_max_d(double *v, int count);
 void comm_sum_d(double *v, int count);

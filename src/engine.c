@@ -14,7 +14,6 @@
 
 const cfpo_grid *cfpo_engine_grid(const cfpo_engine *E) { return &E->G; }
 const cfpo_tiling *cfpo_engine_tiling(const cfpo_engine *E) { return &E->T; }
-int cfpo_engine_iteration(const cfpo_engine *E) { return E->iter0; }
 
 uint64_t cfpo_engine_bytes(int64_t n, int variant, int threads)
 {

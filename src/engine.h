@@ -74,8 +74,6 @@ void cfpo_engine_free(cfpo_engine *E);
 
 const cfpo_grid *cfpo_engine_grid(const cfpo_engine *E);
 const cfpo_tiling *cfpo_engine_tiling(const cfpo_engine *E);
-/* The iteration the engine stands at (nonzero after a resume). */
-int cfpo_engine_iteration(const cfpo_engine *E);
 
 /* Bytes one rank allocates for nlocal points in a tile of `cells` cells
  * (plus its ring of `ring` halo cells), with `threads` threads. */

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-void eng_check_fail(const cfpo_engine *E, const char *what)
+static void eng_check_fail(const cfpo_engine *E, const char *what)
 {
     fprintf(stderr, "cfpo: rank %d: check failed: %s\n", E->rank, what);
     comm_abort(3);

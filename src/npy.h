@@ -1,4 +1,5 @@
-/* npy.h - the .npy header, read strictly (used by pointfile.c).
+/* npy.h - layer 0 (includes nothing of the project): the .npy header,
+ * read strictly (used by pointfile.c and density.c).
  *
  * Accepts exactly the files numpy's format specification describes that
  * hold an (n, 2) array of float64 or float32: versions 1.0, 2.0 and 3.0;

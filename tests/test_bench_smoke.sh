@@ -25,15 +25,20 @@ check() { local what=$1; shift; if "$@"; then ok; else bad "$what"; fi; }
 holds() { eval "$1"; }
 cd "$SRC" || exit 1
 # the methods (scripts/methods.tsv): SUMMARY method names as regular
-# expressions, all / not iterative / iterative, and the comparison's keys
-# as runs.csv shows them (cfpo's variant for cfpo's rows)
+# expressions, all / Poisson-disk (no trace) / the rest (through an
+# iterative command line: the direct samplers' one pass has its trace row
+# too), and the comparison's keys as runs.csv shows them (cfpo's variant
+# for cfpo's rows: the key of each CFPO variant is its variant's name)
 BENCH="python3 scripts/bench.py"
 methods_keys() { $BENCH methods "$@"; }
 method_get() { $BENCH methods --get "$1" "$2"; }
 mre() { local k; for k in $(methods_keys "$@"); do method_get "$k" method; done | sort -u | paste -sd'|'; }
-M_ALL=$(mre); M_PD=$(mre pd); M_IT=$(mre iter cfpo ttq)
-COMP_SEEN=$(for k in $(methods_keys pd iter cfpo); do m=$(method_get "$k" method); [ "$m" = cfpo ] && m=$(method_get "$k" variant); echo "$m"; done | sort -u | tr '\n' ' ')
-N_COMP=$(methods_keys pd iter cfpo | wc -w)
+M_ALL=$(mre); M_PD=$(mre pd); M_IT=$(mre direct iter cfpo)
+COMP_SEEN=$(for k in $(methods_keys pd direct iter cfpo); do m=$(method_get "$k" method); [ "$m" = cfpo ] && m=$(method_get "$k" variant); echo "$m"; done | sort -u | tr '\n' ' ')
+N_COMP=$(methods_keys pd direct iter cfpo | wc -w)
+# one key a method: each key is its runs.csv rows' key (the paper variant's: paper)
+check "methods.tsv: every key is its method or its variant (keys: $(methods_keys | tr '\n' ' '))" \
+  [ "$(methods_keys | tr ' ' '\n' | sort | tr '\n' ' ')" = "$COMP_SEEN" ]
 
 # ---- the smoke run ----------------------------------------------------------
 export CFPO_RESULTS="$T/res"
@@ -91,7 +96,7 @@ for e in evolution comparison runtime integration ttq; do check "experiment $e p
 SETS_P=$($BENCH profile smoke | sed -n 's/^sets=//p'); COMP_SETS=$($BENCH profile smoke | sed -n 's/^comp_sets=//p')
 badcs=$(grep -v '^#' "$csv" | awk -F, -v sets="$SETS_P" -v cs="$COMP_SETS" '
   BEGIN { n = split(cs, a, " "); for (i = 1; i <= n; i++) { split(a[i], b, ":"); want[b[1]] = b[2] } }
-  $2 == "comparison" { c[$3 == "cfpo" && $4 != "paper" ? $4 : $3]++ }
+  $2 == "comparison" { c[$3 == "cfpo" ? $4 : $3]++ }
   END { for (k in c) if (c[k] != ((k in want) ? want[k] : sets)) printf "%s:%d ", k, c[k] }')
 check "comparison: $SETS_P sets a method, as comp_sets ($COMP_SETS) says for the others${badcs:+ (bad: $badcs)}" [ -z "$badcs" ] && [ -n "$COMP_SETS" ]
 # every iterative baseline of the list (CCVT, CCDT and BNOT among them) in the
@@ -185,7 +190,7 @@ check "quality.csv: one well-formed row per ttq run${badq:+ (bad: $badq)}" [ -z 
 # the traces (one seed in smoke, so the medians are the runs' own values)
 for n in $ttq_sizes; do
   check "summary.md: time-to-quality table for n = $n" grep -q "^### n = $n (time limit [0-9.]* s)" "$R/summary.md"
-  rows_n=$(awk -v n="$n" '/^### n = / { on = ($4 == n) } on && /^\| (CFPO|FPO|LFPO)/' "$R/summary.md")
+  rows_n=$(awk -v n="$n" '/^### n = / { on = ($4 == n) } /^## / { on = 0 } on && /^\| (CFPO|FPO|LFPO)/' "$R/summary.md")
   check "summary.md: $(echo "$ttq_configs" | wc -w) rows of 17 cells for n = $n" \
     [ "$(grep -c . <<<"$rows_n")" -eq "$(echo "$ttq_configs" | wc -w)" ] && [ -z "$(awk -F' [|] ' 'NF != 17' <<<"$rows_n")" ]
   t_of() { grep -v '^#' "$csv" | awk -F, -v R="$R" -v n="$n" -v k="$1" '$2 == "ttq" && $6 == n && $7 == 1 && ($3 == "cfpo" ? $4 : $3) == k && $8 == 1 {
@@ -247,14 +252,14 @@ check "spectra.csv: n of BS and Bridson is their runs' mean${badn:+ (bad: $badn)
 # ---- integration.csv: one row per method of the comparison and n of the profile --------
 ic="$R/integration.csv"
 check "integration.csv header" [ "$(head -n 1 "$ic")" = "group,method,variant,n,n_target,sets,runs,K,averaged_by,shiftvar_gauss_0.02,shiftvar_gauss_0.05,shiftvar_gauss_0.15,shiftvar_disk_0.1,shiftvar_disk_0.25,shiftvar_disk_0.4,p0,h_index,lowk_alpha,delta_min,delta_avg,spike_ratio,utk_gauss_mse,utk_heaviside_mse" ]
-want_int=$(for k in $(methods_keys pd iter cfpo); do for n in $(prof int_n); do echo "integration-$k-n$n"; done; done | sort | tr '\n' ' ')
+want_int=$(for k in $(methods_keys pd direct iter cfpo); do for n in $(prof int_n); do echo "integration-$k-n$n"; done; done | sort | tr '\n' ' ')
 got_int=$(tail -n +2 "$ic" | cut -d, -f1 | sort | tr '\n' ' ')
 check "integration.csv: a row per method and n (want: $want_int; got: $got_int)" [ "$want_int" = "$got_int" ]
 # each row: its runs (ranges a;b-c) are the runs.csv rows of that method and
 # n_target whose sets the experiment took (comparison at its n, the
 # integration runs, one-thread runtime runs), as many as sets; variances > 0
 # and white noise's the largest at each n
-badi=$(awk -F, 'FNR == NR { if ($1 ~ /^[0-9]+$/) { k = ($3 == "cfpo" && $4 != "paper") ? $4 : $3; key[$1] = k "/" $6; ex[$1] = $2; th[$1] = $8 } next }
+badi=$(awk -F, 'FNR == NR { if ($1 ~ /^[0-9]+$/) { k = ($3 == "cfpo") ? $4 : $3; key[$1] = k "/" $6; ex[$1] = $2; th[$1] = $8 } next }
   FNR > 1 { g = $1; sub(/^integration-/, "", g); sub(/-n[0-9]+$/, "", g); m = split($7, parts, ";"); c = 0
     for (i = 1; i <= m; i++) { split(parts[i], ab, "-"); hi = (ab[2] == "" ? ab[1] : ab[2])
       for (r = ab[1]; r <= hi; r++) { c++; if (key[r] != g "/" $5 || !(ex[r] == "comparison" || ex[r] == "integration" || (ex[r] == "runtime" && th[r] == 1))) printf "%s(run %d) ", $1, r } }
@@ -265,8 +270,8 @@ badi=$(awk -F, 'FNR == NR { if ($1 ~ /^[0-9]+$/) { k = ($3 == "cfpo" && $4 != "p
 check "integration.csv: rows cite their runs, positive variances${badi:+ (bad: $badi)}" [ -z "$badi" ]
 # the integration experiment made only the sets the others did not: no
 # (method, n, seed) twice among the sets it took
-dup=$(grep -v '^#' "$csv" | awk -F, '$2 == "integration" { k = (($3 == "cfpo" && $4 != "paper") ? $4 : $3) "/" $6 "/" $7; i[k] = 1 }
-  $2 == "runtime" && $8 == 1 && $9 == 1 { k = (($3 == "cfpo" && $4 != "paper") ? $4 : $3) "/" $6 "/" $7; r[k] = 1 }
+dup=$(grep -v '^#' "$csv" | awk -F, '$2 == "integration" { k = ($3 == "cfpo" ? $4 : $3) "/" $6 "/" $7; i[k] = 1 }
+  $2 == "runtime" && $8 == 1 && $9 == 1 { k = ($3 == "cfpo" ? $4 : $3) "/" $6 "/" $7; r[k] = 1 }
   END { for (k in i) if (k in r) printf "%s ", k }')
 check "integration runs only where no runtime run of one thread made the set${dup:+ (twice: $dup)}" [ -z "$dup" ]
 # summary.md: the figure data are integration.csv's (disk r = 0.25 of the last row)
@@ -289,7 +294,7 @@ check "summary.md: the P0 of each (method, n) is integration.csv's${badp:+ (bad:
 $BENCH run "$B" seeds --plan >"$T/plan-seeds" 2>&1
 check "seeds plan: no evolution, runtime or ttq runs" [ "$(grep -Ec '^(evolution|runtime|ttq) ' "$T/plan-seeds")" -eq 0 ]
 sp() { $BENCH profile seeds | sed -n "s/^$1=//p"; }
-bads=$(cs=$(sp comp_sets); for k in $(methods_keys pd iter cfpo); do c=$(grep -Ec "^comparison $k +n=65536 " "$T/plan-seeds")
+bads=$(cs=$(sp comp_sets); for k in $(methods_keys pd direct iter cfpo); do c=$(grep -Ec "^comparison $k +n=65536 " "$T/plan-seeds")
   w=$(tr ' ' '\n' <<<"$cs" | sed -n "s/^$k://p"); w=${w:-$(sp sets)}; [ "$c" -eq "$w" ] || printf '%s(%s, want %s) ' "$k" "$c" "$w"
   i=$(grep -Ec "^integration $k +n=4096 " "$T/plan-seeds"); [ "$i" -eq 10 ] || printf '%s(4096: %s) ' "$k" "$i"; done)
 check "seeds plan: comparison sets at 65,536 and 10 integration seeds at 4,096 per method${bads:+ (bad: $bads)}" [ -z "$bads" ]
@@ -302,15 +307,15 @@ check "lowk plan: only FPO, BNOT, adaptive and hyperuniform CFPO (got: $others)"
 check "lowk plan: the two CFPO variants to 2^20, FPO and BNOT to 2^16" \
   holds '[ "$(grep -Ec "^integration (adaptive|hyperuniform) +n=1048576 " "$T/plan-lowk")" -eq 6 ] && ! grep -Eq "^integration (fpo|bnot) +n=(262144|1048576) " "$T/plan-lowk"'
 
-# ---- the profile density (planned only): the adaptive part alone at 65,536
+# ---- the profile density (planned only): the density part alone at 65,536
 # points, 3 seeds, CFPO, DT and density FPO (LFPO, CCVT and BNOT left out);
 # of the other experiments only the comparison's one set of adaptive CFPO
 $BENCH run "$B" density --plan >"$T/plan-density" 2>&1
 dp() { $BENCH profile density | sed -n "s/^$1=//p"; }
 check "density plan: one comparison run of adaptive CFPO, nothing else ($(grep -Ec '^(comparison|integration|evolution|runtime|ttq) ' "$T/plan-density") runs)" \
   holds '[ "$(grep -Ec "^(comparison|integration|evolution|runtime|ttq) " "$T/plan-density")" -eq 1 ] && grep -Eq "^comparison adaptive +n=1024 " "$T/plan-density"'
-check "density profile: the adaptive part at 65,536 points, 3 seeds, without LFPO, CCVT and BNOT (got n=$(dp ad_n) seeds=$(dp ad_seeds) skip=$(dp ad_skip))" \
-  [ "$(dp ad_n) $(dp ad_seeds) $(tr ' ' '\n' <<<"$(dp ad_skip)" | sort | tr '\n' ' ')" = "65536 3 bnot ccvt lfpo " ]
+check "density profile: the density part at 65,536 points, 3 seeds, without LFPO, CCVT and BNOT (got n=$(dp dens_n) seeds=$(dp dens_seeds) skip=$(dp dens_skip))" \
+  [ "$(dp dens_n) $(dp dens_seeds) $(tr ' ' '\n' <<<"$(dp dens_skip)" | sort | tr '\n' ' ')" = "65536 3 bnot ccvt lfpo " ]
 
 # ---- the low-frequency table: every number recomputes from spectra.csv --------------
 lowtab=$(awk '/^## Low-frequency spectrum/ { on = 1; next } on && /^## / { on = 0 } on && /^\| / && !/^\| (method|---)/' "$R/summary.md")
@@ -357,35 +362,50 @@ check "fig-pcf: one panel per comparison group with pcf.txt" [ "$(grep -c "^GRP\
 check "the low-frequency panel draws every method of the comparison" \
   [ "$(grep -c "^GRP\[[0-9]*\] = 'comparison-" "$R/plotdata/fig-lowfreq.vars.gp")" -eq "$N_COMP" ]
 
-# ---- the adaptive part: every method taking --density on the four densities --------
-ac="$R/adaptive.csv"
+# ---- the density part: every method taking --density on the four densities --------
+ac="$R/density.csv"
 dm=cfpo
-for k in $(methods_keys pd iter); do
+for k in $(methods_keys pd direct iter); do
   b=$($BENCH methods --get "$k" command | cut -d' ' -f1)
-  "$B/$b" --help 2>/dev/null | grep -q -- --density && ! grep -qw "$k" <<<"$(prof ad_skip)" && dm="$dm $k"
+  "$B/$b" --help 2>/dev/null | grep -q -- --density && ! grep -qw "$k" <<<"$(prof dens_skip)" && dm="$dm $k"
 done
-want=$(($(wc -w <<<"$dm") * 4 * $(prof ad_seeds)))
-check "adaptive.csv: a row per density and method taking --density ($dm: $want)" [ "$(($(wc -l <"$ac") - 1))" -eq "$want" ]
+want=$(($(wc -w <<<"$dm") * 4 * $(prof dens_seeds)))
+check "density.csv: a row per density and method taking --density ($dm: $want)" [ "$(($(wc -l <"$ac") - 1))" -eq "$want" ]
 bada=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
   { dm = $c["density_delta_min"]; da = $c["density_delta_avg"]
     if (!(dm > 0 && dm <= da && da < 1.5)) printf "%s/%s(delta %s %s) ", $1, $2, dm, da
-    if ($2 == "cfpo" && $3 != '"$(prof ad_n)"') printf "%s/cfpo(n %s) ", $1, $3
+    if ($2 == "cfpo" && $3 != '"$(prof dens_n)"') printf "%s/cfpo(n %s) ", $1, $3
     if (!($c["count_fidelity_rms"] >= 0)) printf "%s/%s(fidelity) ", $1, $2 }' "$ac")
-check "adaptive.csv: local delta in (0, 1.5), exact n for CFPO, fidelity reported${bada:+ (bad: $bada)}" [ -z "$bada" ]
-badp=$(for k in $dm; do f="$R/data/points/adaptive-image-$k.txt"; n=$(awk -F, -v k="$k" '$1 == "image" && $2 == k && $4 == 1 { print $3 }' "$ac")
+check "density.csv: local delta in (0, 1.5), exact n for CFPO, fidelity reported${bada:+ (bad: $bada)}" [ -z "$bada" ]
+badp=$(for k in $dm; do f="$R/data/points/density-image-$k.txt"; n=$(awk -F, -v k="$k" '$1 == "image" && $2 == k && $4 == 1 { print $3 }' "$ac")
   [ -f "$f" ] && [ "$(grep -vc '^#' "$f")" = "$n" ] || printf '%s ' "$k"; done)
-check "the stippling figure's sets: one per method, n points each${badp:+ (bad: $badp)}" [ -z "$badp" ]
+check "the density part keeps the image's seed-1 sets: one per method, n points each${badp:+ (bad: $badp)}" [ -z "$badp" ]
+# the stippling figure's own runs: CFPO, DT, FPO and BNOT (those of them that
+# take --density) at stipple_n, each set of exactly that n (CFPO's and the
+# iterative ones') and drawn; the iterative ones capped at stipple_cap
+sc="$R/stipple.csv"
+sm=$(for k in cfpo dart fpo bnot; do grep -qw "$k" <<<"$dm $(prof dens_skip)" && echo "$k"; done | tr '\n' ' ')
+check "stipple.csv: a row per method of the figure ($sm)" [ "$(tail -n +2 "$sc" | cut -d, -f1 | tr '\n' ' ')" = "$sm" ]
+bads=$(tail -n +2 "$sc" | while IFS=, read -r k n s sec wall it stop args; do f="$R/data/points/stipple-$k.txt"
+  [ -f "$f" ] && [ "$(grep -vc '^#' "$f")" = "$n" ] && [ "$s" = 1 ] || printf '%s(set) ' "$k"
+  { [ "$k" = dart ] || [ "$n" = "$(prof stipple_n)" ]; } || printf '%s(n %s) ' "$k" "$n"
+  { [ "$it" = - ] || [ "$it" -le "$(prof stipple_cap)" ]; } || printf '%s(iterations %s) ' "$k" "$it"
+  grep -qF "FILE[" "$R/plotdata/fig-stipple.vars.gp" && grep -qF "'data/points/stipple-$k.txt'" "$R/plotdata/fig-stipple.vars.gp" || printf '%s(not drawn) ' "$k"; done)
+check "stippling sets: n points each, seed 1, capped, drawn${bads:+ (bad: $bads)}" [ -z "$bads" ]
+# the dots' radius: their total area n pi R^2 is the image's mean darkness (in (0, 1))
+check "stippling dots: n pi R^2 in (0, 1)" awk -v n="$(prof stipple_n)" '/^DIR = / { for (i = 1; i <= NF; i++) if ($i == "R") r = $(i + 2); sub(/;$/, "", r) }
+  END { a = n * 3.14159265 * r * r; exit !(a > 0 && a < 1) }' "$R/plotdata/fig-stipple.vars.gp"
 check "summary.md: the density table, a row per density and method" \
   [ "$(awk '/^## Following a density/ { on = 1; next } on && /^## / { on = 0 } on && /^\| / && !/^\| (density|---)/' "$R/summary.md" | wc -l)" -eq "$(($(wc -w <<<"$dm") * 4))" ]
 
 # ---- summary.md: numbers recompute from runs.csv ------------------------------------
-for k in cfpo fpo; do
-  row=$(grep -v '^#' "$csv" | awk -F, -v k="$k" '$2 == "comparison" && $3 == k && ($4 == "paper" || $4 == "-") { s += $14; c++; id = id (id == "" ? "" : " ") $1 }
+for k in paper fpo; do
+  row=$(grep -v '^#' "$csv" | awk -F, -v k="$k" '$2 == "comparison" && ($3 == "cfpo" ? $4 : $3) == k { s += $14; c++; id = id (id == "" ? "" : " ") $1 }
     END { printf "%.4f|%s", s / c, id }')
   mean=${row%%|*}
   ids=${row#*|}
   first=${ids%% *}; last=${ids##* }
-  lbl=$([ "$k" = cfpo ] && echo CFPO || echo FPO)
+  lbl=$(method_get "$k" label)
   check "summary.md: $lbl row cites runs $first-$last and delta_min mean $mean" \
     grep -q "^| $lbl | $first-$last | $mean ± " "$R/summary.md"
 done
@@ -416,14 +436,29 @@ check "before the measures: the low-frequency panel still drawn (raps.txt)" png_
 # pair correlation: a pcf.txt in an averaged analysis gives the g(r) figure;
 # without one, it goes (silently)
 rm -f "$old"/data/analysis/*/pcf.txt
-printf '# pair correlation, test data\n# r/Delta g\n0.1 0\n0.5 0\n0.9 1.8\n1.2 1.1\n2.0 1.0\n3.0 1.0\n' >"$old/data/analysis/comparison-cfpo/pcf.txt"
-cp "$old/data/analysis/comparison-cfpo/pcf.txt" "$old/data/analysis/comparison-fpo/pcf.txt"
+printf '# pair correlation, test data\n# r/Delta g\n0.1 0\n0.5 0\n0.9 1.8\n1.2 1.1\n2.0 1.0\n3.0 1.0\n' >"$old/data/analysis/comparison-paper/pcf.txt"
+cp "$old/data/analysis/comparison-paper/pcf.txt" "$old/data/analysis/comparison-fpo/pcf.txt"
 if $BENCH replot "$old" >/dev/null 2>"$T/rerr4"; then ok; else bad "replot with pcf.txt: $(tail -n 1 "$T/rerr4")"; fi
 check "pcf.txt present: fig-pcf.png a PNG, shown in summary.md, one panel per such method" \
   holds 'png_ok "$old/fig-pcf.png" && grep -q "](fig-pcf.png)" "$old/summary.md" && [ "$(grep -c "^GRP\[" "$old/plotdata/fig-pcf.vars.gp")" -eq 2 ]'
 rm -f "$old"/data/analysis/*/pcf.txt
 if $BENCH replot "$old" >/dev/null 2>"$T/rerr5"; then ok; else bad "replot after pcf.txt went: $(tail -n 1 "$T/rerr5")"; fi
 check "pcf.txt gone: no g(r) figure, no mention" holds '[ ! -e "$old/fig-pcf.png" ] && ! grep -q "fig-pcf" "$old/summary.md"'
+rm -rf "$old"
+# a folder written before the paper variant's key was `paper` and before the
+# density part and the stippling runs had names of their own: the group
+# comparison-cfpo, adaptive.csv and data/points/adaptive-image-KEY.txt, no
+# stipple.csv; replot reads it as before
+old="$T/old3"; cp -r "$R" "$old"
+sed -i 's/^comparison-paper,/comparison-cfpo,/' "$old/spectra.csv"
+mv "$old/data/analysis/comparison-paper" "$old/data/analysis/comparison-cfpo"
+mv "$old/data/points/comparison-paper.txt" "$old/data/points/comparison-cfpo.txt"
+mv "$old/density.csv" "$old/adaptive.csv"
+for f in "$old"/data/points/density-image-*.txt; do mv "$f" "${f/density-image-/adaptive-image-}"; done
+rm -f "$old/stipple.csv" "$old"/data/points/stipple-*.txt
+if $BENCH replot "$old" >/dev/null 2>"$T/rerr6"; then ok; else bad "replot of a folder with the old names: $(tail -n 1 "$T/rerr6")"; fi
+check "old names: the paper variant's row cites comparison-cfpo, the density table and the stippling figure are there" \
+  holds 'grep -q "^| CFPO (paper) | .*\`comparison-cfpo\` |" "$old/summary.md" && grep -q "^## Following a density" "$old/summary.md" && png_ok "$old/fig-stipple.png" && grep -qF "adaptive-image-cfpo.txt" "$old/plotdata/fig-stipple.vars.gp" && png_ok "$old/fig-evolution.png"'
 rm -rf "$old"
 (cd "$T/res/.." && mkdir -p results && cp -r "$R" results/ && python3 "$SRC/scripts/bench.py" replot >/dev/null 2>&1)
 check "replot without an argument takes the newest folder under results/" [ -s "$T/results/$(basename "$R")/fig-speedup.png" ]

@@ -3,7 +3,8 @@
  *  - its floor: no phase of the stage takes delta(X) below
  *    min(delta(X) before the phase, 0.92 Delta(n)), and no phase of the
  *    ten iterations before it below delta(X) at its iteration's start (the
- *    adaptive rule, which test_engine checks from the first iteration);
+ *    uniform schedule's rule, which test_engine checks from the first
+ *    iteration);
  *  - its spectrum: P0, the mean periodogram over 0 < |k| <= 0.2 sqrt(n),
  *    computed here by direct summation, has a median below 1e-4 over seeds
  *    1-5 at 4,096 points, each below 2e-4 (default CFPO: about 0.007, checked too, so the
@@ -105,7 +106,7 @@ static void test_floor(void)
         for (int c = 0; c < ncol; c++) {
             int64_t solved;
             const int64_t mv = cfpo_engine_phase(E, c, &solved);
-            if (it < from - 10) continue; /* test_engine checks the adaptive rule */
+            if (it < from - 10) continue; /* test_engine checks the uniform schedule's rule */
             if (it >= from) moved_stage += mv > 0;
             double dmin;
             cfpo_engine_deltas(E, &dmin, &avg);

@@ -1,7 +1,7 @@
 /* test_policy.c - the variants' per-iteration policy (src/policy.h).
  *
- * Properties: the adaptive decisions by iteration are the schedule
- * docs/method.md documents (near solves in two cells in iterations 1-6,
+ * Properties: the adaptive variant's decisions by iteration are the
+ * uniform schedule docs/method.md documents (near solves in two cells in iterations 1-6,
  * one after; no over-relaxation in 1-3, w = 3.0 else 1.8 in 4-19, 1.8
  * else 1.4 from 20; one grid offset in [0, L) per group of four
  * iterations 4j + 1 .. 4j + 4, a new one at each group's first, none
@@ -72,7 +72,8 @@ static void test_schedule_table(void)
             const cfpo_policy Q = cfpo_policy_at(&G, k, 0, 0.9);
             if (Q.near || Q.relax != P.relax || Q.margin != P.margin || Q.shift != P.shift) bad++;
         }
-    CHECK(bad == 0, "adaptive decisions differ from the documented table in %d of %d iterations", bad, rows);
+    CHECK(bad == 0, "the uniform schedule's decisions differ from the documented table in %d of %d iterations", bad,
+          rows);
 }
 
 static void test_shift(void)

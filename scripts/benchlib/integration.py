@@ -34,7 +34,7 @@ SHOWN = (("shiftvar_disk_0.25", "disk, radius 0.25"), ("shiftvar_gauss_0.05", "G
 def groups(plan, meth):
     """(key, n) of the integration experiment in the order of methods.tsv, then n."""
     seen = {r["integ"] for r in plan if r.get("integ")}
-    order = meth.keys("pd", "iter", "cfpo")
+    order = meth.keys(*M.KINDS)
     return sorted(seen, key=lambda g: (order.index(g[0]), g[1]))
 
 
@@ -82,7 +82,7 @@ def read(R):
 def write_figure(R, meth, rows, written):
     """plotdata/integration.dat (one block per method: n, then the SHOWN
     variances) and fig-integration.vars.gp; False when there is nothing to draw."""
-    keys = [k for k in meth.keys("pd", "iter", "cfpo") if any(M.key(r["method"], r["variant"]) == k for r in rows)]
+    keys = [k for k in meth.keys(*M.KINDS) if any(M.key(r["method"], r["variant"]) == k for r in rows)]
     if not keys:
         return False
     parts = []

@@ -7,6 +7,7 @@ low-frequency table of summary.md, read from spectra.csv.
 """
 import os
 
+from . import methods as M
 from .common import write
 
 # spectra.csv columns of the low-frequency table, after the 19 of the
@@ -22,7 +23,7 @@ TABLE = (("p0", "P0"), ("h_index", "H"), ("lowk_alpha", "α"), ("disc_wrap_l2", 
 def comparison_groups(F, meth):
     """(key, group) of the comparison's averaged analyses, in the order of methods.tsv."""
     have = {s[0] for s in F.spectra}
-    return [(k, f"comparison-{k}") for k in meth.keys("pd", "iter", "cfpo") if f"comparison-{k}" in have]
+    return [(k, M.group("comparison", k, have)) for k in meth.keys(*M.KINDS) if M.group("comparison", k, have) in have]
 
 
 def table_rows(F, meth):
@@ -43,7 +44,7 @@ def write_lowfreq(F, meth, written, N):
     for i, (k, g) in enumerate(gs, 1):
         # the Poisson-disk and direct samplers dashed, the optimisers solid
         lines.append(f"GRP[{i}] = '{g}'; LBL[{i}] = '{meth.label(k)}'; COL[{i}] = '{meth.colour(k)}'; "
-                     f"DT[{i}] = {2 if meth.kind(k) == 'pd' else 1}")
+                     f"DT[{i}] = {2 if meth.kind(k) in M.ONE_PASS else 1}")
     write(f"{F.R}/plotdata/fig-lowfreq.vars.gp", lines)
 
 

@@ -1,13 +1,18 @@
 """methods - scripts/methods.tsv, the one list of the methods of the suite.
 
 One row per method in the order of tables and figures: key, label, colour,
-gnuplot point type, kind (pd, iter, cfpo, ttq), the SUMMARY line's method and
-variant, and the command under the build folder with its fixed arguments.
+gnuplot point type, kind (pd, direct, iter, cfpo), the SUMMARY line's method
+and variant, and the command under the build folder with its fixed arguments.
 The method key of a runs.csv row (its method and variant) is computed here
-and nowhere else.
+and nowhere else; so is the name of a comparison group in a folder written
+before the paper variant's key was `paper` (`comparison-cfpo`).
 """
 import os
 
+# every kind, in the order the experiments list them
+KINDS = ("pd", "direct", "iter", "cfpo")
+# the kinds that are not iterative (no convergence curve, no iterations)
+ONE_PASS = ("pd", "direct")
 TSV = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "methods.tsv")
 
 
@@ -62,14 +67,21 @@ class Methods:
 
 
 def key(method, variant):
-    """A row's key in the comparison, runtime and evolution experiments:
-    cfpo's paper variant (named cfpo before the adaptive variant existed)
-    is the key cfpo, its other variants are keys of their own."""
+    """A runs.csv or integration.csv row's key: cfpo's variant (paper,
+    simplified, adaptive, hyperuniform; the variant `cfpo` of the oldest
+    folders is the paper's), else the method."""
     if method != "cfpo":
         return method
-    return "cfpo" if variant in ("paper", "cfpo") else variant
+    return "paper" if variant in ("paper", "cfpo") else variant
 
 
-def ttq_key(method, variant):
-    """A time-to-quality row's key: cfpo's variant (adaptive, paper), else the method."""
-    return variant if method == "cfpo" else method
+
+def group(prefix, k, have):
+    """The name of method k's group (prefix comparison or integration) in a
+    folder whose groups are `have`: PREFIX-k, or for the paper variant the
+    name of the folders written before it was the key paper
+    (PREFIX-cfpo), where only that one is there."""
+    g = f"{prefix}-{k}"
+    if k == "paper" and g not in have and f"{prefix}-cfpo" in have:
+        return f"{prefix}-cfpo"
+    return g

@@ -89,12 +89,12 @@ def columns_vars(F, meth, fig, groups, gpdir, N, SETS):
         if g.startswith("evolution-it"):
             it = g[len("evolution-it"):]
             lbl = "iteration 0 (start)" if it == "0" else f"iteration {it}"
-        elif g == "comparison-cfpo":
-            its = [S.num(r[10]) for r in F.rows if r[1] == "comparison" and M.key(r[2], r[3]) == "cfpo"]
-            lbl = "converged (mean %s it.)" % ("%d" % int(sum(its) / len(its) + 0.5) if its else "") \
-                if fig == "evolution" else "CFPO"
+        elif g == M.group("comparison", "paper", {s[0] for s in F.spectra}) and fig == "evolution":
+            its = [S.num(r[10]) for r in F.rows if r[1] == "comparison" and M.key(r[2], r[3]) == "paper"]
+            lbl = "converged (mean %s it.)" % ("%d" % int(sum(its) / len(its) + 0.5) if its else "")
         else:
-            lbl = meth.label(g[len("comparison-"):])
+            k = g[len("comparison-"):]
+            lbl = meth.label("paper" if k == "cfpo" else k)
         if not os.path.isfile(f"{F.R}/data/analysis/{g}/spectrum.txt"):
             raise Failure(f"{F.R}/data/analysis/{g}/spectrum.txt missing")
         lines.append(f"GRP[{c}] = '{g}'; LBL[{c}] = '{lbl}'")
@@ -105,7 +105,7 @@ def convergence(F, meth, N, SETS):
     """Mean and range over the comparison's traces, per iteration; a set that
     has converged keeps its last value."""
     keys = []
-    for k in meth.keys("iter", "cfpo"):
+    for k in meth.keys("iter", "cfpo"):  # not the direct samplers: one pass, no curve
         traces = [r[18] for r in F.rows if r[1] == "comparison" and M.key(r[2], r[3]) == k and r[18] != "-"]
         if not traces:
             continue
@@ -158,7 +158,7 @@ def runtime(F, meth, host):
                     "%d" % len(rs), "%g" % S.median(its) if its else "-", "".join(" " + r[0] for r in rs)])
     write(f"{F.R}/plotdata/runtime.tsv", ["\t".join(x) for x in tsv])
     parts, labels = [], []
-    for k in meth.keys("pd", "iter", "cfpo"):
+    for k in meth.keys(*M.KINDS):
         mine = [x for x in tsv if x[0] == k]
         trs = sorted({(x[1], x[2]) for x in mine}, key=lambda tr: (S.num(tr[1]), S.num(tr[0])))
         for t, rk in trs:
@@ -170,7 +170,7 @@ def runtime(F, meth, host):
             l += ranks_note(rk)
             labels.append(f"LBL[%d] = '{l}'; COL[%d] = '{meth.colour(k)}'; PT[%d] = {meth.pt(k)}; "
                           f"DT[%d] = {2 if int(t) > 1 or int(rk) > 1 else 1}; "
-                          f"ITER[%d] = {0 if meth.kind(k) == 'pd' else 1}")
+                          f"ITER[%d] = {0 if meth.kind(k) in M.ONE_PASS else 1}")
     write_text(f"{F.R}/plotdata/runtime.dat",
                "# one block per method/threads/ranks: n_target median_seconds median_s_per_iter runs median_iterations\n"
                + blocks(parts))
@@ -261,11 +261,11 @@ def replot(R=None):
     os.makedirs(P, exist_ok=True)
     host = f"{F.hdr('host') or '?'}, {F.hdr('cores') or '?'} cores"
     evo = [s[0] for s in F.spectra if s[1] == "evolution"]
-    if evo:  # a profile without evolution runs (seeds, lowk) may have no CFPO comparison either
-        columns_vars(F, meth, "evolution", evo + ["comparison-cfpo"], gpdir, N, SETS)
     have = {s[0] for s in F.spectra}
-    columns_vars(F, meth, "comparison", [f"comparison-{k}" for k in meth.keys("pd", "iter", "cfpo")
-                                          if f"comparison-{k}" in have], gpdir, N, SETS)
+    if evo:  # a profile without evolution runs (seeds, lowk) may have no CFPO comparison either
+        columns_vars(F, meth, "evolution", evo + [M.group("comparison", "paper", have)], gpdir, N, SETS)
+    columns_vars(F, meth, "comparison", [M.group("comparison", k, have) for k in meth.keys(*M.KINDS)
+                                          if M.group("comparison", k, have) in have], gpdir, N, SETS)
     conv_keys = convergence(F, meth, N, SETS)
     rt = runtime(F, meth, host)
     sp = speedup(F, meth, host)
@@ -283,11 +283,11 @@ def replot(R=None):
     integ = integration.read(R)
     # the optional figures: integration (a folder with integration.csv),
     # g(r) (where the averaged analyses hold pcf.txt); stale copies removed
-    from . import adaptive
-    adapt = adaptive.read(R)
+    from . import density, stipple
+    dens, stip = density.read(R), stipple.read(R)
     optional = (("integration", bool(integ) and integration.write_figure(R, meth, integ, WRITTEN),
                  ["plotdata/integration.dat"]), ("pcf", lowfreq.write_pcf(F, meth, WRITTEN, N), []),
-                ("stipple", bool(adapt) and adaptive.write_figure(R, meth, adapt, WRITTEN), []))
+                ("stipple", stipple.write_figure(R, meth, stip, dens, WRITTEN), []))
     for fig, have, data in optional:
         if have:
             figs.append(fig)
@@ -328,5 +328,5 @@ def replot(R=None):
             raise Failure(f"scripts/fig-{fig}.gp wrote no image")
         os.rename(out, f"{R}/fig-{fig}.png")
     from . import summary
-    write_text(f"{R}/summary.md", summary.text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ, figs, adapt))
+    write_text(f"{R}/summary.md", summary.text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ, figs, dens, stip))
     print(f"replot: figures and summary.md in {R}", file=sys.stderr)

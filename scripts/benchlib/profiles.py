@@ -1,6 +1,5 @@
 """profiles - the plans of `make bench PROFILE=...` (smoke, default, paper,
-seeds)
-as data, and the rough cost model behind `--plan` and the time-left display.
+seeds, lowk, density) as data, and the rough cost model behind `--plan` and the time-left display.
 
   sets          point sets per spectrum (comparison and evolution figures)
   comp_sets     fewer sets for some methods of the comparison: {key: sets}
@@ -14,7 +13,7 @@ as data, and the rough cost model behind `--plan` and the time-left display.
   rt_threads    thread counts of CFPO there: 1, powers of two, all cores
   rt_sizes      n of the runtime experiment per method key (absent: none);
                 CFPO also runs on as many MPI ranks as cores at rt_sizes
-                ['cfpo'] when mpirun is installed
+                ['paper'] when mpirun is installed
   ttq_sizes     n of the time-to-quality experiment: the configurations run
                 with --trace until the target (ttq_target_min, _avg) holds,
                 they converge, or their time limit (ttq_limit) passes
@@ -42,10 +41,10 @@ as data, and the rough cost model behind `--plan` and the time-left display.
 The profile `lowk` is the hyperuniform variant's integration error
 against n beside adaptive CFPO, FPO and BNOT (int_only: those four only).
 
-The profile `density` is the adaptive part alone at 65,536 points, 3
+The profile `density` is the density part alone at 65,536 points, 3
 seeds (the density issue's medians), iterative methods capped at 150
 iterations; CFPO, DT and density FPO (LFPO, CCVT and BNOT take minutes a
-run at that n).
+run at that n); its stippling figure draws the image's sets of seed 1.
 
 The profile `seeds` is the many-seed table of the measures of sampling
 research, without evolution, runtime or time-to-quality runs: the
@@ -54,13 +53,19 @@ methods and fewer of the slow ones, and the integration experiment's 10
 seeds of every method at 4,096 points, each (method, n) averaged by
 cfpo-analyze into integration.csv with its low-frequency measures.
 
-  ad_n          n of the adaptive part (None: none): every method that takes
+  dens_n        n of the density part (None: none): every method that takes
                 --density on the test densities and the shipped image
-                (scripts/benchlib/adaptive.py), ad_seeds seeds, iterative
-                methods stopped after ad_maxiter iterations at most; ad_skip:
-                methods left out (LFPO and CCVT but in the paper profile:
-                minutes a run under a density, CCVT's random start; BNOT
-                runs in every profile: 17.5 s for its four runs at 4,096)
+                (scripts/benchlib/density.py), dens_seeds seeds, iterative
+                methods stopped after dens_maxiter iterations at most;
+                dens_skip: methods left out (LFPO and CCVT but in the paper
+                profile: minutes a run under a density, CCVT's random start;
+                BNOT runs in every profile but density: 17.5 s for its four
+                runs at 4,096)
+  stipple_n     n of the stippling figure's own runs (None: the figure draws
+                the density part's image sets): the shipped image, seed 1,
+                CFPO, adaptive DT, density FPO and BNOT as
+                scripts/benchlib/stipple.py's STIPPLE says; stipple_cap: a
+                lower iteration cap for the iterative ones (None: none)
 
 The runtime figure uses every uncapped run (comparison and runtime), so the
 runtime plan leaves out n = comp_n on comp_threads.
@@ -84,13 +89,14 @@ def profile(name, cores):
     if name not in NAMES:
         return None
     p = dict(comp_threads=1, comp_together=cores, evo_iters=[0, 1, 2, 5, 10], comp_sets={}, int_seeds_big=None,
-             int_top={}, ad_n=None, ad_seeds=1, ad_maxiter=100, ad_skip=["lfpo", "ccvt"],
+             int_top={}, dens_n=None, dens_seeds=1, dens_maxiter=100, dens_skip=["lfpo", "ccvt"],
+             stipple_n=None, stipple_cap=None,
              rt_threads=threads_list(cores), ttq_target_min="0.925", ttq_target_avg="0.929",
              ttq_sizes=[4096, 65536], ttq_big=[], ttq_seeds=3, ttq_maxiter=None, ttq_limits={})
     if name == "smoke":
-        p.update(ad_n=4096, ad_maxiter=5, sets=2, comp_n=1024, rt_reps=1, ttq_sizes=[1024], ttq_seeds=1, ttq_maxiter=80,
+        p.update(dens_n=4096, dens_maxiter=5, stipple_n=4096, stipple_cap=5, sets=2, comp_n=1024, rt_reps=1, ttq_sizes=[1024], ttq_seeds=1, ttq_maxiter=80,
                  comp_sets=dict(gbn=1), int_seeds=2, int_n=[256, 1024],
-                 rt_sizes=dict(cfpo=[256, 512], simplified=[256], fpo=[256], lfpo=[256], ccvt=[256],
+                 rt_sizes=dict(paper=[256, 512], simplified=[256], fpo=[256], lfpo=[256], ccvt=[256],
                                ccdt=[256], bnot=[256], dart=[4096], bs=[4096], bridson=[4096],
                                white=[4096], jitter=[4096], sobol=[4096], lloyd=[256], gbn=[256]))
     elif name == "default":
@@ -101,10 +107,10 @@ def profile(name, cores):
         # at 4 sets in the comparison and simplified CFPO at 6 (instead of
         # 10) pay for it, for adaptive CFPO in the comparison and for GBN and
         # Lloyd (161 s of runs less); the paper profile runs them at 10
-        p.update(ad_n=4096, sets=10, comp_n=4096, rt_reps=1, int_seeds=2, int_n=[256, 1024, 4096, 16384],
+        p.update(dens_n=4096, stipple_n=20000, sets=10, comp_n=4096, rt_reps=1, int_seeds=2, int_n=[256, 1024, 4096, 16384],
                  int_top={k: 4096 for k in ("simplified", "lfpo", "ccvt", "ccdt", "gbn", "lloyd")},
                  comp_sets=dict(ccvt=4, ccdt=4, gbn=4, lloyd=4, lfpo=4, simplified=6),
-                 rt_sizes=dict(cfpo=[1024, 4096, 16384], simplified=[1024, 4096], fpo=[1024, 16384],
+                 rt_sizes=dict(paper=[1024, 4096, 16384], simplified=[1024, 4096], fpo=[1024, 16384],
                                lfpo=[1024], ccvt=[1024], ccdt=[1024], bnot=[1024, 4096, 16384],
                                dart=[1024, 4096, 16384, 65536, 262144],
                                bs=[1024, 4096, 16384, 65536, 262144],
@@ -140,21 +146,21 @@ def profile(name, cores):
         p.update(sets=3, comp_n=1024, rt_reps=1, evo_iters=[], rt_sizes={}, ttq_sizes=[], int_seeds=3,
                  int_n=[2 ** e for e in range(10, 21, 2)], int_top=dict(fpo=65536, bnot=65536), int_only=four)
     elif name == "density":
-        # the adaptive part alone at 65,536 points, 3 seeds, iterative
+        # the density part alone at 65,536 points, 3 seeds, iterative
         # methods stopped after 150 iterations (LFPO and CCVT left out as in
         # the default profile, BNOT too: about 200 s a run there); the comparison only at 1,024 points (one
         # set of adaptive CFPO), no other experiment
-        p.update(ad_n=65536, ad_seeds=3, ad_maxiter=150, ad_skip=["lfpo", "ccvt", "bnot"], sets=1, comp_n=1024, rt_reps=1, evo_iters=[], rt_sizes={},
+        p.update(dens_n=65536, dens_seeds=3, dens_maxiter=150, dens_skip=["lfpo", "ccvt", "bnot"], sets=1, comp_n=1024, rt_reps=1, evo_iters=[], rt_sizes={},
                  ttq_sizes=[], int_seeds=1, int_n=[1024], int_only=("adaptive",))
     else:
         # the integration experiment: 2^8 to 2^20 points, 10 seeds to 2^16
         # and 3 above, each method as far as its runtime experiment goes
-        p.update(ad_n=65536, ad_seeds=3, ad_maxiter=1000, ad_skip=[], sets=10, comp_n=4096, rt_reps=1, comp_together=1,
+        p.update(dens_n=65536, dens_seeds=3, dens_maxiter=1000, dens_skip=[], stipple_n=65536, sets=10, comp_n=4096, rt_reps=1, comp_together=1,
                  ttq_big=[1048576],
                  int_seeds=10, int_seeds_big=(65536, 3), int_n=[2 ** e for e in range(8, 21)],
                  int_top=dict(adaptive=262144, fpo=262144, simplified=262144, bnot=65536, lfpo=65536, ccvt=65536, ccdt=65536,
                               gbn=65536, lloyd=65536, hyperuniform=262144),
-                 rt_sizes=dict(cfpo=[1024, 4096, 16384, 65536, 262144, 1048576],
+                 rt_sizes=dict(paper=[1024, 4096, 16384, 65536, 262144, 1048576],
                                simplified=[1024, 4096, 16384, 65536, 262144],
                                fpo=[1024, 4096, 16384, 65536, 262144], lfpo=[1024, 4096, 16384, 65536],
                                ccvt=[1024, 4096, 16384, 65536], ccdt=[1024, 4096, 16384, 65536],
@@ -212,7 +218,7 @@ def omp_env():
 
 # iterations to converge ~ a (n/1024)^b (capped), seconds per point and
 # iteration on one core; single runs on a 2-core machine
-_MODEL = dict(cfpo=(230, 0.5, 1250, 1.1e-6), adaptive=(116, 0.5, 1250, 1.1e-6), simplified=(654, 0.35, 1550, 0.75e-6),
+_MODEL = dict(paper=(230, 0.5, 1250, 1.1e-6), adaptive=(116, 0.5, 1250, 1.1e-6), simplified=(654, 0.35, 1550, 0.75e-6),
               fpo=(166, 0.33, 5000, 2.5e-6), lfpo=(239, 0.55, 5000, 2.5e-6),
               ccvt=(330, 0, 5000, 1.5e-5), ccdt=(120, 0.1, 5000, 1.5e-5), bnot=(20, 0, 20, 1.05e-5),
               lloyd=(100, 0, 100, 8.5e-6), gbn=(1000, 0, 1000, 3.4e-6),
@@ -223,8 +229,8 @@ _PD = dict(dart=8e-6, bs=1.5e-6, bridson=5e-6, white=1e-7, jitter=1e-7, sobol=2e
 
 def estimate(key, n, threads, maxiter):
     """Rough seconds of one run (progress display and --plan only)."""
-    if key == "cfpo-mpi":
-        key, threads = "cfpo", 2
+    if key == "paper-mpi":
+        key, threads = "paper", 2
     if key in _PD:
         return _PD[key] * n + 0.01
     a, b, cap, c = _MODEL[key]
@@ -232,7 +238,7 @@ def estimate(key, n, threads, maxiter):
     if maxiter is not None and maxiter < it:
         it = maxiter
     s = c * n * it
-    if key in ("cfpo", "adaptive", "simplified") and threads > 1:
+    if key in ("paper", "adaptive", "simplified") and threads > 1:
         s /= 0.95 * threads
     return s + 0.01
 
@@ -251,7 +257,7 @@ def ttq_estimate(key, n, threads, maxiter, limit):
         if threads > 1:
             s /= 0.95 * threads
     elif key == "paper":
-        s = estimate("cfpo", n, threads, maxiter)
+        s = estimate("paper", n, threads, maxiter)
     else:
         s = 0.78 * r ** 1.6 if key == "fpo" else 4.75 * r ** 1.64
         if maxiter is not None and 2.5e-6 * n * maxiter < s:

@@ -63,9 +63,9 @@ def build_plan(p, meth, cores, mpirun):
     batch = 0
     for it in p["evo_iters"]:
         for s in range(1, p["sets"] + 1):
-            add("evolution", "cfpo", p["comp_n"], s, cores, it, f"sets/evolution-it{it}-s{s}.txt")
+            add("evolution", "paper", p["comp_n"], s, cores, it, f"sets/evolution-it{it}-s{s}.txt")
     together = p["comp_together"]
-    for k in meth.keys("pd", "iter", "cfpo"):
+    for k in meth.keys(*M.KINDS):
         t = p["comp_threads"] if meth.kind(k) == "cfpo" else 1
         integ = (k, p["comp_n"]) if p["comp_n"] in P.int_sizes(p, k) else None
         slot = 0
@@ -79,7 +79,7 @@ def build_plan(p, meth, cores, mpirun):
             add("comparison", k, p["comp_n"], s, t, None, out, batch=batch, integ=integ)
             slot = (slot + 1) % together
     kept = set()  # (key, n, seed) of the runtime runs whose sets the integration experiment takes
-    for k in meth.keys("cfpo") + meth.keys("iter") + meth.keys("pd"):
+    for k in meth.keys("cfpo") + meth.keys("iter") + meth.keys("direct") + meth.keys("pd"):
         cf = meth.kind(k) == "cfpo"
         for n in p["rt_sizes"].get(k, []):
             for t in (p["rt_threads"] if cf else [1]):
@@ -93,10 +93,10 @@ def build_plan(p, meth, cores, mpirun):
                     else:
                         add("runtime", k, n, s, t, None, None)
     if mpirun and cores >= 2:
-        for n in p["rt_sizes"].get("cfpo", []):
+        for n in p["rt_sizes"].get("paper", []):
             for s in range(1, p["rt_reps"] + 1):
-                add("runtime", "cfpo-mpi", n, s, 1, None, None)
-    for k in meth.keys("pd", "iter", "cfpo"):  # the integration experiment's own runs
+                add("runtime", "paper-mpi", n, s, 1, None, None)
+    for k in meth.keys(*M.KINDS):  # the integration experiment's own runs
         for n in P.int_sizes(p, k):
             if n == p["comp_n"]:
                 continue
@@ -269,12 +269,12 @@ class Bench:
     # -- one run
     def command(self, r, i, cores, mpirun):
         B, key = self.B, r["key"]
-        if key == "cfpo-mpi":
+        if key == "paper-mpi":
             cmd = [mpirun, "--oversubscribe", "-np", str(cores), f"{B}/cfpo", "--variant", "paper", "-t", str(r["threads"])]
         else:
             words = self.meth.get(key, "command").split()
             cmd = [f"{B}/{words[0]}"] + words[1:]
-            if self.meth.kind(key) in ("cfpo", "ttq"):
+            if self.meth.kind(key) == "cfpo":
                 cmd += ["-t", str(r["threads"])]
         cmd += ["-n", str(r["n"]), "-s", str(r["seed"]), "-q"]
         if r["maxiter"] is not None:
@@ -345,7 +345,7 @@ class Bench:
 
     def label(self, r, cores):
         s = f"{r['exp']} {r['key']} n={r['n']} seed={r['seed']} threads={r['threads']}"
-        if r["key"] == "cfpo-mpi":
+        if r["key"] == "paper-mpi":
             s += f" ranks={cores}"
         if r["maxiter"] is not None:
             s += f" max-iter={r['maxiter']}"
@@ -364,14 +364,14 @@ class Bench:
     def main(self, plan_only):
         p = P.profile(self.name, os.cpu_count() or 1)
         if p is None:
-            raise Failure(f"unknown PROFILE '{self.name}' (smoke, default, paper, seeds, lowk)", 2)
+            raise Failure(f"unknown PROFILE '{self.name}' (smoke, default, paper, seeds, lowk, density)", 2)
         cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
         p = P.profile(self.name, cores)
         self.p = p
         P.omp_env()
         for c in self.meth.binaries() + ["cfpo-analyze"]:
             if not os.access(f"{self.B}/{c}", os.X_OK):
-                raise Failure(f"{self.B}/{c} not built (run make)")
+                raise Failure(f"{self.B}/{c} not built (run make; the baselines on CGAL need CGAL, see CMake's output)")
         mpirun = shutil.which("mpirun")
         self.plan = build_plan(p, self.meth, cores, mpirun)
         if plan_only:
@@ -423,8 +423,9 @@ class Bench:
             est_done += best
             act_done += wall
         N = len(self.plan)
-        from . import adaptive
-        adaptive.run(self, p)
+        from . import density, stipple
+        density.run(self, p)
+        stipple.run(self, p)
         quality = [QUALITY_COLUMNS]
         for q, (run, out) in enumerate(ttq_sets, 1):
             self.progress(N, f"final-set analysis {q} of {len(ttq_sets)} (run {run})", 1, 1, 0)
@@ -463,8 +464,8 @@ class Bench:
         n = p["comp_n"]
         crop = int(3 * math.sqrt(n) + 0.999)
         K = math.ceil(6 * math.sqrt(n))
-        groups = [(f"evolution-it{it}", "evolution", "cfpo", str(it)) for it in p["evo_iters"]]
-        groups += [(f"comparison-{k}", "comparison", k, "-") for k in self.meth.keys("pd", "iter", "cfpo")
+        groups = [(f"evolution-it{it}", "evolution", "paper", str(it)) for it in p["evo_iters"]]
+        groups += [(f"comparison-{k}", "comparison", k, "-") for k in self.meth.keys(*M.KINDS)
                    if P.comp_sets(p, k) > 0]  # a profile may leave a method out of the comparison (seeds)
         cells = [r.split(",") for r in rows]
         out = [SPECTRA_COLUMNS]

@@ -140,7 +140,7 @@ def integration_section(p, meth, integ):
     p("| method | n | sets | runs.csv rows | " + " | ".join("Var " + t for _, t in SHOWN) + " | integration.csv group |")
     p("| --- | --- | --- | --- |" + " --- |" * len(SHOWN) + " --- |")
     slopes = []
-    for k in meth.keys("pd", "iter", "cfpo"):
+    for k in meth.keys(*M.KINDS):
         mine = sorted((r for r in integ if M.key(r["method"], r["variant"]) == k), key=lambda r: S.num(r["n"]))
         if not mine:
             continue
@@ -174,14 +174,14 @@ def lowfreq_by_n(p, meth, integ):
     p("of their mean periodogram, δ_min / δ_avg and the UTK-style MSEs means over the sets.\n")
     p("| method | n | sets | " + " | ".join(h for _, h, _ in LOWFREQ_BY_N) + " |")
     p("| --- | --- | --- |" + " --- |" * len(LOWFREQ_BY_N))
-    for k in meth.keys("pd", "iter", "cfpo"):
+    for k in meth.keys(*M.KINDS):
         for r in sorted((r for r in rows if M.key(r["method"], r["variant"]) == k), key=lambda r: S.num(r["n"])):
             cells = [g3(r[c]) if f is None or r[c] in ("", "-") else f % S.num(r[c]) for c, _, f in LOWFREQ_BY_N]
             p("| %s | %s | %s | %s |" % (meth.label(k), r["n"], r["sets"], " | ".join(cells)))
     p("")
 
 
-def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), adapt=()):
+def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), dens=(), stip=()):
     out = []
     p = out.append
     host = prof = ""
@@ -201,6 +201,7 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), adapt=
         if r[1] == "evolution":
             evo.setdefault(r[9], []).append(r)
     spec = {s[0]: s for s in F.spectra}
+    paper = M.group("comparison", "paper", spec)
 
     def spk(g):
         s = spec.get(g)
@@ -208,21 +209,21 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), adapt=
             return "-"
         return "%.1f / %.1f" % (S.num(s[18]), S.num("" if s[16] == "-" else s[16]))
 
-    N = comp["cfpo"][0][4] if "cfpo" in comp else ""
+    N = comp["paper"][0][4] if "paper" in comp else next((rs[0][4] for rs in comp.values()), "")
     p(f"# Method comparison on {host} (profile {prof})\n")
     p(INTRO)
     p("```")
     out.extend(h for h in hdr if not h.startswith("columns:"))
     p("```\n")
     fpo = S.mean([r[11] for r in comp["fpo"]]) if "fpo" in comp else 0
-    nsets = len(comp.get("cfpo", []))
+    nsets = len(comp.get("paper", next(iter(comp.values()), [])))
     fewer = ", ".join("%s %d" % (meth.label(k), len(rs)) for k, rs in comp.items() if len(rs) != nsets)
     p("## Quality and cost at n = %s, %d sets per method%s\n" % (N, nsets, f" (fewer: {fewer})" if fewer else ""))
     p("| method | runs.csv rows | δ_min / Δ(n) | δ_avg / Δ(n) | eff. Nyquist | oscillation | spike ratio (sets / average) "
       "| iterations | converged | seconds | time / FPO's | threads | peak MB | spectra.csv group |")
     p("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for k, rs in comp.items():
-        g = "comparison-" + k
+        g = M.group("comparison", k, spec)
         its = [r[10] for r in rs if r[10] != "-"]
         it = "%.0f ± %.0f" % (S.mean(its), S.sd(its)) if its else "-"
         cv = "%d of %d" % (sum(1 for r in rs if r[16] == "yes"), len(rs)) if its else "-"
@@ -255,11 +256,11 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), adapt=
             p("| %s | %s | %s | %s | %s | %s | %s | `%s` |" % (
                 ev, S.ranges([r[0] for r in rs]), pm([r[13] for r in rs], 4), pm([r[14] for r in rs], 4),
                 f3(s[13]) if s else "-", f2(s[14]) if s else "-", spk(g), g))
-        if "cfpo" in comp:
-            rs, s = comp["cfpo"], spec.get("comparison-cfpo")
-            p("| converged | %s | %s | %s | %s | %s | %s | `comparison-cfpo` |" % (
+        if "paper" in comp:
+            rs, s = comp["paper"], spec.get(paper)
+            p("| converged | %s | %s | %s | %s | %s | %s | `%s` |" % (
                 S.ranges([r[0] for r in rs]), pm([r[13] for r in rs], 4), pm([r[14] for r in rs], 4),
-                f3(s[13] if s else ""), f2(s[14] if s else ""), spk("comparison-cfpo")))
+                f3(s[13] if s else ""), f2(s[14] if s else ""), spk(paper), paper))
         p("")
         p("![evolution](fig-evolution.png)\n")
     p("## Runtime\n")
@@ -267,7 +268,7 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), adapt=
     p("threads, ranks and n (`plotdata/runtime.tsv`).\n")
     p("| method | threads | ranks | n | runs | seconds (median) | seconds per iteration | iterations | runs.csv rows |")
     p("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-    for k in meth.keys("pd", "iter", "cfpo"):
+    for k in meth.keys(*M.KINDS):
         for a in rt:
             if a[0] == k:
                 p("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
@@ -282,9 +283,12 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), adapt=
         integration_section(p, meth, integ)
     if runs:
         ttq_section(p, meth, runs, tmin, tavg)
-    if adapt:
-        from .adaptive import section
-        section(p, meth, adapt)
+    if dens:
+        from .density import section
+        section(p, meth, dens)
+    if "stipple" in figs:
+        from .stipple import section
+        section(p, stip)
     return "\n".join(out) + "\n"
 
 

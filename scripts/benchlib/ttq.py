@@ -49,7 +49,7 @@ def write(F, meth, P, tmin, tavg):
     for r in F.rows:
         if r[1] != "ttq":
             continue
-        x = dict(run=r[0], key=M.ttq_key(r[2], r[3]), threads=r[7], n=r[5], seed=r[6], trace=r[18],
+        x = dict(run=r[0], key=M.key(r[2], r[3]), threads=r[7], n=r[5], seed=r[6], trace=r[18],
                  time_limit=r[19], stop=r[20], iterations=r[10])
         tr = trace_rows(f"{F.R}/{r[18]}")
         if not tr:

@@ -1,13 +1,16 @@
-"""adaptive - the adaptive (density) part of `make bench`: every method that
-takes `--density` (cfpo, and each baseline whose --help names the option)
-but those of the profile's ad_skip, on the test densities and the shipped
-image (data/astronaut-256.png, see data/README.md), at the profile's ad_n points, ad_seeds seeds, iterative
-methods stopped after ad_maxiter iterations at most; each set analysed by
-`cfpo-analyze --no-discrepancy --density SPEC` (analysis/README.md,
-"Measures under a density"). Writes adaptive.csv (one row per run: the run's
-SUMMARY and the analysis' DENSITY fields) and keeps the image's sets of
-seed 1 in data/points/ for the stippling figure (fig-stipple.gp);
-write_figure() and rows() serve `replot` and summary.md.
+"""density - the density part of `make bench`: every method that takes
+`--density` (cfpo, and each baseline whose --help names the option) but
+those of the profile's dens_skip, on the test densities and the shipped
+image (data/astronaut-256.png, see data/README.md), at the profile's dens_n
+points, dens_seeds seeds, iterative methods stopped after dens_maxiter
+iterations at most; each set analysed by `cfpo-analyze --no-discrepancy
+--density SPEC` (analysis/README.md, "Measures under a density"). Writes
+density.csv (one row per run: the run's SUMMARY and the analysis' DENSITY
+fields) and keeps the image's sets of seed 1 in data/points/ (the stippling
+figure's where the profile makes no stippling sets of its own,
+stipple.py); read() and section() serve `replot` and summary.md. A folder
+written before this part had its name keeps it as adaptive.csv and
+data/points/adaptive-image-KEY.txt, read the same way.
 """
 import os
 import shutil
@@ -32,10 +35,10 @@ SHOWN = (("density_delta_min", "δ_min (local)"), ("density_delta_avg", "δ_avg 
 
 def methods(B, meth):
     """(key, label, colour, argv, iterative) of the methods that take
-    --density: CFPO (cfpo's default variant), then every baseline whose
+    --density: CFPO (`cfpo --density`, one thread), then every baseline whose
     --help names the option, in methods.tsv's order."""
     out = [("cfpo", "CFPO", meth.colour("adaptive") or "#67000d", [f"{B}/cfpo", "-t", "1"], True)]
-    for k in meth.keys("pd", "iter"):
+    for k in meth.keys("pd", "direct", "iter"):
         words = meth.get(k, "command").split()
         exe = f"{B}/{words[0]}"
         try:
@@ -43,38 +46,38 @@ def methods(B, meth):
         except OSError:
             continue
         if "--density" in h:
-            out.append((k, meth.label(k), meth.colour(k), [exe] + words[1:], meth.kind(k) != "pd"))
+            out.append((k, meth.label(k), meth.colour(k), [exe] + words[1:], meth.kind(k) == "iter"))
     return out
 
 
 def run(bench, p):
-    """The runs and analyses; adaptive.csv in bench.work. Nothing when the
-    profile has no adaptive part (ad_n None)."""
-    n = p.get("ad_n")
+    """The runs and analyses; density.csv in bench.work. Nothing when the
+    profile has no density part (dens_n None)."""
+    n = p.get("dens_n")
     if not n:
         return
     W = bench.work
-    ms = [m for m in methods(bench.B, bench.meth) if m[0] not in p.get("ad_skip", [])]
-    total = len(DENSITIES) * len(ms) * p["ad_seeds"]
+    ms = [m for m in methods(bench.B, bench.meth) if m[0] not in p.get("dens_skip", [])]
+    total = len(DENSITIES) * len(ms) * p["dens_seeds"]
     rows, cols, k = [], list(RUN_FIELDS), 0
     for dk, spec, _ in DENSITIES:
         for key, label, _, argv, iterative in ms:
-            for s in range(1, p["ad_seeds"] + 1):
+            for s in range(1, p["dens_seeds"] + 1):
                 k += 1
-                print(f"bench: adaptive {k} of {total}: {label} on {dk}, n={n} seed={s}", file=sys.stderr, flush=True)
-                out = f"{W}/sets/adaptive-{dk}-{key}-s{s}.txt"
+                print(f"bench: density {k} of {total}: {label} on {dk}, n={n} seed={s}", file=sys.stderr, flush=True)
+                out = f"{W}/sets/density-{dk}-{key}-s{s}.txt"
                 cmd = argv + ["-n", str(n), "-s", str(s), "-q", "--density", spec, "-o", out]
                 if iterative:
-                    cmd += ["--max-iter", str(p["ad_maxiter"])]
+                    cmd += ["--max-iter", str(p["dens_maxiter"])]
                 t1 = time.time()
                 pr = subprocess.run(cmd, capture_output=True, text=True, stdin=subprocess.DEVNULL)
                 wall = time.time() - t1
                 summ = next((l for l in pr.stdout.split("\n") if l.startswith("SUMMARY")), "")
                 if pr.returncode != 0 or not summ:
                     first = (pr.stderr.strip().split("\n") or [""])[0]
-                    raise Failure(f"adaptive run failed ({' '.join(os.path.basename(c) for c in cmd[:1])} "
+                    raise Failure(f"density run failed ({' '.join(os.path.basename(c) for c in cmd[:1])} "
                                   f"{' '.join(cmd[1:])}): {first}")
-                a = f"{W}/tmp/an-adaptive"
+                a = f"{W}/tmp/an-density"
                 an = subprocess.run([f"{bench.B}/cfpo-analyze", "-q", "--no-discrepancy", "--density", spec, "-o", a, out],
                                     capture_output=True, text=True)
                 dl = next((l for l in an.stdout.split("\n") if l.startswith("DENSITY")), "")
@@ -92,49 +95,44 @@ def run(bench, p):
                         cols.append(kk)
                 rows.append(row)
                 if dk == "image" and s == 1:
-                    os.rename(out, f"{W}/data/points/adaptive-image-{key}.txt")
+                    os.rename(out, f"{W}/data/points/density-image-{key}.txt")
                 else:
                     os.remove(out)
-    write(f"{W}/adaptive.csv", [",".join(cols)] + [",".join(r.get(c, "") for c in cols) for r in rows])
+    write(f"{W}/density.csv", [",".join(cols)] + [",".join(r.get(c, "") for c in cols) for r in rows])
 
 
 def read(R):
-    path = f"{R}/adaptive.csv"
-    if not os.path.isfile(path):
+    """density.csv (adaptive.csv in a folder written before the name) as
+    dicts; [] when the folder has neither."""
+    path = next((f"{R}/{f}" for f in ("density.csv", "adaptive.csv") if os.path.isfile(f"{R}/{f}")), None)
+    if path is None:
         return []
     lines = [l.rstrip("\n").split(",") for l in open(path)]
     return [dict(zip(lines[0], c)) for c in lines[1:]]
 
 
-def write_figure(R, meth, rows, written):
-    """fig-stipple.vars.gp: the image, then each method's points of the
-    image (seed 1); False when the folder holds none."""
-    keys = []
+def image_sets(R, rows):
+    """(key, n, file relative to R) of the image's seed-1 sets the folder
+    keeps, in density.csv's order (data/points/density-image-KEY.txt, or
+    adaptive-image-KEY.txt in the older folders)."""
+    out = []
     for r in rows:
-        if r["density"] == "image" and r["seed"] == "1" and os.path.isfile(f"{R}/data/points/adaptive-image-{r['method']}.txt"):
-            keys.append(r["method"])
-    if not keys:
-        return False
-    n = next(r["n"] for r in rows if r["density"] == "image")
-    with open(IMAGE, "rb") as f:
-        head = f.read(24)
-    iw, ih = int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
-    lines = [written, f"DIR = '{R}'; IMG = '{IMAGE}'; IW = {iw}; IH = {ih}; N = {n}",
-             f"NM = {len(keys)}; array LBL[{len(keys)}]; array FILE[{len(keys)}]"]
-    for i, k in enumerate(keys, 1):
-        lbl = "CFPO" if k == "cfpo" else meth.label(k)
-        lines.append(f"LBL[{i}] = '{lbl}'; FILE[{i}] = 'data/points/adaptive-image-{k}.txt'")
-    write(f"{R}/plotdata/fig-stipple.vars.gp", lines)
-    return True
+        if r["density"] != "image" or r["seed"] != "1":
+            continue
+        f = next((f"data/points/{pre}-image-{r['method']}.txt" for pre in ("density", "adaptive")
+                  if os.path.isfile(f"{R}/data/points/{pre}-image-{r['method']}.txt")), None)
+        if f:
+            out.append((r["method"], r["n"], f))
+    return out
 
 
 def section(p, meth, rows):
-    """summary.md's adaptive part: medians over the seeds per density and method."""
+    """summary.md's density part: medians over the seeds per density and method."""
     if not rows:
         return
     p("## Following a density\n")
     p("Every method that takes `--density` on the test densities and the shipped image (data/README.md),")
-    p("n = %s, iterative methods stopped after the profile's iteration cap at most (adaptive.csv; medians over" % rows[0]["n"])
+    p("n = %s, iterative methods stopped after the profile's iteration cap at most (density.csv; medians over" % rows[0]["n"])
     p("the seeds). The measures are `cfpo-analyze --density` (analysis/README.md): δ in the symmetric")
     p("measure |x_i - x_j| / sqrt(r_i r_j), count fidelity over blocks, capacity deviation where reported.\n")
     p("| density | method | seeds | seconds | iterations | " + " | ".join(h for _, h in SHOWN) + " |")
@@ -153,4 +151,3 @@ def section(p, meth, rows):
             p("| %s | %s | %d | %.2f | %s | %s |" % (dl, "CFPO" if key == "cfpo" else meth.label(key), len(mine),
                                                  med("seconds") or 0, "-" if it is None else "%.0f" % it, " | ".join(cells)))
     p("")
-    p("![stippling](fig-stipple.png)\n")
