@@ -516,6 +516,7 @@ int main(int argc, char **argv)
     rep.seconds = cli_now() - t0;
     rep.peak_bytes = cli_peak_rss();
     an_print_summary(stdout, &rep);
+    an_print_imprint(stdout, &rep);
     if (R.opt.density) an_density_print(&R.dens, stdout), an_density_free(&R.dens);
     an_rings_free(&rings);
     free(outname);

@@ -94,6 +94,12 @@ int an_lattice_grid(int64_t asked, size_t n)
     return cfpo_grid_init(&G, (int64_t)n, CFPO_VARIANT_ADAPTIVE, 1, err, sizeof err) == 0 ? (int)G.g : 0;
 }
 
+double an_spike_noise_level(int K)
+{
+    const double side = 2.0 * K + 1;
+    return log(side * side / 2) + 4;
+}
+
 int an_lattice_period(int g) { return g % 3 == 0 ? 3 : (g % 2 == 0 ? 2 : 1); }
 
 int an_lattice_compute(const double *P, const an_rings *r, int g, int period, an_lattice *out)

@@ -58,6 +58,13 @@ int an_lattice_compute(const double *P, const an_rings *r, int g, int period, an
  * variant's; 0 when n is too small for one); and the colour period assumed
  * for a grid of g cells: 3 when 3 divides g, else 2 when g is even, else 1. */
 int an_lattice_grid(int64_t asked, size_t n);
+/* The spike ratio's noise level for the spectrum on [-K, K]^2: ln(M / 2)
+ * + 4 with M = (2K + 1)^2 frequencies. P(k) / its ring's mean is about
+ * Exp(1) for a set without a periodic pattern, and the largest of M / 2
+ * independent such values (P(-k) = P(k)) is ln(M / 2) + 0.58 give or take
+ * 1.3 (Gumbel); it passes the level with probability about 1 - exp(-e^-4)
+ * = 1.8%. A spike above it is a pattern, not noise. */
+double an_spike_noise_level(int K);
 int an_lattice_period(int g);
 
 /* Ring index of a frequency with |k|^2 = r2. */

@@ -142,7 +142,7 @@ void cfpo_engine_sweep(cfpo_engine *E, int64_t *moved, int64_t *solved)
     *moved = *solved = 0;
     for (int colour = 0; colour < E->G.period * E->G.period; colour++) {
         int64_t sv = 0;
-        *moved += cfpo_engine_phase(E, colour, &sv);
+        *moved += cfpo_engine_phase(E, cfpo_policy_colour(&E->pol, E->G.period, colour), &sv);
         *solved += sv;
     }
 }

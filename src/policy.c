@@ -4,6 +4,8 @@
  * docs/method.md ("--variant adaptive"). */
 #include "policy.h"
 
+#include <math.h>
+
 #include "rng.h"
 
 /* Near solves search two Voronoi cells before this iteration, one after. */
@@ -22,6 +24,10 @@ static const double relax_strong[2] = {3.0, 1.8}, relax_mild[2] = {1.8, 1.4};
 /* The grid moves before iterations 1, 5, 9, ...; in between, skipping works. */
 #define SHIFT_EVERY 4
 #define SHIFT_SALT 0x3c6ef372fe94f82aULL
+/* Each move walks WALK_STEP / WALK_CYCLE of the colours' period (3 L): 3/7
+ * of a cell, phase steps of 360 m / 7 degrees at the frequencies m g / 3. */
+#define WALK_STEP 1
+#define WALK_CYCLE 7
 
 /* The hyperuniform variant: the adaptive schedule until HU_FROM; then
  * HU_FIRST transport sweeps; then HU_ROUNDS rounds of one near sweep
@@ -50,11 +56,18 @@ int cfpo_policy_last(const cfpo_grid *G)
     return G->variant == CFPO_VARIANT_HYPERUNIFORM ? HU_FROM - 1 + HU_FIRST + HU_ROUNDS * HU_ROUND : 0;
 }
 
-double cfpo_policy_shift(const cfpo_grid *G, int k)
+double cfpo_policy_walk(const cfpo_grid *G, int k)
 {
     if (!adaptive_like(G->variant) || k <= 0) return 0;
-    k -= (k - 1) % SHIFT_EVERY; /* the first iteration of k's group */
-    return G->L * cfpo_rand01(G->seed ^ SHIFT_SALT, (uint64_t)k, 0);
+    const int j = (k - 1) / SHIFT_EVERY;
+    const double u = cfpo_rand01(G->seed ^ SHIFT_SALT, 1, 0) + (double)(j * WALK_STEP % WALK_CYCLE) / WALK_CYCLE;
+    return G->period * (u - floor(u));
+}
+
+double cfpo_policy_shift(const cfpo_grid *G, int k)
+{
+    const double w = cfpo_policy_walk(G, k);
+    return G->L * (w - floor(w));
 }
 
 int cfpo_policy_starts_near(int variant) { return adaptive_like(variant); }
@@ -76,6 +89,7 @@ cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
     if (!adaptive_like(G->variant)) return P;
     P.margin = adaptive_margin(G, dmin);
     P.shift = cfpo_policy_shift(G, k);
+    P.rot = (int)floor(cfpo_policy_walk(G, k)) % G->period;
     P.cut = 1;
     P.freeze = FREEZE * G->L;
     if (G->variant == CFPO_VARIANT_HYPERUNIFORM && k >= HU_FROM) {

@@ -24,8 +24,18 @@
  *   20 on    1                         1.8, else 1.4
  * The near solve runs from the first iteration until a near sweep
  * converges, LocalCFPO after it (its cells column matters only before).
- * The grid moves to a new random offset in [0, L) before iterations 1, 5,
- * 9, ... (4j + 1) and stays for the next three. The margin of every
+ * The grid moves before iterations 1, 5, 9, ... (4j + 1) and stays for
+ * the next three: group j's offset is sigma_j = 3 L frac(u + j / 7), u
+ * from the seed, in [0, 3 L), a walk of 3/7 of a cell a group around the
+ * colours' period 3 L; the grid is shifted by sigma_j mod L and the sweep
+ * starts with colour (r, r), r = floor(sigma_j / L) (which is the grid
+ * shifted by sigma_j itself). Each group prints the grid and its colours
+ * on the set (a density wave at the frequencies m g / 3, m = 1..4, of
+ * phase 2 pi m sigma_j / (3 L)), and the print outlives the group; with
+ * random offsets the prints add up like a random walk (a spike 50x its
+ * ring at a million points), with this walk each group's print at the
+ * cells' and the colours' strongest frequencies (m = 3, 4: phase steps of
+ * 154 and 206 degrees) mostly cancels the last one's (docs/method.md). The margin of every
  * iteration is L - max(delta(X) (1 + 1e-9), 0.7 Delta(n)), at least 0;
  * each point's square is cut to a margin of min(margin, L - t),
  * t = r0 + tol L, and a point with t >= 1.5 L stays where it is.
@@ -78,6 +88,9 @@ typedef struct {
     double margin;  /* how far S reaches past the cell: the grid's fixed
                        margin (paper, simplified) or the adaptive one */
     double shift;   /* the grid's offset on both axes in this iteration */
+    int rot;        /* the sweep solves colours (r + a, r + b) mod period in
+                       the order (a, b) = (0, 0), (0, 1), ... (0 but in the
+                       adaptive-like variants) */
     int cut;        /* 1: each point's square is cut to keep it t from the
                        points beyond its block (adaptive) */
     double freeze;  /* with cut: a point whose t reaches this stays (1.5 L) */
@@ -103,9 +116,17 @@ int cfpo_policy_stage_from(const cfpo_grid *G);
 cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin);
 
 /* The grid's offset in iteration k (0 before the first, and always 0 but
- * in the adaptive variant): one random offset in [0, L) for each group of
- * four iterations 4j + 1 .. 4j + 4, from the generator keyed by the seed. */
+ * in the adaptive-like variants): sigma_j mod L for the group j of four
+ * iterations 4j + 1 .. 4j + 4 (above). */
 double cfpo_policy_shift(const cfpo_grid *G, int k);
+/* sigma_j / L of iteration k's group, in [0, period): the walk (0 where
+ * cfpo_policy_shift is 0). */
+double cfpo_policy_walk(const cfpo_grid *G, int k);
+/* The colour the sweep of a policy solves j-th (j in [0, period^2)). */
+static inline int cfpo_policy_colour(const cfpo_policy *P, int period, int j)
+{
+    return ((j / period + P->rot) % period) * period + (j % period + P->rot) % period;
+}
 
 /* Whether a run of this variant starts in the near phase (adaptive). */
 int cfpo_policy_starts_near(int variant);

@@ -61,6 +61,27 @@ cmp -s i1.npy i4.npy && ok || bad "--init on 4 ranks differs from one process ($
 # one rank, as without a density
 expect_err 2 "text output needs one rank" 2 -n 16384 --density cos:a=0.9 --max-iter 4 -t 1 -o out.txt
 
+# A batch scheduler's SIGUSR1 to mpirun (forwarded to the ranks): every
+# rank stops at the same iteration boundary, the checkpoint is written, the
+# job exits 3 with no output; a resume on 3 ranks gives the uninterrupted
+# bytes (a one-process run to the same iteration).
+"$MPIRUN" --oversubscribe -np 2 "$CFPO" -q -n 65536 -t 1 --density cos:a=0.9 --checkpoint sig.ck \
+  --checkpoint-every 1000 -o sig.npy >sig.out 2>sig.err &
+pid=$!
+sleep 3
+kill -USR1 $pid
+wait $pid
+rc=$?
+it=$(sed -n 's/.*stopped by a signal at iteration \([0-9]*\);.*/\1/p' sig.err | head -1)
+[ $rc -eq 3 ] && [ -n "$it" ] && [ -f sig.ck ] && [ ! -e sig.npy ] && ok ||
+  bad "SIGUSR1 under mpirun: exit $rc, iteration '$it', checkpoint $(ls sig.ck 2>&1): $(grep cfpo: sig.err | head -2)"
+if [ -n "$it" ]; then
+  run 3 -t 1 --density cos:a=0.9 --resume sig.ck --max-iter $((it + 2)) -o sigr.npy >/dev/null 2>&1
+  "$CFPO" -q -t 2 -n 65536 --density cos:a=0.9 --max-iter $((it + 2)) -o sigu.npy >/dev/null
+  cmp -s sigr.npy sigu.npy && ok || bad "resume on 3 ranks after SIGUSR1 at $it: not the uninterrupted bytes"
+fi
+rm -f sig.*  sigr.npy sigu.npy
+
 # Errors: one message for the whole job, every rank exits 2 (or 1), no file.
 # 8,192 points on the image: a grid of 3 x 3 cells, one rank at most;
 # 16,384 on cos: 30 x 30 cells, 100 ranks at most

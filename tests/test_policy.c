@@ -5,7 +5,12 @@
  * one after; no over-relaxation in 1-3, w = 3.0 else 1.8 in 4-19, 1.8
  * else 1.4 from 20; one grid offset in [0, L) per group of four
  * iterations 4j + 1 .. 4j + 4, a new one at each group's first, none
- * before iteration 1); the margin is L - max(delta(X), 0.7 Delta(n)) up
+ * before iteration 1); the groups' offsets walk 3/7 of a cell a group
+ * around the colours' period 3 L, with the sweep's first colour turning
+ * with them, so that every group's print at the frequencies m g / 3
+ * (m = 1..4) turns by 360 m / 7 degrees and seven groups cancel exactly
+ * (the guard of the grid imprint: random offsets, the imprint's cause,
+ * fail it); the sweep solves every colour once; the margin is L - max(delta(X), 0.7 Delta(n)) up
  * to a relative 1e-9 and never reaches past L - delta(X) (the convergence
  * argument's bound) nor below 0; the per-point square keeps every spot at
  * least t from the points beyond the block, and a point with t >= 1.5 L
@@ -29,7 +34,7 @@ static int same_policy(const cfpo_policy *a, const cfpo_policy *b)
 {
     return a->iteration == b->iteration && a->L == b->L && a->margin == b->margin && a->shift == b->shift &&
            a->cut == b->cut && a->freeze == b->freeze && a->near == b->near && a->near_cells == b->near_cells &&
-           a->relax == b->relax && (a->relax < 1 || a->w[0] == b->w[0]) && (a->relax < 2 || a->w[1] == b->w[1]);
+           a->relax == b->relax && a->rot == b->rot && (a->relax < 1 || a->w[0] == b->w[0]) && (a->relax < 2 || a->w[1] == b->w[1]);
 }
 
 static cfpo_grid grid(int64_t n, int variant, uint64_t seed)
@@ -97,6 +102,53 @@ static void test_shift(void)
         if (cfpo_policy_shift(&H, 1) == cfpo_policy_shift(&G, 1)) bad++; /* the seed keys it */
     }
     CHECK(bad == 0, "grid shift: %d violations over %d groups of four iterations", bad, groups);
+}
+
+/* The walk: sigma_j / L in [0, 3), steps of 3/7 mod 3, shift = L frac,
+ * rot = floor; the prints' phasors exp(2 pi i m sigma_j / (3 L)) of seven
+ * consecutive groups sum to 0 and the next group's turns the last one's
+ * by more than 150 degrees at m = 3 and 4 (cos < -0.85); the sweep's
+ * colours are a permutation, row-major from colour (rot, rot). */
+static void test_walk(void)
+{
+    int bad = 0, groups = 0;
+    for (int variant = 0; variant < 2; variant++)
+        for (uint64_t seed = 1; seed <= 4; seed++) {
+            const cfpo_grid G = grid(4096 * seed, variant ? CFPO_VARIANT_HYPERUNIFORM : CFPO_VARIANT_ADAPTIVE, seed);
+            double w[64];
+            for (int j = 0; j < 64; j++) {
+                const int k = 4 * j + 1;
+                groups++;
+                w[j] = cfpo_policy_walk(&G, k);
+                const cfpo_policy P = cfpo_policy_at(&G, k, 1, 0.5);
+                if (!(w[j] >= 0 && w[j] < 3) || P.rot != (int)floor(w[j]) ||
+                    fabs(P.shift - G.L * (w[j] - floor(w[j]))) > 1e-15 || cfpo_policy_walk(&G, k + 3) != w[j]) {
+                    if (bad++ < 5) fprintf(stderr, "group %d: walk %.17g rot %d shift %g\n", j, w[j], P.rot, P.shift / G.L);
+                }
+                if (j > 0) {
+                    double d = fmod(w[j] - w[j - 1] + 3, 3);
+                    if (fabs(d - 3.0 / 7) > 1e-12) bad++;
+                }
+                int seen = 0;
+                for (int c = 0; c < 9; c++) seen |= 1 << cfpo_policy_colour(&P, 3, c);
+                if (seen != 0x1ff || cfpo_policy_colour(&P, 3, 0) != 4 * P.rot) bad++;
+            }
+            for (int m = 1; m <= 4; m++)
+                for (int j0 = 0; j0 + 7 <= 64; j0 += 5) {
+                    double re = 0, im = 0;
+                    for (int j = j0; j < j0 + 7; j++) {
+                        re += cos(2 * M_PI * m * w[j] / 3);
+                        im += sin(2 * M_PI * m * w[j] / 3);
+                    }
+                    const double turn = cos(2 * M_PI * m * (w[j0 + 1] - w[j0]) / 3);
+                    if (hypot(re, im) > 1e-9 || (m >= 3 && !(turn < -0.85))) {
+                        if (bad++ < 10) fprintf(stderr, "m %d groups %d..%d: sum %g, turn cos %g\n", m, j0, j0 + 6, hypot(re, im), turn);
+                    }
+                }
+        }
+    CHECK(bad == 0, "grid walk: %d violations over %d groups", bad, groups);
+    const cfpo_grid P = grid(4096, CFPO_VARIANT_PAPER, 1);
+    CHECK(cfpo_policy_walk(&P, 5) == 0 && cfpo_policy_at(&P, 5, 0, 1).rot == 0, "paper variant: a walk or a turned sweep");
 }
 
 static void test_margin(void)
@@ -245,6 +297,7 @@ int main(void)
 {
     test_schedule_table();
     test_shift();
+    test_walk();
     test_margin();
     test_square();
     test_relax();

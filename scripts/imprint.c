@@ -1,0 +1,115 @@
+/* imprint.c - the grid imprint of a point set, measured directly (docs/
+ * results/2026-11-28-imprint.md): P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / n
+ * at k = (0, g), (g, 0), (0, 4g/3), (4g/3, 0) (g: cfpo's grid for n, or
+ * --grid G), each divided by the mean of P over its own ring: RING integer
+ * vectors spread evenly in angle with |k| rounding to the same radius (the
+ * four axis vectors of the ring left out). A ratio near 1 is a clean set;
+ * white noise gives ratios with an exponential spread (P / mean ~ Exp(1)).
+ *
+ * Build: cc -O2 -fopenmp -o imprint scripts/imprint.c -lm
+ * Use:   imprint FILE.npy G [3]   (3: also the colours' period
+ *        (0, g/3), (0, 2g/3) and the x ones; G: cfpo's cells a side, its SUMMARY's
+ *        cells_per_side)
+ * Prints one line: n g and, per vector, P, ring mean and their ratio. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define RING 96
+
+static double *read_npy(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    unsigned char pre[10];
+    if (fread(pre, 1, 10, f) != 10 || memcmp(pre, "\x93NUMPY", 6) != 0) return fclose(f), NULL;
+    size_t hl = pre[8] | (size_t)pre[9] << 8;
+    if (pre[6] >= 2) {
+        unsigned char b[2];
+        if (fread(b, 1, 2, f) != 2) return fclose(f), NULL;
+        hl = pre[8] | (size_t)pre[9] << 8 | (size_t)b[0] << 16 | (size_t)b[1] << 24;
+    }
+    char *h = calloc(hl + 1, 1);
+    if (!h || fread(h, 1, hl, f) != hl) return fclose(f), free(h), NULL;
+    const int f4 = strstr(h, "<f4") != NULL;
+    const char *s = strstr(h, "'shape': (");
+    if (!s || strstr(h, "True")) return fclose(f), free(h), NULL;
+    *n = strtoull(s + 10, NULL, 10);
+    free(h);
+    double *p = malloc(*n * 2 * sizeof *p);
+    if (!p) return fclose(f), NULL;
+    if (f4) {
+        float *q = malloc(*n * 2 * sizeof *q);
+        if (!q || fread(q, sizeof *q, *n * 2, f) != *n * 2) return fclose(f), free(q), free(p), NULL;
+        for (size_t i = 0; i < *n * 2; i++) p[i] = q[i];
+        free(q);
+    } else if (fread(p, sizeof *p, *n * 2, f) != *n * 2) {
+        return fclose(f), free(p), NULL;
+    }
+    fclose(f);
+    return p;
+}
+
+static double power(const double *p, size_t n, double kx, double ky)
+{
+    double re = 0, im = 0;
+#pragma omp parallel for reduction(+ : re, im) schedule(static)
+    for (size_t i = 0; i < n; i++) {
+        const double a = -2 * M_PI * (kx * p[2 * i] + ky * p[2 * i + 1]);
+        re += cos(a);
+        im += sin(a);
+    }
+    return (re * re + im * im) / (double)n;
+}
+
+/* Mean of P over integer vectors with round(|k|) = r, RING directions in
+ * the half plane (P(-k) = P(k)), the axis vectors left out, repeats once. */
+static double ring_mean(const double *p, size_t n, int r)
+{
+    int kx[RING], ky[RING], m = 0;
+    for (int j = 0; j < RING; j++) {
+        const double a = M_PI * (j + 0.5) / RING;
+        const int x = (int)lround(r * cos(a)), y = (int)lround(r * sin(a));
+        if (x == 0 || y == 0 || lround(sqrt((double)x * x + (double)y * y)) != r) continue;
+        int dup = 0;
+        for (int q = 0; q < m && !dup; q++) dup = kx[q] == x && ky[q] == y;
+        if (!dup) kx[m] = x, ky[m] = y, m++;
+    }
+    double s = 0;
+    for (int q = 0; q < m; q++) s += power(p, n, kx[q], ky[q]);
+    return m ? s / m : NAN;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 3) {
+        fprintf(stderr, "usage: imprint FILE.npy G\n");
+        return 2;
+    }
+    size_t n = 0;
+    double *p = read_npy(argv[1], &n);
+    if (!p) {
+        fprintf(stderr, "imprint: cannot read %s (a float64 or float32 .npy of shape (n, 2))\n", argv[1]);
+        return 1;
+    }
+    const int g = atoi(argv[2]), g4 = (int)lround(4.0 * g / 3.0);
+    const int vec[4][2] = {{0, g}, {g, 0}, {0, g4}, {g4, 0}};
+    const char *name[4] = {"0,g", "g,0", "0,4g/3", "4g/3,0"};
+    const double mg = ring_mean(p, n, g), m4 = ring_mean(p, n, g4);
+    printf("n=%zu g=%d", n, g);
+    for (int v = 0; v < 4; v++) {
+        const double P = power(p, n, vec[v][0], vec[v][1]), m = v < 2 ? mg : m4;
+        printf(" P(%s)=%.3g ring=%.3g ratio=%.1f", name[v], P, m, P / m);
+    }
+    if (argc > 3) { /* the colours' period, 3 cells: (0, g/3), (0, 2g/3), (g/3, 0), (2g/3, 0) */
+        const int g1 = (int)lround(g / 3.0), g2 = (int)lround(2.0 * g / 3.0);
+        const double m1 = ring_mean(p, n, g1), m2 = ring_mean(p, n, g2);
+        printf(" P(0,g/3)/ring=%.1f P(0,2g/3)/ring=%.1f P(g/3,0)/ring=%.1f P(2g/3,0)/ring=%.1f",
+               power(p, n, 0, g1) / m1, power(p, n, 0, g2) / m2, power(p, n, g1, 0) / m1, power(p, n, g2, 0) / m2);
+    }
+    printf("\n");
+    free(p);
+    return 0;
+}
