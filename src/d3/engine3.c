@@ -164,3 +164,10 @@ int64_t cfpo3_n(const cfpo3_engine *e) { return e->n; }
 const cfpo3_grid *cfpo3_grid_of(const cfpo3_engine *e) { return &e->G; }
 const cfpo3_options *cfpo3_options_of(const cfpo3_engine *e) { return &e->o; }
 const double *cfpo3_points(const cfpo3_engine *e) { return e->pos; }
+
+void cfpo3_work(const cfpo3_engine *e, long *cells, long *tests, long *cuts)
+{
+    *cells = e->count.cells;
+    *tests = e->count.tests;
+    *cuts = e->count.cuts;
+}

@@ -56,6 +56,9 @@ const cfpo3_grid *cfpo3_grid_of(const cfpo3_engine *e);
 const cfpo3_options *cfpo3_options_of(const cfpo3_engine *e);
 /* The points by id, 3n doubles in [0,1): valid until the next step. */
 const double *cfpo3_points(const cfpo3_engine *e);
+/* The local solver's work so far, summed over solves: Voronoi cells
+ * clipped, bisector planes tested, cuts made (for measuring). */
+void cfpo3_work(const cfpo3_engine *e, long *cells, long *tests, long *cuts);
 /* Bytes the engine holds for n points (for --dry-run): the same formula
  * cfpo3_create allocates by. */
 double cfpo3_bytes_per_point(int64_t n);

@@ -14,6 +14,7 @@
 #define CFPO_ENGINE3_IMPL_H
 
 #include "engine3.h"
+#include "solve3.h"
 
 struct cfpo3_engine {
     cfpo3_grid G;
@@ -30,6 +31,7 @@ struct cfpo3_engine {
     double *needm;         /* g^3 */
     uint64_t phase;        /* phases run (the stamps' clock) */
     double dmin, davg;     /* the current set, over Delta3 */
+    cfpo3_solve_count count; /* the solver's work so far (for measuring) */
 };
 
 /* u of coordinate x under shift s: wrapped into [0,1). */

@@ -34,6 +34,7 @@ typedef struct {
     double *key;
     int cap;
     cfpo3_poly poly[2];
+    cfpo3_solve_count cnt;
 } scratch3;
 
 static int scratch_grow(scratch3 *w, int need)
@@ -171,13 +172,15 @@ static void solve_cell(cfpo3_engine *e, int ci, int cj, int ck, double emargin, 
         }
         double best[3];
         r->solved++;
-        if (cfpo3_local_solve(s->rel, m, lo, hi, best, s->poly, NULL) < 0.0) continue;
-        const double t2 = t * t;
-        if (!(inside(best, lo, hi) && min_d2(s->rel, m, best) > t2)) continue;
+        /* a crowd beyond the solver's capacity (only from a given start):
+         * its nearest CFPO3_MAXM; the check below reads the whole block */
+        const int ms = m < CFPO3_MAXM ? m : CFPO3_MAXM;
+        if (cfpo3_local_solve(s->rel, ms, lo, hi, t * t, best, s->poly, &s->cnt) < 0.0) continue;
+        if (!(inside(best, lo, hi) && min_d2(s->rel, m, best) > t * t)) continue;
         double go[3] = {best[0], best[1], best[2]};
         for (int k = 0; k < 2 && w[k] > 0.0; k++) {
             const double cand[3] = {w[k] * best[0], w[k] * best[1], w[k] * best[2]};
-            if (inside(cand, lo, hi) && min_d2(s->rel, m, cand) > t2) {
+            if (inside(cand, lo, hi) && min_d2(s->rel, m, cand) > t * t) {
                 go[0] = cand[0], go[1] = cand[1], go[2] = cand[2];
                 break;
             }
@@ -260,6 +263,12 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
                 fail |= r.fail;
             }
             free(sc.y), free(sc.id), free(sc.rel), free(sc.ord), free(sc.key);
+#pragma omp atomic
+            e->count.cells += sc.cnt.cells;
+#pragma omp atomic
+            e->count.tests += sc.cnt.tests;
+#pragma omp atomic
+            e->count.cuts += sc.cnt.cuts;
         }
         if (fail) return -1;
         if (crossed) cfpo3_rebucket(e);

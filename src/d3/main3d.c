@@ -244,6 +244,11 @@ int main(int argc, char **argv)
     const double d = dmin * cfpo3_delta_bound((double)n);
     printf("BOX3D side=%.17g delta_min_box=%.9g packing_fraction=%.6f\n", c.box, d * c.box,
            M_PI / 6.0 * (double)n * d * d * d);
+    if (getenv("CFPO3D_WORK")) { /* the solver's work, for measuring */
+        long cells, tests, cuts;
+        cfpo3_work(e, &cells, &tests, &cuts);
+        printf("WORK3D cells=%ld tests=%ld cuts=%ld\n", cells, tests, cuts);
+    }
     cfpo3_free(e);
     return 0;
 }

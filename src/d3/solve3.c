@@ -166,26 +166,60 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
     return 1;
 }
 
-double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double best[3],
-                         cfpo3_poly scratch[2], cfpo3_solve_count *count)
+double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double floor2,
+                         double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count)
 {
-    if (m <= 0) return -1.0;
-    double bestd = -1.0;
+    if (m <= 0 || m > CFPO3_MAXM) return -1.0;
+    double bestd = floor2 > 0.0 ? floor2 : -1.0;
+    int found = 0;
     cfpo3_poly box;
+    double key[CFPO3_MAXM];
+    int ord[CFPO3_MAXM];
     cfpo3_poly_box(&box, lo, hi);
     for (int i = 0; i < m; i++) {
         const double *yi = y + 3 * i;
         double far = cfpo3_poly_far(&box, yi, NULL);
         if (far <= bestd) continue;
-        if (count) count->cells++;
-        const cfpo3_poly *cur = &box;
-        int which = 0, empty = 0, abandoned = 0;
-        for (int j = 0; j < m; j++) {
+        /* the kill test: one bisector puts the whole box on y_j's side */
+        int killed = 0;
+        for (int j = 0; j < m && !killed; j++) {
             if (j == i) continue;
             const double *yj = y + 3 * j;
             const double nv[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
             const double dd = nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2];
-            if (dd >= 4.0 * far) continue; /* the plane lies beyond every vertex */
+            const double off = nv[0] * yi[0] + nv[1] * yi[1] + nv[2] * yi[2] + 0.5 * dd;
+            double low = 0.0; /* the box's smallest n.c */
+            for (int a = 0; a < 3; a++) low += nv[a] * (nv[a] > 0.0 ? lo[a] : hi[a]);
+            killed = low - off > 1e-12 * (dd + fabs(off));
+        }
+        if (killed) continue;
+        if (count) count->cells++;
+        const cfpo3_poly *cur = &box;
+        int which = 0, empty = 0, abandoned = 0;
+        /* the other sites nearest to y_i first (their bisectors cut most),
+         * those whose bisector misses the box's reach left out */
+        int no = 0;
+        for (int j = 0; j < m; j++) {
+            if (j == i) continue;
+            const double *yj = y + 3 * j;
+            const double ax = yj[0] - yi[0], ay = yj[1] - yi[1], az = yj[2] - yi[2];
+            const double dd = ax * ax + ay * ay + az * az;
+            if (dd >= 4.0 * far) continue;
+            int at = no++;
+            while (at > 0 && key[at - 1] > dd) {
+                key[at] = key[at - 1];
+                ord[at] = ord[at - 1];
+                at--;
+            }
+            key[at] = dd;
+            ord[at] = j;
+        }
+        for (int k = 0; k < no; k++) {
+            const int j = ord[k];
+            const double *yj = y + 3 * j;
+            const double nv[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
+            const double dd = key[k];
+            if (dd >= 4.0 * far) break; /* this plane and the later ones lie beyond every vertex */
             if (count) count->tests++;
             /* (c - yi).nv <= dd/2 */
             const double off = nv[0] * yi[0] + nv[1] * yi[1] + nv[2] * yi[2] + 0.5 * dd;
@@ -209,13 +243,14 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
         far = cfpo3_poly_far(cur, yi, &at);
         if (far > bestd) {
             bestd = far;
+            found = 1;
             best[0] = cur->v[at][0];
             best[1] = cur->v[at][1];
             best[2] = cur->v[at][2];
         }
     }
     /* clamp into S (a vertex may stray from a face by rounding) */
-    if (bestd >= 0.0)
-        for (int c = 0; c < 3; c++) best[c] = best[c] < lo[c] ? lo[c] : (best[c] > hi[c] ? hi[c] : best[c]);
+    if (!found) return -1.0;
+    for (int c = 0; c < 3; c++) best[c] = best[c] < lo[c] ? lo[c] : (best[c] > hi[c] ? hi[c] : best[c]);
     return bestd;
 }

@@ -42,6 +42,9 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
 /* Largest squared distance from a vertex of p to y, and its index. */
 double cfpo3_poly_far(const cfpo3_poly *p, const double y[3], int *at);
 
+/* The most sites one solve takes. */
+#define CFPO3_MAXM 1024
+
 /* Work counters of one solve (for measuring; may be NULL). */
 typedef struct {
     long cells, tests, cuts;
@@ -49,11 +52,16 @@ typedef struct {
 
 /* LocalCFPO-3D. y: m points (3 doubles each), ordered by distance to the
  * hint (nearest first: the solver's order, not its correctness). S = [lo,
- * hi]. Writes the farthest point into best and returns its squared
- * distance to Y (the squared distance to the nearest y), or -1 when m = 0.
- * scratch: two polytopes. Exact up to rounding: every vertex of the
- * clipped Voronoi diagram that could win is examined. */
-double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double best[3],
-                         cfpo3_poly scratch[2], cfpo3_solve_count *count);
+ * hi]. floor2: only spots whose squared distance to Y exceeds it count
+ * (<= 0: none is excluded); cells that cannot beat it are not clipped.
+ * Writes the farthest point into best and returns its squared distance to
+ * Y (the squared distance to the nearest y), or -1 when no spot of S beats
+ * floor2, m = 0 or m > CFPO3_MAXM. scratch: two polytopes. Exact up to
+ * rounding: every vertex of the clipped Voronoi diagram that could win is
+ * examined. A cell is skipped at once when one bisector puts the whole box
+ * on the other site's side by a relative margin of 1e-12 (the cell misses
+ * S). */
+double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double floor2,
+                         double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count);
 
 #endif

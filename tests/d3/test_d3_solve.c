@@ -5,7 +5,8 @@
  * distance to Y (a solver that drops a bisector claims a spot nearer to
  * the dropped site than it says); no point of a 17^3 sample of S, refined
  * by a pattern search, is farther from Y. The last check runs the same
- * comparison on a solver that drops one bisector and must see it fail. */
+ * comparison on a solver that drops one bisector and must see it fail; a
+ * floor below the answer leaves it unchanged, one above it leaves none. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -147,19 +148,26 @@ int main(void)
 {
     static double y[3 * 700];
     cfpo3_poly scr[2];
-    int bad = 0, runs = 0, caught = 0, mutants = 0;
+    int bad = 0, runs = 0, caught = 0, mutants = 0, floorbad = 0;
     cfpo3_solve_count cnt = {0, 0, 0};
     for (int kind = 0; kind < 4; kind++)
-        for (uint64_t s = 0; s < 60; s++) {
+        for (uint64_t s = 0; s < 30; s++) {
             double lo[3], hi[3], c[3], want;
             const int m = make(kind, 1000 * (uint64_t)kind + s, y, lo, hi);
-            const double v = cfpo3_local_solve(y, m, lo, hi, c, scr, &cnt);
+            const double v = cfpo3_local_solve(y, m, lo, hi, 0.0, c, scr, &cnt);
             runs++;
             if (!judge(y, m, lo, hi, c, v, &want)) {
                 bad++;
                 if (bad < 5)
                     fprintf(stderr, "kind %d seed %llu: solver %.12f (true %.12f), brute %.12f\n", kind,
                             (unsigned long long)s, sqrt(v), sqrt(f(y, m, c)), sqrt(want));
+            }
+            /* a floor below the answer changes nothing; at or above it, no answer */
+            {
+                double c2[3];
+                const double v2 = cfpo3_local_solve(y, m, lo, hi, 0.98 * v, c2, scr, NULL);
+                floorbad += !(v2 == v && c2[0] == c[0] && c2[1] == c[1] && c2[2] == c[2]);
+                floorbad += cfpo3_local_solve(y, m, lo, hi, v * (1 + 1e-9), c2, scr, NULL) >= 0.0;
             }
             /* the mutant: one bisector dropped (a site the answer is nearest to) */
             if (s % 3 == 0) {
@@ -177,7 +185,7 @@ int main(void)
                         mm++;
                     }
                 double cm[3];
-                const double vm = cfpo3_local_solve(ym, mm, lo, hi, cm, scr, NULL);
+                const double vm = cfpo3_local_solve(ym, mm, lo, hi, 0.0, cm, scr, NULL);
                 /* at an FCC hole six sites tie: dropping one may change
                  * nothing, so the mutant counts on the generic kinds */
                 if (kind < 2) {
@@ -187,15 +195,16 @@ int main(void)
             }
         }
     CHECK(bad == 0, "%d of %d solves disagree with brute force", bad, runs);
+    CHECK(floorbad == 0, "%d answers change under a floor", floorbad);
     CHECK(caught == mutants, "the check missed %d of %d (random, jittered) solvers that drop a bisector", mutants - caught, mutants);
     /* the box alone: a corner, at the right distance */
     {
         const double one[3] = {0.1, 0.2, 0.3}, lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
         double c[3];
-        const double v = cfpo3_local_solve(one, 1, lo, hi, c, scr, NULL);
+        const double v = cfpo3_local_solve(one, 1, lo, hi, 0.0, c, scr, NULL);
         CHECK(c[0] == -1 && c[1] == -1 && c[2] == -1 && fabs(v - (1.21 + 1.44 + 1.69)) < 1e-12,
               "one site: answer (%g %g %g) %g", c[0], c[1], c[2], v);
-        CHECK(cfpo3_local_solve(one, 0, lo, hi, c, scr, NULL) < 0, "no site: no answer");
+        CHECK(cfpo3_local_solve(one, 0, lo, hi, 0.0, c, scr, NULL) < 0, "no site: no answer");
     }
     /* Voronoi cells of uniform points: Meijering's 27.07 vertices, 15.54 faces a cell */
     {
