@@ -69,6 +69,9 @@ double cfpo3_bytes_per_point(int64_t n);
  * file; NULL with one line in err. */
 int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, size_t errlen);
 cfpo3_engine *cfpo3_checkpoint_read(const char *path, int threads, char *err, size_t errlen);
+/* The checksum a checkpoint's bytes (header and points, len < 4 GiB)
+ * should carry at offset 60 (tests, fuzzing). */
+uint32_t cfpo3_checkpoint_crc(const unsigned char *buf, size_t len);
 /* The same reader on bytes in memory (tests, fuzzing). */
 cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const char *name, int threads,
                                      char *err, size_t errlen);

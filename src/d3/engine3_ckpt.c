@@ -71,6 +71,17 @@ static uint32_t crc_of(const unsigned char *h, const double *pos, int64_t n)
     return (uint32_t)c;
 }
 
+uint32_t cfpo3_checkpoint_crc(const unsigned char *buf, size_t len)
+{
+    if (len < HDR || (len - HDR) % 24 != 0) return 0;
+    unsigned char hz[HDR];
+    memcpy(hz, buf, HDR);
+    put32(hz + 60, 0);
+    uLong c = crc32(0L, Z_NULL, 0);
+    c = crc32(c, hz, HDR);
+    return (uint32_t)crc32(c, buf + HDR, (uInt)(len - HDR));
+}
+
 int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, size_t errlen)
 {
     unsigned char h[HDR];

@@ -40,6 +40,7 @@ static void usage(void)
            "      --no-relax       move to the solver's spot (no over-relaxation)\n"
            "      --no-shift       keep the grid fixed\n"
            "      --no-skip        solve every cell every iteration (same output, slower)\n"
+           "      --trace FILE     one line an iteration: iteration delta_min delta_avg moved solved max_disp seconds\n"
            "      --dry-run        print the grid and memory and exit\n"
            "  -q, --quiet          no progress line\n"
            "  -h, --help, -V, --version\n",
@@ -54,7 +55,7 @@ typedef struct {
     double box;
     const char *out[MAX_OUT];
     int nout;
-    const char *init, *ckpt, *resume;
+    const char *init, *ckpt, *resume, *trace;
     cfpo_stop_rules stop;
 } cmdline;
 
@@ -69,7 +70,7 @@ static void parse(cmdline *c, int argc, char **argv)
         {"checkpoint", required_argument, 0, 'P'}, {"checkpoint-every", required_argument, 0, 'E'},
         {"resume", required_argument, 0, 'R'}, {"no-relax", no_argument, 0, 1010},
         {"no-shift", no_argument, 0, 1011}, {"no-skip", no_argument, 0, 1012},
-        {"dry-run", no_argument, 0, 'D'}, {"quiet", no_argument, 0, 'q'},
+        {"dry-run", no_argument, 0, 'D'}, {"trace", required_argument, 0, 'r'}, {"quiet", no_argument, 0, 'q'},
         {"help", no_argument, 0, 'h'}, {"version", no_argument, 0, 'V'}, {0, 0, 0, 0}};
     memset(c, 0, sizeof *c);
     cfpo3_options_default(&c->o);
@@ -121,6 +122,7 @@ static void parse(cmdline *c, int argc, char **argv)
         case 1011: c->o.shift = 0; c->policy_given = 1; break;
         case 1012: c->o.skip = 0; c->policy_given = 1; break;
         case 'D': c->dry = 1; break;
+        case 'r': c->trace = optarg; break;
         case 'q': c->quiet = 1; break;
         case 'h': usage(); exit(0);
         case 'V': printf("cfpo3d %s\n", CFPO_VERSION); exit(0);
@@ -208,6 +210,11 @@ int main(int argc, char **argv)
         if (!e) cli_fail(prog, "%s", err);
     }
     const int64_t n = cfpo3_n(e);
+    cli_atomic tr = {0};
+    if (c.trace) {
+        if (cli_atomic_open(&tr, c.trace, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds\n");
+    }
     cli_progress pr;
     cli_progress_init(&pr, c.quiet);
     cfpo_iter_stats st;
@@ -224,6 +231,9 @@ int main(int argc, char **argv)
         cli_progress_line(&pr, 0, "iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  solved %lld  %.2fs/iter  elapsed %.1fs",
                           st.iteration, st.delta_min, st.delta_avg, (long long)st.moved, (long long)st.solved,
                           st.seconds, el);
+        if (c.trace)
+            fprintf(tr.f, "%d %.6f %.6f %lld %lld %.6g %.4f\n", st.iteration, st.delta_min, st.delta_avg,
+                    (long long)st.moved, (long long)st.solved, st.max_disp, st.seconds);
         stop = cfpo_stop_check(&c.stop, &st, el, c.max_iter);
         if (c.ckpt && stop == CFPO_STOP_NONE && st.iteration % c.every == 0 &&
             cfpo3_checkpoint_write(e, c.ckpt, err, sizeof err) != 0)
@@ -231,6 +241,7 @@ int main(int argc, char **argv)
     }
     cli_progress_end(&pr);
     if (c.ckpt && cfpo3_checkpoint_write(e, c.ckpt, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    if (c.trace && cli_atomic_commit(&tr, err, sizeof err) != 0) cli_fail(prog, "%s", err);
     for (int i = 0; i < c.nout; i++)
         if (p3_write(c.out[i], cfpo3_points(e), (size_t)n, c.box, err, sizeof err) != 0) cli_fail(prog, "%s", err);
     double dmin, davg;
