@@ -83,11 +83,20 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
     for (int f = 0; f < p->nf; f++) {
         const int s0 = p->fs[f], len = p->fs[f + 1] - s0;
         const int start = ni;
+        int nout = 0;
+        for (int k = 0; k < len; k++) nout += map[p->fi[s0 + k]] < 0;
+        if (nout == len) continue; /* the whole face is cut away */
+        if (ni + 2 * len > P3_MAXI) return -2;
+        if (nout == 0) { /* the whole face stays */
+            for (int k = 0; k < len; k++) q->fi[ni++] = map[p->fi[s0 + k]];
+            q->fs[nf++] = start;
+            if (nf >= P3_MAXF) return -2;
+            continue;
+        }
         for (int k = 0; k < len; k++) {
-            const int a = p->fi[s0 + k], b = p->fi[s0 + (k + 1) % len];
-            const int ina = d[a] <= 0.0, inb = d[b] <= 0.0;
-            int put[2], np = 0;
-            if (ina) put[np++] = map[a];
+            const int a = p->fi[s0 + k], b = p->fi[k + 1 == len ? s0 : s0 + k + 1];
+            const int ina = map[a] >= 0, inb = map[b] >= 0;
+            if (ina && (ni == start || q->fi[ni - 1] != map[a])) q->fi[ni++] = map[a];
             if (ina != inb) {
                 const int vi = ina ? a : b, vo = ina ? b : a;
                 int nvx = -1;
@@ -111,12 +120,7 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
                         nvx = nv++;
                     }
                 }
-                put[np++] = nvx;
-            }
-            for (int u = 0; u < np; u++) {
-                if (ni > start && q->fi[ni - 1] == put[u]) continue;
-                if (ni >= P3_MAXI) return -2;
-                q->fi[ni++] = put[u];
+                if (ni == start || q->fi[ni - 1] != nvx) q->fi[ni++] = nvx;
             }
         }
         while (ni - start > 1 && q->fi[ni - 1] == q->fi[start]) ni--;
@@ -180,9 +184,12 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
         const double *yi = y + 3 * i;
         double far = cfpo3_poly_far(&box, yi, NULL);
         if (far <= bestd) continue;
-        /* the kill test: one bisector puts the whole box on y_j's side */
-        int killed = 0;
-        for (int j = 0; j < m && !killed; j++) {
+        /* One pass over the other sites: the kill test (one bisector puts
+         * the whole box on y_j's side: the cell misses S), and the sites
+         * whose bisector can reach the box, nearest to y_i first (their
+         * bisectors cut most). */
+        int killed = 0, no = 0;
+        for (int j = 0; j < m; j++) {
             if (j == i) continue;
             const double *yj = y + 3 * j;
             const double nv[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
@@ -190,20 +197,10 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
             const double off = nv[0] * yi[0] + nv[1] * yi[1] + nv[2] * yi[2] + 0.5 * dd;
             double low = 0.0; /* the box's smallest n.c */
             for (int a = 0; a < 3; a++) low += nv[a] * (nv[a] > 0.0 ? lo[a] : hi[a]);
-            killed = low - off > 1e-12 * (dd + fabs(off));
-        }
-        if (killed) continue;
-        if (count) count->cells++;
-        const cfpo3_poly *cur = &box;
-        int which = 0, empty = 0, abandoned = 0;
-        /* the other sites nearest to y_i first (their bisectors cut most),
-         * those whose bisector misses the box's reach left out */
-        int no = 0;
-        for (int j = 0; j < m; j++) {
-            if (j == i) continue;
-            const double *yj = y + 3 * j;
-            const double ax = yj[0] - yi[0], ay = yj[1] - yi[1], az = yj[2] - yi[2];
-            const double dd = ax * ax + ay * ay + az * az;
+            if (low - off > 1e-12 * (dd + fabs(off))) {
+                killed = 1;
+                break;
+            }
             if (dd >= 4.0 * far) continue;
             int at = no++;
             while (at > 0 && key[at - 1] > dd) {
@@ -214,6 +211,10 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
             key[at] = dd;
             ord[at] = j;
         }
+        if (killed) continue;
+        if (count) count->cells++;
+        const cfpo3_poly *cur = &box;
+        int which = 0, empty = 0, abandoned = 0;
         for (int k = 0; k < no; k++) {
             const int j = ord[k];
             const double *yj = y + 3 * j;

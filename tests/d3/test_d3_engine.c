@@ -157,7 +157,7 @@ int main(void)
     test_knn();
     {
         cfpo3_engine *e = make(324, 0, 1);
-        never_falls(e, 12, "jittered start");
+        never_falls(e, 8, "jittered start");
         cfpo3_free(e);
         const size_t n = 324;
         double *p = malloc(sizeof(double) * 3 * n);
@@ -166,13 +166,13 @@ int main(void)
         cfpo3_options_default(&o);
         char err[256];
         e = cfpo3_create_given(p, (int64_t)n, &o, err, sizeof err);
-        never_falls(e, 10, "white noise");
+        never_falls(e, 6, "white noise");
         cfpo3_free(e);
         free(p);
     }
     {
         cfpo3_engine *a = make(324, 1, 1), *b = make(324, 2, 1), *c = make(324, 3, 1), *d = make(324, 2, 0);
-        run(a, 7), run(b, 7), run(c, 7), run(d, 7);
+        run(a, 6), run(b, 6), run(c, 6), run(d, 6);
         CHECK(same(a, b) && same(a, c), "threads 1, 2, 3 give different bytes");
         CHECK(same(a, d), "skipping changes the bytes");
         /* resume: after 3 (before no shift) and after 4 (before a shift) */
@@ -188,7 +188,7 @@ int main(void)
             CHECK(r != NULL, "checkpoint read: %s", err);
             if (r) {
                 CHECK(cfpo3_iterations(r) == at, "resumed at %d, not %d", cfpo3_iterations(r), at);
-                run(r, 7 - at);
+                run(r, 6 - at);
                 CHECK(same(a, r), "resume after %d iterations differs from the uninterrupted run", at);
                 cfpo3_free(r);
             }

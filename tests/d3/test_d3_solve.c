@@ -151,7 +151,7 @@ int main(void)
     int bad = 0, runs = 0, caught = 0, mutants = 0, floorbad = 0;
     cfpo3_solve_count cnt = {0, 0, 0};
     for (int kind = 0; kind < 4; kind++)
-        for (uint64_t s = 0; s < 30; s++) {
+        for (uint64_t s = 0; s < 20; s++) {
             double lo[3], hi[3], c[3], want;
             const int m = make(kind, 1000 * (uint64_t)kind + s, y, lo, hi);
             const double v = cfpo3_local_solve(y, m, lo, hi, 0.0, c, scr, &cnt);
