@@ -28,9 +28,9 @@ double cfpo3_bytes_per_point(int64_t n)
     char err[16];
     if (n < 1 || cfpo3_grid_choose(n, &G, err, sizeof err) != 0) return 0.0;
     const double g3 = (double)G.g * G.g * G.g;
-    /* pos, prev, cellof, cids; per cell cstart, changed, solvedat, needm;
+    /* pos, prev, cellof, cids; per cell cstart, changed, solvedat, needm, fill;
      * the measure's temporaries (knn: start, ids, cell, distances, ids). */
-    const double engine = (double)n * (24 + 24 + 4 + 8) + g3 * (8 + 8 + 8 + 8);
+    const double engine = (double)n * (24 + 24 + 4 + 8) + g3 * (8 + 8 + 8 + 8 + 8);
     const double measure = (double)n * (8 + 8 + 4 + 8 + 8 + 8) + (double)n / 2.0 * 8 * 2;
     return (engine + measure) / (double)n;
 }
@@ -53,7 +53,8 @@ cfpo3_engine *cfpo3_alloc(int64_t n, const cfpo3_options *o, char *err, size_t e
     e->changed = calloc(g3, sizeof(uint64_t));
     e->solvedat = calloc(g3, sizeof(uint64_t));
     e->needm = calloc(g3, sizeof(double));
-    if (!e->pos || !e->prev || !e->cellof || !e->cids || !e->cstart || !e->changed || !e->solvedat ||
+    e->fill = malloc(sizeof(int64_t) * g3);
+    if (!e->fill || !e->pos || !e->prev || !e->cellof || !e->cids || !e->cstart || !e->changed || !e->solvedat ||
         !e->needm) {
         cfpo3_free(e);
         goto oom;
@@ -68,7 +69,7 @@ void cfpo3_free(cfpo3_engine *e)
 {
     if (!e) return;
     free(e->pos), free(e->prev), free(e->cellof), free(e->cids), free(e->cstart);
-    free(e->changed), free(e->solvedat), free(e->needm);
+    free(e->changed), free(e->solvedat), free(e->needm), free(e->fill);
     free(e);
 }
 
@@ -90,14 +91,9 @@ void cfpo3_rebucket(cfpo3_engine *e)
     for (int64_t i = 0; i < e->n; i++) e->cstart[e->cellof[i] + 1]++;
     for (size_t c = 0; c < g3; c++) e->cstart[c + 1] += e->cstart[c];
     /* fill by id: the ids of a cell come out increasing */
-    int64_t *fill = malloc(sizeof(int64_t) * g3);
-    if (!fill) {
-        fprintf(stderr, "cfpo3d: out of memory\n");
-        exit(1);
-    }
+    int64_t *fill = e->fill;
     memcpy(fill, e->cstart, sizeof(int64_t) * g3);
     for (int64_t i = 0; i < e->n; i++) e->cids[fill[e->cellof[i]]++] = i;
-    free(fill);
 }
 
 void cfpo3_assign(cfpo3_engine *e)
@@ -135,7 +131,11 @@ cfpo3_engine *cfpo3_create(int64_t n, const cfpo3_options *o, char *err, size_t 
 {
     cfpo3_engine *e = cfpo3_alloc(n, o, err, errlen);
     if (!e) return NULL;
-    cfpo3_start(n, o->seed, e->pos);
+    if (cfpo3_start(n, o->seed, e->pos) != 0) {
+        snprintf(err, errlen, "out of memory for %lld points", (long long)n);
+        cfpo3_free(e);
+        return NULL;
+    }
     return finish_create(e, err, errlen);
 }
 

@@ -29,6 +29,7 @@ struct cfpo3_engine {
     int64_t *cids;         /* n */
     uint64_t *changed, *solvedat; /* g^3 */
     double *needm;         /* g^3 */
+    int64_t *fill;         /* g^3: the rebucketing's cursors */
     uint64_t phase;        /* phases run (the stamps' clock) */
     double dmin, davg;     /* the current set, over Delta3 */
     cfpo3_solve_count count; /* the solver's work so far (for measuring) */

@@ -52,14 +52,15 @@ int cfpo3_grid_choose(int64_t n, cfpo3_grid *G, char *err, size_t errlen)
     return 0;
 }
 
-void cfpo3_start(int64_t n, uint64_t seed, double *pos)
+int cfpo3_start(int64_t n, uint64_t seed, double *pos)
 {
     const int64_t h = cfpo3_icbrt(n), h3 = h * h * h, extra = n - h3;
     unsigned char *two = calloc((size_t)h3, 1);
     int64_t *first = malloc(sizeof(int64_t) * (size_t)h3);
     if (!two || !first) {
-        fprintf(stderr, "cfpo3d: out of memory\n");
-        exit(1);
+        free(two);
+        free(first);
+        return -1;
     }
     const uint64_t key = cfpo_mix64(seed ^ START_SALT);
     for (int64_t r = 0; r < extra; r++) two[cfpo_permute((uint64_t)r, (uint64_t)h3, key)] = 1;
@@ -83,4 +84,5 @@ void cfpo3_start(int64_t n, uint64_t seed, double *pos)
     }
     free(two);
     free(first);
+    return 0;
 }

@@ -24,8 +24,9 @@ typedef struct {
 int64_t cfpo3_grid_min_n(void);
 /* 0, or -1 with one line in err (n too small). */
 int cfpo3_grid_choose(int64_t n, cfpo3_grid *G, char *err, size_t errlen);
-/* The start (3n doubles, ids in start-cell order); threads: OpenMP. */
-void cfpo3_start(int64_t n, uint64_t seed, double *pos);
+/* The start (3n doubles, ids in start-cell order); OpenMP threads. 0, or
+ * -1 when out of memory. */
+int cfpo3_start(int64_t n, uint64_t seed, double *pos);
 /* floor(cbrt(n)) exactly. */
 int64_t cfpo3_icbrt(int64_t n);
 

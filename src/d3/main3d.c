@@ -140,7 +140,6 @@ static void parse(cmdline *c, int argc, char **argv)
     if (c->n_given && c->n < cfpo3_grid_min_n())
         cli_usage_error(prog, "n = %lld is too small: at least %lld points are needed in 3-D",
                         (long long)c->n, (long long)cfpo3_grid_min_n());
-    char err[512];
     for (int i = 0; i < c->nout; i++) {
         if (p3_format_of(c->out[i]) == P3F_UNKNOWN)
             cli_usage_error(prog, "%s: unknown output format (use " P3_EXTENSIONS ")", c->out[i]);
@@ -150,7 +149,6 @@ static void parse(cmdline *c, int argc, char **argv)
     if (c->ckpt)
         for (int i = 0; i < c->nout; i++)
             if (strcmp(c->ckpt, c->out[i]) == 0) cli_usage_error(prog, "--checkpoint is also an output");
-    (void)err;
 }
 
 typedef struct {
