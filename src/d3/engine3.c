@@ -150,7 +150,17 @@ cfpo3_engine *cfpo3_create_given(const double *xyz, int64_t n, const cfpo3_optio
     cfpo3_engine *e = cfpo3_alloc(n, o, err, errlen);
     if (!e) return NULL;
     memcpy(e->pos, xyz, sizeof(double) * 3 * (size_t)n);
-    return finish_create(e, err, errlen);
+    e = finish_create(e, err, errlen);
+    if (!e) return NULL;
+    const int64_t g3 = (int64_t)e->G.g * e->G.g * e->G.g;
+    for (int64_t c = 0; c < g3; c++)
+        if (e->cstart[c + 1] - e->cstart[c] > CFPO3_INIT_MAX_CELL) {
+            snprintf(err, errlen, "a cell of the %dx%dx%d grid holds %lld of the given points (at most %d)", e->G.g,
+                     e->G.g, e->G.g, (long long)(e->cstart[c + 1] - e->cstart[c]), CFPO3_INIT_MAX_CELL);
+            cfpo3_free(e);
+            return NULL;
+        }
+    return e;
 }
 
 void cfpo3_measure(const cfpo3_engine *e, double *delta_min, double *delta_avg)

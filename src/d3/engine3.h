@@ -34,8 +34,14 @@ void cfpo3_options_default(cfpo3_options *o);
 
 typedef struct cfpo3_engine cfpo3_engine;
 
+/* The most given points one cell may hold (cfpo3_create_given): a
+ * cell's work grows fast with its count; the engine's own sets hold at
+ * most about 12. */
+#define CFPO3_INIT_MAX_CELL 64
+
 /* From n (the jittered start) or from given points (3n doubles in [0,1),
- * copied). NULL with one line in err (n too small, out of memory). */
+ * copied; refused when a cell holds more than CFPO3_INIT_MAX_CELL). NULL
+ * with one line in err (n too small, a crowded cell, out of memory). */
 cfpo3_engine *cfpo3_create(int64_t n, const cfpo3_options *o, char *err, size_t errlen);
 cfpo3_engine *cfpo3_create_given(const double *xyz, int64_t n, const cfpo3_options *o, char *err,
                                  size_t errlen);

@@ -173,8 +173,10 @@ static void solve_cell(cfpo3_engine *e, int ci, int cj, int ck, double emargin, 
         }
         double best[3];
         r->solved++;
-        /* a crowd beyond the solver's capacity (only from a given start):
-         * its nearest CFPO3_MAXM; the check below reads the whole block */
+        /* a block beyond the solver's capacity (possible only from a given
+         * start, whose cells hold at most CFPO3_INIT_MAX_CELL points): the
+         * solve sees x's nearest CFPO3_MAXM; the check below reads the
+         * whole block, so a move is still safe, only perhaps not the best */
         const int ms = m < CFPO3_MAXM ? m : CFPO3_MAXM;
         if (cfpo3_local_solve(s->rel, ms, lo, hi, t * t, best, s->poly, &s->cnt) < 0.0) continue;
         if (!(inside(best, lo, hi) && min_d2(s->rel, m, best) > t * t)) continue;

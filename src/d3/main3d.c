@@ -202,7 +202,7 @@ int main(int argc, char **argv)
                             (long long)cfpo3_grid_min_n());
         e = cfpo3_create_given(xyz, (int64_t)n, &c.o, err, sizeof err);
         free(xyz);
-        if (!e) cli_fail(prog, "%s", err);
+        if (!e) cli_fail(prog, "%s: %s", c.init, err);
     } else {
         e = cfpo3_create(c.n, &c.o, err, sizeof err);
         if (!e) cli_fail(prog, "%s", err);

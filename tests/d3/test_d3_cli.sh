@@ -74,6 +74,10 @@ paste -d' ' o.txt <(tail -n +3 o.xyz) | awk '{ if ($5 != 2.5 * $1 && ($5 - 2.5 *
 "$CFPO" -q --init o.csv --max-iter 2 -o i2.npy >/dev/null && ok || bad "--init from CSV"
 "$CFPO" -q --init o.raw -n 200 --max-iter 1 -o i3.npy >/dev/null && ok || bad "--init from raw"
 expect 2 "disagrees" --init o.npy -n 300 -o a.npy
+# a clustered start: 200 points in one cell
+awk 'BEGIN { srand(5); for (i = 0; i < 200; i++) printf "%.17g %.17g %.17g\n", 0.01 * rand(), 0.01 * rand(), 0.01 * rand() }' >clus.txt
+expect 1 "holds 200 of the given points (at most 64)" --init clus.txt -o a.npy
+rm -f clus.txt
 
 # stop rules
 "$CFPO" -q -n 324 --target-min 0.85 -o g.npy >g.log && grep -q "stop=target" g.log &&
