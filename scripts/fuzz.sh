@@ -13,7 +13,7 @@ S=${2:-60}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$B/artifacts"
 status=0
-for h in text csv npy raw ckpt numbers pgm png; do
+for h in text csv npy raw ckpt numbers pgm png d3ckpt d3points; do
   exe="$B/fuzz/fuzz_$h"
   [ -x "$exe" ] || { echo "fuzz: $exe missing (run make fuzz)" >&2; exit 1; }
   mkdir -p "$B/corpus/$h"

@@ -1,0 +1,183 @@
+/* engine3.c - the 3-D engine's life cycle: options, creation from n or
+ * from given points, buckets, measures, accessors (engine3.h). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine3_impl.h"
+#include "nn3.h"
+#include "rng.h"
+#include "solve3.h"
+
+#define SHIFT_STREAM 0x5a17f7e3c3d0b1a9ULL
+
+void cfpo3_options_default(cfpo3_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->seed = 1;
+    o->tol = CFPO3_DEFAULT_TOL;
+    o->relax = 1;
+    o->shift = 1;
+    o->skip = 1;
+}
+
+double cfpo3_bytes_per_point(int64_t n)
+{
+    cfpo3_grid G;
+    char err[16];
+    if (n < 1 || cfpo3_grid_choose(n, &G, err, sizeof err) != 0) return 0.0;
+    const double g3 = (double)G.g * G.g * G.g;
+    /* pos, prev, cellof, cids; per cell cstart, changed, solvedat, needm, fill;
+     * the measure's temporaries (knn: start, ids, cell, distances, ids). */
+    const double engine = (double)n * (24 + 24 + 4 + 8) + g3 * (8 + 8 + 8 + 8 + 8);
+    const double measure = (double)n * (8 + 8 + 4 + 8 + 8 + 8) + (double)n / 2.0 * 8 * 2;
+    return (engine + measure) / (double)n;
+}
+
+cfpo3_engine *cfpo3_alloc(int64_t n, const cfpo3_options *o, char *err, size_t errlen)
+{
+    cfpo3_grid G;
+    if (cfpo3_grid_choose(n, &G, err, errlen) != 0) return NULL;
+    cfpo3_engine *e = calloc(1, sizeof *e);
+    if (!e) goto oom;
+    e->G = G;
+    e->o = *o;
+    e->n = n;
+    const size_t g3 = (size_t)G.g * G.g * G.g;
+    e->pos = malloc(sizeof(double) * 3 * (size_t)n);
+    e->prev = malloc(sizeof(double) * 3 * (size_t)n);
+    e->cellof = malloc(sizeof(int32_t) * (size_t)n);
+    e->cids = malloc(sizeof(int64_t) * (size_t)n);
+    e->cstart = calloc(g3 + 1, sizeof(int64_t));
+    e->changed = calloc(g3, sizeof(uint64_t));
+    e->solvedat = calloc(g3, sizeof(uint64_t));
+    e->needm = calloc(g3, sizeof(double));
+    e->fill = malloc(sizeof(int64_t) * g3);
+    if (!e->fill || !e->pos || !e->prev || !e->cellof || !e->cids || !e->cstart || !e->changed || !e->solvedat ||
+        !e->needm) {
+        cfpo3_free(e);
+        goto oom;
+    }
+    return e;
+oom:
+    snprintf(err, errlen, "out of memory for %lld points", (long long)n);
+    return NULL;
+}
+
+void cfpo3_free(cfpo3_engine *e)
+{
+    if (!e) return;
+    free(e->pos), free(e->prev), free(e->cellof), free(e->cids), free(e->cstart);
+    free(e->changed), free(e->solvedat), free(e->needm), free(e->fill);
+    free(e);
+}
+
+void cfpo3_shift_for(const cfpo3_engine *e, int k, double s[3])
+{
+    if (!e->o.shift || k < 1) {
+        s[0] = s[1] = s[2] = 0.0;
+        return;
+    }
+    const int at = 1 + 4 * ((k - 1) / 4); /* shifted before 1, 5, 9, ... */
+    for (int a = 0; a < 3; a++) s[a] = cfpo_rand01(e->o.seed, SHIFT_STREAM, 3 * (uint64_t)at + (uint64_t)a) * e->G.L;
+}
+
+void cfpo3_rebucket(cfpo3_engine *e)
+{
+    const int g = e->G.g;
+    const size_t g3 = (size_t)g * g * g;
+    memset(e->cstart, 0, sizeof(int64_t) * (g3 + 1));
+    for (int64_t i = 0; i < e->n; i++) e->cstart[e->cellof[i] + 1]++;
+    for (size_t c = 0; c < g3; c++) e->cstart[c + 1] += e->cstart[c];
+    /* fill by id: the ids of a cell come out increasing */
+    int64_t *fill = e->fill;
+    memcpy(fill, e->cstart, sizeof(int64_t) * g3);
+    for (int64_t i = 0; i < e->n; i++) e->cids[fill[e->cellof[i]]++] = i;
+}
+
+void cfpo3_assign(cfpo3_engine *e)
+{
+    const int g = e->G.g;
+#pragma omp parallel for schedule(static)
+    for (int64_t i = 0; i < e->n; i++) {
+        const double *x = e->pos + 3 * i;
+        const int a = cfpo3_cell1(cfpo3_u(x[0], e->shift[0]), g);
+        const int b = cfpo3_cell1(cfpo3_u(x[1], e->shift[1]), g);
+        const int c = cfpo3_cell1(cfpo3_u(x[2], e->shift[2]), g);
+        e->cellof[i] = (int32_t)((c * g + b) * g + a);
+    }
+    cfpo3_rebucket(e);
+}
+
+int cfpo3_remeasure(cfpo3_engine *e)
+{
+    return cfpo3_nn_stats(e->pos, (size_t)e->n, NULL, &e->dmin, &e->davg);
+}
+
+static cfpo3_engine *finish_create(cfpo3_engine *e, char *err, size_t errlen)
+{
+    cfpo3_shift_for(e, e->iter, e->shift);
+    cfpo3_assign(e);
+    if (cfpo3_remeasure(e) != 0) {
+        snprintf(err, errlen, "out of memory for %lld points", (long long)e->n);
+        cfpo3_free(e);
+        return NULL;
+    }
+    return e;
+}
+
+cfpo3_engine *cfpo3_create(int64_t n, const cfpo3_options *o, char *err, size_t errlen)
+{
+    cfpo3_engine *e = cfpo3_alloc(n, o, err, errlen);
+    if (!e) return NULL;
+    if (cfpo3_start(n, o->seed, e->pos) != 0) {
+        snprintf(err, errlen, "out of memory for %lld points", (long long)n);
+        cfpo3_free(e);
+        return NULL;
+    }
+    return finish_create(e, err, errlen);
+}
+
+cfpo3_engine *cfpo3_create_given(const double *xyz, int64_t n, const cfpo3_options *o, char *err,
+                                 size_t errlen)
+{
+    for (int64_t i = 0; i < 3 * n; i++)
+        if (!(xyz[i] >= 0.0 && xyz[i] < 1.0)) {
+            snprintf(err, errlen, "point %lld has a coordinate outside [0,1)", (long long)(i / 3));
+            return NULL;
+        }
+    cfpo3_engine *e = cfpo3_alloc(n, o, err, errlen);
+    if (!e) return NULL;
+    memcpy(e->pos, xyz, sizeof(double) * 3 * (size_t)n);
+    e = finish_create(e, err, errlen);
+    if (!e) return NULL;
+    const int64_t g3 = (int64_t)e->G.g * e->G.g * e->G.g;
+    for (int64_t c = 0; c < g3; c++)
+        if (e->cstart[c + 1] - e->cstart[c] > CFPO3_INIT_MAX_CELL) {
+            snprintf(err, errlen, "a cell of the %dx%dx%d grid holds %lld of the given points (at most %d)", e->G.g,
+                     e->G.g, e->G.g, (long long)(e->cstart[c + 1] - e->cstart[c]), CFPO3_INIT_MAX_CELL);
+            cfpo3_free(e);
+            return NULL;
+        }
+    return e;
+}
+
+void cfpo3_measure(const cfpo3_engine *e, double *delta_min, double *delta_avg)
+{
+    *delta_min = e->dmin;
+    *delta_avg = e->davg;
+}
+
+int cfpo3_iterations(const cfpo3_engine *e) { return e->iter; }
+int64_t cfpo3_n(const cfpo3_engine *e) { return e->n; }
+const cfpo3_grid *cfpo3_grid_of(const cfpo3_engine *e) { return &e->G; }
+const cfpo3_options *cfpo3_options_of(const cfpo3_engine *e) { return &e->o; }
+const double *cfpo3_points(const cfpo3_engine *e) { return e->pos; }
+
+void cfpo3_work(const cfpo3_engine *e, long *cells, long *tests, long *cuts)
+{
+    *cells = e->count.cells;
+    *tests = e->count.tests;
+    *cuts = e->count.cuts;
+}

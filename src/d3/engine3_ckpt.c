@@ -1,0 +1,235 @@
+/* engine3_ckpt.c - the 3-D engine's checkpoint file (engine3.h).
+ *
+ * Version 1, little-endian, 64-byte header:
+ *    0  magic "CFPO3DCK"   8 bytes
+ *    8  version = 1        u32
+ *   12  header bytes = 64  u32
+ *   16  n                  u64   points (id order after the header)
+ *   24  seed               u64
+ *   32  iteration          u64   iterations done, in [0, 1e9]
+ *   40  tol                f64   in (0, CFPO_TOL_MAX]
+ *   48  flags              u32   bit 0 relax, bit 1 shift, bit 2 skip; no other bit
+ *   52  reserved           u32   0
+ *   56  reserved           u32   0
+ *   60  crc32              u32   zlib's crc32 of the header (this field as
+ *                                0) followed by the points
+ * then n points of 24 bytes (x, y, z as float64, each in [0,1)).
+ * The rest of the state is a function of these: the grid's shift (of the
+ * seed and the iteration), delta(X) (of the points); the skip stamps start
+ * empty, which solves every cell once and changes nothing (a skipped cell
+ * is one whose answer is "stay"). So a resumed run gives the bytes of an
+ * uninterrupted one. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+
+#include "engine3_impl.h"
+#include "safefile.h"
+#include "tmpguard.h"
+
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "the 3-D checkpoint code assumes a little-endian machine"
+#endif
+
+#define MAGIC "CFPO3DCK"
+#define HDR 64
+#define ITER_MAX 1000000000ULL
+#define N_MAX (1LL << 40)
+
+static void put32(unsigned char *b, uint32_t v) { memcpy(b, &v, 4); }
+static void put64(unsigned char *b, uint64_t v) { memcpy(b, &v, 8); }
+static uint32_t get32(const unsigned char *b)
+{
+    uint32_t v;
+    memcpy(&v, b, 4);
+    return v;
+}
+static uint64_t get64(const unsigned char *b)
+{
+    uint64_t v;
+    memcpy(&v, b, 8);
+    return v;
+}
+
+static uint32_t crc_of(const unsigned char *h, const double *pos, int64_t n)
+{
+    unsigned char hz[HDR];
+    memcpy(hz, h, HDR);
+    put32(hz + 60, 0);
+    uLong c = crc32(0L, Z_NULL, 0);
+    c = crc32(c, hz, HDR);
+    const unsigned char *p = (const unsigned char *)pos;
+    size_t left = sizeof(double) * 3 * (size_t)n;
+    while (left > 0) { /* crc32 takes a uInt length */
+        const uInt part = left > (1u << 30) ? (1u << 30) : (uInt)left;
+        c = crc32(c, p, part);
+        p += part;
+        left -= part;
+    }
+    return (uint32_t)c;
+}
+
+uint32_t cfpo3_checkpoint_crc(const unsigned char *buf, size_t len)
+{
+    if (len < HDR || (len - HDR) % 24 != 0) return 0;
+    unsigned char hz[HDR];
+    memcpy(hz, buf, HDR);
+    put32(hz + 60, 0);
+    uLong c = crc32(0L, Z_NULL, 0);
+    c = crc32(c, hz, HDR);
+    return (uint32_t)crc32(c, buf + HDR, (uInt)(len - HDR));
+}
+
+int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, size_t errlen)
+{
+    unsigned char h[HDR];
+    memset(h, 0, sizeof h);
+    memcpy(h, MAGIC, 8);
+    put32(h + 8, 1);
+    put32(h + 12, HDR);
+    put64(h + 16, (uint64_t)e->n);
+    put64(h + 24, e->o.seed);
+    put64(h + 32, (uint64_t)e->iter);
+    memcpy(h + 40, &e->o.tol, 8);
+    put32(h + 48, (uint32_t)((e->o.relax ? 1 : 0) | (e->o.shift ? 2 : 0) | (e->o.skip ? 4 : 0)));
+    put32(h + 60, crc_of(h, e->pos, e->n));
+    safefile f;
+    if (safefile_open(&f, path, "wb", err, errlen) != 0) return -1;
+    tmpguard_file(f.tmp);
+    char *tmp = strdup(f.tmp);
+    int ok = fwrite(h, 1, HDR, f.f) == HDR &&
+             fwrite(e->pos, sizeof(double), 3 * (size_t)e->n, f.f) == 3 * (size_t)e->n;
+    int rc;
+    if (!ok) {
+        snprintf(err, errlen, "%s: write failed", path);
+        safefile_abort(&f);
+        rc = -1;
+    } else {
+        rc = safefile_commit(&f, err, errlen);
+    }
+    if (tmp) tmpguard_forget(tmp);
+    free(tmp);
+    return rc;
+}
+
+cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const char *name, int threads,
+                                     char *err, size_t errlen)
+{
+    if (len < HDR || memcmp(buf, MAGIC, 8) != 0) {
+        snprintf(err, errlen, "%s: not a 3-D checkpoint (bad magic or too short)", name);
+        return NULL;
+    }
+    if (get32(buf + 8) != 1 || get32(buf + 12) != HDR) {
+        snprintf(err, errlen, "%s: unsupported 3-D checkpoint version %u", name, get32(buf + 8));
+        return NULL;
+    }
+    const uint64_t n = get64(buf + 16), it = get64(buf + 32);
+    const uint32_t flags = get32(buf + 48);
+    double tol;
+    memcpy(&tol, buf + 40, 8);
+    if (n > (uint64_t)N_MAX || (uint64_t)(len - HDR) / 24 != n || (len - HDR) % 24 != 0) {
+        snprintf(err, errlen, "%s: size does not match its point count", name);
+        return NULL;
+    }
+    if (it > ITER_MAX) {
+        snprintf(err, errlen, "%s: iteration out of range", name);
+        return NULL;
+    }
+    if (!(tol > 0.0 && tol <= CFPO_TOL_MAX)) {
+        snprintf(err, errlen, "%s: tolerance out of range", name);
+        return NULL;
+    }
+    if ((flags & ~7u) != 0 || get32(buf + 52) != 0 || get32(buf + 56) != 0) {
+        snprintf(err, errlen, "%s: bad flags or reserved fields", name);
+        return NULL;
+    }
+    double *pos = malloc(sizeof(double) * 3 * (size_t)(n ? n : 1));
+    if (!pos) {
+        snprintf(err, errlen, "%s: out of memory", name);
+        return NULL;
+    }
+    memcpy(pos, buf + HDR, sizeof(double) * 3 * (size_t)n);
+    if (crc_of(buf, pos, (int64_t)n) != get32(buf + 60)) {
+        snprintf(err, errlen, "%s: checksum mismatch (the file is corrupt)", name);
+        free(pos);
+        return NULL;
+    }
+    cfpo3_options o;
+    cfpo3_options_default(&o);
+    o.seed = get64(buf + 24);
+    o.tol = tol;
+    o.relax = (flags & 1) != 0;
+    o.shift = (flags & 2) != 0;
+    o.skip = (flags & 4) != 0;
+    o.threads = threads;
+    char e2[200];
+    cfpo3_engine *e = NULL;
+    if (n < 2) {
+        snprintf(e2, sizeof e2, "too few points");
+    } else {
+        e = cfpo3_alloc((int64_t)n, &o, e2, sizeof e2);
+    }
+    if (!e) {
+        snprintf(err, errlen, "%s: %s", name, e2);
+        free(pos);
+        return NULL;
+    }
+    for (uint64_t i = 0; i < 3 * n; i++)
+        if (!(pos[i] >= 0.0 && pos[i] < 1.0)) {
+            snprintf(err, errlen, "%s: point %llu has a coordinate outside [0,1)", name,
+                     (unsigned long long)(i / 3));
+            free(pos);
+            cfpo3_free(e);
+            return NULL;
+        }
+    memcpy(e->pos, pos, sizeof(double) * 3 * (size_t)n);
+    free(pos);
+    e->iter = (int)it;
+    cfpo3_shift_for(e, e->iter, e->shift);
+    cfpo3_assign(e);
+    if (cfpo3_remeasure(e) != 0) {
+        snprintf(err, errlen, "%s: out of memory", name);
+        cfpo3_free(e);
+        return NULL;
+    }
+    return e;
+}
+
+cfpo3_engine *cfpo3_checkpoint_read(const char *path, int threads, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, errlen, "%s: cannot open checkpoint", path);
+        return NULL;
+    }
+    unsigned char *buf = NULL;
+    size_t len = 0, cap = 0;
+    for (;;) {
+        if (len == cap) {
+            cap = cap ? cap * 2 : 1 << 16;
+            unsigned char *nb = realloc(buf, cap);
+            if (!nb) {
+                free(buf);
+                fclose(f);
+                snprintf(err, errlen, "%s: out of memory", path);
+                return NULL;
+            }
+            buf = nb;
+        }
+        const size_t got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        if (got == 0) break;
+    }
+    const int bad = ferror(f);
+    fclose(f);
+    if (bad) {
+        free(buf);
+        snprintf(err, errlen, "%s: read error", path);
+        return NULL;
+    }
+    cfpo3_engine *e = cfpo3_checkpoint_parse(buf, len, path, threads, err, errlen);
+    free(buf);
+    return e;
+}

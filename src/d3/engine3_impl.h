@@ -1,0 +1,62 @@
+/* engine3_impl.h - the 3-D engine's state, shared by engine3.c (create,
+ * buckets, measure), engine3_step.c (the iteration) and engine3_ckpt.c
+ * (checkpoints) and by no other file.
+ *
+ * Frame: the grid is shifted by s (each axis in [0, L)); a point's grid
+ * coordinate is u = x - s wrapped into [0,1) and its cell floor(u g).
+ * Cell index: (k g + j) g + i. Buckets: the ids of cell c are
+ * cids[cstart[c] .. cstart[c+1]), increasing. Skip stamps: changed[c] is
+ * the last phase that moved a point in or out of (or inside) c, solvedat[c]
+ * the phase c was last solved in, needm[c] the largest L - t of its points
+ * then; c is solved again when a cell of its block changed since, or the
+ * margin fell below needm[c], or the grid moved. */
+#ifndef CFPO_ENGINE3_IMPL_H
+#define CFPO_ENGINE3_IMPL_H
+
+#include "engine3.h"
+#include "solve3.h"
+
+struct cfpo3_engine {
+    cfpo3_grid G;
+    cfpo3_options o;
+    int64_t n;
+    int iter;              /* iterations done */
+    double *pos;           /* 3n, in [0,1), by id */
+    double *prev;          /* 3n: the set at the start of the iteration */
+    double shift[3];
+    int32_t *cellof;       /* n */
+    int64_t *cstart;       /* g^3 + 1 */
+    int64_t *cids;         /* n */
+    uint64_t *changed, *solvedat; /* g^3 */
+    double *needm;         /* g^3 */
+    int64_t *fill;         /* g^3: the rebucketing's cursors */
+    uint64_t phase;        /* phases run (the stamps' clock) */
+    double dmin, davg;     /* the current set, over Delta3 */
+    cfpo3_solve_count count; /* the solver's work so far (for measuring) */
+};
+
+/* u of coordinate x under shift s: wrapped into [0,1). */
+static inline double cfpo3_u(double x, double s)
+{
+    double u = x - s;
+    if (u < 0.0) u += 1.0;
+    return u >= 1.0 ? 0.0 : u;
+}
+static inline int cfpo3_cell1(double u, int g)
+{
+    int c = (int)(u * g);
+    return c < 0 ? 0 : (c >= g ? g - 1 : c);
+}
+/* The shift of the grid in force during iteration k (1-based). */
+void cfpo3_shift_for(const cfpo3_engine *e, int k, double s[3]);
+/* Puts every point in its cell (after a shift or moves across cells). */
+void cfpo3_rebucket(cfpo3_engine *e);
+/* Recomputes cellof from pos and the shift, then rebuckets. */
+void cfpo3_assign(cfpo3_engine *e);
+/* Allocates an engine for n points with the given grid (pos unset).
+ * NULL with a message. */
+cfpo3_engine *cfpo3_alloc(int64_t n, const cfpo3_options *o, char *err, size_t errlen);
+/* Measures the current set into e->dmin, e->davg. 0 or -1 (memory). */
+int cfpo3_remeasure(cfpo3_engine *e);
+
+#endif

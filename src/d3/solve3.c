@@ -1,0 +1,257 @@
+/* solve3.c - see solve3.h. The clipping: Sutherland-Hodgman on every face
+ * loop, a cut edge's new vertex made once (an edge map keyed by its two
+ * old vertices, computed from the inside end), and the cap face on the
+ * plane ordered by pseudo-angle in the projection that drops the normal's
+ * largest axis (a linear map of the plane, so it keeps the cyclic order).
+ * Vertices with n.c - off <= 0 are inside: a vertex exactly on the plane
+ * stays and joins the cap (the degenerate vertices of crystalline
+ * neighbourhoods). */
+#include "solve3.h"
+
+void cfpo3_poly_box(cfpo3_poly *p, const double lo[3], const double hi[3])
+{
+    for (int i = 0; i < 8; i++) {
+        p->v[i][0] = (i & 1) ? hi[0] : lo[0];
+        p->v[i][1] = (i & 2) ? hi[1] : lo[1];
+        p->v[i][2] = (i & 4) ? hi[2] : lo[2];
+    }
+    p->nv = 8;
+    /* faces x = lo, x = hi, y = lo, y = hi, z = lo, z = hi, as loops */
+    static const int loops[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                    {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+    p->nf = 6;
+    for (int f = 0; f < 6; f++) {
+        p->fs[f] = 4 * f;
+        for (int k = 0; k < 4; k++) p->fi[4 * f + k] = loops[f][k];
+    }
+    p->fs[6] = 24;
+}
+
+double cfpo3_poly_far(const cfpo3_poly *p, const double y[3], int *at)
+{
+    double far = -1.0;
+    int w = -1;
+    for (int i = 0; i < p->nv; i++) {
+        const double dx = p->v[i][0] - y[0], dy = p->v[i][1] - y[1], dz = p->v[i][2] - y[2];
+        const double d = dx * dx + dy * dy + dz * dz;
+        if (d > far) {
+            far = d;
+            w = i;
+        }
+    }
+    if (at) *at = w;
+    return far;
+}
+
+static double pseudo_angle(double dx, double dy)
+{
+    const double s = fabs(dx) + fabs(dy);
+    if (s == 0.0) return 0.0;
+    const double p = dy / s;
+    if (dx < 0.0) return 2.0 - p;
+    return dy < 0.0 ? 4.0 + p : p;
+}
+
+int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], double off)
+{
+    double d[P3_MAXV];
+    int out = 0;
+    for (int i = 0; i < p->nv; i++) {
+        d[i] = n[0] * p->v[i][0] + n[1] * p->v[i][1] + n[2] * p->v[i][2] - off;
+        out += d[i] > 0.0;
+    }
+    if (out == 0) return 0;
+    if (out == p->nv) return -1;
+    /* inside vertices keep their coordinates under new indices */
+    int map[P3_MAXV];
+    int nv = 0;
+    for (int i = 0; i < p->nv; i++) {
+        if (d[i] <= 0.0) {
+            map[i] = nv;
+            q->v[nv][0] = p->v[i][0];
+            q->v[nv][1] = p->v[i][1];
+            q->v[nv][2] = p->v[i][2];
+            nv++;
+        } else {
+            map[i] = -1;
+        }
+    }
+    /* cut edges: (inside end, outside end) -> new vertex */
+    int ea[P3_MAXV], eb[P3_MAXV], ev[P3_MAXV];
+    int ne = 0;
+    int nf = 0, ni = 0;
+    for (int f = 0; f < p->nf; f++) {
+        const int s0 = p->fs[f], len = p->fs[f + 1] - s0;
+        const int start = ni;
+        int nout = 0;
+        for (int k = 0; k < len; k++) nout += map[p->fi[s0 + k]] < 0;
+        if (nout == len) continue; /* the whole face is cut away */
+        if (ni + 2 * len > P3_MAXI) return -2;
+        if (nout == 0) { /* the whole face stays */
+            for (int k = 0; k < len; k++) q->fi[ni++] = map[p->fi[s0 + k]];
+            q->fs[nf++] = start;
+            if (nf >= P3_MAXF) return -2;
+            continue;
+        }
+        for (int k = 0; k < len; k++) {
+            const int a = p->fi[s0 + k], b = p->fi[k + 1 == len ? s0 : s0 + k + 1];
+            const int ina = map[a] >= 0, inb = map[b] >= 0;
+            if (ina && (ni == start || q->fi[ni - 1] != map[a])) q->fi[ni++] = map[a];
+            if (ina != inb) {
+                const int vi = ina ? a : b, vo = ina ? b : a;
+                int nvx = -1;
+                if (d[vi] == 0.0) {
+                    nvx = map[vi];
+                } else {
+                    for (int e = 0; e < ne; e++)
+                        if (ea[e] == vi && eb[e] == vo) {
+                            nvx = ev[e];
+                            break;
+                        }
+                    if (nvx < 0) {
+                        if (nv >= P3_MAXV || ne >= P3_MAXV) return -2;
+                        const double t = d[vi] / (d[vi] - d[vo]);
+                        for (int c = 0; c < 3; c++)
+                            q->v[nv][c] = p->v[vi][c] + (p->v[vo][c] - p->v[vi][c]) * t;
+                        ea[ne] = vi;
+                        eb[ne] = vo;
+                        ev[ne] = nv;
+                        ne++;
+                        nvx = nv++;
+                    }
+                }
+                if (ni == start || q->fi[ni - 1] != nvx) q->fi[ni++] = nvx;
+            }
+        }
+        while (ni - start > 1 && q->fi[ni - 1] == q->fi[start]) ni--;
+        if (ni > start) {
+            if (nf >= P3_MAXF) return -2;
+            q->fs[nf++] = start;
+        }
+    }
+    /* the cap: new vertices and inside vertices on the plane */
+    int cap[P3_MAXV], nc = 0;
+    for (int i = 0; i < p->nv; i++)
+        if (d[i] == 0.0) cap[nc++] = map[i];
+    for (int e = 0; e < ne; e++) cap[nc++] = ev[e];
+    if (nc >= 3) {
+        if (nf >= P3_MAXF || ni + nc > P3_MAXI) return -2;
+        int ax = 0;
+        if (fabs(n[1]) > fabs(n[ax])) ax = 1;
+        if (fabs(n[2]) > fabs(n[ax])) ax = 2;
+        const int u = ax == 0 ? 1 : 0, w = ax == 2 ? 1 : 2;
+        double cu = 0.0, cw = 0.0;
+        for (int k = 0; k < nc; k++) {
+            cu += q->v[cap[k]][u];
+            cw += q->v[cap[k]][w];
+        }
+        cu /= nc;
+        cw /= nc;
+        double ang[P3_MAXV];
+        for (int k = 0; k < nc; k++) ang[k] = pseudo_angle(q->v[cap[k]][u] - cu, q->v[cap[k]][w] - cw);
+        for (int k = 1; k < nc; k++) { /* insertion sort: stable, few items */
+            const double a = ang[k];
+            const int c = cap[k];
+            int j = k - 1;
+            while (j >= 0 && ang[j] > a) {
+                ang[j + 1] = ang[j];
+                cap[j + 1] = cap[j];
+                j--;
+            }
+            ang[j + 1] = a;
+            cap[j + 1] = c;
+        }
+        q->fs[nf++] = ni;
+        for (int k = 0; k < nc; k++) q->fi[ni++] = cap[k];
+    }
+    q->fs[nf] = ni;
+    q->nf = nf;
+    q->nv = nv;
+    return 1;
+}
+
+double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double floor2,
+                         double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count)
+{
+    if (m <= 0 || m > CFPO3_MAXM) return -1.0;
+    double bestd = floor2 > 0.0 ? floor2 : -1.0;
+    int found = 0;
+    cfpo3_poly box;
+    double key[CFPO3_MAXM];
+    int ord[CFPO3_MAXM];
+    cfpo3_poly_box(&box, lo, hi);
+    for (int i = 0; i < m; i++) {
+        const double *yi = y + 3 * i;
+        double far = cfpo3_poly_far(&box, yi, NULL);
+        if (far <= bestd) continue;
+        /* One pass over the other sites: the kill test (one bisector puts
+         * the whole box on y_j's side: the cell misses S), and the sites
+         * whose bisector can reach the box, nearest to y_i first (their
+         * bisectors cut most). */
+        int killed = 0, no = 0;
+        for (int j = 0; j < m; j++) {
+            if (j == i) continue;
+            const double *yj = y + 3 * j;
+            const double nv[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
+            const double dd = nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2];
+            const double off = nv[0] * yi[0] + nv[1] * yi[1] + nv[2] * yi[2] + 0.5 * dd;
+            double low = 0.0; /* the box's smallest n.c */
+            for (int a = 0; a < 3; a++) low += nv[a] * (nv[a] > 0.0 ? lo[a] : hi[a]);
+            if (low - off > 1e-12 * (dd + fabs(off))) {
+                killed = 1;
+                break;
+            }
+            if (dd >= 4.0 * far) continue;
+            int at = no++;
+            while (at > 0 && key[at - 1] > dd) {
+                key[at] = key[at - 1];
+                ord[at] = ord[at - 1];
+                at--;
+            }
+            key[at] = dd;
+            ord[at] = j;
+        }
+        if (killed) continue;
+        if (count) count->cells++;
+        const cfpo3_poly *cur = &box;
+        int which = 0, empty = 0, abandoned = 0;
+        for (int k = 0; k < no; k++) {
+            const int j = ord[k];
+            const double *yj = y + 3 * j;
+            const double nv[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
+            const double dd = key[k];
+            if (dd >= 4.0 * far) break; /* this plane and the later ones lie beyond every vertex */
+            if (count) count->tests++;
+            /* (c - yi).nv <= dd/2 */
+            const double off = nv[0] * yi[0] + nv[1] * yi[1] + nv[2] * yi[2] + 0.5 * dd;
+            const int r = cfpo3_poly_clip(cur, &scratch[which], nv, off);
+            if (r == 0 || r == -2) continue;
+            if (r == -1) {
+                empty = 1;
+                break;
+            }
+            if (count) count->cuts++;
+            cur = &scratch[which];
+            which ^= 1;
+            far = cfpo3_poly_far(cur, yi, NULL);
+            if (far <= bestd) {
+                abandoned = 1;
+                break;
+            }
+        }
+        if (empty || abandoned) continue;
+        int at;
+        far = cfpo3_poly_far(cur, yi, &at);
+        if (far > bestd) {
+            bestd = far;
+            found = 1;
+            best[0] = cur->v[at][0];
+            best[1] = cur->v[at][1];
+            best[2] = cur->v[at][2];
+        }
+    }
+    /* clamp into S (a vertex may stray from a face by rounding) */
+    if (!found) return -1.0;
+    for (int c = 0; c < 3; c++) best[c] = best[c] < lo[c] ? lo[c] : (best[c] > hi[c] ? hi[c] : best[c]);
+    return bestd;
+}

@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# test_d3_cli.sh BUILD_DIR - the cfpo3d and cfpo3d-analyze commands: bad
+# input refused in one line with exit 2 (usage) or 1 (runtime) and no file
+# left; the same bytes for 1, 2 and 3 threads; a resume from a checkpoint
+# the bytes of the uninterrupted run; --init from the command's own output;
+# every output format written, the box scaling of the XYZ and LAMMPS files;
+# the stop rules and the SUMMARY line; cfpo3d-analyze on a run's output.
+set -u
+B=$(cd "$1" && pwd)
+CFPO="$B/cfpo3d"
+AN="$B/cfpo3d-analyze"
+T=$(mktemp -d /tmp/cfpo3d-cli-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 1
+. "$(dirname "$0")/../cli_expect.sh"
+
+# bad input: usage errors (2)
+expect 2 "too small" -n 38 -o a.npy
+expect 2 "positive whole number" -n 0 -o a.npy
+expect 2 "unknown output format" -n 100 -o a.png
+expect 2 "box" -n 100 --box 0 -o a.xyz
+expect 2 "box" -n 100 --box nan -o a.xyz
+expect 2 "box" -n 100 --box -1 -o a.xyz
+expect 2 "tol" -n 100 --tol 0 -o a.npy
+expect 2 "threads" -n 100 -t 0 -o a.npy
+expect 2 "unrecognized\|unknown" -n 100 --dim 4 -o a.npy
+expect 2 "needs a value" -n 100 -o
+expect 2 "required" -o a.npy
+expect 2 "exclude" -n 100 --init x.npy --resume y.bin
+expect 2 "checkpoint-every needs" -n 100 --checkpoint-every 3
+expect 2 "target" -n 100 --target-min 0 -o a.npy
+# runtime failures (1)
+expect 1 "cannot open" --init missing.npy -o a.npy
+printf '0.1 0.2\n' >bad.txt
+expect 1 "expected three numbers" --init bad.txt -o a.npy
+rm -f bad.txt
+expect 1 "cannot open checkpoint" --resume missing.bin -o a.npy
+expect 1 "cannot create" -n 100 -o nofolder/a.npy
+{ printf 'CFPO3DCK\x09\x00\x00\x00\x40\x00\x00\x00'; head -c 48 /dev/zero; } >bad.bin
+expect 1 "version" --resume bad.bin -o a.npy
+rm -f bad.bin
+
+# the same bytes for 1, 2, 3 threads
+for t in 1 2 3; do "$CFPO" -q -n 324 --max-iter 6 -t $t -o t$t.npy >s$t.log || bad "run with $t threads"; done
+cmp -s t1.npy t2.npy && cmp -s t1.npy t3.npy && ok || bad "threads 1, 2, 3 give different bytes"
+grep -q "^SUMMARY method=cfpo3d variant=adaptive n=324 .* iterations=6 .*stop=max-iter" s1.log && ok ||
+  bad "SUMMARY line: $(cat s1.log)"
+grep -q "^BOX3D side=1 delta_min_box=.* packing_fraction=" s1.log && ok || bad "BOX3D line"
+
+# resume: 3 + 3 iterations, and 4 + 2 (a grid shift at 5)
+for k in 3 4; do
+  "$CFPO" -q -n 324 --max-iter $k --checkpoint ck$k.bin >/dev/null || bad "checkpointed run"
+  "$CFPO" -q --max-iter 6 --resume ck$k.bin -t 3 -o r$k.npy >/dev/null || bad "resume"
+  cmp -s r$k.npy t1.npy && ok || bad "resume after $k iterations differs"
+done
+expect 2 "resume takes" --resume ck3.bin --seed 4 -o a.npy
+expect 2 "disagrees" -n 601 --resume ck3.bin -o a.npy
+# a flipped byte in the points
+cp ck3.bin flip.bin
+printf '\x01' | dd of=flip.bin bs=1 seek=100 conv=notrunc status=none
+expect 1 "checksum" --resume flip.bin -o a.npy
+rm -f flip.bin
+
+# every format, the box scaling; --init from the text output
+"$CFPO" -q -n 200 --max-iter 3 --box 2.5 -o o.npy -o o.txt -o o.csv -o o.raw -o o.xyz -o o.data >/dev/null ||
+  bad "multi-format run"
+[ "$(head -1 o.xyz)" = 200 ] && sed -n 2p o.xyz | grep -q 'Lattice="2.5 0 0 0 2.5 0 0 0 2.5"' && ok || bad "xyz header"
+grep -q "^0 2.5 zlo zhi" o.data && grep -q "^200 atoms" o.data && ok || bad "LAMMPS header"
+# x in the xyz file is 2.5 x in the text file
+paste -d' ' o.txt <(tail -n +3 o.xyz) | awk '{ if ($5 != 2.5 * $1 && ($5 - 2.5 * $1 > 1e-15 || 2.5 * $1 - $5 > 1e-15)) bad++ } END { exit bad > 0 }' &&
+  ok || bad "xyz coordinates are not 2.5 times the text file's"
+[ "$(ls -A | grep -c tmp)" = 0 ] && ok || bad "temporaries left"
+"$CFPO" -q --init o.txt --max-iter 0 -o i.npy >/dev/null && cmp -s i.npy o.npy && ok || bad "--init o.txt --max-iter 0 does not give o.npy"
+"$CFPO" -q --init o.csv --max-iter 2 -o i2.npy >/dev/null && ok || bad "--init from CSV"
+"$CFPO" -q --init o.raw -n 200 --max-iter 1 -o i3.npy >/dev/null && ok || bad "--init from raw"
+expect 2 "disagrees" --init o.npy -n 300 -o a.npy
+# a clustered start: 200 points in one cell
+awk 'BEGIN { srand(5); for (i = 0; i < 200; i++) printf "%.17g %.17g %.17g\n", 0.01 * rand(), 0.01 * rand(), 0.01 * rand() }' >clus.txt
+expect 1 "holds 200 of the given points (at most 64)" --init clus.txt -o a.npy
+rm -f clus.txt
+
+# stop rules
+"$CFPO" -q -n 324 --target-min 0.85 -o g.npy >g.log && grep -q "stop=target" g.log &&
+  awk '/^SUMMARY/ { for (i = 1; i <= NF; i++) if ($i ~ /^delta_min=/) { split($i, a, "="); exit !(a[2] >= 0.85) } }' g.log &&
+  ok || bad "--target-min: $(cat g.log)"
+"$CFPO" -q -n 324 --time-limit 0.001 >tl.log && grep -q "stop=time" tl.log && ok || bad "--time-limit"
+"$CFPO" -q -n 100 --tol 0.4 >cv.log && grep -q "converged=yes.*stop=converged" cv.log && ok || bad "convergence: $(cat cv.log)"
+"$CFPO" --dry-run -n 65536 | grep -q "grid=33^3" && ok || bad "--dry-run"
+
+# the analysis of a run's output
+"$AN" t1.npy >an.log && grep -q "^ANALYZE3D n=324 delta_min=.* q6_global=.* crystal_like=" an.log && ok || bad "analyze"
+d1=$(awk '/^SUMMARY/ { for (i = 1; i <= NF; i++) if ($i ~ /^delta_min=/) { split($i, a, "="); print a[2] } }' s1.log)
+d2=$(awk '{ for (i = 1; i <= NF; i++) if ($i ~ /^delta_min=/) { split($i, a, "="); print a[2] } }' an.log)
+[ "$d1" = "$d2" ] && ok || bad "analyze delta_min $d2, run $d1"
+CFPO="$AN"
+expect 2 "one input file" 
+expect 1 "cannot open" missing.npy
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
