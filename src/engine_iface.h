@@ -4,10 +4,13 @@
  * An engine is a pointer to its state and a table of what it does:
  * one iteration (statistics reduced over ranks), the set as it stands,
  * its points out (into a file shared by every rank, or through one
- * rank's point-file writer), a checkpoint in the one format (ckpt.h), its
- * per-rank timers, and its end. The uniform engine (engine.h; its table
- * in engine_ops.c) and the density engine (dens_engine.h; dens_ops.c)
- * fill it; engines.h makes the one a run asks for. What they share is
+ * rank's point-file writer), a checkpoint, its per-rank timers, and its
+ * end. The uniform engine (engine.h; its table in engine_ops.c) and the
+ * density engine (dens_engine.h; dens_ops.c) fill it, with checkpoints in
+ * the one 2-D format (ckpt.h); engines.h makes the one a 2-D run asks
+ * for. The 3-D engine (src/d3/engine3_ops.c) fills it too: its points are
+ * n x 3, so its point writers (put_points, put_text, copy) are NULL and
+ * its files and checkpoints are its own (src/d3/). What they share is
  * written once above this line: the stop rules, progress, periodic and
  * signalled checkpoints (run_loop.c), the output files (runfiles.c).
  * May include: cfpo_types.h, comm.h, pointfile.h (layers 0-2). */

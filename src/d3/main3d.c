@@ -11,12 +11,40 @@
 
 #include "cli.h"
 #include "engine3.h"
+#include "engine3_ops.h"
 #include "omp_compat.h"
 #include "points3.h"
+#include "run_loop.h"
+#include "runsignal.h"
 #include "solve3.h"
 #include "stoprule.h"
 
 static const char *prog = "cfpo3d";
+
+/* The progress line and the trace, after every iteration (the run loop's
+ * callback). */
+typedef struct {
+    cli_progress *pr;
+    FILE *trace;
+    double t0;
+    int started; /* the loop's first call is the set before any iteration */
+} run_ctx;
+
+static int on_iteration(const cfpo_iter_stats *st, void *user)
+{
+    run_ctx *x = user;
+    if (!x->started) { /* the set before the first iteration: no line, no row */
+        x->started = 1;
+        return 0;
+    }
+    cli_progress_line(x->pr, 0, "iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  solved %lld  %.2fs/iter  elapsed %.1fs",
+                      st->iteration, st->delta_min, st->delta_avg, (long long)st->moved, (long long)st->solved,
+                      st->seconds, cli_now() - x->t0);
+    if (x->trace)
+        fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f\n", st->iteration, st->delta_min, st->delta_avg,
+                (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds);
+    return 0;
+}
 #define MAX_OUT 8
 
 static void usage(void)
@@ -215,33 +243,33 @@ int main(int argc, char **argv)
     }
     cli_progress pr;
     cli_progress_init(&pr, c.quiet);
-    cfpo_iter_stats st;
-    memset(&st, 0, sizeof st);
-    cfpo3_measure(e, &st.delta_min, &st.delta_avg);
-    st.iteration = cfpo3_iterations(e);
-    int stop = CFPO_STOP_NONE, converged = 0;
-    if (cfpo_stop_targets_met(&c.stop, st.delta_min, st.delta_avg)) stop = CFPO_STOP_TARGET;
-    else if (st.iteration >= c.max_iter) stop = CFPO_STOP_MAX_ITER;
-    while (stop == CFPO_STOP_NONE) {
-        if (cfpo3_step(e, &st) != 0) cli_fail(prog, "out of memory");
-        converged = st.converged;
-        const double el = cli_now() - t0;
-        cli_progress_line(&pr, 0, "iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  solved %lld  %.2fs/iter  elapsed %.1fs",
-                          st.iteration, st.delta_min, st.delta_avg, (long long)st.moved, (long long)st.solved,
-                          st.seconds, el);
-        if (c.trace)
-            fprintf(tr.f, "%d %.6f %.6f %lld %lld %.6g %.4f\n", st.iteration, st.delta_min, st.delta_avg,
-                    (long long)st.moved, (long long)st.solved, st.max_disp, st.seconds);
-        stop = cfpo_stop_check(&c.stop, &st, el, c.max_iter);
-        if (c.ckpt && stop == CFPO_STOP_NONE && st.iteration % c.every == 0 &&
-            cfpo3_checkpoint_write(e, c.ckpt, err, sizeof err) != 0)
-            cli_fail(prog, "%s", err);
-    }
+    /* the one run loop (src/run_loop.h) over the engine's table */
+    run_ctx ctx = {.pr = &pr, .trace = c.trace ? tr.f : NULL, .t0 = t0};
+    cfpo_options lo;
+    memset(&lo, 0, sizeof lo);
+    lo.max_iter = c.max_iter;
+    lo.stop = c.stop;
+    lo.progress = on_iteration;
+    lo.user = &ctx;
+    cfpo_run_engine R;
+    cfpo3_as_run(e, &lo, t0, &R);
+    if (c.ckpt) runsignal_install(); /* SIGTERM / SIGUSR1: a checkpoint, then exit 3 */
+    cfpo_result res;
+    const int rc = cfpo_run_loop(&R, c.ckpt, c.ckpt ? c.every : 0, &res, err, sizeof err);
+    runsignal_restore();
     cli_progress_end(&pr);
-    if (c.ckpt && cfpo3_checkpoint_write(e, c.ckpt, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-    if (c.trace && cli_atomic_commit(&tr, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-    for (int i = 0; i < c.nout; i++)
-        if (p3_write(c.out[i], cfpo3_points(e), (size_t)n, c.box, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    if (rc != 0) {
+        if (c.trace) cli_atomic_abort(&tr);
+        cli_fail(prog, "%s", err);
+    }
+    const int stop = res.stop, converged = res.converged;
+    if (stop == CFPO_STOP_SIGNAL) {
+        if (c.trace) cli_atomic_abort(&tr);
+    } else {
+        if (c.trace && cli_atomic_commit(&tr, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        for (int i = 0; i < c.nout; i++)
+            if (p3_write(c.out[i], cfpo3_points(e), (size_t)n, c.box, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    }
     double dmin, davg;
     cfpo3_measure(e, &dmin, &davg);
     const cfpo3_options *o = cfpo3_options_of(e);
@@ -258,6 +286,9 @@ int main(int argc, char **argv)
         cfpo3_work(e, &cells, &tests, &cuts);
         printf("WORK3D cells=%ld tests=%ld cuts=%ld\n", cells, tests, cuts);
     }
+    if (stop == CFPO_STOP_SIGNAL)
+        fprintf(stderr, "cfpo3d: stopped by a signal at iteration %d; checkpoint %s written, no output; continue "
+                "with --resume %s\n", res.iterations, c.ckpt, c.ckpt);
     cfpo3_free(e);
-    return 0;
+    return stop == CFPO_STOP_SIGNAL ? 3 : 0;
 }

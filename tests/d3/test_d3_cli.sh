@@ -53,6 +53,24 @@ for k in 3 4; do
   "$CFPO" -q --max-iter 6 --resume ck$k.bin -t 3 -o r$k.npy >/dev/null || bad "resume"
   cmp -s r$k.npy t1.npy && ok || bad "resume after $k iterations differs"
 done
+# the one run loop's signals: SIGUSR1 (a batch scheduler's warning) with
+# --checkpoint ends the run at the next iteration boundary, the checkpoint
+# written, no output, exit 3; the resume gives the uninterrupted bytes
+"$CFPO" -q -n 20000 -t 1 --checkpoint sig.bin --checkpoint-every 1000 -o sig.npy >/dev/null 2>sig.err &
+pid=$!
+sleep 2
+kill -USR1 $pid
+wait $pid
+rc=$?
+it=$(sed -n 's/.*stopped by a signal at iteration \([0-9]*\);.*/\1/p' sig.err)
+[ $rc -eq 3 ] && [ -n "$it" ] && [ -f sig.bin ] && [ ! -e sig.npy ] && ok ||
+  bad "SIGUSR1: exit $rc, iteration '$it': $(cat sig.err)"
+if [ -n "$it" ]; then
+  "$CFPO" -q --max-iter $((it + 1)) --resume sig.bin -t 2 -o sigr.npy >/dev/null
+  "$CFPO" -q -n 20000 --max-iter $((it + 1)) -t 2 -o sigu.npy >/dev/null
+  cmp -s sigr.npy sigu.npy && ok || bad "resume after SIGUSR1 at $it differs from the uninterrupted run"
+fi
+rm -f sig.bin sig.err sigr.npy sigu.npy
 expect 2 "resume takes" --resume ck3.bin --seed 4 -o a.npy
 expect 2 "disagrees" -n 601 --resume ck3.bin -o a.npy
 # a flipped byte in the points
