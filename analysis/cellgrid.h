@@ -1,6 +1,6 @@
 /* cellgrid.h - the points of a set on the unit torus by the cells of a g x g
  * grid of about 2 points a cell, g = floor(sqrt(n / 2)): the grid the
- * core's nearest-neighbour statistics use (src/stats.c), in the same order
+ * core's nearest-neighbour statistics use (src/solver/stats.c), in the same order
  * (cells by rows, points by index inside a cell). */
 #ifndef AN_CELLGRID_H
 #define AN_CELLGRID_H

@@ -1,7 +1,7 @@
 /* dda.h - the differential-domain spectrum of a point set under a density
  * (Wei and Wang, "Differential domain analysis for non-uniform sampling",
  * ACM TOG 30(4), 2011), with the symmetric normalisation of the density
- * measures (src/dens_measure.h): the spectrum adaptive sets get at all.
+ * measures (src/density/dens_measure.h): the spectrum adaptive sets get at all.
  *
  * Owns the definition (analysis/README.md, "Differential-domain
  * spectrum"). With local spacing r = Delta(n) / sqrt(rho), each pair's
@@ -65,7 +65,7 @@ double an_dda_window_ft(double k2, double radius, size_t n);
 
 /* The summary of a spectrum S of n points: the highest ring mean (rings
  * of rings.h) and its ring over sqrt(n), the mean of S over the
- * low-frequency band 0 < |k| <= 0.2 sqrt(n) (src/geom.h), and the mean
+ * low-frequency band 0 < |k| <= 0.2 sqrt(n) (src/solver/geom.h), and the mean
  * anisotropy (dB) over the rings 0.5 sqrt(n)..2 sqrt(n) within K. */
 typedef struct {
     double peak, peak_freq, low, aniso_db;

@@ -2,7 +2,7 @@
  * follows a density (docs/method.md, "Density").
  *
  *   delta_min, delta_avg  under the symmetric measure of
- *                         src/dens_measure.h (today's delta_min and
+ *                         src/density/dens_measure.h (today's delta_min and
  *                         delta_avg when rho = 1);
  *   histogram             of each point's smallest measure (its nearest
  *                         neighbour's distance over the local spacing

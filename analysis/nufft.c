@@ -1,5 +1,5 @@
 /* nufft.c - the periodogram by the type-1 non-uniform FFT (see power.h):
- * f(k) = sum_j exp(-2 pi i k.x_j) from the core library's NUFFT (src/nufft.h:
+ * f(k) = sum_j exp(-2 pi i k.x_j) from the core library's NUFFT (src/solver/nufft.h:
  * the exponential-of-semicircle kernel, oversampling 2, fixed-point
  * spreading, FFTW), then P(k) = |f(k)|^2 / n. The result does not depend
  * on the number of threads (nufft.h says why). */

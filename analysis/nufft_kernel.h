@@ -1,10 +1,10 @@
 /* nufft_kernel.h - the spreading kernel of the differential-domain
  * spectrum's weighted type-1 non-uniform FFT (dda.c; the unweighted one of
- * the periodogram is the core's, src/nufft.h, in fixed point): the
+ * the periodogram is the core's, src/solver/nufft.h, in fixed point): the
  * "exponential of semicircle"
  * phi(t) = exp(beta (sqrt(1 - (t/alpha)^2) - 1)) on |t| <= alpha = w/2,
  * beta = 2.30 w (Barnett, Magland and af Klinteberg 2019, FINUFFT), its
- * Fourier transform by Gauss-Legendre quadrature (src/quadrature.h).
+ * Fourier transform by Gauss-Legendre quadrature (src/solver/quadrature.h).
  * Owns these formulas only; what is spread and how is the callers'. */
 #ifndef AN_NUFFT_KERNEL_H
 #define AN_NUFFT_KERNEL_H

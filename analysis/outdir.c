@@ -1,5 +1,5 @@
 /* outdir.c - see outdir.h. The temporary folder and every name it may
- * hold are registered with the suite's one signal handler (src/tmpguard.h),
+ * hold are registered with the suite's one signal handler (src/files/tmpguard.h),
  * which unlinks the files and then removes the folder. */
 #define _POSIX_C_SOURCE 200809L
 #include "outdir.h"

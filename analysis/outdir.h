@@ -3,7 +3,7 @@
  * Owns: writing every output into a temporary folder beside the final one
  * ("<DIR>.tmp.<pid>") and renaming it into place only when everything is
  * written; removing the temporary folder on failure and (registered with
- * the suite's one signal handler, src/tmpguard.h) on SIGINT, SIGTERM and
+ * the suite's one signal handler, src/files/tmpguard.h) on SIGINT, SIGTERM and
  * SIGHUP; replacing an earlier output folder of this tool (one that
  * holds stats.json and nothing but the names below), never anything else.
  * Does not own: what goes into the files (report.c). */

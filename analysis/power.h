@@ -2,7 +2,7 @@
  *
  * Owns: the definition P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / n at integer
  * frequencies k = (kx, ky) in [-K, K]^2, the layout of the result and the
- * two ways to compute it: the core library's type-1 non-uniform FFT (nufft.c over src/nufft.h)
+ * two ways to compute it: the core library's type-1 non-uniform FFT (nufft.c over src/solver/nufft.h)
  * and the exact direct sum (exact.c), the reference the first is tested
  * against. Does not own: what is done with P (rings.c, hsd.c).
  *

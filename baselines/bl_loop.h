@@ -1,5 +1,5 @@
 /* bl_loop.h - the one run loop of the iterative baselines, with the stop
- * rules (src/stoprule.h), used by their commands (bl_cli.c) and by the
+ * rules (src/common/stoprule.h), used by their commands (bl_cli.c) and by the
  * Python binding alike: the start is row 0; after it and after every
  * iteration the caller's row hook sees the statistics, then the rules are
  * tried in the order converged, targets, time, max-iter, then the hook's

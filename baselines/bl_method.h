@@ -56,7 +56,7 @@ typedef union {
     double d;
 } bl_value;
 
-/* A trace column after the common ones (src/tracecols.h). */
+/* A trace column after the common ones (src/common/tracecols.h). */
 typedef cfpo_trace_column bl_column;
 
 typedef enum { BL_POISSON, BL_ITERATIVE } bl_kind;
@@ -88,7 +88,7 @@ struct bl_method {
     /* the same under a density (`--density SPEC`, read during the run);
      * NULL: the method has no density option. With rho = 1 it must give
      * create's run, byte for byte; its deltas are then in the symmetric
-     * measure (src/dens_measure.h). */
+     * measure (src/density/dens_measure.h). */
     void *(*create_density)(const bl_value *v, int64_t n, uint64_t seed, double tol, const cfpo_density *d,
                             char *err, size_t errlen);
     /* NULL: a direct sampler (its start is its set, converged at once) */

@@ -1,7 +1,7 @@
 /* bl_run.h - the part of a baseline command's run that talks to files:
  * the output point file and the --trace file, opened before the work so an
  * unwritable path fails at once, committed atomically at the end, removed
- * on failure or SIGINT (src/cli.h's guards). Also the progress line.
+ * on failure or SIGINT (src/common/cli.h's guards). Also the progress line.
  * Does not own: option parsing (each main_*.c, in cfpo's style) or any
  * method. */
 #ifndef CFPO_BASELINES_BL_RUN_H

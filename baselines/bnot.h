@@ -39,7 +39,7 @@
  * so E does not increase from one iteration to the next (up to the
  * capacity tolerance).
  *
- * Choices: start uniform random (src/rng.h); margin m = 3 / sqrt(n) at
+ * Choices: start uniform random (src/common/rng.h); margin m = 3 / sqrt(n) at
  * first, doubled (up to every copy) whenever a cell vertex of an original
  * site could lie in the power cell of a copy left out (checked exactly:
  * at every vertex x of every original cell, its power |x - p|^2 - w must
@@ -131,7 +131,7 @@ bnot_engine *bnot_create_rule(int64_t n, const double *xy, uint64_t seed, double
  * points); cells' areas, centroids and moments, and the Hessian's edge
  * lengths, are d's mass, d-weighted centroids and moments and d's
  * integral along the edges (dens_poly.h); the deltas in d's symmetric
- * measure (src/dens_measure.h). r as bnot_create_rule (NULL: the
+ * measure (src/density/dens_measure.h). r as bnot_create_rule (NULL: the
  * authors' defaults); with d, r->epsilon 0 gives the run to tol (as
  * bnot_create, L 0: cfpo's cell side). A constant d takes the
  * uniform formulas (equal for rho = 1) unless flags has

@@ -6,7 +6,7 @@
  * radius. Two points conflict when |x_i - x_j| < sqrt(r(x_i) r(x_j)),
  * i.e. d^2 q_i q_j < r^2 with q = sqrt(rho): the symmetric radius of the
  * pair measure m(i, j) = |x_i - x_j| / sqrt(r_i r_j) of cfpo's density
- * path (src/dens_measure.h), so every pair of the result has m >= REL in
+ * path (src/density/dens_measure.h), so every pair of the result has m >= REL in
  * those units. This is the adaptive conflict rule of Wei's parallel
  * Poisson-disk sampling and of Wei and Wang's differential domain analysis
  * (a pair conflicts when closer than a radius symmetric in the two

@@ -1,5 +1,5 @@
 /* dens_draw.h - random points drawn with probability proportional to a
- * density (src/density.h), for the baselines' --density starts and darts.
+ * density (src/density/density.h), for the baselines' --density starts and darts.
  *
  * Draw k: the uniform point (u0, u1) the caller's uniform method would
  * use, kept with probability rho(x) / rho_max (a third number u2); when it

@@ -1,5 +1,5 @@
 /* dens_poly.h - exact integrals of a piecewise-constant density
- * (src/density.h) over polygons and along segments of the plane, the
+ * (src/density/density.h) over polygons and along segments of the plane, the
  * density continued periodically beyond the unit torus: what BNOT under a
  * density needs of its power cells (bnot_power.cpp).
  *
@@ -13,7 +13,7 @@
  * integrated exactly by the two-point Gauss rule. Segment: the sum of each
  * piece's rho times its length. The analysis's capacity (analysis/capacity.c)
  * gives the mass the same way; both cut their edges with
- * cfpo_density_walk (src/density_walk.h).
+ * cfpo_density_walk (src/density/density_walk.h).
  * Does not own: the density (density.c), the cells (bnot_power.cpp). */
 #ifndef CFPO_BASELINES_DENS_POLY_H
 #define CFPO_BASELINES_DENS_POLY_H

@@ -13,7 +13,7 @@
  * Under a density (o->density; docs: baselines/README.md, "FPO under a
  * density"): q = sqrt(rho) at a point, the symmetric pair measure of
  * cfpo's density path, m(i, j)^2 Delta(n)^2 = d^2 q_i q_j
- * (src/dens_measure.h), and every distance FPO compares becomes that
+ * (src/density/dens_measure.h), and every distance FPO compares becomes that
  * measure. The candidates stay the Delaunay circumcentres (the geometry is
  * Euclidean): a face's value is the exact smallest measure of its centre c
  * to the other points, min over all j of d(c, x_j)^2 q_c q_j; its heap key

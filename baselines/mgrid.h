@@ -1,5 +1,5 @@
 /* mgrid.h - a dynamic grid of points on the unit torus for the symmetric
- * pair measure under a density (src/dens_measure.h): with q = sqrt(rho) at
+ * pair measure under a density (src/density/dens_measure.h): with q = sqrt(rho) at
  * a point, the squared measure of a pair times Delta(n)^2 is
  * v = d^2 q_i q_j, d the torus distance (cfpo_torus_dist2). Used by the
  * adaptive dart throwing (conflict test) and by FPO under a density (the

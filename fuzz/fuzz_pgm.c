@@ -1,4 +1,4 @@
-/* fuzz_pgm.c - libFuzzer harness: the PGM reader (src/pgm.c). Any input
+/* fuzz_pgm.c - libFuzzer harness: the PGM reader (src/density/pgm.c). Any input
  * is read or refused with one line; what is read has its announced size
  * and no value above maxval. */
 #include <stdint.h>

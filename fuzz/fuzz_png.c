@@ -1,4 +1,4 @@
-/* fuzz_png.c - libFuzzer harness: the PNG reader (src/png_read.c, over
+/* fuzz_png.c - libFuzzer harness: the PNG reader (src/density/png_read.c, over
  * libpng's simplified API). Any input is read or refused with one line. */
 #include <stdint.h>
 #include <stdlib.h>

@@ -1,4 +1,4 @@
-/* test_dens_buckets.c - the bucket grid of a density block (src/dens_buckets.c),
+/* test_dens_buckets.c - the bucket grid of a density block (src/density/dens_buckets.c),
  * against brute force, with and without wrap:
  *  - every point is in the bucket its position names, each exactly once,
  *    also after random moves;

@@ -1,4 +1,4 @@
-/* test_dens_engine.c - CFPO under a density (src/dens_engine.c):
+/* test_dens_engine.c - CFPO under a density (src/density/dens_engine.c):
  *  - the smallest symmetric measure over all pairs, by brute force, never
  *    falls across any accepted move (one thread, every move checked), on
  *    several densities, one with zero-density pixels;

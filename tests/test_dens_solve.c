@@ -1,4 +1,4 @@
-/* test_dens_solve.c - the local solve under a density (src/dens_solve.c)
+/* test_dens_solve.c - the local solve under a density (src/density/dens_solve.c)
  * against enumeration on a fine grid over the box, for random neighbour
  * sets of 1 to 10 points (all of whose polygons the solve looks at):
  *  - the value it returns is the objective at the point it returns (to

@@ -1,6 +1,6 @@
-/* test_density.c - the density input (src/density.c, pgm.c, png_read.c,
- * density_analytic.c), its measure (src/dens_measure.c) and the start
- * (src/dens_start.c):
+/* test_density.c - the density input (src/density/density.c, pgm.c, png_read.c,
+ * density_analytic.c), its measure (src/density/dens_measure.c) and the start
+ * (src/density/dens_start.c):
  *  - PGM P5 (8 and 16 bits) and P2, PNG (written here by libpng) and .npy
  *    read to the values written, image row 0 at the top (y near 1), dark
  *    dense, ':invert' light dense; normalised to mean 1; the hash the same

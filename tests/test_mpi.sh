@@ -41,7 +41,7 @@ run 3 -n $N -t 1 --variant simplified -o outs.bin >/dev/null 2>run.err && same o
   bad "simplified on 3 ranks failed: $(head -3 run.err)"
 
 # The hyperuniform variant: its transport field from every rank's
-# fixed-point NUFFT grid, summed exactly (src/nufft.h): the same bytes.
+# fixed-point NUFFT grid, summed exactly (src/solver/nufft.h): the same bytes.
 "$CFPO" -n $N -q -t 2 --variant hyperuniform -o refh.npy >/dev/null || bad "hyperuniform reference failed"
 for spec in "2 2x1" "3 1x3" "4 2x2 --check"; do
   set -- $spec

@@ -1,4 +1,4 @@
-/* test_npy.c - the strict .npy reader (src/npy.c through pf_read): every
+/* test_npy.c - the strict .npy reader (src/files/npy.c through pf_read): every
  * file numpy's format specification allows for an (n, 2) float64 or
  * float32 array is read with exactly numpy's values; headers numpy reads
  * differently or refuses are refused with one line naming the file. The

@@ -1,5 +1,5 @@
-/* test_nufft.c - the core library's non-uniform FFT (src/nufft.h) and the
- * hyperuniform variant's transport field built on it (src/transport.h),
+/* test_nufft.c - the core library's non-uniform FFT (src/solver/nufft.h) and the
+ * hyperuniform variant's transport field built on it (src/engine/transport.h),
  * against direct sums:
  *  - type 1 on random points (several n, K, widths): the largest error
  *    over |kx|, |ky| <= K relative to the largest |f(k)| within the bound

@@ -1,4 +1,4 @@
-/* test_numbers.c - the one number grammar of every command (src/cli.c):
+/* test_numbers.c - the one number grammar of every command (src/common/cli.c):
  * decimal only, no sign, no spaces, no hexadecimal or octal, exact power
  * forms, exact range limits, subnormal reals accepted. */
 #include <math.h>

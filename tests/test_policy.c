@@ -1,4 +1,4 @@
-/* test_policy.c - the variants' per-iteration policy (src/policy.h).
+/* test_policy.c - the variants' per-iteration policy (src/engine/policy.h).
  *
  * Properties: the adaptive variant's decisions by iteration are the
  * uniform schedule docs/method.md documents (near solves in two cells in iterations 1-6,

@@ -1,4 +1,4 @@
-/* test_tmpguard.c - the one signal handler for temporaries (src/tmpguard.h).
+/* test_tmpguard.c - the one signal handler for temporaries (src/files/tmpguard.h).
  *
  * Properties: a process that registers nothing keeps the default action
  * of SIGINT, SIGTERM and SIGHUP; in a process that holds both kinds at

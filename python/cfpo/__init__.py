@@ -26,7 +26,7 @@ __version__ = _core.version
 __all__ = ["sample", "run", "Result", "load", "save", "analysis", "baselines", "__version__"]
 
 STOP_REASONS = ("converged", "target", "time", "max-iter", "caller")
-TRACE_COLUMNS = _core.trace_columns  # the C library's (src/tracecols.h)
+TRACE_COLUMNS = _core.trace_columns  # the C library's (src/common/tracecols.h)
 
 
 @dataclass

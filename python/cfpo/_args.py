@@ -95,7 +95,7 @@ def threads(v):
 
 
 def stop_rules(target_min, target_avg, time_limit):
-    """The stop rules of src/stoprule.c (0 = not set), with its ranges."""
+    """The stop rules of src/common/stoprule.c (0 = not set), with its ranges."""
     given = {"target_min": target_min, "target_avg": target_avg, "time_limit": time_limit}
     return tuple(0.0 if v is None else real(k, v, *_core.stop_options[k], open_lo=True) for k, v in given.items())
 

@@ -54,11 +54,11 @@ PyObject *core_points_adopt(double *xy, size_t n);
 int core_interrupted(void);
 
 /* The statistics of an iteration for a progress callable: the first ncols
- * of src/tracecols.h's columns by name, and converged. */
+ * of src/common/tracecols.h's columns by name, and converged. */
 PyObject *core_stats_dict(const cfpo_iter_stats *s, double elapsed, int ncols);
 
 /* The trace: one row per iteration, grown as the run goes; cols values a
- * row (src/tracecols.h's columns, then a baseline's own). */
+ * row (src/common/tracecols.h's columns, then a baseline's own). */
 typedef struct {
     double *v;
     size_t rows, cap;

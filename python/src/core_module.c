@@ -1,6 +1,6 @@
 /* core_module.c - the extension module cfpo._core: its table of functions,
  * its constants, and the point files (load, save) through the suite's one
- * point-file module (src/pointfile.h). The shared helpers of core.h are
+ * point-file module (src/files/pointfile.h). The shared helpers of core.h are
  * core_util.c. */
 #include "core.h"
 
@@ -94,8 +94,8 @@ static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_core",
                                     "The C library of cfpo (sampler, analysis, baselines, point files).",
                                     -1, methods, NULL, NULL, NULL, NULL};
 
-/* trace_columns: cfpo's trace columns (src/tracecols.h); stop_options:
- * {name: (lo, hi)} of the stop rules (src/stoprule.h), names as Python's
+/* trace_columns: cfpo's trace columns (src/common/tracecols.h); stop_options:
+ * {name: (lo, hi)} of the stop rules (src/common/stoprule.h), names as Python's
  * keywords. */
 static int add_tables(PyObject *m)
 {

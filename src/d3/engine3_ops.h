@@ -1,6 +1,6 @@
 /* engine3_ops.h - the 3-D engine (engine3.h) behind the one interface
- * every engine offers (src/engine_iface.h), so that it runs through the
- * one run loop (src/run_loop.h: stop rules, progress, periodic, final and
+ * every engine offers (src/engine/engine_iface.h), so that it runs through the
+ * one run loop (src/engine/run_loop.h: stop rules, progress, periodic, final and
  * signalled checkpoints). Its points are n x 3: the table's 2-D point
  * writers (put_points, put_text, copy) are NULL, and its files are
  * points3.h's; its checkpoints are engine3_ckpt.c's format (n x 3). */

@@ -243,7 +243,7 @@ int main(int argc, char **argv)
     }
     cli_progress pr;
     cli_progress_init(&pr, c.quiet);
-    /* the one run loop (src/run_loop.h) over the engine's table */
+    /* the one run loop (src/engine/run_loop.h) over the engine's table */
     run_ctx ctx = {.pr = &pr, .trace = c.trace ? tr.f : NULL, .t0 = t0};
     cfpo_options lo;
     memset(&lo, 0, sizeof lo);

@@ -6,8 +6,8 @@
  * then rmdir for folders, both async-signal-safe, on paths copied in when
  * registered) before the signal takes its default course. Every command
  * that writes under a temporary name registers here: the commands'
- * temporaries (src/cli.c's text files, the point and checkpoint
- * temporaries of src/runfiles.c and src/engine_ckpt.c, the baselines'
+ * temporaries (src/common/cli.c's text files, the point and checkpoint
+ * temporaries of src/files/runfiles.c and src/engine/engine_ckpt.c, the baselines'
  * outputs) and cfpo-analyze's temporary output folder (analysis/outdir.c,
  * its files and then the folder), so one process may hold both kinds.
  * Does not own: making or renaming the temporaries (safefile.h, outdir.h).

@@ -22,7 +22,7 @@
  * Compute backends. The schedule (engine_schedule.c) runs each phase as
  * solve -> mark -> migrate -> relocate -> halo; solve, mark, relocate and
  * the per-iteration displacement reset and maximum go through a table of
- * functions, struct cfpo_backend in src/backend.h, while migration and the
+ * functions, struct cfpo_backend in src/engine/backend.h, while migration and the
  * halo (MPI) stay on the host. The OpenMP backend (backend_cpu.c) is the
  * first. A second one (a GPU) plugs in by
  *   1. filling a cfpo_backend with its own functions (backend_<name>.c),

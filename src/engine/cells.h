@@ -1,7 +1,7 @@
 /* cells.h - layer 3, the bottom of the engine: its state (the tile of
  * cells plus the halo ring around it, points stored cell by cell),
  * addressing cells, growing the storage, change marks. Not a public
- * header: only src/engine*.c, src/cells.c and src/backend*.c include it.
+ * header: only src/engine/engine*.c, src/engine/cells.c and src/engine/backend*.c include it.
  * May include engine.h and the layers below it.
  *
  * The engine is split by concept, each file on top of this one:

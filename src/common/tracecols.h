@@ -4,7 +4,7 @@
  * of `cfpo --trace` and of the iterative baselines, whose files start with
  * the first CFPO_TRACE_COMMON of them and go on with their own; the row of
  * values of an iteration's statistics; writing a header and a row.
- * Read by src/runfiles.c and src/main.c (the cfpo command), baselines/
+ * Read by src/files/runfiles.c and src/main.c (the cfpo command), baselines/
  * (bl_loop.c) and the Python binding (python/src), which learns the names
  * from here.
  * May include: cfpo_types.h (layer 0). */

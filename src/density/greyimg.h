@@ -1,5 +1,5 @@
 /* greyimg.h - layer 0: a greyscale image as the image readers return it
- * (src/pgm.c, src/png_read.c) and src/density.c turns into a density.
+ * (src/density/pgm.c, src/density/png_read.c) and src/density/density.c turns into a density.
  * Rows top first, as stored in the file; each value in [0, maxval]. */
 #ifndef CFPO_GREYIMG_H
 #define CFPO_GREYIMG_H

@@ -1,7 +1,7 @@
 /* backend.h - layer 3, internal to the engine: the seam between the colour
  * schedule (engine_schedule.c, host side) and the code that does the
- * per-phase work on the points (a compute backend). Only src/engine*.c and
- * src/backend_*.c include it. May include cells.h.
+ * per-phase work on the points (a compute backend). Only src/engine/engine*.c and
+ * src/engine/backend_*.c include it. May include cells.h.
  *
  * A phase, as the schedule runs it:
  *
