@@ -100,15 +100,21 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
             if (px > S.x1) px = S.x1;
             if (py < S.y0) py = S.y0;
             if (py > S.y1) py = S.y1;
+            /* min_j |c - y_j|^2 q_j first, abandoned as soon as even the
+             * largest q(c) cannot lift it above best (the pixel's q, a
+             * memory access, only for vertices that may win); then f =
+             * that min times q(c): rounding is monotone, so it is the
+             * min of the products, bit for bit */
+            double geo = INFINITY;
+            for (int j = 0; j < k && geo * qmax > best; j++) {
+                const double dx = px - yx[j], dy = py - yy[j];
+                const double v = (dx * dx + dy * dy) * yr[j];
+                if (v < geo) geo = v;
+            }
+            if (!(geo * qmax > best)) continue;
             const double rc = cfpo_dens_local_q(d, ox, oy, px, py);
             if (!(rc > 0)) continue;
-            /* f at the vertex, abandoned as soon as it cannot beat best */
-            double val = INFINITY;
-            for (int j = 0; j < k && val > best; j++) {
-                const double dx = px - yx[j], dy = py - yy[j];
-                const double v = (dx * dx + dy * dy) * yr[j] * rc;
-                if (v < val) val = v;
-            }
+            const double val = geo * rc;
             if (val > best) {
                 best = val;
                 *cx = px;
