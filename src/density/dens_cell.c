@@ -7,6 +7,7 @@
 
 #include "dens_impl.h"
 #include "dens_solve.h"
+#include "policy.h"
 #include "geom.h"
 
 static int grow_ring(tbuf *b, size_t need)
@@ -15,6 +16,51 @@ static int grow_ring(tbuf *b, size_t need)
     b->ring = malloc(need * sizeof *b->ring);
     b->ring_cap = b->ring ? need : 0;
     return b->ring ? 0 : -1;
+}
+
+/* What bounds the points a ring scan leaves out, for spot_ok. */
+typedef struct {
+    int wrap;          /* the block spans the torus: differences wrap */
+    double qlo, h;     /* the block's smallest q; a bucket's side */
+    double lo, L;      /* sqrt(rho_min); the cell side */
+} scan_limits;
+
+/* Whether (px, py) (block frame) may take point p: f there (q = rc) is
+ * above thr against every other point of the block (rings of buckets
+ * around it until the points left cannot reach thr: the same decision as
+ * against every point), no point outside the block can be nearer in f
+ * than the old value (their distance is at least the spot's distance e
+ * to the block's edge, their density at least rho_min), and it lies in
+ * cell `cell`. Then *cc its bucket and (*x, *y) its place on the torus. */
+static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, int p, const scan_limits *m, double thr,
+                   double oldf, double ox, double oy, double px, double py, double rc, int64_t cell, int *cc, double *x,
+                   double *y)
+{
+    const int c0 = cfpo_dens_bucket_of(bk, px, py);
+    for (int k = 0;; k++) {
+        if (k > 1 && m->qlo > 0) {
+            const double e = (double)(k - 1) * m->h;
+            if (e * e * m->qlo * rc > thr * BOUND_SAFE) break;
+        }
+        const int nb = cfpo_dens_ring(bk, c0, k, b->ring);
+        if (nb < 0) break;
+        for (int r = 0; r < nb; r++)
+            for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
+                if (j == p) continue;
+                double ex = b->bx[j] - px, ey = b->by[j] - py;
+                if (m->wrap) { ex -= rint(ex); ey -= rint(ey); }
+                if (!((ex * ex + ey * ey) * b->br[j] * rc > thr)) return 0;
+            }
+    }
+    if (!m->wrap) {
+        const double e = fmin(fmin(px + m->L, 2 * m->L - px), fmin(py + m->L, 2 * m->L - py));
+        if (!(e * e * m->lo * rc >= oldf)) return 0;
+    }
+    *x = cfpo_wrap01(ox + px);
+    *y = cfpo_wrap01(oy + py);
+    if (cell_of(E, *x, *y) != cell) return 0; /* rounding left the cell */
+    *cc = c0;
+    return 1;
 }
 
 /* Solves the points of cell (cx, cy) one after another; returns the moves
@@ -54,6 +100,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     for (int j = 0; j < m; j++)
         if (b->br[j] < qlo) qlo = b->br[j];
     const double h = bk->h, gain = E->o.tol * E->D;
+    const scan_limits lim = {wrap, qlo, h, lo, L};
     int64_t moves = 0;
     for (int p = c0; p < c1; p++) {
         const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
@@ -117,39 +164,29 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, S, E->d, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX))
             continue;
         /* a move must gain more than tol local spacings in the measure
-         * (sqrt(f) / Delta), as the uniform path's must gain tol L */
-        if (!(sqrt(fc) > sqrt(oldf) + gain && fc > oldf * (1 + 1e-12))) continue;
-        /* the accept rule: f rises against the whole block ... */
-        const double rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
-        if (!(rc > 0)) continue;
-        /* (rings around the candidate until the points left cannot reach
-         * the old value: the same decision as against every point) */
-        const double thr = oldf * (1 + 1e-12);
-        const int cc = cfpo_dens_bucket_of(bk, cxp, cyp);
-        int below = 0;
-        for (int k = 0; !below; k++) {
-            if (k > 1 && qlo > 0) {
-                const double e = (double)(k - 1) * h;
-                if (e * e * qlo * rc > thr * BOUND_SAFE) break;
+         * (sqrt(f) / Delta), as the uniform path's must gain tol L; the
+         * over-relaxed spot a + w (c - a) first (policy.h), where it
+         * passes the same rules, else the candidate */
+        const double thr = oldf * (1 + 1e-12), w = CFPO_POLICY_DENSITY_RELAX;
+        double rc = 0, x = 0, y = 0;
+        int cc = -1;
+        const double rx = ax + w * (cxp - ax), ry = ay + w * (cyp - ay);
+        if (w > 1 && rx >= S.x0 && rx <= S.x1 && ry >= S.y0 && ry <= S.y1) {
+            const double rr = cfpo_dens_local_q(E->d, ox, oy, rx, ry);
+            const double fr = rr > 0 ? cfpo_dens_value(b->nx, b->ny, b->nr, kk, rr, rx, ry) : -1;
+            if (rr > 0 && sqrt(fr) > sqrt(oldf) + gain && fr > thr &&
+                spot_ok(E, b, bk, p, &lim, thr, oldf, ox, oy, rx, ry, rr, cy * g + cx, &cc, &x, &y)) {
+                rc = rr;
+                cxp = rx;
+                cyp = ry;
             }
-            const int nb = cfpo_dens_ring(bk, cc, k, b->ring);
-            if (nb < 0) break;
-            for (int r = 0; r < nb && !below; r++)
-                for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
-                    if (j == p) continue;
-                    double ex = b->bx[j] - cxp, ey = b->by[j] - cyp;
-                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
-                    if (!((ex * ex + ey * ey) * b->br[j] * rc > thr)) { below = 1; break; }
-                }
         }
-        if (below) continue;
-        /* ... and no point outside the block can be nearer in f */
-        if (!wrap) {
-            const double e = fmin(fmin(cxp + L, 2 * L - cxp), fmin(cyp + L, 2 * L - cyp));
-            if (!(e * e * lo * rc >= oldf)) continue;
+        if (cc < 0) {
+            if (!(sqrt(fc) > sqrt(oldf) + gain && fc > thr)) continue;
+            rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
+            if (!(rc > 0)) continue;
+            if (!spot_ok(E, b, bk, p, &lim, thr, oldf, ox, oy, cxp, cyp, rc, cy * g + cx, &cc, &x, &y)) continue;
         }
-        const double x = cfpo_wrap01(ox + cxp), y = cfpo_wrap01(oy + cyp);
-        if (cell_of(E, x, y) != cy * g + cx) continue; /* rounding left the cell */
         const int64_t id = b->bid[p];
         const double dd = sqrt((cxp - ax) * (cxp - ax) + (cyp - ay) * (cyp - ay)) / ri;
         if (dd > *maxd) *maxd = dd;

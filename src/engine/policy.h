@@ -81,6 +81,14 @@ static inline int cfpo_policy_density_stalled(int k, double davg, double *ref)
     return stalled;
 }
 
+/* The density engine's over-relaxation (docs/method.md, "Density"): a
+ * point's move from a to the candidate c is pushed on to a + w (c - a)
+ * when that spot passes the same rules as c (it gains tol, f there is
+ * above the old value against every point that can matter, it is in the
+ * box and the cell); else the point goes to c. As in the uniform path,
+ * it carries a move across many points in one sweep. */
+#define CFPO_POLICY_DENSITY_RELAX 1.8
+
 /* The decisions for one iteration. */
 typedef struct {
     int iteration;  /* k, the iteration they are for (0: before the first) */

