@@ -1,8 +1,9 @@
 #!/bin/sh
 # cli_prefixes.sh - cfpo-analyze --prefixes: prefixes.txt (one row per size
 # of the plan, or the given sizes), the prefix_* SUMMARY keys ('-' without
-# the option), the worst prefix of the file's own order against the reversed
-# order, and bad option values: exit 2 with one line, nothing written.
+# the option), bad option values (exit 2 with one line, nothing written), and
+# cfpo-fporder: the same points, a worst prefix better than the file order's,
+# its bad values.
 . "$(dirname "$0")/common.sh"
 cd "$T" || exit 1
 
@@ -49,4 +50,20 @@ rm -rf out
 "$A" -q -o out --prefixes --prefix-base 512 x.txt >stdout.txt 2>stderr.txt
 rc=$?
 check '[ "$rc" -eq 1 ] && [ "$(wc -l <stderr.txt)" -eq 1 ] && [ ! -e out ]' "base above n: exit $rc"
+
+# cfpo-fporder: the same points, in an order whose prefixes beat the file's own
+"$B/cfpo-fporder" -o fp.txt x.txt >/dev/null
+check '[ "$(sort x.txt | md5sum)" = "$(sort fp.txt | md5sum)" ]' "fporder keeps the points"
+s2=$("$A" -q --no-discrepancy --no-delaunay --integration 0 --prefixes -o d fp.txt)
+s1=$("$A" -q --no-discrepancy --no-delaunay --integration 0 --prefixes -o e x.txt)
+wo=$(field "$s1" prefix_worst_any_dmin)
+wf=$(field "$s2" prefix_worst_any_dmin)
+check '! le "$wf" "$wo"' "greedy order's worst prefix $wf beats the file order's $wo"
+rm -f out.txt
+"$B/cfpo-fporder" --first 300 -o out.txt x.txt >stdout.txt 2>stderr.txt
+rc=$?
+check '[ "$rc" -eq 1 ] && [ "$(wc -l <stderr.txt)" -eq 1 ] && [ ! -e out.txt ]' "fporder --first n: exit $rc, one line, no file"
+"$B/cfpo-fporder" --first x -o out.txt x.txt >stdout.txt 2>stderr.txt
+rc=$?
+check '[ "$rc" -eq 2 ] && [ "$(wc -l <stderr.txt)" -eq 1 ] && [ ! -e out.txt ]' "fporder --first x: exit $rc, one line, no file"
 finish

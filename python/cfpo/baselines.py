@@ -239,7 +239,7 @@ wse.__doc__ = ("Weighted sample elimination (Yuksel 2015) on the periodic unit s
                "    ratio * n white-noise candidates eliminated to n; progressive=True: the order in\n"
                "    which every prefix n / 2^k is the set left at that stage. Direct (0 iterations).\n"
                + _options_doc("wse") + _ITER_DOC)
-"Lloyd's algorithm towards a centroidal Voronoi tessellation on the torus\n"
+lloyd.__doc__ = ("Lloyd's algorithm towards a centroidal Voronoi tessellation on the torus\n"
                  "    (cfpo-lloyd); converged when no site moves tol * L, or after iterations (100).\n" + _options_doc("lloyd") + _ITER_DOC)
 gbn.__doc__ = ("Gaussian blue noise (Ahmed, Ren, Wonka 2022) as the authors' toroidal code runs it\n"
                "    (cfpo-gbn): sigma 1, step 0.25, 1000 iterations by default.\n" + _options_doc("gbn") + _ITER_DOC)
