@@ -40,6 +40,7 @@ typedef struct {
     double cert_tol;
     const char *density; /* --density SPEC (density_measures.c) */
     int prefixes;        /* --prefixes (prefixes.c) */
+    int prefix_opts;     /* --prefix-base or --prefix-sizes given */
     size_t prefix_base, *prefix_sizes;
     int nprefix_sizes;
     char **files;
@@ -206,8 +207,9 @@ static void parse(int argc, char **argv, options *o)
             if (cli_parse_i64(optarg, 2, INT64_MAX, &v) != 0)
                 cli_usage_error(prog, "bad --prefix-base '%s' (an integer >= 2)", optarg);
             o->prefix_base = (size_t)v;
+            o->prefix_opts = 1;
             break;
-        case OPT_PREFIX_SIZES: parse_sizes(optarg, o); break;
+        case OPT_PREFIX_SIZES: parse_sizes(optarg, o), o->prefix_opts = 1; break;
         case 'h': usage(); exit(0);
         case 'V': printf("cfpo-analyze %s\n", CFPO_VERSION); exit(0);
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
@@ -217,7 +219,7 @@ static void parse(int argc, char **argv, options *o)
     o->files = argv + optind;
     o->nfiles = argc - optind;
     if (o->nfiles < 1) cli_usage_error(prog, "no input file");
-    if ((o->prefix_sizes || o->prefix_base != AN_PREFIX_BASE) && !o->prefixes)
+    if (o->prefix_opts && !o->prefixes)
         cli_usage_error(prog, "--prefix-base and --prefix-sizes need --prefixes");
     if (o->prefixes && o->nfiles != 1) cli_usage_error(prog, "--prefixes takes one input file");
 #ifndef CFPO_HAVE_CGAL
@@ -445,6 +447,14 @@ static void analyze_set(const char *file)
     if (R.opt.any_n && n < 2) fail("%s: --any-n needs at least 2 points a set", file);
     R.nsum += (double)n;
     if (R.opt.certify && n < 2) fail("%s: the certificate needs at least 2 points", file);
+    if (R.opt.prefixes) { /* first: a size beyond n fails before the rest is computed */
+        cli_progress_line(&R.progress, 1, "set %d/%d: prefixes", R.set + 1, R.opt.nfiles);
+        if (n < 2) fail("%s: --prefixes needs at least 2 points", file);
+        if (an_prefixes_compute(xy, n, R.opt.prefix_base, R.opt.prefix_sizes, R.opt.nprefix_sizes, R.opt.width,
+                                &R.prefixes, err, sizeof err) != 0)
+            fail("%s: %s", file, err);
+        R.have_prefixes = 1;
+    }
     cli_progress_line(&R.progress, 1, "set %d/%d: spectrum", R.set + 1, R.opt.nfiles);
     spectrum(file, xy, n);
     distances(file, xy, n);
@@ -458,14 +468,6 @@ static void analyze_set(const char *file)
     }
     an_vcells_free(&R.cells);
     R.have_cells = 0;
-    if (R.opt.prefixes) {
-        cli_progress_line(&R.progress, 1, "set %d/%d: prefixes", R.set + 1, R.opt.nfiles);
-        if (n < 2) fail("%s: --prefixes needs at least 2 points", file);
-        if (an_prefixes_compute(xy, n, R.opt.prefix_base, R.opt.prefix_sizes, R.opt.nprefix_sizes, R.opt.width,
-                                &R.prefixes, err, sizeof err) != 0)
-            fail("%s: %s", file, err);
-        R.have_prefixes = 1;
-    }
     free(xy);
 }
 

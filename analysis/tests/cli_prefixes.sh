@@ -44,6 +44,7 @@ expect2 "base abc" --prefixes --prefix-base abc x.txt
 expect2 "size 0" --prefixes --prefix-sizes 0,5 x.txt
 expect2 "size list" --prefixes --prefix-sizes 5,,x x.txt
 expect2 "sizes without --prefixes" --prefix-sizes 5 x.txt
+expect2 "base without --prefixes" --prefix-base 16 x.txt
 expect2 "two files" --prefixes x.txt x.txt
 # a base or size above n: a run-time error (exit 1), one line, no folder
 rm -rf out
