@@ -227,12 +227,6 @@ static void parse(int argc, char **argv, options *o)
 #endif
 }
 
-static int default_K(size_t n)
-{
-    double K = ceil(6 * sqrt((double)n));
-    return K < 8 ? 8 : (K > 2048 ? 2048 : (int)K);
-}
-
 /* NAME.analysis in the current folder for one file NAME.EXT. */
 static char *default_out(const options *o)
 {
@@ -304,7 +298,7 @@ static void start(const char *file, size_t n)
 {
     char err[1024];
     R.n = n;
-    R.K = R.opt.K ? R.opt.K : default_K(n);
+    R.K = R.opt.K ? R.opt.K : an_default_K(n);
     const size_t N = an_side(R.K) * an_side(R.K);
     R.P = malloc(N * sizeof *R.P);
     R.Psum = calloc(N, sizeof *R.Psum);

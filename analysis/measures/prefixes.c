@@ -117,12 +117,6 @@ double an_prefix_worst(const double *d, size_t n, size_t m0, size_t *at)
     return worst;
 }
 
-static int default_K(size_t n) /* cfpo-analyze's default for n points */
-{
-    double K = ceil(6 * sqrt((double)n));
-    return K < 8 ? 8 : (K > 2048 ? 2048 : (int)K);
-}
-
 int an_prefix_measure(const double *xy, int width, an_prefix_row *row, char *err, size_t errlen)
 {
     const size_t m = row->m;
@@ -133,7 +127,7 @@ int an_prefix_measure(const double *xy, int width, an_prefix_row *row, char *err
         return -1;
     }
     free(nn);
-    const int K = default_K(m);
+    const int K = an_default_K(m);
     double *P = malloc(an_side(K) * an_side(K) * sizeof *P);
     if (!P) {
         snprintf(err, errlen, "out of memory for the prefix of %zu points", m);
