@@ -23,6 +23,7 @@
 #include "outdir.h"
 #include "pcf.h"
 #include "pointfile.h"
+#include "prefixes.h"
 #include "power.h"
 #include "report.h"
 #include "rings.h"
@@ -38,6 +39,10 @@ typedef struct {
     int64_t grid; /* --grid: cells a side for the lattice ratio; -1: cfpo's for n */
     double cert_tol;
     const char *density; /* --density SPEC (density_measures.c) */
+    int prefixes;        /* --prefixes (prefixes.c) */
+    int prefix_opts;     /* --prefix-base or --prefix-sizes given */
+    size_t prefix_base, *prefix_sizes;
+    int nprefix_sizes;
     char **files;
     int nfiles;
 } options;
@@ -84,6 +89,10 @@ static void usage(void)
            "                       SPEC), capacity deviation and the differential-domain\n"
            "                       spectrum among them: DENSITY line, density.txt,\n"
            "                       dda_raps.txt, dda_spectrum.txt\n"
+           "      --prefixes       measures of the prefixes in file order (one file):\n"
+           "                       prefixes.txt, prefix_* keys in SUMMARY\n"
+           "      --prefix-base B  smallest prefix, dyadic sizes from it (default %d)\n"
+           "      --prefix-sizes L comma-separated prefix sizes instead of the default\n"
            "  -t, --threads T      OpenMP threads (default: all cores, here %d)\n"
            "  -q, --quiet          no progress line\n"
            "  -h, --help           this help\n"
@@ -92,14 +101,36 @@ static void usage(void)
            "Output folder: spectrum.txt (gnuplot nonuniform matrix), raps.txt, nn_hist.txt, pcf.txt,\n"
            "stats.json, plot.gp, pcf.gp (gnuplot draws them). See analysis/README.md.\n"
            "Exit status: 0 success, 1 runtime failure, 2 usage error.\n",
-           AN_KMAX, AN_NUFFT_WIDTH, AN_CERT_TOL, AN_PCF_SIGMA, AN_PCF_RMAX, AN_INTEG_M, omp_get_num_procs(),
+           AN_KMAX, AN_NUFFT_WIDTH, AN_CERT_TOL, AN_PCF_SIGMA, AN_PCF_RMAX, AN_INTEG_M, AN_PREFIX_BASE, omp_get_num_procs(),
            PF_EXTENSIONS);
+}
+
+/* --prefix-sizes: a comma-separated list of integers >= 2 */
+static void parse_sizes(const char *arg, options *o)
+{
+    char *copy = strdup(arg), *save = NULL;
+    if (!copy) cli_fail(prog, "out of memory");
+    int cap = 1;
+    for (const char *c = arg; *c; c++) cap += *c == ',';
+    free(o->prefix_sizes);
+    o->prefix_sizes = malloc((size_t)cap * sizeof *o->prefix_sizes);
+    if (!o->prefix_sizes) cli_fail(prog, "out of memory");
+    o->nprefix_sizes = 0;
+    for (char *t = strtok_r(copy, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        int64_t v;
+        if (cli_parse_i64(t, 2, INT64_MAX, &v) != 0)
+            cli_usage_error(prog, "bad --prefix-sizes '%s' (comma-separated integers >= 2)", arg);
+        o->prefix_sizes[o->nprefix_sizes++] = (size_t)v;
+    }
+    if (o->nprefix_sizes == 0) cli_usage_error(prog, "bad --prefix-sizes '%s' (no size)", arg);
+    free(copy);
 }
 
 static void parse(int argc, char **argv, options *o)
 {
     enum { OPT_EXACT = 256, OPT_CHECK, OPT_WIDTH, OPT_CERTIFY, OPT_CERT_TOL, OPT_GRID, OPT_ANY_N, OPT_NO_DISC,
-           OPT_PCF_SIGMA, OPT_PCF_RMAX, OPT_INTEG, OPT_NO_DT, OPT_DENSITY };
+           OPT_PCF_SIGMA, OPT_PCF_RMAX, OPT_INTEG, OPT_NO_DT, OPT_DENSITY,
+           OPT_PREFIXES, OPT_PREFIX_BASE, OPT_PREFIX_SIZES };
     static const struct option longs[] = {
         {"output", required_argument, 0, 'o'},  {"kmax", required_argument, 0, 'K'},
         {"exact", no_argument, 0, OPT_EXACT},   {"check", no_argument, 0, OPT_CHECK},
@@ -111,6 +142,8 @@ static void parse(int argc, char **argv, options *o)
         {"integration", required_argument, 0, OPT_INTEG},
         {"quiet", no_argument, 0, 'q'},         {"help", no_argument, 0, 'h'},
         {"version", no_argument, 0, 'V'},       {"density", required_argument, 0, OPT_DENSITY},
+        {"prefixes", no_argument, 0, OPT_PREFIXES}, {"prefix-base", required_argument, 0, OPT_PREFIX_BASE},
+        {"prefix-sizes", required_argument, 0, OPT_PREFIX_SIZES},
         {0, 0, 0, 0}};
     memset(o, 0, sizeof *o);
     o->cert_tol = AN_CERT_TOL;
@@ -118,6 +151,7 @@ static void parse(int argc, char **argv, options *o)
     o->pcf_sigma = AN_PCF_SIGMA;
     o->pcf_rmax = AN_PCF_RMAX;
     o->integ = AN_INTEG_M;
+    o->prefix_base = AN_PREFIX_BASE;
     int c;
     int64_t v;
     opterr = 0;
@@ -168,6 +202,14 @@ static void parse(int argc, char **argv, options *o)
             break;
         case 'q': o->quiet = 1; break;
         case OPT_DENSITY: o->density = optarg; break;
+        case OPT_PREFIXES: o->prefixes = 1; break;
+        case OPT_PREFIX_BASE:
+            if (cli_parse_i64(optarg, 2, INT64_MAX, &v) != 0)
+                cli_usage_error(prog, "bad --prefix-base '%s' (an integer >= 2)", optarg);
+            o->prefix_base = (size_t)v;
+            o->prefix_opts = 1;
+            break;
+        case OPT_PREFIX_SIZES: parse_sizes(optarg, o), o->prefix_opts = 1; break;
         case 'h': usage(); exit(0);
         case 'V': printf("cfpo-analyze %s\n", CFPO_VERSION); exit(0);
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
@@ -177,15 +219,12 @@ static void parse(int argc, char **argv, options *o)
     o->files = argv + optind;
     o->nfiles = argc - optind;
     if (o->nfiles < 1) cli_usage_error(prog, "no input file");
+    if (o->prefix_opts && !o->prefixes)
+        cli_usage_error(prog, "--prefix-base and --prefix-sizes need --prefixes");
+    if (o->prefixes && o->nfiles != 1) cli_usage_error(prog, "--prefixes takes one input file");
 #ifndef CFPO_HAVE_CGAL
     o->no_delaunay = 1; /* a build without CGAL has no Delaunay measures (delaunay_none.c) */
 #endif
-}
-
-static int default_K(size_t n)
-{
-    double K = ceil(6 * sqrt((double)n));
-    return K < 8 ? 8 : (K > 2048 ? 2048 : (int)K);
 }
 
 /* NAME.analysis in the current folder for one file NAME.EXT. */
@@ -228,6 +267,8 @@ typedef struct {
     an_density dens;
     an_vcells cells; /* this set's Voronoi cells (--density) */
     int have_cells;
+    an_prefixes prefixes; /* --prefixes */
+    int have_prefixes;
 } run;
 
 static run R;
@@ -257,7 +298,7 @@ static void start(const char *file, size_t n)
 {
     char err[1024];
     R.n = n;
-    R.K = R.opt.K ? R.opt.K : default_K(n);
+    R.K = R.opt.K ? R.opt.K : an_default_K(n);
     const size_t N = an_side(R.K) * an_side(R.K);
     R.P = malloc(N * sizeof *R.P);
     R.Psum = calloc(N, sizeof *R.Psum);
@@ -400,6 +441,14 @@ static void analyze_set(const char *file)
     if (R.opt.any_n && n < 2) fail("%s: --any-n needs at least 2 points a set", file);
     R.nsum += (double)n;
     if (R.opt.certify && n < 2) fail("%s: the certificate needs at least 2 points", file);
+    if (R.opt.prefixes) { /* first: a size beyond n fails before the rest is computed */
+        cli_progress_line(&R.progress, 1, "set %d/%d: prefixes", R.set + 1, R.opt.nfiles);
+        if (n < 2) fail("%s: --prefixes needs at least 2 points", file);
+        if (an_prefixes_compute(xy, n, R.opt.prefix_base, R.opt.prefix_sizes, R.opt.nprefix_sizes, R.opt.width,
+                                &R.prefixes, err, sizeof err) != 0)
+            fail("%s: %s", file, err);
+        R.have_prefixes = 1;
+    }
     cli_progress_line(&R.progress, 1, "set %d/%d: spectrum", R.set + 1, R.opt.nfiles);
     spectrum(file, xy, n);
     distances(file, xy, n);
@@ -437,6 +486,7 @@ static void write_outputs(const an_report *rep, const an_measures *m)
     WRITE("stats.json", an_write_json(p, rep, err, sizeof err));
     WRITE("pcf.txt", an_measures_write_pcf(p, m, err, sizeof err));
     WRITE("pcf.gp", an_measures_write_pcf_plot(p, m, err, sizeof err));
+    if (R.have_prefixes) WRITE("prefixes.txt", an_prefixes_write(p, &R.prefixes, err, sizeof err));
     if (R.opt.density) {
         WRITE("density.txt", an_density_write(&R.dens, p, err, sizeof err));
         char *q = an_outdir_file(&R.out, "dda_spectrum.txt");
@@ -491,6 +541,14 @@ int main(int argc, char **argv)
                                   .pcf = R.pcf, .pcf_bins = R.pcf_bins, .pcf_sigma = R.opt.pcf_sigma,
                                   .pcf_rmax = R.opt.pcf_rmax, .pcf_seconds = R.pcf_seconds};
     char *msum = an_measures_summary(&measures), *mjson = an_measures_json(&measures);
+    char *psum = an_prefixes_summary(R.have_prefixes ? &R.prefixes : NULL);
+    if (msum && psum) { /* the prefix keys follow the measures' */
+        char *both = malloc(strlen(msum) + strlen(psum) + 1);
+        if (both) strcpy(both, msum), strcat(both, psum);
+        free(msum);
+        msum = both;
+    }
+    free(psum);
     char *outname = strdup(R.out.final);
     if (!outname || !msum || !mjson) fail("out of memory");
     an_report rep = {
@@ -520,6 +578,7 @@ int main(int argc, char **argv)
     if (R.opt.density) an_density_print(&R.dens, stdout), an_density_free(&R.dens);
     an_rings_free(&rings);
     free(outname);
+    an_prefixes_free(&R.prefixes); free(R.opt.prefix_sizes);
     free(msum); free(mjson); free(R.disc); free(R.dt); free(R.integ); free(R.pcf); free(R.pcf_set);
     free(R.P); free(R.Psum); free(R.Pref); free(R.dmin); free(R.davg); free(R.spike); free(R.spike_k);
     return 0;

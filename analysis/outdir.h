@@ -15,10 +15,11 @@
 /* The only names written into an output folder, then the pictures plot.gp
  * makes there (accepted, and removed, when an earlier folder is replaced). */
 #define AN_OUT_NAMES {"spectrum.txt", "raps.txt", "nn_hist.txt", "stats.json", "plot.gp", "pcf.txt", "pcf.gp", \
-                      "density.txt", "dda_raps.txt", "dda_spectrum.txt", "spectrum.png", "raps.png", "nn_hist.png", \
+                      "density.txt", "dda_raps.txt", "dda_spectrum.txt", "prefixes.txt", "spectrum.png", "raps.png", "nn_hist.png", \
                       "pcf.png"}
-#define AN_OUT_WRITTEN 10 /* density.txt, dda_raps.txt, dda_spectrum.txt: with --density only */
-#define AN_OUT_COUNT 14
+#define AN_OUT_WRITTEN 11 /* density.txt, dda_raps.txt, dda_spectrum.txt: with --density only;
+                            prefixes.txt with --prefixes only */
+#define AN_OUT_COUNT 15
 
 typedef struct {
     char *final, *tmp;

@@ -11,11 +11,18 @@
 #ifndef AN_POWER_H
 #define AN_POWER_H
 
+#include <math.h>
 #include <stddef.h>
 
 #define AN_KMAX 4096 /* largest K accepted (memory: about 160 K^2 bytes) */
 
 static inline size_t an_side(int K) { return 2 * (size_t)K + 1; }
+/* cfpo-analyze's default K for n points: ceil(6 sqrt(n)), clamped to [8, 2048]. */
+static inline int an_default_K(size_t n)
+{
+    const double K = ceil(6 * sqrt((double)n));
+    return K < 8 ? 8 : (K > 2048 ? 2048 : (int)K);
+}
 static inline size_t an_pidx(int K, int kx, int ky)
 {
     return (size_t)(ky + K) * an_side(K) + (size_t)(kx + K);

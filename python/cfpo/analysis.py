@@ -199,6 +199,43 @@ def integration(points, M=INTEG_M, seed=INTEG_SEED):
     return Integration(*_core.integration(a, m, s))
 
 
+PREFIX_BASE = 16  # analysis/measures/prefixes.h AN_PREFIX_BASE
+
+
+@dataclass
+class PrefixRow:
+    """One prefix P_m (the first m points) in its own units Delta(m):
+    kind "dyadic", "sample", "given" or "full"; P0 (NaN below 25 points);
+    shiftvar: the exact shift variance of each integrand."""
+    m: int
+    kind: str
+    delta_min: float
+    delta_avg: float
+    p0: float
+    shiftvar: dict
+
+
+@dataclass
+class Prefixes:
+    """The prefixes of a set in its order: rows (the rows of
+    cfpo-analyze's prefixes.txt) and the exact worst delta_min / Delta(m)
+    over every m >= base, reached first at worst_any_m."""
+    rows: list
+    worst_any: float
+    worst_any_m: int
+
+
+def prefixes(points, base=PREFIX_BASE, sizes=None):
+    """The prefix measures of a set in its order (Prefixes): cfpo-analyze
+    --prefixes [--prefix-base B] [--prefix-sizes L]. Default sizes: every
+    power of two from base to n, 2^k + 1 and round(2^k sqrt 2) between them,
+    and n; sizes: a sequence of whole numbers in [2, n] instead."""
+    a = _args.as_points(points)
+    b = _args.whole("base", base, 2, 1 << 62)
+    rows, worst, at = _core.prefixes(a, b, None if sizes is None else [_args.whole("sizes", x, 2, 1 << 62) for x in sizes])
+    return Prefixes([PrefixRow(*r) for r in rows], worst, at)
+
+
 @dataclass
 class Certificate:
     """An exact certificate that a set is a Farthest Point Distribution.

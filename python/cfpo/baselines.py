@@ -4,7 +4,7 @@ dart, bs, bridson: Poisson-disk samplers (cfpo-dart, cfpo-bs,
 cfpo-bridson) returning an (m, 2) float64 array (for bs and bridson m is
 about n: the maximal set at the radius n gives). fpo, lfpo, ccvt, ccdt,
 bnot, lloyd, gbn: iterative methods (cfpo-fpo, cfpo-lfpo, cfpo-ccvt,
-cfpo-ccdt, cfpo-bnot, cfpo-lloyd, cfpo-gbn), and white, jitter, sobol:
+cfpo-ccdt, cfpo-bnot, cfpo-lloyd, cfpo-gbn), and white, jitter, sobol, wse:
 direct samplers run the same way (0 iterations), returning a cfpo.Result, with the commands' stop rules
 (convergence by tol, target_min, target_avg, time_limit, max_iter), a
 progress callable that stops the run by returning True, and each
@@ -222,6 +222,11 @@ def gbn(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None,
     return _iterative("gbn", **locals())
 
 
+def wse(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None, progressive=None,
+        ratio=None, alpha=None, weight_limit=None, progress=None):
+    return _iterative("wse", **locals())
+
+
 white.__doc__ = ("White noise: n independent uniform points (cfpo-white); direct (0 iterations).\n"
                  + _options_doc("white") + _ITER_DOC)
 jitter.__doc__ = ("Jittered sampling: one uniform point in each of n strata, round(sqrt(n)) rows of\n"
@@ -230,6 +235,10 @@ jitter.__doc__ = ("Jittered sampling: one uniform point in each of n strata, rou
 sobol.__doc__ = ("Owen-scrambled Sobol': the first n points of the 2-D Sobol' sequence under nested\n"
                  "    uniform scrambling (cfpo-sobol); plain=True: unscrambled. Direct (0 iterations).\n"
                  + _options_doc("sobol") + _ITER_DOC)
+wse.__doc__ = ("Weighted sample elimination (Yuksel 2015) on the periodic unit square (cfpo-wse):\n"
+               "    ratio * n white-noise candidates eliminated to n; progressive=True: the order in\n"
+               "    which every prefix n / 2^k is the set left at that stage. Direct (0 iterations).\n"
+               + _options_doc("wse") + _ITER_DOC)
 lloyd.__doc__ = ("Lloyd's algorithm towards a centroidal Voronoi tessellation on the torus\n"
                  "    (cfpo-lloyd); converged when no site moves tol * L, or after iterations (100).\n" + _options_doc("lloyd") + _ITER_DOC)
 gbn.__doc__ = ("Gaussian blue noise (Ahmed, Ren, Wonka 2022) as the authors' toroidal code runs it\n"

@@ -98,6 +98,7 @@ PyObject *core_pcf(PyObject *self, PyObject *args);
 PyObject *core_delaunay(PyObject *self, PyObject *args);
 PyObject *core_density_measures(PyObject *self, PyObject *args);
 PyObject *core_integration(PyObject *self, PyObject *args);
+PyObject *core_prefixes(PyObject *self, PyObject *args);
 PyObject *core_poisson(PyObject *self, PyObject *args);
 /* core_density.c: density= (None, a SPEC string or a 2-D array) into *d;
  * 1 when loaded, 0 for None, -1 with a Python error (ValueError: the

@@ -1,5 +1,5 @@
-/* core_measures.c - cfpo._core.discrepancy, lowfreq, pcf, delaunay and
- * integration: the measures of
+/* core_measures.c - cfpo._core.discrepancy, lowfreq, pcf, delaunay,
+ * integration and prefixes: the measures of
  * analysis/measures/ for one set, the calls cfpo-analyze makes
  * (analysis/main.c), so the numbers are the command's. */
 #include "core.h"
@@ -10,6 +10,7 @@
 #include "lowfreq.h"
 #include "pcf.h"
 #include "power.h"
+#include "prefixes.h"
 #include "rings.h"
 #include "shiftvar.h"
 
@@ -161,4 +162,87 @@ PyObject *core_integration(PyObject *self, PyObject *args)
     Py_DECREF(a);
     if (rc != 0) return PyErr_NoMemory();
     return Py_BuildValue("(dddd)", r.gauss_mse, r.gauss_se, r.heaviside_mse, r.heaviside_se);
+}
+
+/* prefixes(points, base, sizes) -> ([(m, kind, delta_min, delta_avg, p0,
+ * {integrand: variance}), ...], worst_any, worst_any_m); sizes: a sequence
+ * of whole numbers or None (the default plan). cfpo-analyze --prefixes. */
+PyObject *core_prefixes(PyObject *self, PyObject *args)
+{
+    (void)self;
+    PyObject *obj, *sizes_obj;
+    Py_ssize_t base;
+    if (!PyArg_ParseTuple(args, "OnO", &obj, &base, &sizes_obj)) return NULL;
+    if (base < 2) return core_error(PyExc_ValueError, "prefixes: base must be at least 2");
+    size_t *sizes = NULL;
+    Py_ssize_t ns = 0;
+    if (sizes_obj != Py_None) {
+        PyObject *seq = PySequence_Fast(sizes_obj, "prefixes: sizes must be a sequence of whole numbers or None");
+        if (!seq) return NULL;
+        ns = PySequence_Fast_GET_SIZE(seq);
+        sizes = malloc(((size_t)ns + 1) * sizeof *sizes);
+        if (!sizes) {
+            Py_DECREF(seq);
+            return PyErr_NoMemory();
+        }
+        for (Py_ssize_t i = 0; i < ns; i++) {
+            const long long v = PyLong_AsLongLong(PySequence_Fast_GET_ITEM(seq, i));
+            if (v == -1 && PyErr_Occurred()) {
+                free(sizes);
+                Py_DECREF(seq);
+                return NULL;
+            }
+            if (v < 2) {
+                free(sizes);
+                Py_DECREF(seq);
+                return core_error(PyExc_ValueError, "prefixes: every size must be at least 2");
+            }
+            sizes[i] = (size_t)v;
+        }
+        Py_DECREF(seq);
+        if (ns == 0) {
+            free(sizes);
+            return core_error(PyExc_ValueError, "prefixes: no size");
+        }
+    }
+    size_t n;
+    PyArrayObject *a = core_points_in(obj, &n);
+    if (!a) {
+        free(sizes);
+        return NULL;
+    }
+    an_prefixes p;
+    char err[512];
+    int rc;
+    if (n < 2) {
+        Py_DECREF(a);
+        free(sizes);
+        return core_error(PyExc_ValueError, "prefixes: at least 2 points");
+    }
+    Py_BEGIN_ALLOW_THREADS
+    rc = an_prefixes_compute((const double *)PyArray_DATA(a), n, (size_t)base, sizes, (int)ns, 0, &p, err, sizeof err);
+    Py_END_ALLOW_THREADS
+    Py_DECREF(a);
+    free(sizes);
+    if (rc != 0) return core_error(PyExc_ValueError, err);
+    static const char *kinds[] = {"dyadic", "sample", "given", "full"};
+    PyObject *rows = PyList_New(p.count);
+    for (int i = 0; rows && i < p.count; i++) {
+        const an_prefix_row *r = &p.rows[i];
+        PyObject *vars = PyDict_New();
+        for (int t = 0; vars && t < AN_SHIFTVAR_COUNT; t++) {
+            PyObject *v = PyFloat_FromDouble(r->var[t]);
+            if (!v || PyDict_SetItemString(vars, an_integrands[t].name, v) != 0) Py_CLEAR(vars);
+            Py_XDECREF(v);
+        }
+        PyObject *row = vars ? Py_BuildValue("(nsdddN)", (Py_ssize_t)r->m, kinds[r->kind], r->dmin, r->davg, r->p0, vars)
+                             : NULL;
+        if (!row) Py_CLEAR(rows);
+        else PyList_SET_ITEM(rows, i, row);
+    }
+    const double worst = p.worst_any;
+    const Py_ssize_t at = (Py_ssize_t)p.worst_any_m;
+    an_prefixes_free(&p);
+    if (!rows) return NULL;
+    return Py_BuildValue("(Ndn)", rows, worst, at);
 }

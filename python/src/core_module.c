@@ -82,6 +82,7 @@ static PyMethodDef methods[] = {
     {"density_measures", core_density_measures, METH_VARARGS,
      "The measures under a density (see cfpo.analysis.density)."},
     {"integration", core_integration, METH_VARARGS, "UTK's integration test (see cfpo.analysis.integration)."},
+    {"prefixes", core_prefixes, METH_VARARGS, "Measures of the prefixes in file order (see cfpo.analysis.prefixes)."},
     {"poisson", core_poisson, METH_VARARGS, "Poisson-disk baselines (see cfpo.baselines)."},
     {"iterative", core_iterative, METH_VARARGS, "Iterative baselines (see cfpo.baselines)."},
     {"methods", core_methods, METH_NOARGS, "The baselines' descriptions: options, defaults, trace columns."},

@@ -137,6 +137,10 @@ B = cfpo.baselines
      lambda: B.ccvt(100, max_iter=3, points_per_site=64)),
     ("cfpo-ccdt", ["-n", 200, "--seed", 6, "--reference", 3],
      lambda: B.ccdt(200, seed=6, reference=3), lambda: B.ccdt(200, seed=6, max_iter=3)),
+    ("cfpo-wse", ["-n", 300, "--seed", 4, "--progressive"],
+     lambda: B.wse(300, seed=4, progressive=True), lambda: B.wse(300, seed=4)),
+    ("cfpo-wse", ["-n", 300, "--seed", 4, "--ratio", 3, "--alpha", 6, "--no-weight-limit"],
+     lambda: B.wse(300, seed=4, ratio=3, alpha=6, weight_limit=False), lambda: B.wse(300, seed=4)),
 ])
 def test_baseline_options_same_bytes(tmp_path, command, name, args, call, plain):
     out = command(name, *args, "-o", "c.npy").stdout

@@ -1,6 +1,6 @@
 """The measures of analysis/measures/ from Python: the numbers of
 cfpo-analyze's stats.json for the same set (low-frequency measures, shift
-variances, discrepancies), and their bad input."""
+variances, discrepancies, the prefix measures), and their bad input."""
 import json
 
 import numpy as np
@@ -87,3 +87,35 @@ def test_structure_properties():
         cfpo.analysis.pcf(white, sigma=0)
     with pytest.raises(ValueError):
         cfpo.analysis.integration(white, M=0)
+
+
+def test_prefixes_match_command(tmp_path, command):
+    """cfpo.analysis.prefixes gives the rows of cfpo-analyze --prefixes."""
+    pts = cfpo.baselines.wse(300, seed=4, progressive=True).points
+    cfpo.save(tmp_path / "p.npy", pts)
+    out = command("cfpo-analyze", "--no-discrepancy", "--no-delaunay", "--integration", "0", "--prefixes",
+                  "-o", "out", "p.npy")
+    rows = [l.split() for l in (tmp_path / "out" / "prefixes.txt").read_text().splitlines() if l[0] != "#"]
+    p = cfpo.analysis.prefixes(pts)
+    assert [r.m for r in p.rows] == [int(r[0]) for r in rows]
+    for r, c in zip(p.rows, rows):
+        assert r.kind == c[1] and f"{r.delta_min:.6f}" == c[2] and f"{r.delta_avg:.6f}" == c[3]
+        assert f"{r.p0:.6g}" == c[4]
+        assert [f"{v:.6g}" for v in r.shiftvar.values()] == c[5:]
+    summary = dict(kv.split("=", 1) for kv in out.stdout.split() if "=" in kv)
+    assert f"{p.worst_any:.6f}" == summary["prefix_worst_any_dmin"]
+    assert str(p.worst_any_m) == summary["prefix_worst_any_m"]
+    given = cfpo.analysis.prefixes(pts, sizes=[100, 20])
+    assert [r.m for r in given.rows] == [20, 100] and given.rows[0].kind == "given"
+
+
+def test_prefixes_bad_input():
+    pts = np.random.default_rng(5).random((100, 2))
+    with pytest.raises(ValueError, match="base"):
+        cfpo.analysis.prefixes(pts, base=200)
+    with pytest.raises(ValueError):
+        cfpo.analysis.prefixes(pts, sizes=[1])
+    with pytest.raises(ValueError, match="101"):
+        cfpo.analysis.prefixes(pts, sizes=[101])
+    with pytest.raises(TypeError):
+        cfpo.analysis.prefixes(pts, sizes=[2.5])

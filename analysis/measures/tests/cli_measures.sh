@@ -22,7 +22,7 @@ sw=$("$A" -q -t 1 -o w w.txt) || bad "cfpo-analyze w.txt failed"
 for k in $keys; do
   check "field \"\$sa\" $k | grep -Eq '^-?[0-9.]+(e[-+][0-9]+)?\$'" "$k missing or not a number: $sa"
 done
-check 'echo "$sa" | grep -q " check_maxdiff=- p0=.* shiftvar_disk_0.4=[^ ]* psi6=.* utk_heaviside_mse=[^ ]* peak_bytes=[0-9]* out=a$"' \
+check 'echo "$sa" | grep -q " check_maxdiff=- p0=.* shiftvar_disk_0.4=[^ ]* psi6=.* utk_heaviside_mse=[^ ]* prefix_base=- .* prefix_worst_any_m=- peak_bytes=[0-9]* out=a$"' \
   "key order: $sa"
 # CFPO against white noise: less low-frequency power, smaller discrepancies
 # and integration variances
