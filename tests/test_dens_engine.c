@@ -229,6 +229,11 @@ static void library(void)
     CHECK(cfpo_sample_density(n, &o, "swirl", b, &r2, err, sizeof err) == -1 && err[0] && !strchr(err, '\n'),
           "a bad density: '%s'", err);
     err[0] = 0;
+    cfpo_options pv = o;
+    pv.variant = CFPO_VARIANT_PAPER;
+    CHECK(cfpo_sample_density(n, &pv, "cos:a=0.9,res=64", b, &r2, err, sizeof err) == -1 && strstr(err, "variant"),
+          "another variant under a density: '%s'", err);
+    err[0] = 0;
     CHECK(cfpo_sample_density(50, &o, "ramp:contrast=200", b, &r2, err, sizeof err) == -1 && strstr(err, "too small"),
           "n too small for the density: '%s'", err);
     free(a); free(b);

@@ -50,6 +50,8 @@ expect 1 "not an image" -n 1000 --density swirl -o x.npy
 expect 2 "too small for this density" -n 50 --density ramp:contrast=200 -o x.npy
 expect 2 "dry-run" -n 1000 --density cos --dry-run
 expect 2 "variant" -n 1000 --density cos --variant paper -o x.npy
+expect 2 "tiles and --check do not go with --density" -n 1000 --density cos --tiles 1x1 -o x.npy
+expect 2 "tiles and --check do not go with --density" -n 1000 --density cos --check -o x.npy
 
 # same bytes for any thread count; --init; checkpoint and resume
 "$CFPO" -q -n 3000 --density cos:a=0.9 --max-iter 8 -t 1 -o a1.npy >/dev/null || bad "1 thread"
