@@ -25,7 +25,6 @@ typedef struct {
 } wire;
 
 struct cfpo_dens_dist {
-    const cfpo_density *d;
     int64_t g;
     int P, me, nnb;
     int *owner;   /* g g: the rank of each cell */
@@ -155,7 +154,7 @@ static int recut(cfpo_dens_dist *T, const cfpo_dens_store *s, double sx, double 
     return 0;
 }
 
-cfpo_dens_dist *cfpo_dens_dist_create(const cfpo_density *d, int64_t g, char *err, size_t errlen)
+cfpo_dens_dist *cfpo_dens_dist_create(int64_t g, char *err, size_t errlen)
 {
     const int P = comm_size();
     if ((int64_t)P > cfpo_dens_dist_max_ranks(g)) {
@@ -166,7 +165,6 @@ cfpo_dens_dist *cfpo_dens_dist_create(const cfpo_density *d, int64_t g, char *er
     }
     cfpo_dens_dist *T = calloc(1, sizeof *T);
     if (!T) goto oom;
-    T->d = d;
     T->g = g;
     T->P = P;
     T->me = comm_rank();

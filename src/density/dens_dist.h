@@ -71,10 +71,10 @@ typedef struct cfpo_dens_dist cfpo_dens_dist;
 /* The most ranks a grid of g cells a side supports: (g / 3)^2. */
 int64_t cfpo_dens_dist_max_ranks(int64_t g);
 
-/* The cut of the g x g cells under d over comm_size() ranks (the same on
+/* The cut of the g x g cells over comm_size() ranks (the same on
  * every rank). NULL with one line in err when there are too many ranks for
  * g, or out of memory. */
-cfpo_dens_dist *cfpo_dens_dist_create(const cfpo_density *d, int64_t g, char *err, size_t errlen);
+cfpo_dens_dist *cfpo_dens_dist_create(int64_t g, char *err, size_t errlen);
 
 /* This rank's cells of one colour (ix mod 3 + 3 (iy mod 3)), increasing. */
 const int64_t *cfpo_dens_dist_cells(const cfpo_dens_dist *T, int colour, int64_t *count);

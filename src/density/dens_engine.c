@@ -120,7 +120,7 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
             }
     }
     if (comm_size() > 1) { /* several ranks: each keeps its cells' points */
-        E->T = cfpo_dens_dist_create(d, g, err, errlen);
+        E->T = cfpo_dens_dist_create(g, err, errlen);
         E->all = malloc((size_t)n * 2 * sizeof *E->all);
         if (!E->T || !comm_all(E->all != NULL) || cfpo_dens_dist_keep(E->T, &E->s, 0, 0) != 0) {
             if (E->T) snprintf(err, errlen, "out of memory for %lld points", (long long)n);
