@@ -9,12 +9,19 @@
  *  - cos a=0.9 and the ramp 1:16 (pixels 1/64, several in the box): never
  *    above the grid's largest value plus the grid's resolution bound (the
  *    solve cannot beat the true maximum); how far below it falls is
- *    printed (the straight lines stand in for Apollonius circles). */
+ *    printed (the straight lines stand in for Apollonius circles);
+ *  - the routes: for random sets of up to 40 neighbours, the plain route
+ *    and the AVX-512 route (where the CPU has it) give the same bits, with
+ *    the density's global bound of q and with the tight bound of the box
+ *    (dens_qbound.h), at several floors. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "dens_qbound.h"
 #include "dens_solve.h"
+#include "dens_solve_impl.h"
+#include "solver_simd.h"
 #include "density.h"
 #include "testutil.h"
 
@@ -55,13 +62,13 @@ static void trials(const char *spec, int exact, int count)
         for (int j = 0; j < k; j++) yr[j] = cfpo_dens_local_q(&d, ox, oy, yx[j], yy[j]);
         cfpo_square S = {-s, -s, s, s};
         double cx, cy, f;
-        if (!cfpo_dens_solve(yx, yy, yr, k, S, &d, ox, oy, -1, &cx, &cy, &f, scratch)) continue;
+        if (!cfpo_dens_solve(yx, yy, yr, k, S, &d, sqrt(d.rho_max), ox, oy, -1, &cx, &cy, &f, scratch)) continue;
         n++;
         /* a floor below the best gives the same vertex; at or above it, none */
         const double floors[4] = {0, 0.5 * f, f * (1 - 1e-9), f};
         for (int q = 0; q < 4; q++) {
             double fx, fy, ff;
-            const int got = cfpo_dens_solve(yx, yy, yr, k, S, &d, ox, oy, floors[q], &fx, &fy, &ff, scratch);
+            const int got = cfpo_dens_solve(yx, yy, yr, k, S, &d, sqrt(d.rho_max), ox, oy, floors[q], &fx, &fy, &ff, scratch);
             if (q < 3 ? !(got && fx == cx && fy == cy && ff == f) : got) bad_floor++;
         }
         const double fv = cfpo_dens_value(yx, yy, yr, k, cfpo_dens_local_q(&d, ox, oy, cx, cy), cx, cy);
@@ -101,11 +108,73 @@ static void trials(const char *spec, int exact, int count)
     cfpo_density_free(&d);
 }
 
+/* The routes and the bounds against each other (see the header). */
+static void routes(const char *spec, int count)
+{
+    cfpo_density d;
+    cfpo_dens_qbound qb;
+    char err[256];
+    if (cfpo_density_load(spec, &d, err, sizeof err) != 0) { CHECK(0, "%s: %s", spec, err); return; }
+    if (cfpo_dens_qbound_build(&qb, &d) != 0) { CHECK(0, "%s: out of memory", spec); cfpo_density_free(&d); return; }
+    const int simd = cfpo_solver_avx512_usable();
+    unsigned long long seed = 777;
+    double yx[40], yy[40], yr[40], w[40], dd[40], scratch[8 * 48 + 16];
+    int differ = 0, tight = 0, n = 0;
+    for (int t = 0; t < count; t++) {
+        const double ox = urand(&seed), oy = urand(&seed), s = 0.01 + 0.04 * urand(&seed);
+        const int k = 1 + (int)(urand(&seed) * 40);
+        for (int j = 0; j < k; j++) {
+            const double x = (2 * urand(&seed) - 1) * 2 * s, y = (2 * urand(&seed) - 1) * 2 * s;
+            int at = j;
+            const double dj = x * x + y * y;
+            while (at > 0 && dd[at - 1] > dj) {
+                dd[at] = dd[at - 1]; yx[at] = yx[at - 1]; yy[at] = yy[at - 1];
+                at--;
+            }
+            dd[at] = dj; yx[at] = x; yy[at] = y;
+        }
+        for (int j = 0; j < k; j++) {
+            yr[j] = cfpo_dens_local_q(&d, ox, oy, yx[j], yy[j]);
+            w[j] = sqrt(yr[j]);
+        }
+        const cfpo_square S = {-s, -s, s, s};
+        const double qlo = cfpo_dens_qbound_box(&qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
+        const double qhi[2] = {sqrt(d.rho_max), qlo};
+        tight += qlo < qhi[0];
+        double ref_x = 0, ref_y = 0, ref_f = 0, floor_f = -1;
+        for (int q = 0; q < 3; q++) {
+            int ref = -1;
+            for (int b = 0; b < 2; b++)
+                for (int r = 0; r < 1 + simd; r++) {
+                    double cx = 0.5 * (S.x0 + S.x1), cy = 0.5 * (S.y0 + S.y1), f;
+                    const int got = r ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
+                                      : cfpo_dens_solve_plain(yx, yy, yr, w, k, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch);
+                    if (ref < 0) {
+                        ref = got;
+                        ref_x = cx; ref_y = cy; ref_f = f;
+                    } else if (got != ref || cx != ref_x || cy != ref_y || f != ref_f) {
+                        differ++;
+                    }
+                }
+            n++;
+            floor_f = ref ? ref_f * (q == 0 ? 0.5 : 1 - 1e-9) : -1;
+        }
+    }
+    CHECK(differ == 0, "%s: %d of %d solves differ between the routes or the bounds of q", spec, differ, n);
+    CHECK(tight > count / 2, "%s: the box's bound of q is below the global one in only %d of %d boxes", spec, tight, count);
+    printf("%s: %d solves by %s, same bits with both bounds of q\n", spec, n, simd ? "the plain and AVX-512 routes" : "the plain route");
+    cfpo_dens_qbound_free(&qb);
+    cfpo_density_free(&d);
+}
+
 int main(void)
 {
     trials("cos:a=0,res=16", 1, 300);
     trials("cos:a=0.9,res=64", 0, 300);
     trials("ramp:contrast=16,res=64", 0, 300);
     trials("balzer:res=64", 0, 300);
+    routes("cos:a=0.9,res=256", 400);
+    routes("ramp:contrast=16,res=256", 400);
+    routes("balzer:res=256", 400);
     return test_report(passed_, failed_);
 }

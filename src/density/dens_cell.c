@@ -132,9 +132,10 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         const double R = REACH * ri;
         cfpo_dens_span(bk, ax - R, ax + R, bk->x0, &fx, &nx_);
         cfpo_dens_span(bk, ay - R, ay + R, bk->y0, &fy, &ny_);
-        for (int iy = 0; iy < ny_; iy++)
+        for (int iy = 0; iy < ny_; iy++) {
+            const int ry = fy + iy < bk->B ? fy + iy : fy + iy - bk->B;
             for (int ix = 0; ix < nx_; ix++) {
-                const int c = ((fy + iy) % bk->B) * bk->B + (fx + ix) % bk->B;
+                const int c = ry * bk->B + (fx + ix < bk->B ? fx + ix : fx + ix - bk->B);
                 for (int j = bk->head[c]; j >= 0; j = bk->next[j]) {
                     if (j == p) continue;
                     double ex = b->bx[j] - ax, ey = b->by[j] - ay;
@@ -147,21 +148,27 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
                     while (t > 0 && (b->scratch[t - 1] > d2 || (b->scratch[t - 1] == d2 && b->nj[t - 1] > j))) {
                         b->scratch[t] = b->scratch[t - 1];
                         b->nj[t] = b->nj[t - 1];
-                        b->nx[t] = b->nx[t - 1]; b->ny[t] = b->ny[t - 1]; b->nr[t] = b->nr[t - 1];
                         t--;
                     }
                     b->scratch[t] = d2;
                     b->nj[t] = j;
-                    b->nx[t] = ax + ex; b->ny[t] = ay + ey; b->nr[t] = b->br[j];
                 }
             }
+        }
+        for (int t = 0; t < kk; t++) { /* their places, as the scan computed them */
+            const int j = b->nj[t];
+            double ex = b->bx[j] - ax, ey = b->by[j] - ay;
+            if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+            b->nx[t] = ax + ex; b->ny[t] = ay + ey; b->nr[t] = b->br[j];
+        }
         cfpo_square S = {ax - ri, ay - ri, ax + ri, ay + ri};
         if (S.x0 < 0) S.x0 = 0;
         if (S.y0 < 0) S.y0 = 0;
         if (S.x1 > hi) S.x1 = hi;
         if (S.y1 > hi) S.y1 = hi;
         double cxp, cyp, fc;
-        if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, S, E->d, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX))
+        const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
+        if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX))
             continue;
         /* a move must gain more than tol local spacings in the measure
          * (sqrt(f) / Delta), as the uniform path's must gain tol L; the

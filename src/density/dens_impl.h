@@ -10,6 +10,7 @@
 #include "dens_buckets.h"
 #include "dens_dist.h"
 #include "dens_engine.h"
+#include "dens_qbound.h"
 
 #define KMAX 40        /* neighbours the solve looks at, nearest first */
 #define REACH 2.5      /* ... within REACH local spacings */
@@ -30,6 +31,7 @@ typedef struct { /* one thread's buffers */
 
 struct cfpo_dens_engine {
     const cfpo_density *d;
+    cfpo_dens_qbound qb; /* the bound of q over a box, for the solve's prunings */
     int64_t n, g;
     cfpo_options o;
     double D, L, sx, sy;

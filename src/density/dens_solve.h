@@ -23,7 +23,7 @@
 #include "geom.h"
 
 /* Scratch doubles the solve needs for k neighbours. */
-static inline size_t cfpo_dens_scratch(int k) { return 5 * ((size_t)k + 8) + 16; }
+static inline size_t cfpo_dens_scratch(int k) { return 8 * ((size_t)k + 8) + 16; }
 
 /* Neighbours (yx, yy) with q = sqrt(rho) in yr (k of them, in a local frame whose
  * origin is (ox, oy) on the torus), the box S (local frame). Returns the
@@ -33,10 +33,12 @@ static inline size_t cfpo_dens_scratch(int k) { return 5 * ((size_t)k + 8) + 16;
  * polygons and evaluations that cannot beat it stop early, and the vertex
  * returned is the one the solve with floor_f < 0 returns whenever that
  * one beats floor_f (the same vertices, in the same order, strict
- * comparisons). */
+ * comparisons). qhi bounds q over every pixel a spot of S can read
+ * (dens_qbound.h; sqrt(rho_max) always does): the prunings use it, and
+ * any valid bound gives the same result. */
 int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, cfpo_square S,
-                    const cfpo_density *d, double ox, double oy, double floor_f, double *cx, double *cy, double *f,
-                    double *scratch);
+                    const cfpo_density *d, double qhi, double ox, double oy, double floor_f, double *cx, double *cy,
+                    double *f, double *scratch);
 
 /* f at c (local frame) against the k neighbours. */
 double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy);

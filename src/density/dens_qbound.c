@@ -1,0 +1,100 @@
+/* dens_qbound.c - layer 2: the pyramid of maxima of q (dens_qbound.h). */
+#include "dens_qbound.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+int cfpo_dens_qbound_build(cfpo_dens_qbound *b, const cfpo_density *d)
+{
+    b->levels = 0;
+    int64_t w = d->w, h = d->h;
+    for (int l = 0; l < CFPO_QBOUND_LEVELS; l++) {
+        b->w[l] = w;
+        b->h[l] = h;
+        b->q[l] = malloc((size_t)(w * h) * sizeof(double));
+        if (!b->q[l]) {
+            cfpo_dens_qbound_free(b);
+            return -1;
+        }
+        b->levels = l + 1;
+        if (l == 0) {
+            for (int64_t k = 0; k < w * h; k++) b->q[0][k] = sqrt(d->rho[k]);
+        } else {
+            const int64_t pw = b->w[l - 1], ph = b->h[l - 1];
+            const double *p = b->q[l - 1];
+            for (int64_t j = 0; j < h; j++)
+                for (int64_t i = 0; i < w; i++) {
+                    double m = 0;
+                    for (int64_t dj = 0; dj < 2; dj++)
+                        for (int64_t di = 0; di < 2; di++) {
+                            const int64_t ii = 2 * i + di, jj = 2 * j + dj;
+                            if (ii < pw && jj < ph && p[jj * pw + ii] > m) m = p[jj * pw + ii];
+                        }
+                    b->q[l][j * w + i] = m;
+                }
+        }
+        if (w == 1 && h == 1) break;
+        w = (w + 1) / 2;
+        h = (h + 1) / 2;
+    }
+    return 0;
+}
+
+/* The pixel range [a, z] of one axis (n pixels) that [lo, hi] touches,
+ * widened by one pixel each side, as at most two ranges inside [0, n). */
+static int ranges(double lo, double hi, int64_t n, int64_t r[2][2])
+{
+    const double fa = floor(lo * (double)n) - 1, fz = floor(hi * (double)n) + 1;
+    if (!(fz - fa + 1 < (double)n)) {
+        r[0][0] = 0;
+        r[0][1] = n - 1;
+        return 1;
+    }
+    int64_t a = (int64_t)fmod(fa, (double)n), z;
+    if (a < 0) a += n;
+    z = a + (int64_t)(fz - fa);
+    if (z < n) {
+        r[0][0] = a;
+        r[0][1] = z;
+        return 1;
+    }
+    r[0][0] = a;
+    r[0][1] = n - 1;
+    r[1][0] = 0;
+    r[1][1] = z - n;
+    return 2;
+}
+
+/* The max over pixels [xa, xz] x [ya, yz] of level 0: the lowest level
+ * where each axis's range spans at most two texels. */
+static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya, int64_t yz)
+{
+    int l = 0;
+    while (l + 1 < b->levels && ((xz >> l) - (xa >> l) > 1 || (yz >> l) - (ya >> l) > 1)) l++;
+    double m = 0;
+    for (int64_t j = ya >> l; j <= yz >> l; j++)
+        for (int64_t i = xa >> l; i <= xz >> l; i++) {
+            const double v = b->q[l][j * b->w[l] + i];
+            if (v > m) m = v;
+        }
+    return m;
+}
+
+double cfpo_dens_qbound_box(const cfpo_dens_qbound *b, double x0, double y0, double x1, double y1)
+{
+    int64_t rx[2][2], ry[2][2];
+    const int nx = ranges(x0, x1, b->w[0], rx), ny = ranges(y0, y1, b->h[0], ry);
+    double m = 0;
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            const double v = rect(b, rx[i][0], rx[i][1], ry[j][0], ry[j][1]);
+            if (v > m) m = v;
+        }
+    return m;
+}
+
+void cfpo_dens_qbound_free(cfpo_dens_qbound *b)
+{
+    for (int l = 0; l < b->levels; l++) free(b->q[l]);
+    b->levels = 0;
+}

@@ -1,0 +1,39 @@
+/* dens_qbound.h - layer 2: an upper bound of q = sqrt(rho) over a box of
+ * the torus, for the local solve's prunings (dens_solve.h).
+ *
+ * The solve abandons a polygon or a vertex when even the largest q its
+ * spot can have cannot lift it above the best value found. With the
+ * density's global maximum for that q, the bound is loose wherever rho is
+ * below its maximum (4.4x at the trough of cos a=0.9), and little is
+ * pruned there. A pyramid of maxima (level 0 the pixels' q, each level
+ * above the max of 2 x 2 texels of the one below) gives the largest q
+ * over the pixels a box touches in at most 16 reads. Any spot the solve
+ * evaluates in the box reads one of those pixels (the box is widened by
+ * one pixel each side against rounding), so the bound holds bit for bit
+ * and the solve's result does not change; only its work does.
+ * Owns: the pyramid and its box query. */
+#ifndef CFPO_DENS_QBOUND_H
+#define CFPO_DENS_QBOUND_H
+
+#include <stdint.h>
+
+#include "density.h"
+
+#define CFPO_QBOUND_LEVELS 24
+
+typedef struct {
+    int levels;
+    int64_t w[CFPO_QBOUND_LEVELS], h[CFPO_QBOUND_LEVELS];
+    double *q[CFPO_QBOUND_LEVELS]; /* level l: w[l] x h[l] texels, row after row */
+} cfpo_dens_qbound;
+
+/* Builds the pyramid of d; 0, or -1 when out of memory (nothing held). */
+int cfpo_dens_qbound_build(cfpo_dens_qbound *b, const cfpo_density *d);
+
+/* The largest q over the pixels that the torus points of [x0, x1] x [y0,
+ * y1] fall in (x0 <= x1, y0 <= y1, any reals: the box is taken modulo 1). */
+double cfpo_dens_qbound_box(const cfpo_dens_qbound *b, double x0, double y0, double x1, double y1);
+
+void cfpo_dens_qbound_free(cfpo_dens_qbound *b);
+
+#endif

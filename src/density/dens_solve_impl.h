@@ -1,0 +1,157 @@
+/* dens_solve_impl.h - layer 2: the pieces of the density solve that its
+ * plain route (dens_solve.c) and its AVX-512 route (dens_solve_avx512.c)
+ * share, so that both give the same bits. Include only from those two.
+ * May include dens_solve.h. */
+#ifndef CFPO_DENS_SOLVE_IMPL_H
+#define CFPO_DENS_SOLVE_IMPL_H
+
+#include <math.h>
+
+#include "dens_solve.h"
+
+#define DENS_CELLS 10 /* the polygons of the DENS_CELLS nearest neighbours (given nearest first) */
+#define DENS_BIG 64   /* a polygon of more vertices is not cut further (rounding's pathology) */
+
+/* The cut of the polygon poly (nv <= DENS_BIG vertices, x y interleaved)
+ * by the line through (mx, my) with normal (nx, ny), keeping the side
+ * s <= 0, into next (at most vmax vertices). -1 when the line misses it
+ * (every s <= 0), 0 when it removes all of it (every s > 0), else the
+ * count, and in *far2 the largest squared distance of the output from
+ * (ax, ay). */
+static inline int dens_cut(const double *poly, int nv, double mx, double my, double nx, double ny, double ax,
+                           double ay, int vmax, double *next, double *far2)
+{
+    double smax = -INFINITY, smin = INFINITY, sd[DENS_BIG];
+    for (int v = 0; v < nv; v++) {
+        const double s = (poly[2 * v] - mx) * nx + (poly[2 * v + 1] - my) * ny;
+        sd[v] = s;
+        if (s > smax) smax = s;
+        if (s < smin) smin = s;
+    }
+    if (smax <= 0) return -1;
+    if (smin > 0) return 0;
+    int nn = 0;
+    for (int v = 0; v < nv && nn + 2 <= vmax; v++) {
+        const int w = v + 1 == nv ? 0 : v + 1;
+        const double s0 = sd[v], s1 = sd[w];
+        if (s0 <= 0) {
+            next[2 * nn] = poly[2 * v];
+            next[2 * nn + 1] = poly[2 * v + 1];
+            nn++;
+        }
+        if ((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0)) {
+            const double tt = s0 / (s0 - s1);
+            next[2 * nn] = poly[2 * v] + tt * (poly[2 * w] - poly[2 * v]);
+            next[2 * nn + 1] = poly[2 * v + 1] + tt * (poly[2 * w + 1] - poly[2 * v + 1]);
+            nn++;
+        }
+    }
+    double f = 0;
+    for (int v = 0; v < nn; v++) {
+        const double dx = next[2 * v] - ax, dy = next[2 * v + 1] - ay;
+        if (dx * dx + dy * dy > f) f = dx * dx + dy * dy;
+    }
+    *far2 = f;
+    return nn;
+}
+
+/* The lines of every y_j against y_i: each passes through the point
+ * dividing y_i y_j in the ratio w_j : w_i (w = rho^(1/4)), at t_j = w_j /
+ * (w_i + w_j) of the way, normal y_j - y_i; h_j = t_j^2 |y_j - y_i|^2 is
+ * its squared distance from y_i, so it cannot meet a polygon whose
+ * vertices lie within sqrt(far2) of y_i when h_j >= far2. One pass with
+ * no branches (the compiler vectorises it), before the cuts. */
+static inline void dens_lines(double ax, double ay, double wi, const double *yx, const double *yy, const double *w,
+                              int k, double *t, double *h)
+{
+    for (int j = 0; j < k; j++) {
+        const double ux = yx[j] - ax, uy = yy[j] - ay;
+        const double tj = w[j] / (wi + w[j]), n2 = ux * ux + uy * uy;
+        t[j] = tj;
+        h[j] = tj * tj * n2;
+    }
+}
+
+/* The squared measure's geometric part at (px, py): the min over the k
+ * neighbours of |c - y_j|^2 q_j, given y_i's own term geo; the scan
+ * stops once even qhi cannot lift it above best (a value that fails
+ * then fails at the end: the min only falls). */
+static inline double dens_geo_plain(double px, double py, const double *yx, const double *yy, const double *yr, int k,
+                                    int i, double geo, double qhi, double best)
+{
+    for (int j = 0; j < k && geo * qhi > best; j++) {
+        if (j == i) continue;
+        const double dx = px - yx[j], dy = py - yy[j];
+        const double val = (dx * dx + dy * dy) * yr[j];
+        if (val < geo) geo = val;
+    }
+    return geo;
+}
+
+typedef double (*dens_geo_fn)(double px, double py, const double *yx, const double *yy, const double *yr, int k,
+                              int i, double geo, double qhi, double best);
+
+/* Evaluates the polygon of y_i (vertices (x[v s], y[v s]), v < nv) into
+ * the running best: each vertex clamped to S, f there exactly (the min
+ * over all neighbours of |c - y_j|^2 q_j by geo_of, times q(c) from its
+ * pixel), abandoned as soon as even qhi cannot lift it above *best (y_i's
+ * own term first: rounding is monotone, so the min is the same bits in
+ * any order). Returns whether a vertex replaced *best. */
+static inline int dens_eval(const double *x, const double *y, int s, int nv, int i, const double *yx,
+                            const double *yy, const double *yr, int k, cfpo_square S, const cfpo_density *d,
+                            double qhi, double ox, double oy, double *best, double *cx, double *cy, dens_geo_fn geo_of)
+{
+    int found = 0;
+    const double ax = yx[i], ay = yy[i];
+    for (int v = 0; v < nv; v++) {
+        double px = x[v * s], py = y[v * s];
+        if (px < S.x0) px = S.x0;
+        if (px > S.x1) px = S.x1;
+        if (py < S.y0) py = S.y0;
+        if (py > S.y1) py = S.y1;
+        const double ex = px - ax, ey = py - ay;
+        double geo = (ex * ex + ey * ey) * yr[i];
+        if (!(geo * qhi > *best)) continue;
+        geo = geo_of(px, py, yx, yy, yr, k, i, geo, qhi, *best);
+        if (!(geo * qhi > *best)) continue;
+        const double rc = cfpo_dens_local_q(d, ox, oy, px, py);
+        if (!(rc > 0)) continue;
+        const double val = geo * rc;
+        if (val > *best) {
+            *best = val;
+            *cx = px;
+            *cy = py;
+            found = 1;
+        }
+    }
+    return found;
+}
+
+/* The squared distance from (ax, ay) of S's farthest corner, and S's
+ * corners in order into c. */
+static inline double dens_corners(cfpo_square S, double ax, double ay, double c[4][2])
+{
+    c[0][0] = S.x0; c[0][1] = S.y0;
+    c[1][0] = S.x1; c[1][1] = S.y0;
+    c[2][0] = S.x1; c[2][1] = S.y1;
+    c[3][0] = S.x0; c[3][1] = S.y1;
+    double far2 = 0;
+    for (int q = 0; q < 4; q++) {
+        const double dx = c[q][0] - ax, dy = c[q][1] - ay;
+        if (dx * dx + dy * dy > far2) far2 = dx * dx + dy * dy;
+    }
+    return far2;
+}
+
+/* The plain and AVX-512 routes (call the latter only where
+ * cfpo_solver_avx512_usable() says 1): cfpo_dens_solve's arguments, k > 0,
+ * w[j] = sqrt(yr[j]) given; scratch holds 8 (k + 8) doubles, w among them
+ * at 4 (k + 8). */
+int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k,
+                          cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
+                          double *cx, double *cy, double *f, double *scratch);
+int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k,
+                           cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
+                           double *cx, double *cy, double *f, double *scratch);
+
+#endif

@@ -1,0 +1,102 @@
+/* test_dens_qbound.c - the bound of q = sqrt(rho) over a box
+ * (src/density/dens_qbound.c), on random boxes of random densities (odd
+ * sizes, so the pyramid's levels have ragged edges), boxes that wrap
+ * around the torus, tiny boxes and boxes wider than the torus:
+ *  - it bounds q at every point of the box, read as the solve reads it
+ *    (the torus point wrapped, then its pixel);
+ *  - it is local: at most the largest q over the box widened by twice its
+ *    span and eight pixels each side (brute force over the pixels; a
+ *    level of the pyramid is chosen where the span covers at most two
+ *    texels, each under twice the span plus three pixels), so it is
+ *    not the global maximum in disguise. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "dens_qbound.h"
+#include "dens_solve.h"
+#include "density.h"
+#include "testutil.h"
+
+static int passed_, failed_;
+
+static double urand(unsigned long long *s)
+{
+    *s = *s * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(*s >> 11) / 9007199254740992.0;
+}
+
+/* The largest q over the pixels whose centres lie within [x0, x1] x [y0,
+ * y1] widened by `grow` each side (the torus: taken modulo 1). */
+static double brute(const cfpo_density *d, double x0, double y0, double x1, double y1, double grow)
+{
+    double m = 0;
+    for (int64_t j = 0; j < d->h; j++)
+        for (int64_t i = 0; i < d->w; i++) {
+            const double cx = (i + 0.5) / (double)d->w, cy = (j + 0.5) / (double)d->h;
+            const double ux = cx - (x0 - grow) - floor(cx - (x0 - grow)), uy = cy - (y0 - grow) - floor(cy - (y0 - grow));
+            if (ux <= x1 - x0 + 2 * grow && uy <= y1 - y0 + 2 * grow && sqrt(d->rho[j * d->w + i]) > m)
+                m = sqrt(d->rho[j * d->w + i]);
+        }
+    return m;
+}
+
+static void boxes(const cfpo_density *d, const char *what, unsigned long long seed, int count)
+{
+    cfpo_dens_qbound b;
+    if (cfpo_dens_qbound_build(&b, d) != 0) { CHECK(0, "%s: out of memory", what); return; }
+    int below = 0, loose = 0, global = 0;
+    const double px = 1.0 / (double)d->w, py = 1.0 / (double)d->h;
+    for (int t = 0; t < count; t++) {
+        const int kind = t % 4; /* 0 small, 1 tiny, 2 wide, 3 around an edge of the torus */
+        const double sx = kind == 1 ? 1e-6 * urand(&seed) : kind == 2 ? 0.5 + urand(&seed) : 0.2 * urand(&seed);
+        const double sy = kind == 1 ? 1e-6 * urand(&seed) : kind == 2 ? 0.3 * urand(&seed) : 0.2 * urand(&seed);
+        double x0 = kind == 3 ? 1 - 0.5 * sx : 3 * urand(&seed) - 1, y0 = kind == 3 ? -0.5 * sy : 3 * urand(&seed) - 1;
+        const double x1 = x0 + sx, y1 = y0 + sy;
+        const double q = cfpo_dens_qbound_box(&b, x0, y0, x1, y1);
+        for (int s = 0; s < 50; s++) {
+            const double cx = x0 + (s == 0 ? 0 : s == 1 ? sx : urand(&seed) * sx);
+            const double cy = y0 + (s == 0 ? 0 : s == 1 ? sy : urand(&seed) * sy);
+            if (cfpo_dens_local_q(d, 0, 0, cx, cy) > q) below++;
+        }
+        const double grow = 2 * (sx > sy ? sx : sy) + 8 * (px > py ? px : py);
+        if (q > brute(d, x0, y0, x1, y1, grow)) loose++;
+        global += q == sqrt(d->rho_max);
+    }
+    CHECK(below == 0, "%s: %d points of a box above its bound", what, below);
+    CHECK(loose == 0, "%s: %d bounds above the largest q near the box", what, loose);
+    CHECK(global < count, "%s: every bound is the global maximum", what);
+    printf("%s: %d boxes, %d of them bounded by the global maximum\n", what, count, global);
+    cfpo_dens_qbound_free(&b);
+}
+
+int main(void)
+{
+    unsigned long long seed = 99;
+    const int64_t sizes[3][2] = {{37, 23}, {1, 5}, {64, 64}};
+    for (int z = 0; z < 3; z++) {
+        const int64_t w = sizes[z][0], h = sizes[z][1];
+        double *v = malloc((size_t)(w * h) * sizeof *v);
+        for (int64_t k = 0; k < w * h; k++) v[k] = urand(&seed) < 0.2 ? 0 : 0.05 + urand(&seed);
+        v[0] = 1;
+        cfpo_density d;
+        char err[256], what[64];
+        snprintf(what, sizeof what, "random %lld x %lld", (long long)w, (long long)h);
+        if (cfpo_density_from_values(v, w, h, what, &d, err, sizeof err) != 0) {
+            CHECK(0, "%s: %s", what, err);
+        } else {
+            boxes(&d, what, seed + (unsigned long long)z, 400);
+            cfpo_density_free(&d);
+        }
+        free(v);
+    }
+    cfpo_density d;
+    char err[256];
+    if (cfpo_density_load("cos:a=0.9,res=128", &d, err, sizeof err) == 0) {
+        boxes(&d, "cos a=0.9", seed, 400);
+        cfpo_density_free(&d);
+    } else {
+        CHECK(0, "cos: %s", err);
+    }
+    return test_report(passed_, failed_);
+}
