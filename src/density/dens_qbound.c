@@ -4,38 +4,52 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* A float at least v (v >= 0, finite). */
+static float up(double v)
+{
+    float f = (float)v;
+    return (double)f < v ? nextafterf(f, INFINITY) : f;
+}
+
+/* Level l's texel (i, j): the max of q over the pixels it covers. */
+static double texel(const cfpo_dens_qbound *b, int l, int64_t i, int64_t j)
+{
+    return l == 0 ? sqrt(b->d->rho[j * b->w[0] + i]) : (double)b->q[l][j * b->w[l] + i];
+}
+
 int cfpo_dens_qbound_build(cfpo_dens_qbound *b, const cfpo_density *d)
 {
-    b->levels = 0;
+    b->d = d;
+    b->levels = 1;
+    b->w[0] = d->w;
+    b->h[0] = d->h;
+    b->q[0] = NULL;
     int64_t w = d->w, h = d->h;
-    for (int l = 0; l < CFPO_QBOUND_LEVELS; l++) {
+    for (int l = 1; l < CFPO_QBOUND_LEVELS && (w > 1 || h > 1); l++) {
+        const int64_t pw = w, ph = h;
+        w = (w + 1) / 2;
+        h = (h + 1) / 2;
         b->w[l] = w;
         b->h[l] = h;
-        b->q[l] = malloc((size_t)(w * h) * sizeof(double));
+        b->q[l] = malloc((size_t)(w * h) * sizeof(float));
         if (!b->q[l]) {
             cfpo_dens_qbound_free(b);
             return -1;
         }
         b->levels = l + 1;
-        if (l == 0) {
-            for (int64_t k = 0; k < w * h; k++) b->q[0][k] = sqrt(d->rho[k]);
-        } else {
-            const int64_t pw = b->w[l - 1], ph = b->h[l - 1];
-            const double *p = b->q[l - 1];
-            for (int64_t j = 0; j < h; j++)
-                for (int64_t i = 0; i < w; i++) {
-                    double m = 0;
-                    for (int64_t dj = 0; dj < 2; dj++)
-                        for (int64_t di = 0; di < 2; di++) {
-                            const int64_t ii = 2 * i + di, jj = 2 * j + dj;
-                            if (ii < pw && jj < ph && p[jj * pw + ii] > m) m = p[jj * pw + ii];
+        for (int64_t j = 0; j < h; j++)
+            for (int64_t i = 0; i < w; i++) {
+                double m = 0;
+                for (int64_t dj = 0; dj < 2; dj++)
+                    for (int64_t di = 0; di < 2; di++) {
+                        const int64_t ii = 2 * i + di, jj = 2 * j + dj;
+                        if (ii < pw && jj < ph) {
+                            const double v = texel(b, l - 1, ii, jj);
+                            if (v > m) m = v;
                         }
-                    b->q[l][j * w + i] = m;
-                }
-        }
-        if (w == 1 && h == 1) break;
-        w = (w + 1) / 2;
-        h = (h + 1) / 2;
+                    }
+                b->q[l][j * w + i] = up(m);
+            }
     }
     return 0;
 }
@@ -74,7 +88,7 @@ static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya
     double m = 0;
     for (int64_t j = ya >> l; j <= yz >> l; j++)
         for (int64_t i = xa >> l; i <= xz >> l; i++) {
-            const double v = b->q[l][j * b->w[l] + i];
+            const double v = texel(b, l, i, j);
             if (v > m) m = v;
         }
     return m;
@@ -95,6 +109,6 @@ double cfpo_dens_qbound_box(const cfpo_dens_qbound *b, double x0, double y0, dou
 
 void cfpo_dens_qbound_free(cfpo_dens_qbound *b)
 {
-    for (int l = 0; l < b->levels; l++) free(b->q[l]);
+    for (int l = 1; l < b->levels; l++) free(b->q[l]);
     b->levels = 0;
 }

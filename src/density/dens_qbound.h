@@ -22,12 +22,14 @@
 #define CFPO_QBOUND_LEVELS 24
 
 typedef struct {
+    const cfpo_density *d; /* level 0 */
     int levels;
     int64_t w[CFPO_QBOUND_LEVELS], h[CFPO_QBOUND_LEVELS];
-    double *q[CFPO_QBOUND_LEVELS]; /* level l: w[l] x h[l] texels, row after row */
+    float *q[CFPO_QBOUND_LEVELS]; /* level l >= 1: w[l] x h[l] texels, row after row, each at least its max */
 } cfpo_dens_qbound;
 
-/* Builds the pyramid of d; 0, or -1 when out of memory (nothing held). */
+/* Builds the pyramid of d (which must outlive it); 0, or -1 when out of
+ * memory (nothing held). */
 int cfpo_dens_qbound_build(cfpo_dens_qbound *b, const cfpo_density *d);
 
 /* The largest q over the pixels that the torus points of [x0, x1] x [y0,
