@@ -108,27 +108,6 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         /* neighbours by their weight in the measure, d^2 q_j, up to what a
          * neighbour of the point's own density at REACH spacings weighs */
         const double T = REACH * REACH * ri * ri * (ra > 0 ? ra : lo);
-        const int cp = cfpo_dens_bucket_of(bk, ax, ay);
-        /* old: the smallest d^2 q_j over the block, by rings around the
-         * point until the points left are too far to go below it */
-        double old = INFINITY;
-        for (int k = 0;; k++) {
-            if (k > 1 && qlo > 0) {
-                const double e = (double)(k - 1) * h;
-                if (e * e * qlo >= old * BOUND_SAFE) break;
-            }
-            const int nb = cfpo_dens_ring(bk, cp, k, b->ring);
-            if (nb < 0) break;
-            for (int r = 0; r < nb; r++)
-                for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
-                    if (j == p) continue;
-                    double ex = b->bx[j] - ax, ey = b->by[j] - ay;
-                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
-                    const double v = (ex * ex + ey * ey) * b->br[j];
-                    if (v < old) old = v;
-                }
-        }
-        const double oldf = old * ra;
         /* the KMAX nearest in the measure (smallest d^2 q_j) within T,
          * nearest first (ties: block order), from the buckets that cover
          * the reach: d^2 q_j < T needs d < sqrt(T / qlo). Ordered by
@@ -168,6 +147,31 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
             if (wrap) { ex -= rint(ex); ey -= rint(ey); }
             b->nx[t] = ax + ex; b->ny[t] = ay + ey; b->nr[t] = b->br[j];
         }
+        const int cp = cfpo_dens_bucket_of(bk, ax, ay);
+        /* old: the smallest d^2 q_j over the block. The scan above saw
+         * every point with d^2 q_j < T, so when it found one its first key
+         * is that smallest value (the same expression, bit for bit); else
+         * rings of buckets around the point until the points left are too
+         * far to go below it */
+        const int seen = kk > 0 && b->scratch[0] < T * (1 - 1e-9); /* clear of the reach's rounding */
+        double old = seen ? b->scratch[0] : INFINITY;
+        for (int k = 0; !seen; k++) {
+            if (k > 1 && qlo > 0) {
+                const double e = (double)(k - 1) * h;
+                if (e * e * qlo >= old * BOUND_SAFE) break;
+            }
+            const int nb = cfpo_dens_ring(bk, cp, k, b->ring);
+            if (nb < 0) break;
+            for (int r = 0; r < nb; r++)
+                for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
+                    if (j == p) continue;
+                    double ex = b->bx[j] - ax, ey = b->by[j] - ay;
+                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                    const double v = (ex * ex + ey * ey) * b->br[j];
+                    if (v < old) old = v;
+                }
+        }
+        const double oldf = old * ra;
         cfpo_square S = {ax - ri, ay - ri, ax + ri, ay + ri};
         if (S.x0 < 0) S.x0 = 0;
         if (S.y0 < 0) S.y0 = 0;
