@@ -43,12 +43,9 @@ int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, 
             if (j == i || hl[j] >= far2) continue; /* the line misses the polygon */
             const double nx = yx[j] - ax, ny = yy[j] - ay, mx = ax + tl[j] * nx, my = ay + tl[j] * ny;
             if (nv > DENS_BIG) break;
-            const int nn = dens_cut(poly, nv, mx, my, nx, ny, ax, ay, vmax, next, &far2);
+            const int nn = dens_cut(&poly, nv, mx, my, nx, ny, ax, ay, vmax, &next, &far2);
             if (nn < 0) continue;
             if (nn == 0) { alive = 0; break; }
-            double *tmp = poly;
-            poly = next;
-            next = tmp;
             nv = nn;
             if (qhi * far2 * yr[i] <= best) alive = 0;
         }

@@ -72,12 +72,9 @@ T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double
                 }
             } else {
                 if (nv > DENS_BIG) break;
-                nn = dens_cut(poly, nv, mx, my, nx, ny, ax, ay, vmax, next, &far2);
+                nn = dens_cut(&poly, nv, mx, my, nx, ny, ax, ay, vmax, &next, &far2);
                 if (nn < 0) continue;
                 if (nn == 0) { alive = 0; break; }
-                double *tmp = poly;
-                poly = next;
-                next = tmp;
             }
             nv = nn;
             if (qhi * far2 * yr[i] <= best) alive = 0;

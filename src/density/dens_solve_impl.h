@@ -12,15 +12,17 @@
 #define DENS_CELLS 10 /* the polygons of the DENS_CELLS nearest neighbours (given nearest first) */
 #define DENS_BIG 64   /* a polygon of more vertices is not cut further (rounding's pathology) */
 
-/* The cut of the polygon poly (nv <= DENS_BIG vertices, x y interleaved)
+/* The cut of the polygon *pp (nv <= DENS_BIG vertices, x y interleaved)
  * by the line through (mx, my) with normal (nx, ny), keeping the side
- * s <= 0, into next (at most vmax vertices). -1 when the line misses it
- * (every s <= 0), 0 when it removes all of it (every s > 0), else the
- * count, and in *far2 the largest squared distance of the output from
- * (ax, ay). */
-static inline int dens_cut(const double *poly, int nv, double mx, double my, double nx, double ny, double ax,
-                           double ay, int vmax, double *next, double *far2)
+ * s <= 0, into *pn (at most vmax vertices), which then becomes *pp (the
+ * two buffers swap). -1 when the line misses it (every s <= 0), 0 when it
+ * removes all of it (every s > 0), else the count, and in *far2 the
+ * largest squared distance of the output from (ax, ay). */
+static inline int dens_cut(double **pp, int nv, double mx, double my, double nx, double ny, double ax, double ay,
+                           int vmax, double **pn, double *far2)
 {
+    const double *poly = *pp;
+    double *next = *pn;
     double smax = -INFINITY, smin = INFINITY, sd[DENS_BIG];
     for (int v = 0; v < nv; v++) {
         const double s = (poly[2 * v] - mx) * nx + (poly[2 * v + 1] - my) * ny;
@@ -52,6 +54,8 @@ static inline int dens_cut(const double *poly, int nv, double mx, double my, dou
         if (dx * dx + dy * dy > f) f = dx * dx + dy * dy;
     }
     *far2 = f;
+    *pn = *pp;
+    *pp = next;
     return nn;
 }
 
