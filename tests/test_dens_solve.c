@@ -20,7 +20,7 @@
 
 #include "dens_qbound.h"
 #include "dens_solve.h"
-#include "dens_solve_impl.h"
+#include "dens_clip.h"
 #include "solver_simd.h"
 #include "density.h"
 #include "testutil.h"

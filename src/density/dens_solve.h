@@ -19,6 +19,7 @@
 
 #include <math.h>
 
+#include "dens_clip.h"
 #include "density.h"
 #include "geom.h"
 
@@ -42,11 +43,5 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
 
 /* f at c (local frame) against the k neighbours. */
 double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy);
-
-/* q = sqrt(rho) at the local point (cx, cy) of the frame at (ox, oy). */
-static inline double cfpo_dens_local_q(const cfpo_density *d, double ox, double oy, double cx, double cy)
-{
-    return sqrt(cfpo_density_at(d, cfpo_wrap01(ox + cx), cfpo_wrap01(oy + cy)));
-}
 
 #endif

@@ -1,5 +1,5 @@
 /* dens_solve_avx512.c - layer 2, host only: the density solve's AVX-512
- * route, the same bits as the plain route (dens_solve.c).
+ * route, the same bits as the plain route (dens_solve_plain.c).
  *
  * The polygons are clipped as LocalCFPO's AVX-512 route clips them: a
  * polygon of up to 8 vertices lives in two 8-lane registers and each cut
@@ -7,8 +7,8 @@
  * operations in its order, so every polygon is the same list of doubles.
  * A polygon that grows past 8 vertices (rare) is written out and goes on
  * with the plain cut. The lines, the prunings and the vertex evaluation
- * are the plain route's own functions (dens_solve_impl.h). */
-#include "dens_solve_impl.h"
+ * are the plain route's own functions (dens_clip.h). */
+#include "dens_clip.h"
 #include "solver_cut512.h"
 
 #if CFPO_SOLVER_AVX2

@@ -1,13 +1,21 @@
-/* dens_solve_impl.h - layer 2: the pieces of the density solve that its
- * plain route (dens_solve.c) and its AVX-512 route (dens_solve_avx512.c)
- * share, so that both give the same bits. Include only from those two.
- * May include dens_solve.h. */
-#ifndef CFPO_DENS_SOLVE_IMPL_H
-#define CFPO_DENS_SOLVE_IMPL_H
+/* dens_clip.h - layer 2: the pieces of the density solve that its plain
+ * route (dens_solve_plain.c) and its AVX-512 route (dens_solve_avx512.c)
+ * share, so that both give the same bits: the lines, the cut, the
+ * vertices' values; and q at a spot, which the engine reads too.
+ * May include density.h and geom.h. */
+#ifndef CFPO_DENS_CLIP_H
+#define CFPO_DENS_CLIP_H
 
 #include <math.h>
 
-#include "dens_solve.h"
+#include "density.h"
+#include "geom.h"
+
+/* q = sqrt(rho) at the local point (cx, cy) of the frame at (ox, oy). */
+static inline double cfpo_dens_local_q(const cfpo_density *d, double ox, double oy, double cx, double cy)
+{
+    return sqrt(cfpo_density_at(d, cfpo_wrap01(ox + cx), cfpo_wrap01(oy + cy)));
+}
 
 #define DENS_CELLS 10 /* the polygons of the DENS_CELLS nearest neighbours (given nearest first) */
 #define DENS_BIG 64   /* a polygon of more vertices is not cut further (rounding's pathology) */
@@ -158,4 +166,4 @@ int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr,
                            cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                            double *cx, double *cy, double *f, double *scratch);
 
-#endif
+#endif /* CFPO_DENS_CLIP_H */
