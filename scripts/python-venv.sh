@@ -41,6 +41,13 @@ assert tuple(int(x) for x in pip.__version__.split('.')[:2]) >= (23, 1)" 2>/dev/
     exit 4
   fi
 fi
+# ASE (optional): the Python tests read the 3-D XYZ and LAMMPS files back
+# with it; without it (no package index) those tests are skipped.
+if ! "$V/bin/python" -c "import ase" 2>/dev/null; then
+  PIP_RETRIES=${PIP_RETRIES:-1} PIP_TIMEOUT=${PIP_TIMEOUT:-15} PIP_DISABLE_PIP_VERSION_CHECK=1 \
+    "$V/bin/python" -m pip install -q ase 2>"$B/venv-ase.log" ||
+    log "ASE not installed (its file tests will be skipped): $(grep -v '^ *$' "$B/venv-ase.log" | tail -n 1)"
+fi
 log "building and installing cfpo (build folder $B/python)"
 export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2}
 "$V/bin/python" -m pip install -q --no-build-isolation --no-deps \
