@@ -91,7 +91,7 @@ def test_ase_reads_xyz_lammps_and_gro(tmp_path, command):
     command("cfpo", "--dim", 3, "-n", 200, "--max-iter", 3, "--box", box, "-o", "p.npy", "-o", "p.xyz",
             "-o", "p.data", "-o", "p.gro")
     pts = np.load(tmp_path / "p.npy")
-    for name, kw in (("p.xyz", dict(format="extxyz")), ("p.data", dict(format="lammps-data", style="atomic"))):
+    for name, kw in (("p.xyz", dict(format="extxyz")), ("p.data", dict(format="lammps-data", atom_style="atomic"))):
         atoms = ase_io.read(tmp_path / name, **kw)
         assert len(atoms) == 200, name
         assert np.allclose(atoms.cell.array, np.diag([box] * 3), rtol=0, atol=1e-12), name
