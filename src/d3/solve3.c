@@ -11,9 +11,9 @@
 void cfpo3_poly_box(cfpo3_poly *p, const double lo[3], const double hi[3])
 {
     for (int i = 0; i < 8; i++) {
-        p->v[i][0] = (i & 1) ? hi[0] : lo[0];
-        p->v[i][1] = (i & 2) ? hi[1] : lo[1];
-        p->v[i][2] = (i & 4) ? hi[2] : lo[2];
+        p->v[0][i] = (i & 1) ? hi[0] : lo[0];
+        p->v[1][i] = (i & 2) ? hi[1] : lo[1];
+        p->v[2][i] = (i & 4) ? hi[2] : lo[2];
         p->w[i] = -1.0;
     }
     p->nv = 8;
@@ -33,7 +33,7 @@ double cfpo3_poly_far(const cfpo3_poly *p, const double y[3], int *at)
     double far = -1.0;
     int w = -1;
     for (int i = 0; i < p->nv; i++) {
-        const double dx = p->v[i][0] - y[0], dy = p->v[i][1] - y[1], dz = p->v[i][2] - y[2];
+        const double dx = p->v[0][i] - y[0], dy = p->v[1][i] - y[1], dz = p->v[2][i] - y[2];
         const double d = dx * dx + dy * dy + dz * dz;
         if (d > far) {
             far = d;
@@ -57,10 +57,9 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
 {
     double d[P3_MAXV];
     int out = 0;
-    for (int i = 0; i < p->nv; i++) {
-        d[i] = n[0] * p->v[i][0] + n[1] * p->v[i][1] + n[2] * p->v[i][2] - off;
-        out += d[i] > 0.0;
-    }
+    for (int i = 0; i < p->nv; i++) /* apart from the count, so that it vectorises */
+        d[i] = n[0] * p->v[0][i] + n[1] * p->v[1][i] + n[2] * p->v[2][i] - off;
+    for (int i = 0; i < p->nv; i++) out += d[i] > 0.0;
     if (out == 0) return 0;
     if (out == p->nv) return -1;
     /* inside vertices keep their coordinates under new indices */
@@ -69,9 +68,9 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
     for (int i = 0; i < p->nv; i++) {
         if (d[i] <= 0.0) {
             map[i] = nv;
-            q->v[nv][0] = p->v[i][0];
-            q->v[nv][1] = p->v[i][1];
-            q->v[nv][2] = p->v[i][2];
+            q->v[0][nv] = p->v[0][i];
+            q->v[1][nv] = p->v[1][i];
+            q->v[2][nv] = p->v[2][i];
             q->w[nv] = p->w[i];
             nv++;
         } else {
@@ -122,7 +121,7 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
                         if (nv >= P3_MAXV || ne >= P3_MAXV) return -2;
                         const double t = d[vi] / (d[vi] - d[vo]);
                         for (int c = 0; c < 3; c++)
-                            q->v[nv][c] = p->v[vi][c] + (p->v[vo][c] - p->v[vi][c]) * t;
+                            q->v[c][nv] = p->v[c][vi] + (p->v[c][vo] - p->v[c][vi]) * t;
                         q->w[nv] = -1.0;
                         ea[ne] = vi;
                         eb[ne] = vo;
@@ -153,13 +152,13 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
         const int u = ax == 0 ? 1 : 0, w = ax == 2 ? 1 : 2;
         double cu = 0.0, cw = 0.0;
         for (int k = 0; k < nc; k++) {
-            cu += q->v[cap[k]][u];
-            cw += q->v[cap[k]][w];
+            cu += q->v[u][cap[k]];
+            cw += q->v[w][cap[k]];
         }
         cu /= nc;
         cw /= nc;
         double ang[P3_MAXV];
-        for (int k = 0; k < nc; k++) ang[k] = pseudo_angle(q->v[cap[k]][u] - cu, q->v[cap[k]][w] - cw);
+        for (int k = 0; k < nc; k++) ang[k] = pseudo_angle(q->v[u][cap[k]] - cu, q->v[w][cap[k]] - cw);
         for (int k = 1; k < nc; k++) { /* insertion sort: stable, few items */
             const double a = ang[k];
             const int c = cap[k];
@@ -191,7 +190,7 @@ static double far_cached(cfpo3_poly *p, const double y[3], int fresh)
     for (int i = 0; i < p->nv; i++) {
         double d = p->w[i];
         if (fresh || d < 0.0) {
-            const double dx = p->v[i][0] - y[0], dy = p->v[i][1] - y[1], dz = p->v[i][2] - y[2];
+            const double dx = p->v[0][i] - y[0], dy = p->v[1][i] - y[1], dz = p->v[2][i] - y[2];
             d = dx * dx + dy * dy + dz * dz;
             p->w[i] = d;
         }
@@ -202,7 +201,7 @@ static double far_cached(cfpo3_poly *p, const double y[3], int fresh)
 
 /* The sites kept sorted in a cell's first pass (the others are sorted
  * only when a cell needs them). */
-#define NEAR_K 8
+#define NEAR_K 12
 
 /* The n waiting sites (okey, oord: squared distances and indices, in no
  * order) sorted by (distance, index) into key, ord: the order a stable
@@ -317,9 +316,9 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
         if (far > bestd) {
             bestd = far;
             found = 1;
-            best[0] = cur->v[at][0];
-            best[1] = cur->v[at][1];
-            best[2] = cur->v[at][2];
+            best[0] = cur->v[0][at];
+            best[1] = cur->v[1][at];
+            best[2] = cur->v[2][at];
         }
     }
     /* clamp into S (a vertex may stray from a face by rounding) */
