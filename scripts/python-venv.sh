@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # python-venv.sh BUILD_DIR [--quiet] - the Python package in a virtual
 # environment BUILD_DIR/venv (made when missing, with pip's build tools
-# and pytest from the package index, PyPI unless pip is told otherwise),
+# and pytest from the package index, PyPI unless pip is told otherwise;
+# ASE too when the index has it, for the 3-D file tests, else skipped),
 # installed from this checkout by `pip install` through scikit-build-core.
 # The CMake build of the package is kept in BUILD_DIR/python, so a second
 # call rebuilds only what changed. Needs python3 with its headers and venv
