@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # python-venv.sh BUILD_DIR [--quiet] - the Python package in a virtual
 # environment BUILD_DIR/venv (made when missing, with pip's build tools
-# and pytest from the package index, PyPI unless pip is told otherwise),
+# and pytest from the package index, PyPI unless pip is told otherwise;
+# ASE too when the index has it, for the 3-D file tests, else skipped),
 # installed from this checkout by `pip install` through scikit-build-core.
 # The CMake build of the package is kept in BUILD_DIR/python, so a second
 # call rebuilds only what changed. Needs python3 with its headers and venv
@@ -40,6 +41,13 @@ assert tuple(int(x) for x in pip.__version__.split('.')[:2]) >= (23, 1)" 2>/dev/
       "$(grep -v '^ *$' "$B/venv-pip.log" | tail -n 1)" >&2
     exit 4
   fi
+fi
+# ASE (optional): the Python tests read the 3-D XYZ and LAMMPS files back
+# with it; without it (no package index) those tests are skipped.
+if ! "$V/bin/python" -c "import ase" 2>/dev/null; then
+  PIP_RETRIES=${PIP_RETRIES:-1} PIP_TIMEOUT=${PIP_TIMEOUT:-15} PIP_DISABLE_PIP_VERSION_CHECK=1 \
+    "$V/bin/python" -m pip install -q ase 2>"$B/venv-ase.log" ||
+    log "ASE not installed (its file tests will be skipped): $(grep -v '^ *$' "$B/venv-ase.log" | tail -n 1)"
 fi
 log "building and installing cfpo (build folder $B/python)"
 export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2}

@@ -10,6 +10,7 @@
 
 #include "cfpo.h"
 #include "cli.h"
+#include "cli3.h"
 #include "comm.h"
 #include "dens_dist.h"
 #include "dens_engine.h"
@@ -66,7 +67,9 @@ static void usage(void)
            "                       (FILE.npy, row = y) or cos:a=0.9,kx=1,ky=0, ramp:contrast=16,\n"
            "                       balzer (docs/cli.md); one rank or several; the run\n"
            "                       ends by itself (docs/method.md, \"Density\")\n"
-           "  -q, --quiet          no progress line\n\n"
+           "  -q, --quiet          no progress line\n"
+           "      --dim D          2 (default) or 3: with 3 the 3-D engine on the unit\n"
+           "                       3-torus, one rank (cfpo --dim 3 --help; docs/cli.md)\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
            "      --tiles AxB      cut into A x B tiles (default: the most square cut)\n"
            "      --checkpoint F   write the state to F (atomically) ...\n"
@@ -286,7 +289,8 @@ static void parse(int argc, char **argv, cmdline *c)
         {"resume", required_argument, 0, 'R'}, {"dry-run", no_argument, 0, 'D'},
         {"ranks", required_argument, 0, 'N'}, {"target-min", required_argument, 0, 1001},
         {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003},
-        {"init", required_argument, 0, 'I'}, {"density", required_argument, 0, 1004}, {0, 0, 0, 0}};
+        {"init", required_argument, 0, 'I'}, {"density", required_argument, 0, 1004},
+        {"box", required_argument, 0, 1005}, {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;
     c->every = -1;
@@ -295,6 +299,7 @@ static void parse(int argc, char **argv, cmdline *c)
     while ((ch = getopt_long(argc, argv, ":n:s:t:o:qhV", longopts, NULL)) != -1) {
         if (sampler_option(c, ch, optarg) || run_option(c, ch, optarg)) continue;
         switch (ch) {
+        case 1005: cli_usage_error(prog, "--box is for --dim 3 (the 2-D engine writes the unit square)");
         case 'h': if (comm_rank() == 0) usage(); comm_finalize(); exit(0);
         case 'V': if (comm_rank() == 0) printf("cfpo %s (LocalCFPO: %s)\n", CFPO_VERSION, cfpo_solver_name()); comm_finalize(); exit(0);
         case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
@@ -495,10 +500,48 @@ static void report(const cmdline *c, cfpo_run_engine *R, const cfpo_result *res,
     free(own);
 }
 
+/* --dim D (or --dim=D), taken out of argv (the rest keeps its order, up
+ * to a "--"): 2 (also without the option) or 3; anything else is a usage
+ * error. */
+static int take_dim(int *argc, char **argv)
+{
+    int dim = 2, k = 1, i = 1;
+    for (; i < *argc && strcmp(argv[i], "--") != 0; i++) {
+        const char *v = NULL;
+        if (strcmp(argv[i], "--dim") == 0) {
+            if (i + 1 >= *argc) cli_usage_error(prog, "option '--dim' needs a value");
+            v = argv[++i];
+        } else if (strncmp(argv[i], "--dim=", 6) == 0) v = argv[i] + 6;
+        if (!v) {
+            argv[k++] = argv[i];
+            continue;
+        }
+        if (strcmp(v, "2") != 0 && strcmp(v, "3") != 0)
+            cli_usage_error(prog, "--dim: '%s' is not 2 or 3 (the dimension of the torus)", v);
+        dim = v[0] - '0';
+    }
+    for (; i < *argc; i++) argv[k++] = argv[i];
+    argv[k] = NULL;
+    *argc = k;
+    return dim;
+}
+
+/* cfpo --dim 3: the 3-D front end (src/d3/cli3.h), on one rank. */
+static int run_3d(int argc, char **argv)
+{
+    if (comm_size() > 1)
+        cli_usage_error(prog, "--dim 3 runs on one rank (this run has %d; MPI bricks in 3-D are not built yet): "
+                        "use threads (-t)", comm_size());
+    int rc = cfpo3_cli_main(prog, argc, argv);
+    comm_finalize();
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     comm_init(&argc, &argv);
     cli_set_exit(comm_rank() != 0, comm_finalize);
+    if (take_dim(&argc, argv) == 3) return run_3d(argc, argv);
     if (!cfpo_solver_name()) cli_usage_error(prog, "CFPO_SOLVER: bad value '%s' (plain, avx2, avx512 or auto)", getenv("CFPO_SOLVER"));
     cmdline c = {0};
     parse(argc, argv, &c);

@@ -33,9 +33,10 @@ TRACE_COLUMNS = _core.trace_columns  # the C library's (src/common/tracecols.h)
 class Result:
     """The outcome of an iterative run.
 
-    points: (n, 2) float64 array; iterations: iterations done; seconds: wall
-    time of the run; delta_min, delta_avg: nearest-neighbour distances of the
-    result over Delta(n); converged: whether the convergence rule held;
+    points: (n, 2) float64 array ((n, 3) for dim=3); iterations: iterations
+    done; seconds: wall time of the run; delta_min, delta_avg:
+    nearest-neighbour distances of the result over Delta(n) (Delta3(n) for
+    dim=3); converged: whether the convergence rule held;
     stop: which rule ended the run, one of "converged", "target", "time",
     "max-iter", "caller"; trace: dict of numpy arrays, one entry a row of the
     command's --trace file (columns TRACE_COLUMNS; a baseline's are its
@@ -70,14 +71,49 @@ def _density_arg(density, variant):
     return _args.density(density)
 
 
+def _dim(dim):
+    """dim= as the command's --dim: 2 or 3."""
+    if isinstance(dim, bool) or not isinstance(dim, (int, np.integer)):
+        raise TypeError("dim: expected 2 or 3")
+    if dim not in (2, 3):
+        raise ValueError(f"dim: {dim} is not 2 or 3 (the dimension of the torus)")
+    return int(dim)
+
+
+def _call3(want_trace, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
+           progress, density):
+    """dim=3: checks the arguments as `cfpo --dim 3` does, then runs the 3-D engine."""
+    if variant != "adaptive":
+        raise ValueError(f"variant {variant!r} does not apply in 3-D: the 3-D engine has one variant, adaptive")
+    if density is not None:
+        raise ValueError("density does not apply in 3-D")
+    nn = -1 if n is None else _args.points_n(n)
+    th = _args.threads(threads)
+    t = _args.tol(tol, -1.0)  # -1: the 3-D engine's default
+    if t == 0:
+        raise ValueError("tol: must be positive in 3-D")
+    mi = _args.max_iter(max_iter)
+    stops = _args.stop_rules(target_min, target_avg, time_limit)
+    start = None if init is None else _args.as_points(init, "init", dim=3)
+    cb, line = _callback(progress, nn if nn > 0 else start.shape[0], mi, stops)
+    try:
+        return _core.run3(nn, _args.seed(seed), th, t, mi, *stops, start, cb, want_trace)
+    finally:
+        if line is not None:
+            line.end()
+
+
 def _call(want_trace, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
-          progress, density=None):
+          progress, density=None, dim=2):
     """Checks the arguments as the command does, then runs the C engine."""
     if n is None and init is None:
         raise ValueError("the number of points is required: n")
-    nn = -1 if n is None else _args.points_n(n)
     if not isinstance(variant, str):
         raise TypeError("variant: expected a string")
+    if _dim(dim) == 3:
+        return _call3(want_trace, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit,
+                      init, progress, density)
+    nn = -1 if n is None else _args.points_n(n)
     th = _args.threads(threads)
     t = _args.tol(tol, -1.0)  # -1: the variant's default
     mi = _args.max_iter(max_iter)
@@ -93,7 +129,7 @@ def _call(want_trace, n, seed, variant, threads, tol, max_iter, target_min, targ
 
 
 def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
-        target_avg=None, time_limit=None, init=None, progress=None, density=None):
+        target_avg=None, time_limit=None, init=None, progress=None, density=None, dim=2):
     """Runs CFPO and returns a Result (points, statistics, stop reason, trace).
 
     n: number of points (at least the command's minimum; may be left out
@@ -114,7 +150,12 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
     SPEC string (an image path, a .npy path, or e.g. "cos:a=0.9") or a 2-D
     array of non-negative values (row j = y); tol is then in local spacings
     (default 1e-4) and delta_min, delta_avg are in the symmetric measure
-    (docs/method.md, "Density").
+    (docs/method.md, "Density"). dim: 2 (default) or 3: with 3 the 3-D
+    engine of `cfpo --dim 3` on the unit 3-torus (docs/method.md, "Three
+    dimensions"): points (n, 3), n at least 39, delta_min and delta_avg over
+    Delta3(n) = (sqrt(2)/n)^(1/3), init an (n, 3) array, tol default 1e-4
+    (positive), variant only "adaptive", no density; the bytes of
+    `cfpo --dim 3 -n N --seed S ... -o x.npy`.
 
     The points are the same bytes as `cfpo -n N --seed S ... -o x.npy`
     writes (with density, as `cfpo --density SPEC ...`, the array saved as
@@ -122,18 +163,19 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
     wording), MemoryError when n does not fit, KeyboardInterrupt on Ctrl-C.
     """
     r = _call(True, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
-              progress, density)
+              progress, density, dim)
     pts, it, secs, dmin, davg, conv, stop, tr = r
     return Result(pts, it, secs, dmin, davg, conv, stop, dict(zip(TRACE_COLUMNS, tr)))
 
 def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
-           target_avg=None, time_limit=None, init=None, progress=None, density=None):
-    """CFPO points: run(...).points, an (n, 2) float64 array that owns its memory.
+           target_avg=None, time_limit=None, init=None, progress=None, density=None, dim=2):
+    """CFPO points: run(...).points, an (n, 2) float64 array (dim=3: (n, 3)) that owns its memory.
 
-    The same arguments as cfpo.run; the same bytes as `cfpo ... -o x.npy`.
+    The same arguments as cfpo.run; the same bytes as `cfpo ... -o x.npy`
+    (dim=3: `cfpo --dim 3 ... -o x.npy`).
     """
     return _call(False, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
-                 progress, density)[0]
+                 progress, density, dim)[0]
 
 def load(path):
     """Reads a point file into an (n, 2) float64 array.

@@ -100,8 +100,8 @@ def stop_rules(target_min, target_avg, time_limit):
     return tuple(0.0 if v is None else real(k, v, *_core.stop_options[k], open_lo=True) for k, v in given.items())
 
 
-def as_points(points, name="points", min_n=1):
-    """points as a C-contiguous float64 (n, 2) array in [0, 1)^2.
+def as_points(points, name="points", min_n=1, dim=2):
+    """points as a C-contiguous float64 (n, dim) array in [0, 1)^dim (dim 2 or 3).
 
     Any real numeric dtype (integers, float16/32/64, ...) and any memory
     layout (Fortran order, strides, views) is converted (one copy when the
@@ -113,24 +113,24 @@ def as_points(points, name="points", min_n=1):
     try:
         a = np.asarray(points)
     except (ValueError, TypeError) as e:
-        raise TypeError(f"{name}: cannot be read as an array of numbers ({e}); pass an (n, 2) array, "
+        raise TypeError(f"{name}: cannot be read as an array of numbers ({e}); pass an (n, {dim}) array, "
                         f"e.g. np.asarray({name}, dtype=np.float64)") from None
     if a.dtype.kind not in "iuf":
         raise TypeError(f"{name}: dtype {a.dtype} is not a real number type; convert with "
                         f"np.asarray({name}, dtype=np.float64)")
-    if a.ndim != 2 or a.shape[1] != 2:
-        raise ValueError(f"{name}: expected an (n, 2) array of points, got shape {a.shape}")
+    if a.ndim != 2 or a.shape[1] != dim:
+        raise ValueError(f"{name}: expected an (n, {dim}) array of points, got shape {a.shape}")
     a = np.ascontiguousarray(a, dtype=np.float64)
     if a.shape[0] < min_n:
         raise ValueError(f"{name}: {a.shape[0]} points; at least {min_n} needed")
     finite = np.isfinite(a)
     if not finite.all():
         i = int(np.argwhere(~finite)[0][0])
-        raise ValueError(f"{name}: point {i} is not finite ({a[i, 0]:g}, {a[i, 1]:g})")
+        raise ValueError(f"{name}: point {i} is not finite ({', '.join(f'{v:g}' for v in a[i])})")
     inside = (a >= 0) & (a < 1)
     if not inside.all():
         i = int(np.argwhere(~inside)[0][0])
-        raise ValueError(f"{name}: point {i} ({float(a[i, 0])!r}, {float(a[i, 1])!r}) is outside [0,1)^2")
+        raise ValueError(f"{name}: point {i} ({', '.join(repr(float(v)) for v in a[i])}) is outside [0,1)^{dim}")
     return a
 
 

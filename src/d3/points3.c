@@ -13,6 +13,11 @@
 #include "safefile.h"
 #include "tmpguard.h"
 
+/* .gro coordinates: decimals (GROMACS's fixed layout: %8.3f), and the box
+ * below which they fit their columns (4 digits before the point). */
+#define GRO_DECIMALS 3
+#define GRO_MAX_BOX 9999.0
+
 static int ends_with(const char *s, const char *suf)
 {
     const size_t a = strlen(s), b = strlen(suf);
@@ -27,6 +32,7 @@ p3_format p3_format_of(const char *path)
     if (ends_with(path, ".bin") || ends_with(path, ".raw") || ends_with(path, ".f64")) return P3F_RAW;
     if (ends_with(path, ".xyz") || ends_with(path, ".extxyz")) return P3F_XYZ;
     if (ends_with(path, ".data") || ends_with(path, ".lmp")) return P3F_LAMMPS;
+    if (ends_with(path, ".gro")) return P3F_GRO;
     return P3F_UNKNOWN;
 }
 
@@ -45,6 +51,32 @@ int p3_probe(const char *path, char *err, size_t errlen)
     unlink(tmp);
     free(tmp);
     return 0;
+}
+
+int p3_check_box(const char *path, double box, char *err, size_t errlen)
+{
+    if (!(box > 0.0) || !isfinite(box)) {
+        snprintf(err, errlen, "%s: the box side must be positive and finite", path);
+        return -1;
+    }
+    if (p3_format_of(path) == P3F_GRO && !(box < GRO_MAX_BOX)) {
+        snprintf(err, errlen, "%s: a .gro box must be below %g nm (its coordinate columns), not %g", path,
+                 GRO_MAX_BOX, box);
+        return -1;
+    }
+    return 0;
+}
+
+/* One .gro atom line: residue number, residue name, atom name, atom
+ * number (both numbers modulo 10^5, as GROMACS writes them), then x y z in
+ * nm with GRO_DECIMALS decimals in fields GRO_DECIMALS + 5 wide (GROMACS
+ * infers the precision from the distance between the decimal points). */
+static int gro_line(FILE *f, size_t i, const double *x, double box)
+{
+    const int id = (int)((i + 1) % 100000);
+    return fprintf(f, "%5d%-5s%5s%5d%*.*f%*.*f%*.*f\n", id, "SPH", "X", id, GRO_DECIMALS + 5, GRO_DECIMALS,
+                   x[0] * box, GRO_DECIMALS + 5, GRO_DECIMALS, x[1] * box, GRO_DECIMALS + 5, GRO_DECIMALS,
+                   x[2] * box);
 }
 
 static int write_body(FILE *f, p3_format fmt, const double *p, size_t n, double box)
@@ -72,6 +104,8 @@ static int write_body(FILE *f, p3_format fmt, const double *p, size_t n, double 
                    "Masses\n\n1 1\n\nAtoms # atomic\n\n",
                 n, box, n, box, box, box) < 0)
         return -1;
+    if (fmt == P3F_GRO && fprintf(f, "CFPO: %zu points on the periodic box of side %.17g nm\n%zu\n", n, box, n) < 0)
+        return -1;
     for (size_t i = 0; i < n; i++) {
         const double *x = p + 3 * i;
         int r;
@@ -81,10 +115,13 @@ static int write_body(FILE *f, p3_format fmt, const double *p, size_t n, double 
         case P3F_LAMMPS:
             r = fprintf(f, "%zu 1 %.17g %.17g %.17g\n", i + 1, x[0] * box, x[1] * box, x[2] * box);
             break;
+        case P3F_GRO: r = gro_line(f, i, x, box); break;
         default: r = fprintf(f, "%.17g %.17g %.17g\n", x[0], x[1], x[2]); break;
         }
         if (r < 0) return -1;
     }
+    if (fmt == P3F_GRO && fprintf(f, "%.*f %.*f %.*f\n", GRO_DECIMALS, box, GRO_DECIMALS, box, GRO_DECIMALS, box) < 0)
+        return -1;
     return 0;
 }
 
@@ -95,10 +132,7 @@ int p3_write(const char *path, const double *xyz, size_t n, double box, char *er
         snprintf(err, errlen, "%s: unknown output format (use " P3_EXTENSIONS ")", path);
         return -1;
     }
-    if (!(box > 0.0) || !isfinite(box)) {
-        snprintf(err, errlen, "%s: the box side must be positive and finite", path);
-        return -1;
-    }
+    if (p3_check_box(path, box, err, errlen) != 0) return -1;
     safefile f;
     if (safefile_open(&f, path, "wb", err, errlen) != 0) return -1;
     tmpguard_file(f.tmp);

@@ -11,9 +11,10 @@
 void cfpo3_poly_box(cfpo3_poly *p, const double lo[3], const double hi[3])
 {
     for (int i = 0; i < 8; i++) {
-        p->v[i][0] = (i & 1) ? hi[0] : lo[0];
-        p->v[i][1] = (i & 2) ? hi[1] : lo[1];
-        p->v[i][2] = (i & 4) ? hi[2] : lo[2];
+        p->v[0][i] = (i & 1) ? hi[0] : lo[0];
+        p->v[1][i] = (i & 2) ? hi[1] : lo[1];
+        p->v[2][i] = (i & 4) ? hi[2] : lo[2];
+        p->w[i] = -1.0;
     }
     p->nv = 8;
     /* faces x = lo, x = hi, y = lo, y = hi, z = lo, z = hi, as loops */
@@ -32,7 +33,7 @@ double cfpo3_poly_far(const cfpo3_poly *p, const double y[3], int *at)
     double far = -1.0;
     int w = -1;
     for (int i = 0; i < p->nv; i++) {
-        const double dx = p->v[i][0] - y[0], dy = p->v[i][1] - y[1], dz = p->v[i][2] - y[2];
+        const double dx = p->v[0][i] - y[0], dy = p->v[1][i] - y[1], dz = p->v[2][i] - y[2];
         const double d = dx * dx + dy * dy + dz * dz;
         if (d > far) {
             far = d;
@@ -56,10 +57,9 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
 {
     double d[P3_MAXV];
     int out = 0;
-    for (int i = 0; i < p->nv; i++) {
-        d[i] = n[0] * p->v[i][0] + n[1] * p->v[i][1] + n[2] * p->v[i][2] - off;
-        out += d[i] > 0.0;
-    }
+    for (int i = 0; i < p->nv; i++) /* apart from the count, so that it vectorises */
+        d[i] = n[0] * p->v[0][i] + n[1] * p->v[1][i] + n[2] * p->v[2][i] - off;
+    for (int i = 0; i < p->nv; i++) out += d[i] > 0.0;
     if (out == 0) return 0;
     if (out == p->nv) return -1;
     /* inside vertices keep their coordinates under new indices */
@@ -68,9 +68,10 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
     for (int i = 0; i < p->nv; i++) {
         if (d[i] <= 0.0) {
             map[i] = nv;
-            q->v[nv][0] = p->v[i][0];
-            q->v[nv][1] = p->v[i][1];
-            q->v[nv][2] = p->v[i][2];
+            q->v[0][nv] = p->v[0][i];
+            q->v[1][nv] = p->v[1][i];
+            q->v[2][nv] = p->v[2][i];
+            q->w[nv] = p->w[i];
             nv++;
         } else {
             map[i] = -1;
@@ -84,11 +85,19 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
         const int s0 = p->fs[f], len = p->fs[f + 1] - s0;
         const int start = ni;
         int nout = 0;
-        for (int k = 0; k < len; k++) nout += map[p->fi[s0 + k]] < 0;
+        if (ni + len <= P3_MAXI) { /* the face copied as it counts (kept if no vertex is cut) */
+            for (int k = 0; k < len; k++) {
+                const int v = map[p->fi[s0 + k]];
+                q->fi[ni + k] = v;
+                nout += v < 0;
+            }
+        } else {
+            for (int k = 0; k < len; k++) nout += map[p->fi[s0 + k]] < 0;
+        }
         if (nout == len) continue; /* the whole face is cut away */
         if (ni + 2 * len > P3_MAXI) return -2;
         if (nout == 0) { /* the whole face stays */
-            for (int k = 0; k < len; k++) q->fi[ni++] = map[p->fi[s0 + k]];
+            ni += len;
             q->fs[nf++] = start;
             if (nf >= P3_MAXF) return -2;
             continue;
@@ -112,7 +121,8 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
                         if (nv >= P3_MAXV || ne >= P3_MAXV) return -2;
                         const double t = d[vi] / (d[vi] - d[vo]);
                         for (int c = 0; c < 3; c++)
-                            q->v[nv][c] = p->v[vi][c] + (p->v[vo][c] - p->v[vi][c]) * t;
+                            q->v[c][nv] = p->v[c][vi] + (p->v[c][vo] - p->v[c][vi]) * t;
+                        q->w[nv] = -1.0;
                         ea[ne] = vi;
                         eb[ne] = vo;
                         ev[ne] = nv;
@@ -142,13 +152,13 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
         const int u = ax == 0 ? 1 : 0, w = ax == 2 ? 1 : 2;
         double cu = 0.0, cw = 0.0;
         for (int k = 0; k < nc; k++) {
-            cu += q->v[cap[k]][u];
-            cw += q->v[cap[k]][w];
+            cu += q->v[u][cap[k]];
+            cw += q->v[w][cap[k]];
         }
         cu /= nc;
         cw /= nc;
         double ang[P3_MAXV];
-        for (int k = 0; k < nc; k++) ang[k] = pseudo_angle(q->v[cap[k]][u] - cu, q->v[cap[k]][w] - cw);
+        for (int k = 0; k < nc; k++) ang[k] = pseudo_angle(q->v[u][cap[k]] - cu, q->v[w][cap[k]] - cw);
         for (int k = 1; k < nc; k++) { /* insertion sort: stable, few items */
             const double a = ang[k];
             const int c = cap[k];
@@ -170,6 +180,48 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
     return 1;
 }
 
+/* cfpo3_poly_far(p, y, NULL) through p's cached values: a vertex whose
+ * w is -1 gets its squared distance to y computed (the same expression)
+ * and kept; w of the vertices kept by a cut come with them. fresh: every
+ * w is recomputed (the box, whose w belong to the previous site). */
+static double far_cached(cfpo3_poly *p, const double y[3], int fresh)
+{
+    double far = -1.0;
+    for (int i = 0; i < p->nv; i++) {
+        double d = p->w[i];
+        if (fresh || d < 0.0) {
+            const double dx = p->v[0][i] - y[0], dy = p->v[1][i] - y[1], dz = p->v[2][i] - y[2];
+            d = dx * dx + dy * dy + dz * dz;
+            p->w[i] = d;
+        }
+        if (d > far) far = d;
+    }
+    return far;
+}
+
+/* The sites kept sorted in a cell's first pass (the others are sorted
+ * only when a cell needs them). */
+#define NEAR_K 12
+
+/* The n waiting sites (okey, oord: squared distances and indices, in no
+ * order) sorted by (distance, index) into key, ord: the order a stable
+ * sort by distance of the sites in index order gives. */
+static void sort_rest(const double *okey, const int *oord, int n, double *key, int *ord)
+{
+    for (int k = 0; k < n; k++) {
+        const double d = okey[k];
+        const int j = oord[k];
+        int at = k;
+        while (at > 0 && (key[at - 1] > d || (key[at - 1] == d && ord[at - 1] > j))) {
+            key[at] = key[at - 1];
+            ord[at] = ord[at - 1];
+            at--;
+        }
+        key[at] = d;
+        ord[at] = j;
+    }
+}
+
 double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double floor2,
                          double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count)
 {
@@ -177,18 +229,21 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
     double bestd = floor2 > 0.0 ? floor2 : -1.0;
     int found = 0;
     cfpo3_poly box;
-    double key[CFPO3_MAXM];
-    int ord[CFPO3_MAXM];
+    double key[CFPO3_MAXM], okey[CFPO3_MAXM];
+    int ord[CFPO3_MAXM], oord[CFPO3_MAXM];
     cfpo3_poly_box(&box, lo, hi);
     for (int i = 0; i < m; i++) {
         const double *yi = y + 3 * i;
-        double far = cfpo3_poly_far(&box, yi, NULL);
+        double far = far_cached(&box, yi, 1);
         if (far <= bestd) continue;
         /* One pass over the other sites: the kill test (one bisector puts
          * the whole box on y_j's side: the cell misses S), and the sites
-         * whose bisector can reach the box, nearest to y_i first (their
-         * bisectors cut most). */
-        int killed = 0, no = 0;
+         * whose bisector can reach the box in the order (squared distance
+         * to y_i, index), nearest first (their bisectors cut most). Most
+         * cells are abandoned after a few planes, so only the NEAR_K
+         * first are kept sorted (key, ord); the others wait unsorted
+         * (okey, oord) and are sorted only when a cell needs them. */
+        int killed = 0, nb = 0, no = 0;
         for (int j = 0; j < m; j++) {
             if (j == i) continue;
             const double *yj = y + 3 * j;
@@ -202,7 +257,17 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
                 break;
             }
             if (dd >= 4.0 * far) continue;
-            int at = no++;
+            if (nb == NEAR_K) {
+                if (!(dd < key[NEAR_K - 1])) { /* j comes after every kept site */
+                    okey[no] = dd;
+                    oord[no++] = j;
+                    continue;
+                }
+                okey[no] = key[NEAR_K - 1]; /* the last kept one waits */
+                oord[no++] = ord[NEAR_K - 1];
+                nb--;
+            }
+            int at = nb++;
             while (at > 0 && key[at - 1] > dd) {
                 key[at] = key[at - 1];
                 ord[at] = ord[at - 1];
@@ -215,12 +280,18 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
         if (count) count->cells++;
         const cfpo3_poly *cur = &box;
         int which = 0, empty = 0, abandoned = 0;
-        for (int k = 0; k < no; k++) {
+        for (int k = 0;; k++) {
+            if (k == nb) { /* the kept sites are used up: the waiting ones, sorted, follow */
+                if (no == 0) break;
+                sort_rest(okey, oord, no, key + nb, ord + nb);
+                nb += no;
+                no = 0;
+            }
             const int j = ord[k];
-            const double *yj = y + 3 * j;
-            const double nv[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
             const double dd = key[k];
             if (dd >= 4.0 * far) break; /* this plane and the later ones lie beyond every vertex */
+            const double *yj = y + 3 * j;
+            const double nv[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
             if (count) count->tests++;
             /* (c - yi).nv <= dd/2 */
             const double off = nv[0] * yi[0] + nv[1] * yi[1] + nv[2] * yi[2] + 0.5 * dd;
@@ -233,7 +304,7 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
             if (count) count->cuts++;
             cur = &scratch[which];
             which ^= 1;
-            far = cfpo3_poly_far(cur, yi, NULL);
+            far = far_cached(&scratch[which ^ 1], yi, 0);
             if (far <= bestd) {
                 abandoned = 1;
                 break;
@@ -245,9 +316,9 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
         if (far > bestd) {
             bestd = far;
             found = 1;
-            best[0] = cur->v[at][0];
-            best[1] = cur->v[at][1];
-            best[2] = cur->v[at][2];
+            best[0] = cur->v[0][at];
+            best[1] = cur->v[1][at];
+            best[2] = cur->v[2][at];
         }
     }
     /* clamp into S (a vertex may stray from a face by rounding) */

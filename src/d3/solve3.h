@@ -26,7 +26,11 @@ static inline double cfpo3_delta_bound(double n) { return cbrt(sqrt(2.0) / n); }
 #define P3_MAXI 768
 typedef struct {
     int nv, nf;
-    double v[P3_MAXV][3];
+    double v[3][P3_MAXV]; /* v[axis][vertex]: each coordinate contiguous */
+    /* a value per vertex carried through clipping (the solver's squared
+     * distance to the site whose cell it clips); -1 for a new vertex and
+     * for the box's */
+    double w[P3_MAXV];
     int fs[P3_MAXF + 1]; /* face f: fi[fs[f]] .. fi[fs[f+1]-1] */
     int fi[P3_MAXI];
 } cfpo3_poly;

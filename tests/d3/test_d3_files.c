@@ -1,7 +1,9 @@
 /* test_d3_files.c - 3-D point files (src/d3/points3.c): round trips
  * through .npy, text, CSV and raw give the same doubles; the extended XYZ
  * and LAMMPS files, parsed here independently, hold n points times the box
- * side and the periodic cell; bad files are refused with one line; a
+ * side and the periodic cell; so does the GROMACS .gro file, read as
+ * GROMACS reads it (fixed columns, the precision from the distance between
+ * the decimal points), to its 3 decimals (GROMACS's fixed layout); bad files are refused with one line; a
  * failed write leaves nothing. */
 #include <math.h>
 #include <stdio.h>
@@ -110,6 +112,47 @@ static int read_lammps(const char *path, double box, const double *p, size_t n)
     return ok && atoms == n && types == 1 && bounds == 3 && (size_t)seen == n ? 0 : -1;
 }
 
+/* Reads a .gro file back as GROMACS does: title, count, then per atom the
+ * residue number (5 columns), residue and atom names (5 + 5), atom number
+ * (5) and x y z from column 20, each field as wide as the distance
+ * between the first two decimal points; the last line the box. Each
+ * coordinate within half a unit of the 3rd decimal of p times box. */
+static int read_gro(const char *path, double box, const double *p, size_t n)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) return -1;
+    char line[512];
+    size_t cnt = 0;
+    int ok = fgets(line, sizeof line, f) && fgets(line, sizeof line, f) && sscanf(line, "%zu", &cnt) == 1 && cnt == n;
+    const double tol = 0.5e-3 + 1e-12 * box;
+    for (size_t i = 0; ok && i < n; i++) {
+        ok = fgets(line, sizeof line, f) && strlen(line) > 20;
+        if (!ok) break;
+        const char *d1 = strchr(line + 20, '.'), *d2 = d1 ? strchr(d1 + 1, '.') : NULL;
+        ok = d1 && d2;
+        if (!ok) break;
+        const int w = (int)(d2 - d1);
+        char num[6], field[64];
+        memcpy(num, line, 5);
+        num[5] = 0;
+        ok = atoi(num) == (int)((i + 1) % 100000) && strncmp(line + 5, "SPH  ", 5) == 0 &&
+             strncmp(line + 10, "    X", 5) == 0 && w == 8 && strlen(line) == 20 + 3 * (size_t)w + 1;
+        memcpy(num, line + 15, 5);
+        ok = ok && atoi(num) == (int)((i + 1) % 100000);
+        for (int k = 0; ok && k < 3; k++) {
+            memcpy(field, line + 20 + k * w, (size_t)w);
+            field[w] = 0;
+            const double v = atof(field);
+            ok = fabs(v - p[3 * i + k] * box) <= tol && v >= 0.0 && v <= box;
+        }
+    }
+    double a = 0, b = 0, c = 0;
+    ok = ok && fgets(line, sizeof line, f) && sscanf(line, "%lf %lf %lf", &a, &b, &c) == 3 && fabs(a - box) <= tol &&
+         a == b && b == c && !fgets(line, sizeof line, f);
+    fclose(f);
+    return ok ? 0 : -1;
+}
+
 static void refused(const char *name, const char *bytes, size_t len, const char *pat)
 {
     FILE *f = fopen(at(name), "wb");
@@ -145,6 +188,15 @@ int main(void)
         CHECK(p3_write(at("a.data"), p, n, box, err, sizeof err) == 0, "lammps: %s", err);
         CHECK(read_lammps(at("a.data"), box, p, n) == 0, "LAMMPS file (box %g) does not read back", box);
     }
+    for (int b = 0; b < 3; b++) {
+        const double box = b == 0 ? 1.0 : b == 1 ? 3.25 : 9998.5;
+        CHECK(p3_write(at("a.gro"), p, n, box, err, sizeof err) == 0, "gro: %s", err);
+        CHECK(read_gro(at("a.gro"), box, p, n) == 0, ".gro file (box %g) does not read back", box);
+    }
+    CHECK(p3_write(at("c.gro"), p, n, 1e4, err, sizeof err) != 0 && strstr(err, "below") && !exists(at("c.gro")),
+          ".gro box 1e4 (wider than its columns) accepted");
+    CHECK(p3_check_box("a.xyz", 1e4, err, sizeof err) == 0 && p3_check_box("a.gro", 0.5, err, sizeof err) == 0 &&
+          p3_check_box("a.npy", -1.0, err, sizeof err) != 0, "p3_check_box");
     /* bad writes leave nothing */
     CHECK(p3_write(at("a.xyz"), p, n, 0.0, err, sizeof err) != 0, "box 0 accepted");
     CHECK(p3_write(at("a.xyz"), p, n, NAN, err, sizeof err) != 0, "box NaN accepted");
@@ -170,7 +222,7 @@ int main(void)
     }
     refused("j.xyz", "1\n\nX 0 0 0\n", 10, "cannot read this format");
     /* remove the folder */
-    const char *names[] = {"a.npy", "a.txt", "a.csv", "a.raw", "a.xyz", "a.data", "b.txt", "c.txt", "d.txt",
+    const char *names[] = {"a.npy", "a.txt", "a.csv", "a.raw", "a.xyz", "a.data", "a.gro", "b.txt", "c.txt", "d.txt",
                            "e.txt", "f.txt", "g.raw", "h.csv", "i.npy", "j.xyz"};
     for (size_t i = 0; i < sizeof names / sizeof *names; i++) unlink(at(names[i]));
     CHECK(rmdir(dir) == 0, "temporary files left in %s", dir);

@@ -1,0 +1,318 @@
+/* cli3.c - the 3-D front end shared by `cfpo --dim 3` (src/main.c) and
+ * the cfpo3d command (main3d.c): CFPO on the unit 3-torus (docs/cli.md,
+ * "Three dimensions"). Parses the options, opens the 3-D engine behind the
+ * one engine interface (engine3_ops.h) and runs it through the one run
+ * loop (stop rules, progress line, checkpoints), then writes the point
+ * files (points3.h) and the SUMMARY and BOX3D lines. */
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "cli3.h"
+#include "engine3.h"
+#include "engine3_ops.h"
+#include "omp_compat.h"
+#include "points3.h"
+#include "run_loop.h"
+#include "runsignal.h"
+#include "solve3.h"
+#include "stoprule.h"
+
+static const char *prog = "cfpo3d"; /* set by cfpo3_cli_main */
+
+/* The progress line and the trace, after every iteration (the run loop's
+ * callback). */
+typedef struct {
+    cli_progress *pr;
+    FILE *trace;
+    double t0;
+    int started; /* the loop's first call is the set before any iteration */
+} run_ctx;
+
+static int on_iteration(const cfpo_iter_stats *st, void *user)
+{
+    run_ctx *x = user;
+    if (!x->started) { /* the set before the first iteration: no line, no row */
+        x->started = 1;
+        return 0;
+    }
+    cli_progress_line(x->pr, 0, "iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  solved %lld  %.2fs/iter  elapsed %.1fs",
+                      st->iteration, st->delta_min, st->delta_avg, (long long)st->moved, (long long)st->solved,
+                      st->seconds, cli_now() - x->t0);
+    if (x->trace)
+        fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f\n", st->iteration, st->delta_min, st->delta_avg,
+                (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds);
+    return 0;
+}
+#define MAX_OUT 8
+
+static void usage(void)
+{
+    printf("usage: %s%s -n N [options]       CFPO on the unit 3-torus\n\n"
+           "  -n N                 number of points (at least %lld; 2^20 and 1e6 forms too)\n"
+           "  -s, --seed S         seed (default 1)\n"
+           "  -t, --threads T      OpenMP threads (default: all cores); the output does not depend on it\n"
+           "  -o, --output FILE    write the points (repeatable, up to %d files); format by extension:\n"
+           "                       " P3_EXTENSIONS "\n"
+           "      --box L          side of the box in .xyz, LAMMPS and .gro files and of\n"
+           "                       BOX3D's delta_min_box (default 1)\n"
+           "      --max-iter K     at most K iterations in all (default %d)\n"
+           "      --tol T          move gain and convergence, relative to the cell side (default %g)\n"
+           "      --target-min D   stop once delta_min >= D\n"
+           "      --target-avg D   stop once delta_avg >= D (with --target-min: both)\n"
+           "      --time-limit S   stop at the first iteration boundary past S seconds\n"
+           "      --init FILE      start from this n x 3 set (.npy, text, CSV, raw) instead of the jittered grid\n"
+           "      --checkpoint F   write a checkpoint to F every --checkpoint-every K iterations and at the end\n"
+           "      --checkpoint-every K  (default 10)\n"
+           "      --resume F       continue from checkpoint F (n, seed, tol and the policy come from it)\n"
+           "      --no-relax       move to the solver's spot (no over-relaxation)\n"
+           "      --no-shift       keep the grid fixed\n"
+           "      --no-skip        solve every cell every iteration (same output, slower)\n"
+           "      --trace FILE     one line an iteration: iteration delta_min delta_avg moved solved max_disp seconds\n"
+           "      --dry-run        print the grid and memory and exit\n"
+           "  -q, --quiet          no progress line\n"
+           "  -h, --help, -V, --version\n",
+           prog, strcmp(prog, "cfpo") == 0 ? " --dim 3" : "", (long long)cfpo3_grid_min_n(), MAX_OUT, CFPO_DEFAULT_MAX_ITER, CFPO3_DEFAULT_TOL);
+}
+
+typedef struct {
+    int64_t n;
+    int n_given, seed_given, tol_given, policy_given;
+    cfpo3_options o;
+    int max_iter, every, quiet, dry;
+    double box;
+    const char *out[MAX_OUT];
+    int nout;
+    const char *init, *ckpt, *resume, *trace;
+    cfpo_stop_rules stop;
+} cmdline;
+
+/* Options of the 2-D command that have no meaning on the 3-torus: refused
+ * by name (long option codes 2000 + index). */
+static const char *const two_d_only[] = {"density", "tiles", "check", "ranks"};
+
+/* Parses argv into c. Returns 1 when --help or --version answered (the
+ * caller then exits 0), else 0; usage errors exit. */
+static int parse(cmdline *c, int argc, char **argv)
+{
+    static const struct option lo[] = {
+        {"seed", required_argument, 0, 's'}, {"threads", required_argument, 0, 't'},
+        {"output", required_argument, 0, 'o'}, {"box", required_argument, 0, 'B'},
+        {"max-iter", required_argument, 0, 'm'}, {"tol", required_argument, 0, 'T'},
+        {"target-min", required_argument, 0, 1001}, {"target-avg", required_argument, 0, 1002},
+        {"time-limit", required_argument, 0, 1003}, {"init", required_argument, 0, 'I'},
+        {"checkpoint", required_argument, 0, 'P'}, {"checkpoint-every", required_argument, 0, 'E'},
+        {"resume", required_argument, 0, 'R'}, {"no-relax", no_argument, 0, 1010},
+        {"no-shift", no_argument, 0, 1011}, {"no-skip", no_argument, 0, 1012},
+        {"dry-run", no_argument, 0, 'D'}, {"trace", required_argument, 0, 'r'}, {"quiet", no_argument, 0, 'q'},
+        {"help", no_argument, 0, 'h'}, {"version", no_argument, 0, 'V'}, {"variant", required_argument, 0, 1020},
+        {"density", required_argument, 0, 2000}, {"tiles", required_argument, 0, 2001},
+        {"check", no_argument, 0, 2002}, {"ranks", required_argument, 0, 2003}, {0, 0, 0, 0}};
+    memset(c, 0, sizeof *c);
+    cfpo3_options_default(&c->o);
+    cfpo_stop_rules_init(&c->stop);
+    c->max_iter = CFPO_DEFAULT_MAX_ITER;
+    c->every = -1;
+    c->box = 1.0;
+    opterr = 0;
+    int ch;
+    int64_t v;
+    while ((ch = getopt_long(argc, argv, ":n:s:t:o:qhV", lo, NULL)) != -1) {
+        switch (ch) {
+        case 'n': c->n = cli_arg_points(prog, optarg); c->n_given = 1; break;
+        case 's': c->o.seed = cli_arg_seed(prog, optarg); c->seed_given = 1; break;
+        case 't':
+            if (cli_parse_i64(optarg, 1, 4096, &v) != 0) cli_usage_error(prog, "--threads must be 1..4096, not '%s'", optarg);
+            c->o.threads = (int)v;
+            break;
+        case 'o':
+            if (c->nout == MAX_OUT) cli_usage_error(prog, "at most %d output files", MAX_OUT);
+            c->out[c->nout++] = optarg;
+            break;
+        case 'B':
+            if (cli_parse_double(optarg, 0.0, 1e300, &c->box) != 0 || !(c->box > 0.0))
+                cli_usage_error(prog, "--box must be a positive finite number, not '%s'", optarg);
+            break;
+        case 'm':
+            if (cli_parse_i64(optarg, 0, CFPO_MAX_ITER_MAX, &v) != 0)
+                cli_usage_error(prog, "--max-iter must be 0..%d, not '%s'", CFPO_MAX_ITER_MAX, optarg);
+            c->max_iter = (int)v;
+            break;
+        case 'T':
+            if (cli_parse_double(optarg, 0.0, CFPO_TOL_MAX, &c->o.tol) != 0 || !(c->o.tol > 0.0))
+                cli_usage_error(prog, "--tol must be in (0, %g], not '%s'", CFPO_TOL_MAX, optarg);
+            c->tol_given = 1;
+            break;
+        case 1001: cli_stop_option(prog, "target-min", optarg, &c->stop); break;
+        case 1002: cli_stop_option(prog, "target-avg", optarg, &c->stop); break;
+        case 1003: cli_stop_option(prog, "time-limit", optarg, &c->stop); break;
+        case 'I': c->init = optarg; break;
+        case 'P': c->ckpt = optarg; break;
+        case 'E':
+            if (cli_parse_i64(optarg, 1, CFPO_MAX_ITER_MAX, &v) != 0)
+                cli_usage_error(prog, "--checkpoint-every must be 1..%d, not '%s'", CFPO_MAX_ITER_MAX, optarg);
+            c->every = (int)v;
+            break;
+        case 'R': c->resume = optarg; break;
+        case 1010: c->o.relax = 0; c->policy_given = 1; break;
+        case 1011: c->o.shift = 0; c->policy_given = 1; break;
+        case 1012: c->o.skip = 0; c->policy_given = 1; break;
+        case 'D': c->dry = 1; break;
+        case 'r': c->trace = optarg; break;
+        case 'q': c->quiet = 1; break;
+        case 1020:
+            if (strcmp(optarg, "adaptive") != 0)
+                cli_usage_error(prog, "--variant %s does not apply in 3-D: the 3-D engine has one variant, adaptive",
+                                optarg);
+            break;
+        case 2000: case 2001: case 2002: case 2003:
+            cli_usage_error(prog, "--%s does not apply in 3-D (the 3-D engine runs the uniform torus on one rank)",
+                            two_d_only[ch - 2000]);
+        case 'h': usage(); return 1;
+        case 'V': printf("%s %s (3-D engine)\n", prog, CFPO_VERSION); return 1;
+        case ':': cli_usage_error(prog, "option '%s' needs a value", argv[optind - 1]);
+        default: cli_bad_option(prog, lo, argv[optind - 1]);
+        }
+    }
+    if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
+    if (c->init && c->resume) cli_usage_error(prog, "--init and --resume exclude each other");
+    if (c->resume && (c->seed_given || c->tol_given || c->policy_given))
+        cli_usage_error(prog, "--resume takes the seed, tolerance and policy from the checkpoint");
+    if (!c->n_given && !c->init && !c->resume) cli_usage_error(prog, "-n is required");
+    if (c->every > 0 && !c->ckpt) cli_usage_error(prog, "--checkpoint-every needs --checkpoint");
+    if (c->every < 0) c->every = 10;
+    if (c->n_given && c->n < cfpo3_grid_min_n())
+        cli_usage_error(prog, "n = %lld is too small: at least %lld points are needed in 3-D",
+                        (long long)c->n, (long long)cfpo3_grid_min_n());
+    for (int i = 0; i < c->nout; i++) {
+        if (p3_format_of(c->out[i]) == P3F_UNKNOWN)
+            cli_usage_error(prog, "%s: unknown output format (use " P3_EXTENSIONS ")", c->out[i]);
+        char err[512];
+        if (p3_check_box(c->out[i], c->box, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
+        for (int j = 0; j < i; j++)
+            if (strcmp(c->out[i], c->out[j]) == 0) cli_usage_error(prog, "output %s given twice", c->out[i]);
+    }
+    if (c->ckpt)
+        for (int i = 0; i < c->nout; i++)
+            if (strcmp(c->ckpt, c->out[i]) == 0) cli_usage_error(prog, "--checkpoint is also an output");
+    return 0;
+}
+
+typedef struct {
+    cli_progress prog;
+    double t0;
+} runctx;
+
+int cfpo3_cli_main(const char *name, int argc, char **argv)
+{
+    prog = name;
+    cmdline c;
+    if (parse(&c, argc, argv)) return 0;
+    char err[512];
+    if (c.dry) {
+        int64_t n = c.n;
+        if (!c.n_given) cli_usage_error(prog, "--dry-run needs -n");
+        cfpo3_grid G;
+        if (cfpo3_grid_choose(n, &G, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
+        const double bpp = cfpo3_bytes_per_point(n);
+        printf("%s dry run: n=%lld grid=%d^3 cells=%lld points_per_cell=%.3f L/Delta3=%.4f "
+               "bytes_per_point=%.1f total_bytes=%.0f\n",
+               prog, (long long)n, G.g, (long long)G.g * G.g * G.g, (double)n / ((double)G.g * G.g * G.g),
+               G.L / G.delta3, bpp, bpp * (double)n);
+        return 0;
+    }
+    for (int i = 0; i < c.nout; i++)
+        if (p3_probe(c.out[i], err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    if (c.ckpt) { /* the checkpoint's folder must take a file */
+        char *tmp = NULL;
+        const int fd = safefile_create(c.ckpt, &tmp, err, sizeof err);
+        if (fd < 0) cli_fail(prog, "%s", err);
+        close(fd);
+        unlink(tmp);
+        free(tmp);
+    }
+    const double t0 = cli_now();
+    cfpo3_engine *e = NULL;
+    if (c.resume) {
+        e = cfpo3_checkpoint_read(c.resume, c.o.threads, err, sizeof err);
+        if (!e) cli_fail(prog, "%s", err);
+        if (c.n_given && c.n != cfpo3_n(e))
+            cli_usage_error(prog, "-n %lld disagrees with the checkpoint's n = %lld", (long long)c.n,
+                            (long long)cfpo3_n(e));
+    } else if (c.init) {
+        double *xyz;
+        size_t n;
+        if (p3_read(c.init, &xyz, &n, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        if (c.n_given && (size_t)c.n != n)
+            cli_usage_error(prog, "-n %lld disagrees with %s, which holds %zu points", (long long)c.n, c.init, n);
+        if ((int64_t)n < cfpo3_grid_min_n())
+            cli_usage_error(prog, "%s holds %zu points: at least %lld are needed in 3-D", c.init, n,
+                            (long long)cfpo3_grid_min_n());
+        e = cfpo3_create_given(xyz, (int64_t)n, &c.o, err, sizeof err);
+        free(xyz);
+        if (!e) cli_fail(prog, "%s: %s", c.init, err);
+    } else {
+        e = cfpo3_create(c.n, &c.o, err, sizeof err);
+        if (!e) cli_fail(prog, "%s", err);
+    }
+    const int64_t n = cfpo3_n(e);
+    cli_atomic tr = {0};
+    if (c.trace) {
+        if (cli_atomic_open(&tr, c.trace, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds\n");
+    }
+    cli_progress pr;
+    cli_progress_init(&pr, c.quiet);
+    /* the one run loop (src/engine/run_loop.h) over the engine's table */
+    run_ctx ctx = {.pr = &pr, .trace = c.trace ? tr.f : NULL, .t0 = t0};
+    cfpo_options lo;
+    memset(&lo, 0, sizeof lo);
+    lo.max_iter = c.max_iter;
+    lo.stop = c.stop;
+    lo.progress = on_iteration;
+    lo.user = &ctx;
+    cfpo_run_engine R;
+    cfpo3_as_run(e, &lo, t0, &R);
+    if (c.ckpt) runsignal_install(); /* SIGTERM / SIGUSR1: a checkpoint, then exit 3 */
+    cfpo_result res;
+    const int rc = cfpo_run_loop(&R, c.ckpt, c.ckpt ? c.every : 0, &res, err, sizeof err);
+    runsignal_restore();
+    cli_progress_end(&pr);
+    if (rc != 0) {
+        if (c.trace) cli_atomic_abort(&tr);
+        cli_fail(prog, "%s", err);
+    }
+    const int stop = res.stop, converged = res.converged;
+    if (stop == CFPO_STOP_SIGNAL) {
+        if (c.trace) cli_atomic_abort(&tr);
+    } else {
+        if (c.trace && cli_atomic_commit(&tr, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        for (int i = 0; i < c.nout; i++)
+            if (p3_write(c.out[i], cfpo3_points(e), (size_t)n, c.box, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    }
+    double dmin, davg;
+    cfpo3_measure(e, &dmin, &davg);
+    const cfpo3_options *o = cfpo3_options_of(e);
+    cli_summary s = {"cfpo3d", /* the 3-D engine, under either command */ o->relax ? "adaptive" : "adaptive-norelax", n, o->seed,
+                     o->threads > 0 ? o->threads : omp_get_max_threads(), 1, cfpo3_iterations(e),
+                     cli_now() - t0, dmin, davg, stop == CFPO_STOP_CONVERGED ? 1 : converged ? 1 : 0,
+                     cli_peak_rss(), cfpo_stop_name(stop)};
+    cli_print_summary(stdout, &s);
+    const double d = dmin * cfpo3_delta_bound((double)n);
+    printf("BOX3D side=%.17g delta_min_box=%.9g packing_fraction=%.6f\n", c.box, d * c.box,
+           M_PI / 6.0 * (double)n * d * d * d);
+    if (getenv("CFPO3D_WORK")) { /* the solver's work, for measuring */
+        long cells, tests, cuts;
+        cfpo3_work(e, &cells, &tests, &cuts);
+        printf("WORK3D cells=%ld tests=%ld cuts=%ld\n", cells, tests, cuts);
+    }
+    if (stop == CFPO_STOP_SIGNAL)
+        fprintf(stderr, "%s: stopped by a signal at iteration %d; checkpoint %s written, no output; continue "
+                "with --resume %s\n", prog, res.iterations, c.ckpt, c.ckpt);
+    cfpo3_free(e);
+    return stop == CFPO_STOP_SIGNAL ? 3 : 0;
+}
