@@ -280,10 +280,10 @@ void cli_print_summary(FILE *f, const cli_summary *s)
     if (s->iterations >= 0) fprintf(f, " iterations=%lld", (long long)s->iterations);
     else fprintf(f, " iterations=-");
     fprintf(f, " seconds=%.6f delta_min=%.6f delta_avg=%.6f converged=%s peak_bytes=%llu "
-            "bytes_per_point=%.1f stop=%s\n", s->seconds, s->delta_min, s->delta_avg,
+            "bytes_per_point=%.1f stop=%s%s\n", s->seconds, s->delta_min, s->delta_avg,
             s->converged < 0 ? "-" : (s->converged ? "yes" : "no"),
             (unsigned long long)s->peak_bytes, s->n > 0 ? (double)s->peak_bytes / (double)s->n : 0.0,
-            s->stop ? s->stop : "-");
+            s->stop ? s->stop : "-", s->extra ? s->extra : "");
     fflush(f);
 }
 

@@ -95,6 +95,7 @@ typedef struct {
     int converged;        /* 1 yes, 0 no, -1 not applicable */
     uint64_t peak_bytes;
     const char *stop;     /* which rule stopped the run (NULL: '-') */
+    const char *extra;    /* more fields after stop (" k=v ..."), or NULL */
 } cli_summary;
 void cli_print_summary(FILE *f, const cli_summary *s);
 

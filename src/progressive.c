@@ -1,0 +1,115 @@
+/* progressive.c - see progressive.h. */
+#include "progressive.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "grid.h"
+#include "omp_compat.h"
+#include "prog_insert.h"
+#include "rng.h"
+#include "run_loop.h"
+#include "stoprule.h"
+
+#define PROG_SALT 0x9e3779b97f4a7c15ULL /* level seeds: seed ^ mix(level + salt) */
+
+int cfpo_prog_sizes(int64_t n, int variant, const cfpo_prog_options *p, int64_t *sizes, char *err, size_t errlen)
+{
+    const int64_t nmin = cfpo_grid_min_n(variant);
+    if (p->classes > 0) {
+        const int64_t K = p->classes;
+        if (K > CFPO_PROG_MAX_LEVELS || K > n || n / K < nmin) {
+            snprintf(err, errlen, "--classes %lld: each class needs at least %lld points (n / K) and K at most %d; "
+                     "n = %lld", (long long)K, (long long)nmin, CFPO_PROG_MAX_LEVELS, (long long)n);
+            return -1;
+        }
+        for (int64_t c = 0; c < K; c++) sizes[c] = (c + 1) * n / K;
+        return (int)K;
+    }
+    const int64_t base = p->base > 0 ? p->base : CFPO_PROG_DEFAULT_BASE;
+    if (base > n) {
+        snprintf(err, errlen, "--base %lld is larger than n = %lld", (long long)base, (long long)n);
+        return -1;
+    }
+    if (base < nmin) {
+        snprintf(err, errlen, "--base %lld is too small: the grid needs at least %lld points", (long long)base,
+                 (long long)nmin);
+        return -1;
+    }
+    int k = 0;
+    for (int64_t m = base; k < CFPO_PROG_MAX_LEVELS; m *= 2) {
+        sizes[k++] = m < n ? m : n;
+        if (m >= n) break;
+    }
+    return k;
+}
+
+void cfpo_prog_worst(const cfpo_prog_level *levels, int k, int *by_min, int *by_avg)
+{
+    *by_min = *by_avg = 0;
+    for (int i = 1; i < k; i++) {
+        if (levels[i].delta_min < levels[*by_min].delta_min) *by_min = i;
+        if (levels[i].delta_avg < levels[*by_avg].delta_avg) *by_avg = i;
+    }
+}
+
+/* One level: m points, the first `fixed` held, from xy (NULL: the
+ * variant's own start); its engine into R, its run into res and L. */
+static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_options *lo, cfpo_run_engine *R,
+                     cfpo_result *res, cfpo_prog_level *L, char *err, size_t errlen)
+{
+    cfpo_engine_config cfg = {0};
+    cfg.start_xy = xy;
+    cfg.fixed = fixed;
+    const double t0 = omp_get_wtime();
+    cfpo_engine *E = cfpo_engine_create_ex(m, lo, &cfg, err, errlen);
+    if (!E) return -1;
+    cfpo_engine_as_run(E, R);
+    R->t_born = t0;
+    double d0, a0;
+    cfpo_engine_deltas(E, &d0, &a0);
+    if (cfpo_run_loop(R, NULL, 0, res, err, errlen) != 0) {
+        cfpo_engine_free(E);
+        return -1;
+    }
+    *L = (cfpo_prog_level){.m = m, .iterations = res->iterations, .stop = res->stop, .delta_min0 = d0,
+                           .delta_min = res->delta_min, .delta_avg = res->delta_avg,
+                           .seconds = omp_get_wtime() - t0};
+    return 0;
+}
+
+int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, cfpo_run_engine *R,
+                  cfpo_result *res, cfpo_prog_level *levels, int *nlevels, char *err, size_t errlen)
+{
+    int64_t sizes[CFPO_PROG_MAX_LEVELS];
+    const int K = cfpo_prog_sizes(n, o->variant, p, sizes, err, errlen);
+    if (K < 0) return -1;
+    double *xy = malloc(2 * (size_t)n * sizeof *xy);
+    if (!xy) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    const int cand = p->candidates > 0 ? p->candidates : 16;
+    for (int k = 0; k < K; k++) {
+        const int64_t m = sizes[k], prev = k > 0 ? sizes[k - 1] : 0;
+        cfpo_options lo = *o;
+        lo.seed = k == 0 ? o->seed : o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT);
+        if (k < K - 1) { /* the last level keeps the caller's stop rules */
+            memset(&lo.stop, 0, sizeof lo.stop);
+            lo.stop.target_min = p->level_min;
+        }
+        if (k > 0 && cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen) != 0) break;
+        if (p->level_begin) p->level_begin(k, m, p->user);
+        if (run_level(m, prev, k > 0 ? xy : NULL, &lo, R, res, &levels[k], err, errlen) != 0) break;
+        if (k == K - 1) {
+            free(xy);
+            *nlevels = K;
+            return 0;
+        }
+        R->ops->copy(R->E, xy); /* the prefix, in id order */
+        R->ops->free(R->E);
+    }
+    free(xy);
+    return -1;
+}
