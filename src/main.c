@@ -74,6 +74,8 @@ static void usage(void)
            "      --base B         the first level's size (default %d)\n"
            "      --level-min D    stop every level but the last once its prefix's\n"
            "                       delta_min reaches D (default: each level to convergence)\n"
+           "      --relax J        after each level, J iterations with the level before it\n"
+           "                       moving too (lifts the full set, lowers earlier prefixes)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
            "                       output, built like the levels (docs/cli.md)\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
@@ -300,6 +302,7 @@ static void parse(int argc, char **argv, cmdline *c)
         {"init", required_argument, 0, 'I'}, {"density", required_argument, 0, 1004},
         {"progressive", no_argument, 0, PROG_OPT_PROGRESSIVE}, {"base", required_argument, 0, PROG_OPT_BASE},
         {"classes", required_argument, 0, PROG_OPT_CLASSES}, {"level-min", required_argument, 0, PROG_OPT_LEVEL_MIN},
+        {"relax", required_argument, 0, PROG_OPT_RELAX},
         {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;

@@ -36,14 +36,20 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
             cli_usage_error(prog, "--level-min: '%s' is not a number in [0, 1]", arg);
         pc->level_min_given = 1;
         return 1;
+    case PROG_OPT_RELAX:
+        if (cli_parse_i64(arg, 0, 1000000, &v) != 0) cli_usage_error(prog, "--relax: '%s' is not a whole number in 0..1e6", arg);
+        pc->p.relax = (int)v;
+        pc->relax_given = 1;
+        return 1;
     default: return 0;
     }
 }
 
 void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
 {
-    if (!pc->on && (pc->base_given || pc->level_min_given))
-        cli_usage_error(prog, "%s needs --progressive or --classes K", pc->base_given ? "--base" : "--level-min");
+    if (!pc->on && (pc->base_given || pc->level_min_given || pc->relax_given))
+        cli_usage_error(prog, "%s needs --progressive or --classes K",
+                        pc->base_given ? "--base" : pc->relax_given ? "--relax" : "--level-min");
     if (!pc->on) return;
     if (pc->base_given && pc->p.classes > 0) cli_usage_error(prog, "--base does not go with --classes");
     if (variant == CFPO_VARIANT_HYPERUNIFORM)

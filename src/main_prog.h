@@ -12,12 +12,12 @@
 
 typedef struct {
     int on;              /* --progressive or --classes given */
-    int base_given, level_min_given;
+    int base_given, level_min_given, relax_given;
     cfpo_prog_options p; /* base, classes, level_min */
 } prog_cli;
 
 /* Option codes of main.c's getopt table. */
-enum { PROG_OPT_PROGRESSIVE = 1101, PROG_OPT_BASE, PROG_OPT_CLASSES, PROG_OPT_LEVEL_MIN };
+enum { PROG_OPT_PROGRESSIVE = 1101, PROG_OPT_BASE, PROG_OPT_CLASSES, PROG_OPT_LEVEL_MIN, PROG_OPT_RELAX };
 
 /* One option of this path: 1 when ch is one (a bad value is a usage
  * error), 0 otherwise. */

@@ -79,6 +79,22 @@ static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_opti
     return 0;
 }
 
+/* The prefixes' measures once later levels moved their points: each
+ * prefix as a set of its own (an engine that only measures). */
+static int remeasure(const double *xy, int K, const cfpo_options *o, cfpo_prog_level *levels, char *err,
+                     size_t errlen)
+{
+    for (int k = 0; k < K - 1; k++) {
+        cfpo_engine_config cfg = {0};
+        cfg.start_xy = xy;
+        cfpo_engine *E = cfpo_engine_create_ex(levels[k].m, o, &cfg, err, errlen);
+        if (!E) return -1;
+        cfpo_engine_deltas(E, &levels[k].delta_min, &levels[k].delta_avg);
+        cfpo_engine_free(E);
+    }
+    return 0;
+}
+
 int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, cfpo_run_engine *R,
                   cfpo_result *res, cfpo_prog_level *levels, int *nlevels, char *err, size_t errlen)
 {
@@ -102,10 +118,24 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         if (k > 0 && cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen) != 0) break;
         if (p->level_begin) p->level_begin(k, m, p->user);
         if (run_level(m, prev, k > 0 ? xy : NULL, &lo, R, res, &levels[k], err, errlen) != 0) break;
+        if (p->relax > 0 && k > 0) { /* the level before moves too, the one before that stays */
+            cfpo_prog_level keep = levels[k];
+            R->ops->copy(R->E, xy);
+            R->ops->free(R->E);
+            cfpo_options ro = lo;
+            ro.max_iter = p->relax;
+            if (run_level(m, k > 1 ? sizes[k - 2] : 0, xy, &ro, R, res, &levels[k], err, errlen) != 0) break;
+            levels[k].iterations += keep.iterations;
+            levels[k].seconds += keep.seconds;
+            levels[k].delta_min0 = keep.delta_min0;
+        }
         if (k == K - 1) {
+            R->ops->copy(R->E, xy);
+            int rc = p->relax > 0 ? remeasure(xy, K, o, levels, err, errlen) : 0;
             free(xy);
+            if (rc != 0) R->ops->free(R->E);
             *nlevels = K;
-            return 0;
+            return rc;
         }
         R->ops->copy(R->E, xy); /* the prefix, in id order */
         R->ops->free(R->E);

@@ -37,6 +37,9 @@ typedef struct {
     int classes;      /* K > 0: K equal groups (class c = ids [c n/K, (c+1) n/K)) instead of doublings */
     double level_min; /* > 0: every level but the last stops once its prefix's delta_min reaches this */
     int candidates;   /* best-candidate draws per new point (0: 16) */
+    int relax;        /* > 0: after each level k >= 1, this many iterations with level k - 1
+                         moving too (prefix m_(k-2) held); the earlier prefixes are measured
+                         again at the end */
     /* Called before level k starts (k, its prefix size), e.g. to label
      * the trace's rows; may be NULL. */
     void (*level_begin)(int k, int64_t m, void *user);
