@@ -182,8 +182,8 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
                       .threads = o->threads > 0 ? o->threads : omp_get_num_procs(), .ranks = 1,
                       .iterations = iters, .seconds = seconds, .delta_min = res.delta_min,
                       .delta_avg = res.delta_avg, .converged = res.converged, .peak_bytes = peak,
-                      .stop = cfpo_stop_name(res.stop), .extra = extra};
-    cli_print_summary(stdout, &sm);
+                      .stop = cfpo_stop_name(res.stop)};
+    cli_print_summary_ex(stdout, &sm, extra);
     R.ops->free(R.E);
     return 0;
 }

@@ -129,6 +129,11 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
             levels[k].seconds += keep.seconds;
             levels[k].delta_min0 = keep.delta_min0;
         }
+        if (k < K - 1 && res->stop == CFPO_STOP_CALLER) { /* the caller stops the whole run */
+            snprintf(err, errlen, "stopped by the caller at level %d (prefix %lld)", k, (long long)m);
+            R->ops->free(R->E);
+            break;
+        }
         if (k == K - 1) {
             R->ops->copy(R->E, xy);
             int rc = p->relax > 0 ? remeasure(xy, K, o, levels, err, errlen) : 0;

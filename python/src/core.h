@@ -89,6 +89,7 @@ int core_options_of(cfpo_options *o, unsigned long long seed, const char *varian
 PyObject *core_run_result(core_run_ctx *c, int rc, int created, const char *err, PyObject *points,
                           const cfpo_result *res, double seconds);
 PyObject *core_run(PyObject *self, PyObject *args);
+PyObject *core_progressive(PyObject *self, PyObject *args);
 PyObject *core_deltas(PyObject *self, PyObject *args);
 PyObject *core_spectrum(PyObject *self, PyObject *args);
 PyObject *core_certify(PyObject *self, PyObject *args);

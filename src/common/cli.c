@@ -272,7 +272,9 @@ void cli_progress_end(cli_progress *p)
 
 /* ------------------------------------------------------------ summary */
 
-void cli_print_summary(FILE *f, const cli_summary *s)
+void cli_print_summary(FILE *f, const cli_summary *s) { cli_print_summary_ex(f, s, NULL); }
+
+void cli_print_summary_ex(FILE *f, const cli_summary *s, const char *extra)
 {
     fprintf(f, "SUMMARY method=%s variant=%s n=%lld seed=%llu threads=%d ranks=%d", s->method,
             s->variant ? s->variant : "-", (long long)s->n, (unsigned long long)s->seed,
@@ -283,7 +285,7 @@ void cli_print_summary(FILE *f, const cli_summary *s)
             "bytes_per_point=%.1f stop=%s%s\n", s->seconds, s->delta_min, s->delta_avg,
             s->converged < 0 ? "-" : (s->converged ? "yes" : "no"),
             (unsigned long long)s->peak_bytes, s->n > 0 ? (double)s->peak_bytes / (double)s->n : 0.0,
-            s->stop ? s->stop : "-", s->extra ? s->extra : "");
+            s->stop ? s->stop : "-", extra ? extra : "");
     fflush(f);
 }
 

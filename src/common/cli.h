@@ -95,9 +95,10 @@ typedef struct {
     int converged;        /* 1 yes, 0 no, -1 not applicable */
     uint64_t peak_bytes;
     const char *stop;     /* which rule stopped the run (NULL: '-') */
-    const char *extra;    /* more fields after stop (" k=v ..."), or NULL */
 } cli_summary;
 void cli_print_summary(FILE *f, const cli_summary *s);
+/* The same line with more fields after stop (extra: " k=v ...", or NULL). */
+void cli_print_summary_ex(FILE *f, const cli_summary *s, const char *extra);
 
 /* Text file written under a temporary name (registered with tmpguard, so
  * a signal or an error exit removes it) and renamed on commit: safefile.h's
