@@ -24,6 +24,26 @@ static int64_t bucket_of(const buckets *B, double x, double y)
     return by * B->gs + bx;
 }
 
+/* Buckets of side about Delta(m) for points of xy, none stored yet. */
+static int buckets_init(buckets *B, const double *xy, int64_t m, int64_t cap)
+{
+    B->gs = (int64_t)floor(1.0 / cfpo_delta_bound((double)m));
+    if (B->gs < 1) B->gs = 1;
+    B->cs = 1.0 / (double)B->gs;
+    B->xy = xy;
+    B->head = malloc((size_t)(B->gs * B->gs) * sizeof *B->head);
+    B->next = malloc((size_t)cap * sizeof *B->next);
+    if (!B->head || !B->next) return -1;
+    for (int64_t b = 0; b < B->gs * B->gs; b++) B->head[b] = -1;
+    return 0;
+}
+
+static void buckets_free(buckets *B)
+{
+    free(B->head);
+    free(B->next);
+}
+
 static void add(buckets *B, int64_t k)
 {
     const int64_t b = bucket_of(B, B->xy[2 * k], B->xy[2 * k + 1]);
@@ -68,19 +88,11 @@ int cfpo_prog_insert(double *xy, int64_t m0, int64_t m1, int cand, uint64_t seed
                      size_t errlen)
 {
     buckets B = {0};
-    B.gs = (int64_t)floor(1.0 / cfpo_delta_bound((double)m1));
-    if (B.gs < 1) B.gs = 1;
-    B.cs = 1.0 / (double)B.gs;
-    B.xy = xy;
-    B.head = malloc((size_t)(B.gs * B.gs) * sizeof *B.head);
-    B.next = malloc((size_t)m1 * sizeof *B.next);
-    if (!B.head || !B.next) {
-        free(B.head);
-        free(B.next);
+    if (buckets_init(&B, xy, m1, m1) != 0) {
+        buckets_free(&B);
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    for (int64_t b = 0; b < B.gs * B.gs; b++) B.head[b] = -1;
     for (int64_t k = 0; k < m0; k++) add(&B, k);
     uint64_t counter = 0;
     for (int64_t k = m0; k < m1; k++) {
@@ -94,7 +106,108 @@ int cfpo_prog_insert(double *xy, int64_t m0, int64_t m1, int cand, uint64_t seed
         xy[2 * k + 1] = by;
         add(&B, k);
     }
-    free(B.head);
-    free(B.next);
+    buckets_free(&B);
     return 0;
+}
+
+/* ---- the greedy order of a level's points */
+
+typedef struct {
+    double d;
+    int64_t i;
+} hitem;
+
+static int above(const hitem *a, const hitem *b) { return a->d > b->d || (a->d == b->d && a->i < b->i); }
+
+static void hpush(hitem *h, int64_t *n, hitem v)
+{
+    int64_t k = (*n)++;
+    while (k > 0 && above(&v, &h[(k - 1) / 2])) {
+        h[k] = h[(k - 1) / 2];
+        k = (k - 1) / 2;
+    }
+    h[k] = v;
+}
+
+static hitem hpop(hitem *h, int64_t *n)
+{
+    const hitem top = h[0], v = h[--(*n)];
+    int64_t k = 0;
+    for (;;) {
+        int64_t c = 2 * k + 1;
+        if (c >= *n) break;
+        if (c + 1 < *n && above(&h[c + 1], &h[c])) c++;
+        if (!above(&h[c], &v)) break;
+        h[k] = h[c];
+        k = c;
+    }
+    if (*n > 0) h[k] = v;
+    return top;
+}
+
+int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen)
+{
+    const int64_t q = m1 - m0;
+    if (q <= 1) return 0;
+    buckets P = {0}, Q = {0};
+    double *d = malloc((size_t)q * sizeof *d), *out = malloc(2 * (size_t)q * sizeof *out);
+    unsigned char *taken = calloc((size_t)q, 1);
+    const int64_t hcap = 8 * q + 16;
+    hitem *h = malloc((size_t)hcap * sizeof *h);
+    int rc = -1;
+    if (!d || !out || !taken || !h || buckets_init(&P, xy, m1, m1) != 0 || buckets_init(&Q, xy, m1, m1) != 0) {
+        snprintf(err, errlen, "out of memory");
+        goto done;
+    }
+    for (int64_t k = 0; k < m0; k++) add(&P, k);
+    int64_t hn = 0;
+    for (int64_t j = 0; j < q; j++) { /* each new point's distance to the prefix */
+        d[j] = m0 > 0 ? nearest2(&P, xy[2 * (m0 + j)], xy[2 * (m0 + j) + 1], -1.0) : INFINITY;
+        add(&Q, m0 + j);
+        hpush(h, &hn, (hitem){d[j], j});
+    }
+    for (int64_t t = 0; t < q; t++) {
+        hitem top;
+        do top = hpop(h, &hn); /* stale entries (a distance lowered since) are skipped */
+        while (taken[top.i] || top.d != d[top.i]);
+        const int64_t p = top.i;
+        taken[p] = 1;
+        const double px = xy[2 * (m0 + p)], py = xy[2 * (m0 + p) + 1];
+        out[2 * t] = px;
+        out[2 * t + 1] = py;
+        /* the untaken points nearer to p than to the set so far: within the
+         * largest such distance, sqrt(top.d), of p */
+        const double r = sqrt(top.d);
+        const int64_t gs = Q.gs, reach = isinf(r) ? gs : (int64_t)ceil(r / Q.cs) + 1;
+        const int64_t b = bucket_of(&Q, px, py), bx = b % gs, by = b / gs;
+        const int64_t span = 2 * reach + 1 >= gs ? gs : 2 * reach + 1;
+        for (int64_t oy = 0; oy < span; oy++)
+            for (int64_t ox = 0; ox < span; ox++) {
+                const int64_t cx = ((bx - (span == gs ? 0 : reach) + ox) % gs + gs) % gs;
+                const int64_t cy = ((by - (span == gs ? 0 : reach) + oy) % gs + gs) % gs;
+                for (int64_t k = Q.head[cy * gs + cx]; k >= 0; k = Q.next[k]) {
+                    const int64_t j = k - m0;
+                    if (taken[j]) continue;
+                    const double d2 = torus_d2(px, py, xy[2 * k], xy[2 * k + 1]);
+                    if (d2 >= d[j]) continue;
+                    d[j] = d2;
+                    if (hn == hcap) { /* compact: one live entry per untaken point */
+                        hn = 0;
+                        for (int64_t i = 0; i < q; i++)
+                            if (!taken[i]) hpush(h, &hn, (hitem){d[i], i});
+                    }
+                    hpush(h, &hn, (hitem){d2, j});
+                }
+            }
+    }
+    for (int64_t t = 0; t < 2 * q; t++) xy[2 * m0 + t] = out[t];
+    rc = 0;
+done:
+    buckets_free(&P);
+    buckets_free(&Q);
+    free(d);
+    free(out);
+    free(taken);
+    free(h);
+    return rc;
 }

@@ -95,6 +95,19 @@ static int remeasure(const double *xy, int K, const cfpo_options *o, cfpo_prog_l
     return 0;
 }
 
+/* An engine holding the n points of xy as they are (none moves): the
+ * run's output. */
+static int hold(int64_t n, const double *xy, const cfpo_options *o, cfpo_run_engine *R, char *err, size_t errlen)
+{
+    cfpo_engine_config cfg = {0};
+    cfg.start_xy = xy;
+    cfg.fixed = n;
+    cfpo_engine *E = cfpo_engine_create_ex(n, o, &cfg, err, errlen);
+    if (!E) return -1;
+    cfpo_engine_as_run(E, R);
+    return 0;
+}
+
 int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, cfpo_run_engine *R,
                   cfpo_result *res, cfpo_prog_level *levels, int *nlevels, char *err, size_t errlen)
 {
@@ -134,16 +147,16 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
             R->ops->free(R->E);
             break;
         }
+        R->ops->copy(R->E, xy); /* the prefix, in id order */
+        R->ops->free(R->E);
+        if (cfpo_prog_order(xy, prev, m, err, errlen) != 0) break;
         if (k == K - 1) {
-            R->ops->copy(R->E, xy);
             int rc = p->relax > 0 ? remeasure(xy, K, o, levels, err, errlen) : 0;
+            if (rc == 0) rc = hold(n, xy, o, R, err, errlen);
             free(xy);
-            if (rc != 0) R->ops->free(R->E);
             *nlevels = K;
             return rc;
         }
-        R->ops->copy(R->E, xy); /* the prefix, in id order */
-        R->ops->free(R->E);
     }
     free(xy);
     return -1;
