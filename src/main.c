@@ -379,7 +379,11 @@ static void density_fits(const cmdline *c)
 static void progressive_fits(const cmdline *c)
 {
     const char *what = c->pc.p.classes ? "--classes" : "--progressive";
-    const char *bad = c->cfg.checkpoint ? "--checkpoint" : c->cfg.resume ? "--resume" : c->init ? "--init"
+    if (c->pc.p.relax > 0 && (c->cfg.checkpoint || c->cfg.resume))
+        cli_usage_error(prog, "--relax does not go with %s (not supported yet)",
+                        c->cfg.checkpoint ? "--checkpoint" : "--resume");
+    if (c->cfg.resume && c->n < 0) cli_usage_error(prog, "--resume with %s needs the run's -n N", what);
+    const char *bad = c->init ? "--init"
                     : c->density ? "--density" : c->dry ? "--dry-run" : c->cfg.px > 0 ? "--tiles"
                     : c->cfg.check ? "--check"
                     : c->o.stop.time_limit > 0 ? "--time-limit" : NULL;
@@ -411,7 +415,7 @@ static void settle_options(cmdline *c)
     if (c->init && (c->cfg.resume || c->dry))
         cli_usage_error(prog, "--init does not go with %s", c->dry ? "--dry-run" : "--resume");
     if (c->pc.on) progressive_fits(c);
-    if (c->cfg.resume) take_from_checkpoint(c);
+    if (c->cfg.resume && !c->pc.on) take_from_checkpoint(c); /* a level's checkpoint: progressive.c */
     if (c->init) take_from_points(c);
     if (c->n < 0) cli_usage_error(prog, "the number of points is required: -n N");
     if (c->dp && !cfpo_density_is_flat(c->dp)) density_fits(c);
@@ -544,7 +548,8 @@ int main(int argc, char **argv)
     }
     validate(&c);
     if (c.pc.on) {
-        int rc = prog_cli_main(&c.pc, prog, c.n, &c.o, c.out, c.trace, c.quiet);
+        int rc = prog_cli_main(&c.pc, prog, c.n, &c.o, c.out, c.trace, c.quiet, c.cfg.checkpoint,
+                               c.cfg.checkpoint_every, c.cfg.resume);
         comm_finalize();
         return rc;
     }

@@ -11,6 +11,7 @@
 #include "omp_compat.h"
 #include "plan.h"
 #include "runfiles.h"
+#include "runsignal.h"
 #include "stoprule.h"
 #include "tracecols.h"
 
@@ -77,10 +78,11 @@ static void level_begin(int k, int64_t m, void *user)
     c->level = k;
     c->m = m;
     c->ndone = k;
-    if (k > 0 && c->done[k - 1].delta_min < c->worst_min) {
-        c->worst_min = c->done[k - 1].delta_min;
-        c->worst_m = c->done[k - 1].m;
-    }
+    for (int j = 0; j < k; j++) /* (a resumed run starts past level 0) */
+        if (c->done[j].delta_min < c->worst_min) {
+            c->worst_min = c->done[j].delta_min;
+            c->worst_m = c->done[j].m;
+        }
 }
 
 static int on_iteration(const cfpo_iter_stats *s, void *user)
@@ -116,10 +118,10 @@ static int commit_trace(const char *path, const char *buf, size_t len, char *err
 }
 
 int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, const char *out, const char *trace,
-                  int quiet)
+                  int quiet, const char *checkpoint, int every, const char *resume)
 {
     char err[600];
-    cfpo_runfiles *files = cfpo_runfiles_open(out, NULL, NULL, n, err, sizeof err);
+    cfpo_runfiles *files = cfpo_runfiles_open(out, NULL, checkpoint, n, err, sizeof err);
     if (!files) cli_fail(prog, "%s", err);
     cfpo_prog_level levels[CFPO_PROG_MAX_LEVELS];
     prog_ctx ctx = {.done = levels, .worst_min = INFINITY, .worst_m = -1};
@@ -137,14 +139,26 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     o->user = &ctx;
     pc->p.level_begin = level_begin;
     pc->p.user = &ctx;
+    pc->p.checkpoint = checkpoint;
+    pc->p.checkpoint_every = every;
+    pc->p.resume = resume;
     ctx.t0 = cli_now();
+    if (checkpoint) runsignal_install(); /* SIGTERM, SIGUSR1: a checkpoint, then stop */
     cfpo_run_engine R;
     cfpo_result res;
     int K = 0;
     int rc = cfpo_prog_run(n, o, &pc->p, &R, &res, levels, &K, err, sizeof err);
+    runsignal_restore();
     cli_progress_end(&ctx.prog);
     const double seconds = cli_now() - ctx.t0;
     if (ctx.trace) fclose(ctx.trace);
+    if (rc == 1) { /* stopped by a signal after the checkpoint */
+        free(tbuf);
+        cfpo_runfiles_abort(files);
+        fprintf(stderr, "%s: stopped by a signal at level %d (prefix %lld); checkpoint %s written, no output; "
+                "continue with --resume %s\n", prog, K - 1, (long long)levels[K - 1].m, checkpoint, checkpoint);
+        return 3;
+    }
     if (rc != 0) {
         free(tbuf);
         cfpo_runfiles_abort(files);
@@ -164,10 +178,12 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     int64_t iters = 0;
     for (int k = 0; k < K; k++) {
         const cfpo_prog_level *L = &levels[k];
-        iters += L->iterations;
-        printf("LEVEL level=%d prefix=%lld iterations=%d seconds=%.6f start_delta_min=%.6f delta_min=%.6f "
-               "delta_avg=%.6f\n", k, (long long)L->m, L->iterations, L->seconds, L->delta_min0, L->delta_min,
-               L->delta_avg);
+        if (L->iterations > 0) iters += L->iterations;
+        char its[32] = "-", d0[32] = "-";
+        if (L->iterations >= 0) snprintf(its, sizeof its, "%d", L->iterations);
+        if (!isnan(L->delta_min0)) snprintf(d0, sizeof d0, "%.6f", L->delta_min0);
+        printf("LEVEL level=%d prefix=%lld iterations=%s seconds=%.6f start_delta_min=%s delta_min=%.6f "
+               "delta_avg=%.6f\n", k, (long long)L->m, its, L->seconds, d0, L->delta_min, L->delta_avg);
     }
     int wm, wa;
     cfpo_prog_worst(levels, K, &wm, &wa);

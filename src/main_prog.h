@@ -27,8 +27,11 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg);
 void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant);
 
 /* Runs, writes out and trace (either may be NULL), prints LEVEL and
- * SUMMARY lines. Returns the exit status; a failure leaves no file. */
+ * SUMMARY lines; with checkpoint, the level under way's checkpoint every
+ * `every` iterations, at each level's end and on SIGTERM / SIGUSR1 (then
+ * exit status 3, no output); resume: go on from such a checkpoint.
+ * Returns the exit status; a failure leaves no file. */
 int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, const char *out, const char *trace,
-                  int quiet);
+                  int quiet, const char *checkpoint, int every, const char *resume);
 
 #endif

@@ -1,6 +1,7 @@
 /* progressive.c - see progressive.h. */
 #include "progressive.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -56,12 +57,14 @@ void cfpo_prog_worst(const cfpo_prog_level *levels, int k, int *by_min, int *by_
 
 /* One level: m points, the first `fixed` held, from xy (NULL: the
  * variant's own start); its engine into R, its run into res and L. */
-static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_options *lo, cfpo_run_engine *R,
-                     cfpo_result *res, cfpo_prog_level *L, char *err, size_t errlen)
+static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_options *lo, const cfpo_prog_options *p,
+                     const char *resume, cfpo_run_engine *R, cfpo_result *res, cfpo_prog_level *L, char *err,
+                     size_t errlen)
 {
     cfpo_engine_config cfg = {0};
     cfg.start_xy = xy;
     cfg.fixed = fixed;
+    cfg.resume = resume;
     const double t0 = omp_get_wtime();
     cfpo_engine *E = cfpo_engine_create_ex(m, lo, &cfg, err, errlen);
     if (!E) return -1;
@@ -69,7 +72,7 @@ static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_opti
     R->t_born = t0;
     double d0, a0;
     cfpo_engine_deltas(E, &d0, &a0);
-    if (cfpo_run_loop(R, NULL, 0, res, err, errlen) != 0) {
+    if (cfpo_run_loop(R, p->checkpoint, p->checkpoint ? p->checkpoint_every : 0, res, err, errlen) != 0) {
         cfpo_engine_free(E);
         return -1;
     }
@@ -92,6 +95,32 @@ static int remeasure(const double *xy, int K, const cfpo_options *o, cfpo_prog_l
         cfpo_engine_deltas(E, &levels[k].delta_min, &levels[k].delta_avg);
         cfpo_engine_free(E);
     }
+    return 0;
+}
+
+/* The level a checkpoint belongs to: the one of its size. */
+static int resumed_level(const char *path, const int64_t *sizes, int K, char *err, size_t errlen)
+{
+    cfpo_checkpoint_info info;
+    if (cfpo_checkpoint_peek(path, &info, err, errlen) != 0) return -1;
+    for (int k = 0; k < K; k++)
+        if (sizes[k] == info.n) return k;
+    snprintf(err, errlen, "--resume %s: the checkpoint holds %lld points, no level of this run has that size", path,
+             (long long)info.n);
+    return -1;
+}
+
+/* The points of a level's checkpoint (m points, level seed in lo) into
+ * xy: the earlier levels' prefixes, to measure them again. */
+static int remeasure_points(const char *path, int64_t m, const cfpo_options *lo, double *xy, char *err,
+                            size_t errlen)
+{
+    cfpo_engine_config cfg = {0};
+    cfg.resume = path;
+    cfpo_engine *E = cfpo_engine_create_ex(m, lo, &cfg, err, errlen);
+    if (!E) return -1;
+    cfpo_engine_points(E, xy);
+    cfpo_engine_free(E);
     return 0;
 }
 
@@ -120,7 +149,12 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         return -1;
     }
     const int cand = p->candidates > 0 ? p->candidates : 16;
-    for (int k = 0; k < K; k++) {
+    int k0 = 0; /* the level to start at: a resumed checkpoint's */
+    if (p->resume && (k0 = resumed_level(p->resume, sizes, K, err, errlen)) < 0) {
+        free(xy);
+        return -1;
+    }
+    for (int k = k0; k < K; k++) {
         const int64_t m = sizes[k], prev = k > 0 ? sizes[k - 1] : 0;
         cfpo_options lo = *o;
         lo.seed = k == 0 ? o->seed : o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT);
@@ -128,16 +162,28 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
             memset(&lo.stop, 0, sizeof lo.stop);
             lo.stop.target_min = p->level_min;
         }
-        if (k > 0 && cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen) != 0) break;
+        if (k > k0 && cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen) != 0) break;
+        const char *resume = k == k0 ? p->resume : NULL;
+        if (resume && k > 0 && remeasure_points(resume, m, &lo, xy, err, errlen) != 0) break;
+        for (int j = 0; resume && j < k; j++) levels[j].m = sizes[j];
+        if (resume && k > 0 && remeasure(xy, k + 1, o, levels, err, errlen) != 0) break;
+        for (int j = 0; resume && j < k; j++) levels[j].iterations = -1, levels[j].delta_min0 = NAN;
         if (p->level_begin) p->level_begin(k, m, p->user);
-        if (run_level(m, prev, k > 0 ? xy : NULL, &lo, R, res, &levels[k], err, errlen) != 0) break;
+        if (run_level(m, prev, k > 0 && !resume ? xy : NULL, &lo, p, resume, R, res, &levels[k], err, errlen) != 0)
+            break;
+        if (res->stop == CFPO_STOP_SIGNAL) { /* the checkpoint is written: stop, no output */
+            R->ops->free(R->E);
+            free(xy);
+            *nlevels = k + 1;
+            return 1;
+        }
         if (p->relax > 0 && k > 0) { /* the level before moves too, the one before that stays */
             cfpo_prog_level keep = levels[k];
             R->ops->copy(R->E, xy);
             R->ops->free(R->E);
             cfpo_options ro = lo;
             ro.max_iter = p->relax;
-            if (run_level(m, k > 1 ? sizes[k - 2] : 0, xy, &ro, R, res, &levels[k], err, errlen) != 0) break;
+            if (run_level(m, k > 1 ? sizes[k - 2] : 0, xy, &ro, p, NULL, R, res, &levels[k], err, errlen) != 0) break;
             levels[k].iterations += keep.iterations;
             levels[k].seconds += keep.seconds;
             levels[k].delta_min0 = keep.delta_min0;

@@ -40,6 +40,9 @@ typedef struct {
     int relax;        /* > 0: after each level k >= 1, this many iterations with level k - 1
                          moving too (prefix m_(k-2) held); the earlier prefixes are measured
                          again at the end */
+    const char *checkpoint; /* the level under way's engine checkpoint (ckpt.h) here ... */
+    int checkpoint_every;   /* ... every this many of its iterations and at its end */
+    const char *resume;     /* go on from such a checkpoint (its size says its level) */
     /* Called before level k starts (k, its prefix size), e.g. to label
      * the trace's rows; may be NULL. */
     void (*level_begin)(int k, int64_t m, void *user);
@@ -56,8 +59,11 @@ int cfpo_prog_sizes(int64_t n, int variant, const cfpo_prog_options *p, int64_t 
  * progress callback sees every level's iterations (the statistics of the
  * prefix under way, in its own Delta(m)). On success R holds the last
  * level's engine (every point, id = prefix order; free with
- * R->ops->free), res its run, levels[0..*nlevels) the levels. 0, or -1
- * with one line in err and nothing held. */
+ * R->ops->free), res its run, levels[0..*nlevels) the levels. 0; 1 when
+ * a signal stopped it after writing the checkpoint (nothing held, no
+ * output); or -1 with one line in err and nothing held. A resumed run
+ * measures the finished levels again from the checkpoint's points (their
+ * iterations -1, their start delta_min NaN). */
 int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, cfpo_run_engine *R,
                   cfpo_result *res, cfpo_prog_level *levels, int *nlevels, char *err, size_t errlen);
 

@@ -11,7 +11,9 @@
 #    row by row within each level);
 #  - the same bytes for 1, 2 and 3 threads, progressive and with classes;
 #  - SUMMARY's worst prefix is the worst LEVEL line, and the trace's last
-#    row says the same.
+#    row says the same;
+#  - SIGUSR1 mid-run leaves the level's checkpoint, exit 3 and no output,
+#    and --resume from it gives the uninterrupted bytes and levels.
 set -u
 HERE=$(cd "$(dirname "$0")" && pwd)
 B=$(cd "$1" && pwd)
@@ -28,7 +30,8 @@ expect 2 "classes" -n 1024 --classes 0 -o x.npy
 expect 2 "larger than n" -n 1024 --progressive --base 2048 -o x.npy
 expect 2 "too small" -n 1024 --progressive --base 8 -o x.npy
 expect 2 "each class needs" -n 100 --classes 20 -o x.npy
-expect 2 "does not go with --progressive" -n 1024 --progressive --checkpoint ck.bin -o x.npy
+expect 2 "--relax does not go with --checkpoint" -n 1024 --progressive --relax 3 --checkpoint ck.bin -o x.npy
+expect 2 "does not go with --progressive" -n 1024 --progressive --init x.npy -o y.npy
 expect 2 "does not go with --progressive" -n 1024 --progressive --time-limit 5 -o x.npy
 expect 2 "does not go with --classes" -n 1024 --classes 4 --check -o x.npy
 expect 2 "does not go with --progressive" -n 1024 --progressive --density cos:a=0.5 -o x.npy
@@ -110,6 +113,34 @@ lv = {int(dict(kv.split("=") for kv in l.split()[1:])["prefix"]): float(dict(kv.
 an = {int(w[0]): float(w[2]) for w in (l.split() for l in open("r.analysis/prefixes.txt") if not l.startswith("#")) if w[1] == "dyadic"}
 sys.exit(0 if all(abs(lv[m] - an[m]) <= 2e-6 for m in lv) else 1)
 PY
+
+# ---- checkpoints: SIGUSR1 mid-run writes the level's checkpoint, exit 3 and no
+# output; --resume gives the uninterrupted bytes (and resumes past level 0)
+run -n 16384 -s 2 -t 2 --progressive -o ref.npy >ref.sum || bad "reference run"
+"$CFPO" -q -n 16384 -s 2 -t 2 --progressive --checkpoint ck.bin --checkpoint-every 3 -o cut.npy >cut.sum 2>cut.err &
+P=$!
+for i in $(seq 1 400); do [ -f ck.bin ] && break; sleep 0.05; done
+sleep 0.3
+kill -USR1 $P 2>/dev/null
+wait $P; rc=$?
+if [ "$rc" -eq 3 ]; then
+  [ ! -e cut.npy ] && grep -q "checkpoint ck.bin written" cut.err && ok || bad "a signalled run left output or no message"
+elif [ "$rc" -eq 0 ]; then
+  echo "note: the run ended before the signal; resuming from its last level's checkpoint"
+else
+  bad "signalled run: exit $rc ($(cat cut.err))"
+fi
+run -n 16384 -s 2 -t 1 --progressive --resume ck.bin -o res.npy >res.sum || bad "--resume"
+cmp -s ref.npy res.npy && ok || bad "--resume: not the uninterrupted bytes"
+grep -q "^LEVEL level=0 prefix=64 iterations=- " res.sum && ok || bad "--resume started at level 0"
+python3 - <<'PY' && ok || bad "--resume: the finished levels' measures differ from the uninterrupted run's"
+import sys
+def lv(f): return {l.split()[2]: (l.split()[6], l.split()[7]) for l in open(f) if l.startswith("LEVEL")}
+sys.exit(0 if lv("ref.sum") == lv("res.sum") else 1)
+PY
+expect 2 "needs the run's -n" --progressive --resume ck.bin -o x.npy
+expect 1 "checkpoint is for another run" -n 16384 -s 3 --progressive --resume ck.bin -o x.npy
+expect 1 "no level of this run has that size" -n 16000 --base 100 -s 2 --progressive --resume ck.bin -o x.npy
 
 echo "test_progressive: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
