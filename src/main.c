@@ -18,6 +18,7 @@
 #include "density.h"
 #include "engine.h"
 #include "engines.h"
+#include "main_prog.h"
 #include "omp_compat.h"
 #include "plan.h"
 #include "pointfile.h"
@@ -69,7 +70,17 @@ static void usage(void)
            "                       ends by itself (docs/method.md, \"Density\")\n"
            "  -q, --quiet          no progress line\n"
            "      --dim D          2 (default) or 3: with 3 the 3-D engine on the unit\n"
-           "                       3-torus, one rank (cfpo --dim 3 --help; docs/cli.md)\n\n"
+           "                       3-torus, one rank (cfpo --dim 3 --help; docs/cli.md)\n"
+           "      --progressive    one set whose every prefix of base * 2^k points is blue\n"
+           "                       noise: built level by level, earlier levels held fixed;\n"
+           "                       output in prefix order (one rank; docs/cli.md)\n"
+           "      --base B         the first level's size (default %d)\n"
+           "      --level-min D    stop every level but the last once its prefix's\n"
+           "                       delta_min reaches D (default: each level to convergence)\n"
+           "      --relax J        after each level, J iterations with the level before it\n"
+           "                       moving too (lifts the full set, lowers earlier prefixes)\n"
+           "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
+           "                       output, built like the levels (docs/cli.md)\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
            "      --tiles AxB      cut into A x B tiles (default: the most square cut)\n"
            "      --checkpoint F   write the state to F (atomically) ...\n"
@@ -90,7 +101,8 @@ static void usage(void)
            "byte for byte, as one process writes.\n"
            "Exit status: 0 success, 1 runtime failure, 2 usage error, 3 stopped by SIGTERM\n"
            "or SIGUSR1 after writing the --checkpoint file (continue with --resume).\n",
-           omp_get_num_procs(), CFPO_DEFAULT_MAX_ITER, CFPO_ADAPTIVE_TOL, CFPO_DEFAULT_TOL, PF_EXTENSIONS);
+           omp_get_num_procs(), CFPO_DEFAULT_MAX_ITER, CFPO_ADAPTIVE_TOL, CFPO_DEFAULT_TOL, PF_EXTENSIONS,
+           CFPO_PROG_DEFAULT_BASE);
 }
 
 typedef struct {
@@ -202,6 +214,7 @@ typedef struct {
     double *init_xy; /* the points of --init */
     cfpo_density d;  /* with --density */
     const cfpo_density *dp; /* &d with --density, else NULL */
+    prog_cli pc;            /* --progressive, --classes (main_prog.h) */
     int quiet, dry, every;
     int given_seed, given_variant, given_tol;
 } cmdline;
@@ -290,14 +303,19 @@ static void parse(int argc, char **argv, cmdline *c)
         {"ranks", required_argument, 0, 'N'}, {"target-min", required_argument, 0, 1001},
         {"target-avg", required_argument, 0, 1002}, {"time-limit", required_argument, 0, 1003},
         {"init", required_argument, 0, 'I'}, {"density", required_argument, 0, 1004},
-        {"box", required_argument, 0, 1005}, {0, 0, 0, 0}};
+        {"box", required_argument, 0, 1005},
+        {"progressive", no_argument, 0, PROG_OPT_PROGRESSIVE}, {"base", required_argument, 0, PROG_OPT_BASE},
+        {"classes", required_argument, 0, PROG_OPT_CLASSES}, {"level-min", required_argument, 0, PROG_OPT_LEVEL_MIN},
+        {"relax", required_argument, 0, PROG_OPT_RELAX},
+        {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;
     c->every = -1;
     opterr = 0;
     int ch;
     while ((ch = getopt_long(argc, argv, ":n:s:t:o:qhV", longopts, NULL)) != -1) {
-        if (sampler_option(c, ch, optarg) || run_option(c, ch, optarg)) continue;
+        if (sampler_option(c, ch, optarg) || run_option(c, ch, optarg) || prog_cli_option(&c->pc, prog, ch, optarg))
+            continue;
         switch (ch) {
         case 1005: cli_usage_error(prog, "--box is for --dim 3 (the 2-D engine writes the unit square)");
         case 'h': if (comm_rank() == 0) usage(); comm_finalize(); exit(0);
@@ -362,6 +380,24 @@ static void density_fits(const cmdline *c)
                         (long long)g, (long long)g, (long long)most, most == 1 ? "" : "s", comm_size());
 }
 
+/* --progressive and --classes: the options they do not take (yet). */
+static void progressive_fits(const cmdline *c)
+{
+    const char *what = c->pc.p.classes ? "--classes" : "--progressive";
+    if (c->pc.p.relax > 0 && (c->cfg.checkpoint || c->cfg.resume))
+        cli_usage_error(prog, "--relax does not go with %s (not supported yet)",
+                        c->cfg.checkpoint ? "--checkpoint" : "--resume");
+    if (c->cfg.resume && c->n < 0) cli_usage_error(prog, "--resume with %s needs the run's -n N", what);
+    const char *bad = c->init ? "--init"
+                    : c->density ? "--density" : c->dry ? "--dry-run" : c->cfg.px > 0 ? "--tiles"
+                    : c->cfg.check ? "--check"
+                    : c->o.stop.time_limit > 0 ? "--time-limit" : NULL;
+    if (bad) cli_usage_error(prog, "%s does not go with %s (not supported yet)", bad, what);
+    if (comm_size() > 1)
+        cli_usage_error(prog, "%s runs on one rank (this run has %d): several ranks are not supported yet", what,
+                        comm_size());
+}
+
 /* Options that only make sense together, the defaults that depend on
  * others, the checkpoint's run. */
 static void settle_options(cmdline *c)
@@ -383,10 +419,12 @@ static void settle_options(cmdline *c)
     if (c->cfg.resume && c->dry) cli_usage_error(prog, "--dry-run and --resume do not go together");
     if (c->init && (c->cfg.resume || c->dry))
         cli_usage_error(prog, "--init does not go with %s", c->dry ? "--dry-run" : "--resume");
-    if (c->cfg.resume) take_from_checkpoint(c);
+    if (c->pc.on) progressive_fits(c);
+    if (c->cfg.resume && !c->pc.on) take_from_checkpoint(c); /* a level's checkpoint: progressive.c */
     if (c->init) take_from_points(c);
     if (c->n < 0) cli_usage_error(prog, "the number of points is required: -n N");
     if (c->dp && !cfpo_density_is_flat(c->dp)) density_fits(c);
+    prog_cli_settle(&c->pc, prog, c->n, c->o.variant);
 }
 
 /* The run's files and this machine's room for it (not for --dry-run). */
@@ -552,6 +590,12 @@ int main(int argc, char **argv)
         return rc;
     }
     validate(&c);
+    if (c.pc.on) {
+        int rc = prog_cli_main(&c.pc, prog, c.n, &c.o, c.out, c.trace, c.quiet, c.cfg.checkpoint,
+                               c.cfg.checkpoint_every, c.cfg.resume);
+        comm_finalize();
+        return rc;
+    }
     run_ctx ctx;
     cfpo_result res;
     cfpo_run_engine R;

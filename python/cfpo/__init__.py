@@ -168,14 +168,76 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
     return Result(pts, it, secs, dmin, davg, conv, stop, dict(zip(TRACE_COLUMNS, tr)))
 
 def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
-           target_avg=None, time_limit=None, init=None, progress=None, density=None, dim=2):
+           target_avg=None, time_limit=None, init=None, progress=None, density=None, dim=2, progressive=False,
+           classes=None, base=None, level_min=None, relax=None):
     """CFPO points: run(...).points, an (n, 2) float64 array (dim=3: (n, 3)) that owns its memory.
 
     The same arguments as cfpo.run; the same bytes as `cfpo ... -o x.npy`
     (dim=3: `cfpo --dim 3 ... -o x.npy`).
+    progressive=True: the set of `cfpo --progressive` (every prefix of
+    base * 2^k points blue noise, rows in prefix order); classes=K: that of
+    `cfpo --classes K` (class c = rows [c n/K, (c+1) n/K)); base, level_min
+    and relax as the command's --base, --level-min and --relax. Both take
+    neither init, density nor time_limit (the command refuses them too),
+    and only dim=2.
     """
+    if progressive or classes is not None:
+        if dim != 2:
+            raise ValueError("progressive and classes are two-dimensional (dim=2)")
+        return progressive_run(n, seed=seed, variant=variant, threads=threads, tol=tol, max_iter=max_iter,
+                               target_min=target_min, target_avg=target_avg, progress=progress,
+                               classes=classes, base=base, level_min=level_min, relax=relax,
+                               _refuse=dict(init=init, density=density, time_limit=time_limit))[0]
+    if base is not None or level_min is not None or relax is not None:
+        raise ValueError("base, level_min and relax need progressive=True or classes=K")
     return _call(False, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
                  progress, density, dim)[0]
+
+
+def progressive_run(n, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
+                    target_avg=None, progress=None, classes=None, base=None, level_min=None, relax=None,
+                    _refuse=None):
+    """Progressive CFPO (`cfpo --progressive`, or `--classes K`): returns
+    (points, levels), points (n, 2) in prefix order, the same bytes as the
+    command's -o x.npy; levels a list of (prefix, iterations, delta_min,
+    delta_avg), each prefix in its own Delta(m) units (docs/cli.md).
+    progress: a callable receiving every level's iterations' statistics (a
+    True return stops the run with RuntimeError)."""
+    for k, v in (_refuse or {}).items():
+        if v is not None:
+            raise ValueError(f"{k} does not go with {'classes' if classes is not None else 'progressive'}")
+    if n is None:
+        raise ValueError("the number of points is required: n")
+    nn = _args.points_n(n)
+    if not isinstance(variant, str):
+        raise TypeError("variant: expected a string")
+    K = 0
+    if classes is not None:
+        if isinstance(classes, bool) or not isinstance(classes, int) or classes < 1:
+            raise ValueError(f"classes: '{classes}' is not a whole number >= 1")
+        K = classes
+    b = 0
+    if base is not None:
+        if K:
+            raise ValueError("base does not go with classes")
+        if isinstance(base, bool) or not isinstance(base, int) or base < 1:
+            raise ValueError(f"base: '{base}' is not a whole number >= 1")
+        b = base
+    lm = 0.0 if level_min is None else float(level_min)
+    if not 0.0 <= lm <= 1.0:
+        raise ValueError(f"level_min: '{level_min}' is not a number in [0, 1]")
+    rx = 0 if relax is None else relax
+    if isinstance(rx, bool) or not isinstance(rx, int) or rx < 0:
+        raise ValueError(f"relax: '{relax}' is not a whole number >= 0")
+    stops = _args.stop_rules(target_min, target_avg, None)
+    cb, line = _callback(progress, nn, _args.max_iter(max_iter), stops)
+    try:
+        r = _core.progressive(nn, _args.seed(seed), variant, _args.threads(threads), _args.tol(tol, -1.0),
+                              _args.max_iter(max_iter), stops[0], stops[1], b, K, lm, rx, cb)
+    finally:
+        if line is not None:
+            line.end()
+    return r[0], r[7]
 
 def load(path):
     """Reads a point file into an (n, 2) float64 array.

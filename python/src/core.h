@@ -91,6 +91,7 @@ PyObject *core_run_result(core_run_ctx *c, int rc, int created, const char *err,
 PyObject *core_run(PyObject *self, PyObject *args);
 /* The 3-D engine's run (core_sample3.c): the tuple of core_run_result, points (n, 3). */
 PyObject *core_run3(PyObject *self, PyObject *args);
+PyObject *core_progressive(PyObject *self, PyObject *args);
 PyObject *core_deltas(PyObject *self, PyObject *args);
 PyObject *core_spectrum(PyObject *self, PyObject *args);
 PyObject *core_certify(PyObject *self, PyObject *args);

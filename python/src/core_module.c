@@ -73,6 +73,7 @@ static PyObject *core_format_of(PyObject *self, PyObject *args)
 static PyMethodDef methods[] = {
     {"run", core_run, METH_VARARGS, "CFPO run (see cfpo.run)."},
     {"run3", core_run3, METH_VARARGS, "CFPO run on the unit 3-torus (see cfpo.run, dim=3)."},
+    {"progressive", core_progressive, METH_VARARGS, "Progressive CFPO run (see cfpo.sample)."},
     {"deltas", core_deltas, METH_VARARGS, "Nearest-neighbour statistics (see cfpo.analysis.deltas)."},
     {"spectrum", core_spectrum, METH_VARARGS, "Power spectrum and its measures (see cfpo.analysis.spectrum)."},
     {"certify", core_certify, METH_VARARGS, "FPD certificate (see cfpo.analysis.certify)."},

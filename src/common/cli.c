@@ -272,7 +272,9 @@ void cli_progress_end(cli_progress *p)
 
 /* ------------------------------------------------------------ summary */
 
-void cli_print_summary(FILE *f, const cli_summary *s)
+void cli_print_summary(FILE *f, const cli_summary *s) { cli_print_summary_ex(f, s, NULL); }
+
+void cli_print_summary_ex(FILE *f, const cli_summary *s, const char *extra)
 {
     fprintf(f, "SUMMARY method=%s variant=%s n=%lld seed=%llu threads=%d ranks=%d", s->method,
             s->variant ? s->variant : "-", (long long)s->n, (unsigned long long)s->seed,
@@ -280,10 +282,10 @@ void cli_print_summary(FILE *f, const cli_summary *s)
     if (s->iterations >= 0) fprintf(f, " iterations=%lld", (long long)s->iterations);
     else fprintf(f, " iterations=-");
     fprintf(f, " seconds=%.6f delta_min=%.6f delta_avg=%.6f converged=%s peak_bytes=%llu "
-            "bytes_per_point=%.1f stop=%s\n", s->seconds, s->delta_min, s->delta_avg,
+            "bytes_per_point=%.1f stop=%s%s\n", s->seconds, s->delta_min, s->delta_avg,
             s->converged < 0 ? "-" : (s->converged ? "yes" : "no"),
             (unsigned long long)s->peak_bytes, s->n > 0 ? (double)s->peak_bytes / (double)s->n : 0.0,
-            s->stop ? s->stop : "-");
+            s->stop ? s->stop : "-", extra ? extra : "");
     fflush(f);
 }
 

@@ -97,6 +97,8 @@ typedef struct {
     const char *stop;     /* which rule stopped the run (NULL: '-') */
 } cli_summary;
 void cli_print_summary(FILE *f, const cli_summary *s);
+/* The same line with more fields after stop (extra: " k=v ...", or NULL). */
+void cli_print_summary_ex(FILE *f, const cli_summary *s, const char *extra);
 
 /* Text file written under a temporary name (registered with tmpguard, so
  * a signal or an error exit removes it) and renamed on commit: safefile.h's

@@ -146,7 +146,12 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     int64_t moves = 0;
     unsigned mask = 0;
     const double ox = (double)(E->x0 + lx) * E->G.L + E->G.shift, oy = (double)(E->y0 + ly) * E->G.L + E->G.shift;
-    for (uint32_t k = 0; k < e - s; k++) {
+    /* Held points (id < cfg.fixed) are neighbours only; ids ascend inside
+     * a cell, so they are the cell's first slots. */
+    uint32_t k0 = 0;
+    if (E->cfg.fixed)
+        while (k0 < e - s && E->pid[s + k0] < (uint64_t)E->cfg.fixed) k0++;
+    for (uint32_t k = k0; k < e - s; k++) {
         const int gi = off + (int)k;
         const double x = lxs[gi], y = lys[gi];
         if (P->transport) {

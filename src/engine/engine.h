@@ -63,6 +63,9 @@ typedef struct {
     uint64_t density_hash;   /* a flat density's hash (engines.h): written
                                 into checkpoints and asked of a resumed one;
                                 0 without a density */
+    int64_t fixed;           /* points with id < fixed never move; they stay
+                                neighbours of the others (the progressive
+                                levels, progressive.h); 0: every point moves */
 } cfpo_engine_config;
 
 /* Allocates and makes the initial set (collective over all ranks). NULL

@@ -1,0 +1,54 @@
+"""cfpo.sample(n, progressive=True) and classes=K: the bytes of
+`cfpo --progressive` / `cfpo --classes K` (-o x.npy), the same for any
+thread count, and the command's refusals as ValueError."""
+import numpy as np
+import pytest
+
+import cfpo
+
+
+def test_progressive_bytes_of_the_command(command, tmp_path):
+    command("cfpo", "-n", 1500, "-s", 3, "-t", 1, "--progressive", "-o", "p.npy")
+    want = np.load(tmp_path / "p.npy")
+    got = cfpo.sample(1500, seed=3, threads=2, progressive=True)
+    assert got.shape == (1500, 2)
+    assert got.tobytes() == want.tobytes()
+
+
+def test_progressive_options_bytes(command, tmp_path):
+    command("cfpo", "-n", 1000, "-s", 2, "--progressive", "--base", 100, "--level-min", 0.8, "--relax", 2,
+            "-o", "q.npy")
+    want = np.load(tmp_path / "q.npy")
+    got = cfpo.sample(1000, seed=2, progressive=True, base=100, level_min=0.8, relax=2)
+    assert got.tobytes() == want.tobytes()
+
+
+def test_classes_bytes_of_the_command(command, tmp_path):
+    command("cfpo", "-n", 1200, "-s", 5, "--classes", 3, "-o", "c.npy")
+    want = np.load(tmp_path / "c.npy")
+    got = cfpo.sample(1200, seed=5, classes=3)
+    assert got.tobytes() == want.tobytes()
+
+
+def test_levels_are_the_prefixes():
+    pts, levels = cfpo.progressive_run(1024, seed=1)
+    assert [m for m, *_ in levels] == [64, 128, 256, 512, 1024]
+    for m, _it, dmin, davg in levels:
+        d = cfpo.analysis.deltas(pts[:m])
+        assert d.delta_min == pytest.approx(dmin, abs=1e-9)
+        # the engine sums distances in units of Delta / 2^24 (6e-8 each)
+        assert d.delta_avg == pytest.approx(davg, abs=1e-7)
+
+
+@pytest.mark.parametrize("kw, msg", [
+    (dict(classes=0), "classes"),
+    (dict(progressive=True, base=5000), "larger than n"),
+    (dict(progressive=True, time_limit=5.0), "time_limit does not go"),
+    (dict(progressive=True, init=np.zeros((1024, 2))), "init does not go"),
+    (dict(classes=4, base=64), "base does not go with classes"),
+    (dict(base=64), "need progressive"),
+    (dict(progressive=True, variant="hyperuniform"), "hyperuniform"),
+])
+def test_refused(kw, msg):
+    with pytest.raises(ValueError, match=msg):
+        cfpo.sample(1024, **kw)

@@ -1,0 +1,205 @@
+/* main_prog.c - see main_prog.h. */
+#include "main_prog.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cfpo.h"
+#include "cli.h"
+#include "omp_compat.h"
+#include "plan.h"
+#include "runfiles.h"
+#include "runsignal.h"
+#include "stoprule.h"
+#include "tracecols.h"
+
+int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
+{
+    int64_t v;
+    switch (ch) {
+    case PROG_OPT_PROGRESSIVE: pc->on = 1; return 1;
+    case PROG_OPT_BASE:
+        if (cli_parse_i64(arg, 1, INT64_MAX / 4, &v) != 0)
+            cli_usage_error(prog, "--base: '%s' is not a whole number >= 1", arg);
+        pc->p.base = v;
+        pc->base_given = 1;
+        return 1;
+    case PROG_OPT_CLASSES:
+        if (cli_parse_i64(arg, 1, CFPO_PROG_MAX_LEVELS, &v) != 0)
+            cli_usage_error(prog, "--classes: '%s' is not a whole number in 1..%d", arg, CFPO_PROG_MAX_LEVELS);
+        pc->p.classes = (int)v;
+        pc->on = 1;
+        return 1;
+    case PROG_OPT_LEVEL_MIN:
+        if (cli_parse_double(arg, 0, 1, &pc->p.level_min) != 0)
+            cli_usage_error(prog, "--level-min: '%s' is not a number in [0, 1]", arg);
+        pc->level_min_given = 1;
+        return 1;
+    case PROG_OPT_RELAX:
+        if (cli_parse_i64(arg, 0, 1000000, &v) != 0) cli_usage_error(prog, "--relax: '%s' is not a whole number in 0..1e6", arg);
+        pc->p.relax = (int)v;
+        pc->relax_given = 1;
+        return 1;
+    default: return 0;
+    }
+}
+
+void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
+{
+    if (!pc->on && (pc->base_given || pc->level_min_given || pc->relax_given))
+        cli_usage_error(prog, "%s needs --progressive or --classes K",
+                        pc->base_given ? "--base" : pc->relax_given ? "--relax" : "--level-min");
+    if (!pc->on) return;
+    if (pc->base_given && pc->p.classes > 0) cli_usage_error(prog, "--base does not go with --classes");
+    if (variant == CFPO_VARIANT_HYPERUNIFORM)
+        cli_usage_error(prog, "--variant hyperuniform does not go with %s", pc->p.classes ? "--classes" : "--progressive");
+    int64_t sizes[CFPO_PROG_MAX_LEVELS];
+    char err[256];
+    if (cfpo_prog_sizes(n, variant, &pc->p, sizes, err, sizeof err) < 0) cli_usage_error(prog, "%s", err);
+}
+
+typedef struct {
+    cli_progress prog;
+    FILE *trace;
+    double t0;
+    int level;
+    int64_t m;
+    const cfpo_prog_level *done; /* the finished levels */
+    int ndone;
+    double worst_min;     /* over the finished levels */
+    int64_t worst_m;
+} prog_ctx;
+
+static void level_begin(int k, int64_t m, void *user)
+{
+    prog_ctx *c = user;
+    c->level = k;
+    c->m = m;
+    c->ndone = k;
+    for (int j = 0; j < k; j++) /* (a resumed run starts past level 0) */
+        if (c->done[j].delta_min < c->worst_min) {
+            c->worst_min = c->done[j].delta_min;
+            c->worst_m = c->done[j].m;
+        }
+}
+
+static int on_iteration(const cfpo_iter_stats *s, void *user)
+{
+    prog_ctx *c = user;
+    const double el = cli_now() - c->t0;
+    const int now_worse = s->delta_min < c->worst_min;
+    if (c->trace) {
+        double row[CFPO_TRACE_COLUMNS];
+        cfpo_trace_values(s, el, row);
+        fprintf(c->trace, "%d\t%lld\t", c->level, (long long)c->m);
+        cfpo_trace_write_values(c->trace, cfpo_trace_columns, row, CFPO_TRACE_COLUMNS, 1);
+        fprintf(c->trace, "\t%lld\t%.9f\n", (long long)(now_worse ? c->m : c->worst_m),
+                now_worse ? s->delta_min : c->worst_min);
+    }
+    cli_progress_line(&c->prog, 0, "level %d (prefix %lld)  iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  "
+                      "elapsed %.1fs", c->level, (long long)c->m, s->iteration, s->delta_min, s->delta_avg,
+                      (long long)s->moved, el);
+    return 0;
+}
+
+/* The trace's rows into a memory stream, its file written whole at the end. */
+static int commit_trace(const char *path, const char *buf, size_t len, char *err, size_t errlen)
+{
+    cli_atomic a;
+    if (cli_atomic_open(&a, path, err, errlen) != 0) return -1;
+    if (fwrite(buf, 1, len, a.f) != len) {
+        cli_atomic_abort(&a);
+        snprintf(err, errlen, "%s: write failed", path);
+        return -1;
+    }
+    return cli_atomic_commit(&a, err, errlen);
+}
+
+int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, const char *out, const char *trace,
+                  int quiet, const char *checkpoint, int every, const char *resume)
+{
+    char err[600];
+    cfpo_runfiles *files = cfpo_runfiles_open(out, NULL, checkpoint, n, err, sizeof err);
+    if (!files) cli_fail(prog, "%s", err);
+    cfpo_prog_level levels[CFPO_PROG_MAX_LEVELS];
+    prog_ctx ctx = {.done = levels, .worst_min = INFINITY, .worst_m = -1};
+    char *tbuf = NULL;
+    size_t tlen = 0;
+    if (trace) {
+        ctx.trace = open_memstream(&tbuf, &tlen);
+        if (!ctx.trace) cli_fail(prog, "out of memory for the trace");
+        fprintf(ctx.trace, "level\tprefix\t");
+        cfpo_trace_write_names(ctx.trace, cfpo_trace_columns, CFPO_TRACE_COLUMNS, 1);
+        fprintf(ctx.trace, "\tworst_prefix\tworst_delta_min\n");
+    }
+    cli_progress_init(&ctx.prog, quiet);
+    o->progress = on_iteration;
+    o->user = &ctx;
+    pc->p.level_begin = level_begin;
+    pc->p.user = &ctx;
+    pc->p.checkpoint = checkpoint;
+    pc->p.checkpoint_every = every;
+    pc->p.resume = resume;
+    ctx.t0 = cli_now();
+    if (checkpoint) runsignal_install(); /* SIGTERM, SIGUSR1: a checkpoint, then stop */
+    cfpo_run_engine R;
+    cfpo_result res;
+    int K = 0;
+    int rc = cfpo_prog_run(n, o, &pc->p, &R, &res, levels, &K, err, sizeof err);
+    runsignal_restore();
+    cli_progress_end(&ctx.prog);
+    const double seconds = cli_now() - ctx.t0;
+    if (ctx.trace) fclose(ctx.trace);
+    if (rc == 1) { /* stopped by a signal after the checkpoint */
+        free(tbuf);
+        cfpo_runfiles_abort(files);
+        fprintf(stderr, "%s: stopped by a signal at level %d (prefix %lld); checkpoint %s written, no output; "
+                "continue with --resume %s\n", prog, K - 1, (long long)levels[K - 1].m, checkpoint, checkpoint);
+        return 3;
+    }
+    if (rc != 0) {
+        free(tbuf);
+        cfpo_runfiles_abort(files);
+        cli_fail(prog, "%s", err);
+    }
+    if (cfpo_runfiles_commit(files, &R, err, sizeof err) != 0) {
+        free(tbuf);
+        R.ops->free(R.E);
+        cli_fail(prog, "%s", err);
+    }
+    if (trace && commit_trace(trace, tbuf, tlen, err, sizeof err) != 0) {
+        free(tbuf);
+        R.ops->free(R.E);
+        cli_fail(prog, "%s", err);
+    }
+    free(tbuf);
+    int64_t iters = 0;
+    for (int k = 0; k < K; k++) {
+        const cfpo_prog_level *L = &levels[k];
+        if (L->iterations > 0) iters += L->iterations;
+        char its[32] = "-", d0[32] = "-";
+        if (L->iterations >= 0) snprintf(its, sizeof its, "%d", L->iterations);
+        if (!isnan(L->delta_min0)) snprintf(d0, sizeof d0, "%.6f", L->delta_min0);
+        printf("LEVEL level=%d prefix=%lld iterations=%s seconds=%.6f start_delta_min=%s delta_min=%.6f "
+               "delta_avg=%.6f\n", k, (long long)L->m, its, L->seconds, d0, L->delta_min, L->delta_avg);
+    }
+    int wm, wa;
+    cfpo_prog_worst(levels, K, &wm, &wa);
+    char extra[256];
+    snprintf(extra, sizeof extra, " levels=%d worst_prefix_min=%lld worst_delta_min=%.6f worst_prefix_avg=%lld "
+             "worst_delta_avg=%.6f", K, (long long)levels[wm].m, levels[wm].delta_min, (long long)levels[wa].m,
+             levels[wa].delta_avg);
+    uint64_t peak, peak_max;
+    cfpo_plan_peak_memory(&peak, &peak_max);
+    cli_summary sm = {.method = pc->p.classes ? "cfpo-classes" : "cfpo-progressive",
+                      .variant = cfpo_variant_name(o->variant), .n = n, .seed = o->seed,
+                      .threads = o->threads > 0 ? o->threads : omp_get_num_procs(), .ranks = 1,
+                      .iterations = iters, .seconds = seconds, .delta_min = res.delta_min,
+                      .delta_avg = res.delta_avg, .converged = res.converged, .peak_bytes = peak,
+                      .stop = cfpo_stop_name(res.stop)};
+    cli_print_summary_ex(stdout, &sm, extra);
+    R.ops->free(R.E);
+    return 0;
+}

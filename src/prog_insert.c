@@ -1,0 +1,213 @@
+/* prog_insert.c - see prog_insert.h. */
+#include "prog_insert.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "geom.h"
+#include "rng.h"
+
+typedef struct {
+    int64_t gs;    /* buckets per side */
+    double cs;     /* bucket side, 1 / gs */
+    int64_t *head; /* first point of each bucket, -1 if none */
+    int64_t *next; /* the next point of its bucket */
+    const double *xy;
+} buckets;
+
+static int64_t bucket_of(const buckets *B, double x, double y)
+{
+    int64_t bx = (int64_t)(x * (double)B->gs), by = (int64_t)(y * (double)B->gs);
+    if (bx >= B->gs) bx = B->gs - 1;
+    if (by >= B->gs) by = B->gs - 1;
+    return by * B->gs + bx;
+}
+
+/* Buckets of side about Delta(m) for points of xy, none stored yet. */
+static int buckets_init(buckets *B, const double *xy, int64_t m, int64_t cap)
+{
+    B->gs = (int64_t)floor(1.0 / cfpo_delta_bound((double)m));
+    if (B->gs < 1) B->gs = 1;
+    B->cs = 1.0 / (double)B->gs;
+    B->xy = xy;
+    B->head = malloc((size_t)(B->gs * B->gs) * sizeof *B->head);
+    B->next = malloc((size_t)cap * sizeof *B->next);
+    if (!B->head || !B->next) return -1;
+    for (int64_t b = 0; b < B->gs * B->gs; b++) B->head[b] = -1;
+    return 0;
+}
+
+static void buckets_free(buckets *B)
+{
+    free(B->head);
+    free(B->next);
+}
+
+static void add(buckets *B, int64_t k)
+{
+    const int64_t b = bucket_of(B, B->xy[2 * k], B->xy[2 * k + 1]);
+    B->next[k] = B->head[b];
+    B->head[b] = k;
+}
+
+static double torus_d2(double ax, double ay, double bx, double by)
+{
+    double dx = fabs(ax - bx), dy = fabs(ay - by);
+    if (dx > 0.5) dx = 1.0 - dx;
+    if (dy > 0.5) dy = 1.0 - dy;
+    return dx * dx + dy * dy;
+}
+
+/* Squared distance from (x, y) to its nearest stored point, searching
+ * rings of buckets outwards until no nearer point can remain; stops early
+ * (returning a value <= stop2) once the distance falls to stop2. */
+static double nearest2(const buckets *B, double x, double y, double stop2)
+{
+    const int64_t gs = B->gs, b = bucket_of(B, x, y), bx = b % gs, by = b / gs;
+    double best = INFINITY;
+    for (int64_t r = 0; r <= gs / 2 + 1; r++) {
+        for (int64_t dy = -r; dy <= r; dy++)
+            for (int64_t dx = -r; dx <= r; dx++) {
+                if (dx != -r && dx != r && dy != -r && dy != r) continue; /* the ring only */
+                const int64_t cx = ((bx + dx) % gs + gs) % gs, cy = ((by + dy) % gs + gs) % gs;
+                for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
+                    const double d2 = torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]);
+                    if (d2 < best) best = d2;
+                }
+            }
+        if (best <= stop2) return best;
+        const double reach = (double)r * B->cs; /* every point beyond ring r is farther */
+        if (best <= reach * reach) return best;
+        if (2 * r + 1 >= gs) break; /* every bucket seen */
+    }
+    return best;
+}
+
+int cfpo_prog_insert(double *xy, int64_t m0, int64_t m1, int cand, uint64_t seed, uint64_t stream, char *err,
+                     size_t errlen)
+{
+    buckets B = {0};
+    if (buckets_init(&B, xy, m1, m1) != 0) {
+        buckets_free(&B);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    for (int64_t k = 0; k < m0; k++) add(&B, k);
+    uint64_t counter = 0;
+    for (int64_t k = m0; k < m1; k++) {
+        double bx = 0, by = 0, bd = -1;
+        for (int c = 0; c < cand; c++) {
+            const double x = cfpo_rand01(seed, stream, counter++), y = cfpo_rand01(seed, stream, counter++);
+            const double d2 = k > 0 ? nearest2(&B, x, y, bd) : 1.0;
+            if (d2 > bd) bx = x, by = y, bd = d2;
+        }
+        xy[2 * k] = bx;
+        xy[2 * k + 1] = by;
+        add(&B, k);
+    }
+    buckets_free(&B);
+    return 0;
+}
+
+/* ---- the greedy order of a level's points */
+
+typedef struct {
+    double d;
+    int64_t i;
+} hitem;
+
+static int above(const hitem *a, const hitem *b) { return a->d > b->d || (a->d == b->d && a->i < b->i); }
+
+static void hpush(hitem *h, int64_t *n, hitem v)
+{
+    int64_t k = (*n)++;
+    while (k > 0 && above(&v, &h[(k - 1) / 2])) {
+        h[k] = h[(k - 1) / 2];
+        k = (k - 1) / 2;
+    }
+    h[k] = v;
+}
+
+static hitem hpop(hitem *h, int64_t *n)
+{
+    const hitem top = h[0], v = h[--(*n)];
+    int64_t k = 0;
+    for (;;) {
+        int64_t c = 2 * k + 1;
+        if (c >= *n) break;
+        if (c + 1 < *n && above(&h[c + 1], &h[c])) c++;
+        if (!above(&h[c], &v)) break;
+        h[k] = h[c];
+        k = c;
+    }
+    if (*n > 0) h[k] = v;
+    return top;
+}
+
+int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen)
+{
+    const int64_t q = m1 - m0;
+    if (q <= 1) return 0;
+    buckets P = {0}, Q = {0};
+    double *d = malloc((size_t)q * sizeof *d), *out = malloc(2 * (size_t)q * sizeof *out);
+    unsigned char *taken = calloc((size_t)q, 1);
+    const int64_t hcap = 8 * q + 16;
+    hitem *h = malloc((size_t)hcap * sizeof *h);
+    int rc = -1;
+    if (!d || !out || !taken || !h || buckets_init(&P, xy, m1, m1) != 0 || buckets_init(&Q, xy, m1, m1) != 0) {
+        snprintf(err, errlen, "out of memory");
+        goto done;
+    }
+    for (int64_t k = 0; k < m0; k++) add(&P, k);
+    int64_t hn = 0;
+    for (int64_t j = 0; j < q; j++) { /* each new point's distance to the prefix */
+        d[j] = m0 > 0 ? nearest2(&P, xy[2 * (m0 + j)], xy[2 * (m0 + j) + 1], -1.0) : INFINITY;
+        add(&Q, m0 + j);
+        hpush(h, &hn, (hitem){d[j], j});
+    }
+    for (int64_t t = 0; t < q; t++) {
+        hitem top;
+        do top = hpop(h, &hn); /* stale entries (a distance lowered since) are skipped */
+        while (taken[top.i] || top.d != d[top.i]);
+        const int64_t p = top.i;
+        taken[p] = 1;
+        const double px = xy[2 * (m0 + p)], py = xy[2 * (m0 + p) + 1];
+        out[2 * t] = px;
+        out[2 * t + 1] = py;
+        /* the untaken points nearer to p than to the set so far: within the
+         * largest such distance, sqrt(top.d), of p */
+        const double r = sqrt(top.d);
+        const int64_t gs = Q.gs, reach = isinf(r) ? gs : (int64_t)ceil(r / Q.cs) + 1;
+        const int64_t b = bucket_of(&Q, px, py), bx = b % gs, by = b / gs;
+        const int64_t span = 2 * reach + 1 >= gs ? gs : 2 * reach + 1;
+        for (int64_t oy = 0; oy < span; oy++)
+            for (int64_t ox = 0; ox < span; ox++) {
+                const int64_t cx = ((bx - (span == gs ? 0 : reach) + ox) % gs + gs) % gs;
+                const int64_t cy = ((by - (span == gs ? 0 : reach) + oy) % gs + gs) % gs;
+                for (int64_t k = Q.head[cy * gs + cx]; k >= 0; k = Q.next[k]) {
+                    const int64_t j = k - m0;
+                    if (taken[j]) continue;
+                    const double d2 = torus_d2(px, py, xy[2 * k], xy[2 * k + 1]);
+                    if (d2 >= d[j]) continue;
+                    d[j] = d2;
+                    if (hn == hcap) { /* compact: one live entry per untaken point */
+                        hn = 0;
+                        for (int64_t i = 0; i < q; i++)
+                            if (!taken[i]) hpush(h, &hn, (hitem){d[i], i});
+                    }
+                    hpush(h, &hn, (hitem){d2, j});
+                }
+            }
+    }
+    for (int64_t t = 0; t < 2 * q; t++) xy[2 * m0 + t] = out[t];
+    rc = 0;
+done:
+    buckets_free(&P);
+    buckets_free(&Q);
+    free(d);
+    free(out);
+    free(taken);
+    free(h);
+    return rc;
+}

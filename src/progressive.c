@@ -1,0 +1,209 @@
+/* progressive.c - see progressive.h. */
+#include "progressive.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "grid.h"
+#include "omp_compat.h"
+#include "prog_insert.h"
+#include "rng.h"
+#include "run_loop.h"
+#include "stoprule.h"
+
+#define PROG_SALT 0x9e3779b97f4a7c15ULL /* level seeds: seed ^ mix(level + salt) */
+
+int cfpo_prog_sizes(int64_t n, int variant, const cfpo_prog_options *p, int64_t *sizes, char *err, size_t errlen)
+{
+    const int64_t nmin = cfpo_grid_min_n(variant);
+    if (p->classes > 0) {
+        const int64_t K = p->classes;
+        if (K > CFPO_PROG_MAX_LEVELS || K > n || n / K < nmin) {
+            snprintf(err, errlen, "--classes %lld: each class needs at least %lld points (n / K) and K at most %d; "
+                     "n = %lld", (long long)K, (long long)nmin, CFPO_PROG_MAX_LEVELS, (long long)n);
+            return -1;
+        }
+        for (int64_t c = 0; c < K; c++) sizes[c] = (c + 1) * n / K;
+        return (int)K;
+    }
+    const int64_t base = p->base > 0 ? p->base : CFPO_PROG_DEFAULT_BASE;
+    if (base > n) {
+        snprintf(err, errlen, "--base %lld is larger than n = %lld", (long long)base, (long long)n);
+        return -1;
+    }
+    if (base < nmin) {
+        snprintf(err, errlen, "--base %lld is too small: the grid needs at least %lld points", (long long)base,
+                 (long long)nmin);
+        return -1;
+    }
+    int k = 0;
+    for (int64_t m = base; k < CFPO_PROG_MAX_LEVELS; m *= 2) {
+        sizes[k++] = m < n ? m : n;
+        if (m >= n) break;
+    }
+    return k;
+}
+
+void cfpo_prog_worst(const cfpo_prog_level *levels, int k, int *by_min, int *by_avg)
+{
+    *by_min = *by_avg = 0;
+    for (int i = 1; i < k; i++) {
+        if (levels[i].delta_min < levels[*by_min].delta_min) *by_min = i;
+        if (levels[i].delta_avg < levels[*by_avg].delta_avg) *by_avg = i;
+    }
+}
+
+/* One level: m points, the first `fixed` held, from xy (NULL: the
+ * variant's own start); its engine into R, its run into res and L. */
+static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_options *lo, const cfpo_prog_options *p,
+                     const char *resume, cfpo_run_engine *R, cfpo_result *res, cfpo_prog_level *L, char *err,
+                     size_t errlen)
+{
+    cfpo_engine_config cfg = {0};
+    cfg.start_xy = xy;
+    cfg.fixed = fixed;
+    cfg.resume = resume;
+    const double t0 = omp_get_wtime();
+    cfpo_engine *E = cfpo_engine_create_ex(m, lo, &cfg, err, errlen);
+    if (!E) return -1;
+    cfpo_engine_as_run(E, R);
+    R->t_born = t0;
+    double d0, a0;
+    cfpo_engine_deltas(E, &d0, &a0);
+    if (cfpo_run_loop(R, p->checkpoint, p->checkpoint ? p->checkpoint_every : 0, res, err, errlen) != 0) {
+        cfpo_engine_free(E);
+        return -1;
+    }
+    *L = (cfpo_prog_level){.m = m, .iterations = res->iterations, .stop = res->stop, .delta_min0 = d0,
+                           .delta_min = res->delta_min, .delta_avg = res->delta_avg,
+                           .seconds = omp_get_wtime() - t0};
+    return 0;
+}
+
+/* The prefixes' measures once later levels moved their points: each
+ * prefix as a set of its own (an engine that only measures). */
+static int remeasure(const double *xy, int K, const cfpo_options *o, cfpo_prog_level *levels, char *err,
+                     size_t errlen)
+{
+    for (int k = 0; k < K - 1; k++) {
+        cfpo_engine_config cfg = {0};
+        cfg.start_xy = xy;
+        cfpo_engine *E = cfpo_engine_create_ex(levels[k].m, o, &cfg, err, errlen);
+        if (!E) return -1;
+        cfpo_engine_deltas(E, &levels[k].delta_min, &levels[k].delta_avg);
+        cfpo_engine_free(E);
+    }
+    return 0;
+}
+
+/* The level a checkpoint belongs to: the one of its size. */
+static int resumed_level(const char *path, const int64_t *sizes, int K, char *err, size_t errlen)
+{
+    cfpo_checkpoint_info info;
+    if (cfpo_checkpoint_peek(path, &info, err, errlen) != 0) return -1;
+    for (int k = 0; k < K; k++)
+        if (sizes[k] == info.n) return k;
+    snprintf(err, errlen, "--resume %s: the checkpoint holds %lld points, no level of this run has that size", path,
+             (long long)info.n);
+    return -1;
+}
+
+/* The points of a level's checkpoint (m points, level seed in lo) into
+ * xy: the earlier levels' prefixes, to measure them again. */
+static int remeasure_points(const char *path, int64_t m, const cfpo_options *lo, double *xy, char *err,
+                            size_t errlen)
+{
+    cfpo_engine_config cfg = {0};
+    cfg.resume = path;
+    cfpo_engine *E = cfpo_engine_create_ex(m, lo, &cfg, err, errlen);
+    if (!E) return -1;
+    cfpo_engine_points(E, xy);
+    cfpo_engine_free(E);
+    return 0;
+}
+
+/* An engine holding the n points of xy as they are (none moves): the
+ * run's output. */
+static int hold(int64_t n, const double *xy, const cfpo_options *o, cfpo_run_engine *R, char *err, size_t errlen)
+{
+    cfpo_engine_config cfg = {0};
+    cfg.start_xy = xy;
+    cfg.fixed = n;
+    cfpo_engine *E = cfpo_engine_create_ex(n, o, &cfg, err, errlen);
+    if (!E) return -1;
+    cfpo_engine_as_run(E, R);
+    return 0;
+}
+
+int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, cfpo_run_engine *R,
+                  cfpo_result *res, cfpo_prog_level *levels, int *nlevels, char *err, size_t errlen)
+{
+    int64_t sizes[CFPO_PROG_MAX_LEVELS];
+    const int K = cfpo_prog_sizes(n, o->variant, p, sizes, err, errlen);
+    if (K < 0) return -1;
+    double *xy = malloc(2 * (size_t)n * sizeof *xy);
+    if (!xy) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    const int cand = p->candidates > 0 ? p->candidates : 16;
+    int k0 = 0; /* the level to start at: a resumed checkpoint's */
+    if (p->resume && (k0 = resumed_level(p->resume, sizes, K, err, errlen)) < 0) {
+        free(xy);
+        return -1;
+    }
+    for (int k = k0; k < K; k++) {
+        const int64_t m = sizes[k], prev = k > 0 ? sizes[k - 1] : 0;
+        cfpo_options lo = *o;
+        lo.seed = k == 0 ? o->seed : o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT);
+        if (k < K - 1) { /* the last level keeps the caller's stop rules */
+            memset(&lo.stop, 0, sizeof lo.stop);
+            lo.stop.target_min = p->level_min;
+        }
+        if (k > k0 && cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen) != 0) break;
+        const char *resume = k == k0 ? p->resume : NULL;
+        if (resume && k > 0 && remeasure_points(resume, m, &lo, xy, err, errlen) != 0) break;
+        for (int j = 0; resume && j < k; j++) levels[j].m = sizes[j];
+        if (resume && k > 0 && remeasure(xy, k + 1, o, levels, err, errlen) != 0) break;
+        for (int j = 0; resume && j < k; j++) levels[j].iterations = -1, levels[j].delta_min0 = NAN;
+        if (p->level_begin) p->level_begin(k, m, p->user);
+        if (run_level(m, prev, k > 0 && !resume ? xy : NULL, &lo, p, resume, R, res, &levels[k], err, errlen) != 0)
+            break;
+        if (res->stop == CFPO_STOP_SIGNAL) { /* the checkpoint is written: stop, no output */
+            R->ops->free(R->E);
+            free(xy);
+            *nlevels = k + 1;
+            return 1;
+        }
+        if (p->relax > 0 && k > 0) { /* the level before moves too, the one before that stays */
+            cfpo_prog_level keep = levels[k];
+            R->ops->copy(R->E, xy);
+            R->ops->free(R->E);
+            cfpo_options ro = lo;
+            ro.max_iter = p->relax;
+            if (run_level(m, k > 1 ? sizes[k - 2] : 0, xy, &ro, p, NULL, R, res, &levels[k], err, errlen) != 0) break;
+            levels[k].iterations += keep.iterations;
+            levels[k].seconds += keep.seconds;
+            levels[k].delta_min0 = keep.delta_min0;
+        }
+        if (k < K - 1 && res->stop == CFPO_STOP_CALLER) { /* the caller stops the whole run */
+            snprintf(err, errlen, "stopped by the caller at level %d (prefix %lld)", k, (long long)m);
+            R->ops->free(R->E);
+            break;
+        }
+        R->ops->copy(R->E, xy); /* the prefix, in id order */
+        R->ops->free(R->E);
+        if (cfpo_prog_order(xy, prev, m, err, errlen) != 0) break;
+        if (k == K - 1) {
+            int rc = p->relax > 0 ? remeasure(xy, K, o, levels, err, errlen) : 0;
+            if (rc == 0) rc = hold(n, xy, o, R, err, errlen);
+            free(xy);
+            *nlevels = K;
+            return rc;
+        }
+    }
+    free(xy);
+    return -1;
+}

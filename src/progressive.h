@@ -1,0 +1,74 @@
+/* progressive.h - layer 4: progressive (nested) CFPO on the uniform torus,
+ * one rank. The set is built level by level: level k is the prefix of the
+ * first m_k points (m_0 = base, m_k = min(2 m_(k-1), n), the last m = n;
+ * or, with classes K, m_k = (k + 1) n / K). Level k's new points (ids
+ * m_(k-1) .. m_k - 1) start by best-candidate insertion (prog_insert.h)
+ * and are optimised by the uniform engine on the grid of m_k points with
+ * the earlier levels held fixed (cfpo_engine_config.fixed): those still
+ * constrain the movers and count as their neighbours, they never move. So
+ * the output order is the prefix order, prefix m_k is final once its level
+ * ends, its delta_min never falls while its level runs (the engine's
+ * moves never lower a set's delta_min), and the bytes do not depend on the
+ * thread count (the engine's do not; the insertion is serial).
+ * Owns: the level sizes, the per-level runs, the per-level results.
+ * May include: engine.h, run_loop.h, prog_insert.h (layers 0-4). */
+#ifndef CFPO_PROGRESSIVE_H
+#define CFPO_PROGRESSIVE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "engine.h"
+
+#define CFPO_PROG_DEFAULT_BASE 64
+#define CFPO_PROG_MAX_LEVELS 64
+
+typedef struct {
+    int64_t m;          /* the prefix's size */
+    int iterations;     /* the level's iterations */
+    int stop;           /* why the level stopped (CFPO_STOP_*) */
+    double delta_min0;  /* delta_min / Delta(m) of the prefix at the level's start */
+    double delta_min, delta_avg; /* of the prefix at its end, in Delta(m) */
+    double seconds;
+} cfpo_prog_level;
+
+typedef struct {
+    int64_t base;     /* the first level's size (0: CFPO_PROG_DEFAULT_BASE) */
+    int classes;      /* K > 0: K equal groups (class c = ids [c n/K, (c+1) n/K)) instead of doublings */
+    double level_min; /* > 0: every level but the last stops once its prefix's delta_min reaches this */
+    int candidates;   /* best-candidate draws per new point (0: 16) */
+    int relax;        /* > 0: after each level k >= 1, this many iterations with level k - 1
+                         moving too (prefix m_(k-2) held); the earlier prefixes are measured
+                         again at the end */
+    const char *checkpoint; /* the level under way's engine checkpoint (ckpt.h) here ... */
+    int checkpoint_every;   /* ... every this many of its iterations and at its end */
+    const char *resume;     /* go on from such a checkpoint (its size says its level) */
+    /* Called before level k starts (k, its prefix size), e.g. to label
+     * the trace's rows; may be NULL. */
+    void (*level_begin)(int k, int64_t m, void *user);
+    void *user;
+} cfpo_prog_options;
+
+/* The level sizes for n points into sizes (at most CFPO_PROG_MAX_LEVELS):
+ * their count, or -1 with one line in err (a base or class size the grid
+ * cannot hold, a base larger than n, K < 1 or K > n). */
+int cfpo_prog_sizes(int64_t n, int variant, const cfpo_prog_options *p, int64_t *sizes, char *err, size_t errlen);
+
+/* Runs every level (one rank). o: the engine's options; its stop targets
+ * and max_iter apply to the last level, max_iter to every level; its
+ * progress callback sees every level's iterations (the statistics of the
+ * prefix under way, in its own Delta(m)). On success R holds the last
+ * level's engine (every point, id = prefix order; free with
+ * R->ops->free), res its run, levels[0..*nlevels) the levels. 0; 1 when
+ * a signal stopped it after writing the checkpoint (nothing held, no
+ * output); or -1 with one line in err and nothing held. A resumed run
+ * measures the finished levels again from the checkpoint's points (their
+ * iterations -1, their start delta_min NaN). */
+int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, cfpo_run_engine *R,
+                  cfpo_result *res, cfpo_prog_level *levels, int *nlevels, char *err, size_t errlen);
+
+/* The worst level of levels[0..k) by delta_min (*by_min) and by
+ * delta_avg (*by_avg): their indices. */
+void cfpo_prog_worst(const cfpo_prog_level *levels, int k, int *by_min, int *by_avg);
+
+#endif

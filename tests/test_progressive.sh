@@ -1,0 +1,146 @@
+#!/usr/bin/env bash
+# test_progressive.sh BUILD_DIR - `cfpo --progressive` and `--classes K`
+# (src/progressive.c, src/main_prog.c):
+#  - bad input (--classes 0, a base larger than n, options the path does
+#    not take) gives one line, exit 2 and no file;
+#  - the prefix order is kept: a run of n/2 points is, byte for byte, the
+#    first half of the run of n points (the earlier levels never move once
+#    built), and each LEVEL line's prefix measures are those cfpo-analyze
+#    --prefixes finds in the file at that prefix;
+#  - no prefix's delta_min falls while its level is optimised (the trace,
+#    row by row within each level);
+#  - the same bytes for 1, 2 and 3 threads, progressive and with classes;
+#  - SUMMARY's worst prefix is the worst LEVEL line, and the trace's last
+#    row says the same;
+#  - SIGUSR1 mid-run leaves the level's checkpoint, exit 3 and no output,
+#    and --resume from it gives the uninterrupted bytes and levels.
+set -u
+HERE=$(cd "$(dirname "$0")" && pwd)
+B=$(cd "$1" && pwd)
+CFPO="$B/cfpo"
+AN="$B/cfpo-analyze"
+T=$(mktemp -d /tmp/cfpo-prog-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 1
+. "$HERE/cli_expect.sh"
+export OMP_WAIT_POLICY=passive
+
+# ---- bad input: one line, exit 2, nothing written
+expect 2 "classes" -n 1024 --classes 0 -o x.npy
+expect 2 "larger than n" -n 1024 --progressive --base 2048 -o x.npy
+expect 2 "too small" -n 1024 --progressive --base 8 -o x.npy
+expect 2 "each class needs" -n 100 --classes 20 -o x.npy
+expect 2 "--relax does not go with --checkpoint" -n 1024 --progressive --relax 3 --checkpoint ck.bin -o x.npy
+expect 2 "does not go with --progressive" -n 1024 --progressive --init x.npy -o y.npy
+expect 2 "does not go with --progressive" -n 1024 --progressive --time-limit 5 -o x.npy
+expect 2 "does not go with --classes" -n 1024 --classes 4 --check -o x.npy
+expect 2 "does not go with --progressive" -n 1024 --progressive --density cos:a=0.5 -o x.npy
+expect 2 "hyperuniform does not go" -n 1024 --progressive --variant hyperuniform -o x.npy
+expect 2 "--base does not go with --classes" -n 1024 --classes 4 --base 64 -o x.npy
+expect 2 "needs --progressive" -n 1024 --base 64 -o x.npy
+expect 2 "needs --progressive" -n 1024 --relax 3 -o x.npy
+
+run() { "$CFPO" -q "$@"; }
+field() { grep -o " $1=[^ ]*" | head -1 | cut -d= -f2; }
+
+# ---- threads: the same bytes
+for t in 1 2 3; do
+  run -n 2048 -s 4 -t $t --progressive -o p$t.npy >p$t.sum || bad "progressive run, $t threads"
+  run -n 1200 -s 2 -t $t --classes 3 -o c$t.npy >c$t.sum || bad "classes run, $t threads"
+done
+cmp -s p1.npy p2.npy && cmp -s p1.npy p3.npy && ok || bad "--progressive: bytes differ across 1-3 threads"
+cmp -s c1.npy c2.npy && cmp -s c1.npy c3.npy && ok || bad "--classes 3: bytes differ across 1-3 threads"
+
+# ---- the prefix order: the run of 1024 is the first half of the run of 2048
+run -n 1024 -s 4 -t 2 --progressive -o h.npy >h.sum || bad "progressive run of 1024"
+python3 - <<'PY' && ok || bad "the 1024-point run is not the first half of the 2048-point run"
+import sys
+a = open("h.npy", "rb").read(); b = open("p1.npy", "rb").read()
+ha = a.index(b"\n") + 1; hb = b.index(b"\n") + 1   # npy headers differ in the shape
+sys.exit(0 if a[ha:] == b[hb:hb + len(a) - ha] and len(a) - ha == 1024 * 16 else 1)
+PY
+
+# ---- each LEVEL line is the file's prefix, as cfpo-analyze measures it
+"$AN" -q --prefixes --prefix-base 64 -t 1 p1.npy >an.sum 2>an.err || bad "cfpo-analyze --prefixes"
+python3 - <<'PY' && ok || bad "LEVEL lines differ from cfpo-analyze --prefixes of the file"
+import sys
+lv = {}
+for line in open("p1.sum"):
+    if line.startswith("LEVEL"):
+        f = dict(kv.split("=") for kv in line.split()[1:])
+        lv[int(f["prefix"])] = (float(f["delta_min"]), float(f["delta_avg"]))
+an = {}
+for line in open("p1.analysis/prefixes.txt"):
+    if line.startswith("#"): continue
+    w = line.split()
+    if w[1] == "dyadic": an[int(w[0])] = (float(w[2]), float(w[3]))
+assert sorted(lv) == [64, 128, 256, 512, 1024, 2048], sorted(lv)
+bad = [m for m in lv if abs(lv[m][0] - an[m][0]) > 2e-6 or abs(lv[m][1] - an[m][1]) > 2e-6]
+sys.exit(1 if bad else 0)
+PY
+
+# ---- SUMMARY's worst prefix = the worst LEVEL line; delta_min never falls within a level
+run -n 2048 -s 4 -t 1 --progressive --trace tr.tsv >tr.sum || bad "progressive run with a trace"
+cmp -s <(grep -v '^SUMMARY' tr.sum | sed 's/seconds=[^ ]*//') <(grep -v '^SUMMARY' p1.sum | sed 's/seconds=[^ ]*//') && ok \
+  || bad "the trace changed the LEVEL lines"
+python3 - <<'PY' && ok || bad "a prefix's delta_min fell while its level ran, or the worst prefix is misreported"
+import sys
+rows = [l.rstrip("\n").split("\t") for l in open("tr.tsv")]
+h = rows[0]; rows = rows[1:]
+L, P, D, W, WD = (h.index(c) for c in ("level", "prefix", "delta_min", "worst_prefix", "worst_delta_min"))
+for a, b in zip(rows, rows[1:]):
+    if a[L] == b[L] and float(b[D]) < float(a[D]): sys.exit(1)
+levels = [l for l in open("tr.sum") if l.startswith("LEVEL")]
+for l in levels:
+    f = dict(kv.split("=") for kv in l.split()[1:])
+    if float(f["delta_min"]) < float(f["start_delta_min"]): sys.exit(1)
+dmins = [(float(dict(kv.split("=") for kv in l.split()[1:])["delta_min"]),
+          int(dict(kv.split("=") for kv in l.split()[1:])["prefix"])) for l in levels]
+w = min(dmins)
+s = dict(kv.split("=") for kv in open("tr.sum").read().split("SUMMARY")[1].split())
+if int(s["worst_prefix_min"]) != w[1] or abs(float(s["worst_delta_min"]) - w[0]) > 1e-6: sys.exit(1)
+if int(rows[-1][W]) != w[1] or abs(float(rows[-1][WD]) - w[0]) > 1e-6: sys.exit(1)
+sys.exit(0)
+PY
+
+# ---- --relax: the earlier prefixes are measured again (LEVEL = the file's prefixes)
+run -n 1024 -s 1 -t 2 --progressive --relax 3 -o r.npy >r.sum || bad "--relax run"
+"$AN" -q --prefixes --prefix-base 64 -t 1 r.npy >/dev/null 2>&1 || bad "cfpo-analyze of the --relax run"
+python3 - <<'PY' && ok || bad "--relax: LEVEL lines are not the file's prefixes"
+import sys
+lv = {int(dict(kv.split("=") for kv in l.split()[1:])["prefix"]): float(dict(kv.split("=") for kv in l.split()[1:])["delta_min"])
+      for l in open("r.sum") if l.startswith("LEVEL")}
+an = {int(w[0]): float(w[2]) for w in (l.split() for l in open("r.analysis/prefixes.txt") if not l.startswith("#")) if w[1] == "dyadic"}
+sys.exit(0 if all(abs(lv[m] - an[m]) <= 2e-6 for m in lv) else 1)
+PY
+
+# ---- checkpoints: SIGUSR1 mid-run writes the level's checkpoint, exit 3 and no
+# output; --resume gives the uninterrupted bytes (and resumes past level 0)
+run -n 16384 -s 2 -t 2 --progressive -o ref.npy >ref.sum || bad "reference run"
+"$CFPO" -q -n 16384 -s 2 -t 2 --progressive --checkpoint ck.bin --checkpoint-every 3 -o cut.npy >cut.sum 2>cut.err &
+P=$!
+for i in $(seq 1 400); do [ -f ck.bin ] && break; sleep 0.05; done
+sleep 0.3
+kill -USR1 $P 2>/dev/null
+wait $P; rc=$?
+if [ "$rc" -eq 3 ]; then
+  [ ! -e cut.npy ] && grep -q "checkpoint ck.bin written" cut.err && ok || bad "a signalled run left output or no message"
+elif [ "$rc" -eq 0 ]; then
+  echo "note: the run ended before the signal; resuming from its last level's checkpoint"
+else
+  bad "signalled run: exit $rc ($(cat cut.err))"
+fi
+run -n 16384 -s 2 -t 1 --progressive --resume ck.bin -o res.npy >res.sum || bad "--resume"
+cmp -s ref.npy res.npy && ok || bad "--resume: not the uninterrupted bytes"
+grep -q "^LEVEL level=0 prefix=64 iterations=- " res.sum && ok || bad "--resume started at level 0"
+python3 - <<'PY' && ok || bad "--resume: the finished levels' measures differ from the uninterrupted run's"
+import sys
+def lv(f): return {l.split()[2]: (l.split()[6], l.split()[7]) for l in open(f) if l.startswith("LEVEL")}
+sys.exit(0 if lv("ref.sum") == lv("res.sum") else 1)
+PY
+expect 2 "needs the run's -n" --progressive --resume ck.bin -o x.npy
+expect 1 "checkpoint is for another run" -n 16384 -s 3 --progressive --resume ck.bin -o x.npy
+expect 1 "no level of this run has that size" -n 16000 --base 100 -s 2 --progressive --resume ck.bin -o x.npy
+
+echo "test_progressive: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
