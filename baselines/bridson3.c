@@ -88,7 +88,7 @@ static int run_bridson(int64_t n, uint64_t seed, const double *opt, bl3_iter_fn 
 
 const bl3_method bl3_bridson = {
     .name = "bridson3d", .prog = "cfpo3d-bridson", .min_n = 2, .run = run_bridson, .noptions = 2,
-    .options = {{"rel-radius", 0.70, 0.05, 1.0,
+    .options = {{"rel-radius", 0.741, 0.05, 1.0,
                  "      --rel-radius REL r = REL * Delta3(N), Delta3(N) = (sqrt(2)/N)^(1/3); the default\n"
                  "                       %g is measured so that the set has about N points\n"},
                 {"candidates", 30, 1, 1000, "      --candidates K   candidates per active sample (default %g, the paper's)\n"}},

@@ -161,7 +161,7 @@ int main(int argc, char **argv)
     const double d = dmin * cfpo3_delta_bound((double)n);
     char extra[384];
     snprintf(extra, sizeof extra, " w6=%.6f w6_local=%.6f", w.w6, w.w6_local);
-    if (spec_out && spectrum(p, n, (int)kmax, exact, spec_out, extra, sizeof extra, err, sizeof err) != 0)
+    if (spec_out && spectrum(p, n, (int)kmax, exact, spec_out, extra + strlen(extra), sizeof extra - strlen(extra), err, sizeof err) != 0)
         cli_fail(prog, "%s", err);
     if (pcf_out && pcf(p, n, pcf_out, extra + strlen(extra), sizeof extra - strlen(extra), err, sizeof err) != 0)
         cli_fail(prog, "%s", err);
