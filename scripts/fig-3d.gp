@@ -2,7 +2,7 @@
 # averaged over shells |k| = s (seed 1, data/d3/KEY-s1.spec: shell, power),
 # g(r) (data/d3/KEY-s1.pcf: r / Delta3(n), g), delta_min against time (time
 # to quality: the traces of cfpo3d, whose rows hold each iteration's own
-# seconds in column 7, and of 3-D FPO, elapsed seconds in column 2; the
+# seconds in column 7, and of 3-D FPO and Lloyd, elapsed seconds in column 2; the
 # direct methods as points, plotdata/d3-direct.dat; below delta 0.6 or
 # 1 ms off the panel) and the packing
 # fraction (pi/6) sqrt(2) delta_min^3 against time.
@@ -39,7 +39,7 @@ set key bottom right
 D = DIR."/plotdata/d3-direct.dat"
 plot for [i = 1:NM] (KEY[i] eq "cfpo3d" ? DIR."/data/d3/cfpo3d-s1.trace" : "/dev/null") \
        using (c = (column(1) == 1 ? 0 : c) + $7, c):2 with linespoints pt 7 ps 0.5 lw 2 lc rgb COL[i] title LBL[i], \
-     for [i = 1:NM] (KEY[i] eq "fpo" ? DIR."/data/d3/fpo-s1.trace" : "/dev/null") \
+     for [i = 1:NM] (IT[i] && KEY[i] ne "cfpo3d" ? DIR."/data/d3/".KEY[i]."-s1.trace" : "/dev/null") \
        using ($2 > 0 ? $2 : NaN):3 every ::1 with linespoints pt 7 ps 0.5 lw 2 lc rgb COL[i] title LBL[i], \
      for [i = 1:NM] (IT[i] ? "/dev/null" : D) using (strcol(3) eq KEY[i] ? $1 : NaN):2 with points pt 5 ps 1.5 lc rgb COL[i] title LBL[i]
 set title "packing fraction of spheres of diameter δ_{min} Δ_3(n)"
@@ -47,7 +47,7 @@ set ylabel "packing fraction"
 set yrange [0.2:0.76]
 plot for [i = 1:NM] (KEY[i] eq "cfpo3d" ? DIR."/data/d3/cfpo3d-s1.trace" : "/dev/null") \
        using (c = (column(1) == 1 ? 0 : c) + $7, c):(phi($2)) with linespoints pt 7 ps 0.5 lw 2 lc rgb COL[i] title LBL[i], \
-     for [i = 1:NM] (KEY[i] eq "fpo" ? DIR."/data/d3/fpo-s1.trace" : "/dev/null") \
+     for [i = 1:NM] (IT[i] && KEY[i] ne "cfpo3d" ? DIR."/data/d3/".KEY[i]."-s1.trace" : "/dev/null") \
        using ($2 > 0 ? $2 : NaN):(phi($3)) every ::1 with linespoints pt 7 ps 0.5 lw 2 lc rgb COL[i] title LBL[i], \
      for [i = 1:NM] (IT[i] ? "/dev/null" : D) using (strcol(3) eq KEY[i] ? $1 : NaN):(phi($2)) with points pt 5 ps 1.5 lc rgb COL[i] title LBL[i], \
      pi / sqrt(18) with lines dt 2 lc rgb "#444444" title "FCC 0.7405", \

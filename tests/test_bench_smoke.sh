@@ -356,7 +356,7 @@ for f in $FIGS; do
 done
 # the 3-D part (scripts/benchlib/d3.py): one d3.csv row per 3-D command built, each
 # with its analysis (delta, packing fraction, P0), and the table in summary.md
-n3=$(ls "$B"/cfpo3d "$B"/cfpo3d-white "$B"/cfpo3d-jitter "$B"/cfpo3d-dart "$B"/cfpo3d-bridson "$B"/cfpo3d-wse "$B"/cfpo3d-fpo 2>/dev/null | wc -l)
+n3=$(ls "$B"/cfpo3d "$B"/cfpo3d-white "$B"/cfpo3d-jitter "$B"/cfpo3d-dart "$B"/cfpo3d-bridson "$B"/cfpo3d-wse "$B"/cfpo3d-fpo "$B"/cfpo3d-lloyd 2>/dev/null | wc -l)
 check "d3.csv: one row per 3-D method ($n3), each measured" \
   holds '[ "$(tail -n +2 "$R/d3.csv" | wc -l)" -eq "$n3" ] && ! tail -n +2 "$R/d3.csv" | grep -q ",None,\|,,"'
 check "summary.md: the 3-D table" grep -q "^| sample elimination | 0\.6" "$R/summary.md"

@@ -11,9 +11,11 @@ fail=0
 ok() { echo "ok: $*"; }
 bad() { echo "FAIL: $*"; fail=1; }
 methods="white jitter dart bridson wse"
-[ -x "$B/cfpo3d-fpo" ] && methods="$methods fpo"
+[ -x "$B/cfpo3d-fpo" ] && methods="$methods fpo lloyd"
 for m in $methods; do
-  out=$("$B/cfpo3d-$m" -n 300 -s 2 -q -o "$T/$m.npy") || { bad "$m exits non-zero"; continue; }
+  extra=""
+  case $m in fpo | lloyd) extra="--max-iter 3" ;; esac
+  out=$("$B/cfpo3d-$m" -n 300 -s 2 -q -o "$T/$m.npy" $extra) || { bad "$m exits non-zero"; continue; }
   echo "$out" | grep -q "^SUMMARY method=${m}3d " || bad "$m: no SUMMARY line"
   n=$(echo "$out" | sed -n 's/^SUMMARY.* n=\([0-9]*\) .*/\1/p')
   # .npy header then n*3 float64: the file's size matches SUMMARY's n

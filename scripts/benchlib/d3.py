@@ -22,6 +22,7 @@ from .common import Failure, write
 # (key, label, command, its own arguments, iterative, colour)
 METHODS = (("cfpo3d", "CFPO 3-D", "cfpo3d", ["-t", "1"], True, "#d62728"),
            ("fpo", "FPO 3-D (CGAL)", "cfpo3d-fpo", [], True, "#1f77b4"),
+           ("lloyd", "Lloyd 3-D (CGAL)", "cfpo3d-lloyd", [], True, "#ff7f0e"),
            ("wse", "sample elimination", "cfpo3d-wse", [], False, "#2ca02c"),
            ("dart", "dart throwing", "cfpo3d-dart", [], False, "#9467bd"),
            ("bridson", "Bridson", "cfpo3d-bridson", [], False, "#8c564b"),
@@ -186,7 +187,7 @@ def main(build, name="3d"):
     import shutil
     import socket
     B = os.path.abspath(build)
-    for c in ["cfpo3d", "cfpo3d-analyze"] + [m[2] for m in METHODS if m[0] != "fpo"]:
+    for c in ["cfpo3d", "cfpo3d-analyze"] + [m[2] for m in METHODS if m[0] not in ("fpo", "lloyd")]:
         if not os.access(f"{B}/{c}", os.X_OK):
             raise Failure(f"{B}/{c} not built (run make)")
     if not shutil.which("gnuplot"):

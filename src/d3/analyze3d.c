@@ -15,6 +15,9 @@
 #include "measures3_pcf.h"
 #include "measures3_spec.h"
 #include "measures3_w6.h"
+#ifdef CFPO3_HAVE_VORONOI
+#include "measures3_vor.h"
+#endif
 #include "nn3.h"
 #include "points3.h"
 #include "q6.h"
@@ -35,9 +38,13 @@ static void usage(void)
            "  --exact           the spectrum by direct summation (O(n K^3)) instead of the NUFFT\n"
            "  --pcf FILE        the pair correlation g(r), r / Delta3(n) in bins of 0.02 up to\n"
            "                    3 (less when 3 Delta3(n) >= 1/2) (TSV: r, g)\n"
+           "  --voronoi         Voronoi statistics from CGAL's periodic 3-D triangulation: faces\n"
+           "                    per cell (mean, standard deviation) and the variance of n V (V a\n"
+           "                    cell's volume); only in builds with CGAL\n"
            "  -h, --help\n\n"
            "prints: ANALYZE3D n= delta_min= delta_avg= packing_fraction= q6_global= q6_local= crystal_like= crystal_fraction=\n"
-           "        neighbours= bond= bonds= w6= w6_local= [p0= peak= peak_shell= kmax=] [pcf_peak= pcf_peak_r=]\n", CFPO3_SPEC_KMAX);
+           "        neighbours= bond= bonds= w6= w6_local= [p0= peak= peak_shell= kmax=] [pcf_peak= pcf_peak_r=]\n"
+           "        [vor_faces= vor_faces_sd= vor_volume_var=]\n", CFPO3_SPEC_KMAX);
 }
 
 /* The shell-averaged spectrum into path; " p0=... peak=..." into extra. */
@@ -105,6 +112,30 @@ static int pcf(const double *p, size_t n, const char *path, char *extra, size_t 
     return rc;
 }
 
+#ifdef CFPO3_HAVE_VORONOI
+/* " vor_faces=... vor_faces_sd=... vor_volume_var=..." into extra. */
+static int vor_stats(const double *p, size_t n, char *extra, size_t xl, char *err, size_t errlen)
+{
+    int *f = malloc(n * sizeof *f);
+    double *v = malloc(n * sizeof *v);
+    if (!f || !v || cfpo3_voronoi(p, n, f, v, NULL, err, errlen) != 0) {
+        if (!f || !v) snprintf(err, errlen, "out of memory for the Voronoi cells");
+        free(f), free(v);
+        return -1;
+    }
+    double sf = 0, sf2 = 0, sv = 0, sv2 = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double nv = v[i] * (double)n;
+        sf += f[i], sf2 += (double)f[i] * f[i], sv += nv, sv2 += nv * nv;
+    }
+    const double mf = sf / (double)n, mv = sv / (double)n;
+    snprintf(extra, xl, " vor_faces=%.4f vor_faces_sd=%.4f vor_volume_var=%.6g", mf, sqrt(fmax(0, sf2 / (double)n - mf * mf)),
+             fmax(0, sv2 / (double)n - mv * mv));
+    free(f), free(v);
+    return 0;
+}
+#endif
+
 int main(int argc, char **argv)
 {
     static const struct option lo[] = {{"neighbours", required_argument, 0, 'k'},
@@ -114,13 +145,14 @@ int main(int argc, char **argv)
                                        {"kmax", required_argument, 0, 'K'},
                                        {"exact", no_argument, 0, 'E'},
                                        {"pcf", required_argument, 0, 'P'},
+                                       {"voronoi", no_argument, 0, 'Y'},
                                        {"help", no_argument, 0, 'h'},
                                        {0, 0, 0, 0}};
     int64_t k = 12, bonds = 8;
     double bond = 0.7;
     const char *spec_out = NULL, *pcf_out = NULL;
     int64_t kmax = 0;
-    int exact = 0;
+    int exact = 0, voronoi = 0;
     opterr = 0;
     int ch;
     while ((ch = getopt_long(argc, argv, ":h", lo, NULL)) != -1) {
@@ -137,6 +169,12 @@ int main(int argc, char **argv)
         case 'S': spec_out = optarg; break;
         case 'P': pcf_out = optarg; break;
         case 'E': exact = 1; break;
+        case 'Y':
+#ifndef CFPO3_HAVE_VORONOI
+            cli_usage_error(prog, "--voronoi needs a build with CGAL (CFPO_CGAL)");
+#endif
+            voronoi = 1;
+            break;
         case 'K':
             if (cli_parse_i64(optarg, 1, CFPO3_SPEC_KMAX, &kmax) != 0)
                 cli_usage_error(prog, "--kmax must be 1..%d, not '%s'", CFPO3_SPEC_KMAX, optarg);
@@ -159,12 +197,18 @@ int main(int argc, char **argv)
         cfpo3_w6(p, n, (int)k, &w) != 0)
         cli_fail(prog, "out of memory");
     const double d = dmin * cfpo3_delta_bound((double)n);
-    char extra[384];
+    char extra[512];
     snprintf(extra, sizeof extra, " w6=%.6f w6_local=%.6f", w.w6, w.w6_local);
     if (spec_out && spectrum(p, n, (int)kmax, exact, spec_out, extra + strlen(extra), sizeof extra - strlen(extra), err, sizeof err) != 0)
         cli_fail(prog, "%s", err);
     if (pcf_out && pcf(p, n, pcf_out, extra + strlen(extra), sizeof extra - strlen(extra), err, sizeof err) != 0)
         cli_fail(prog, "%s", err);
+#ifdef CFPO3_HAVE_VORONOI
+    if (voronoi && vor_stats(p, n, extra + strlen(extra), sizeof extra - strlen(extra), err, sizeof err) != 0)
+        cli_fail(prog, "%s", err);
+#else
+    (void)voronoi;
+#endif
     printf("ANALYZE3D n=%zu delta_min=%.6f delta_avg=%.6f packing_fraction=%.6f q6_global=%.6f q6_local=%.6f "
            "crystal_like=%lld crystal_fraction=%.6f neighbours=%lld bond=%g bonds=%lld%s\n",
            n, dmin, davg, M_PI / 6.0 * (double)n * d * d * d, q.q6_global, q.q6_local, (long long)q.crystal,
