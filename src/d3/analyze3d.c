@@ -16,6 +16,7 @@
 #include "measures3_spec.h"
 #include "measures3_w6.h"
 #ifdef CFPO3_HAVE_VORONOI
+#include "measures3_fpd.h"
 #include "measures3_vor.h"
 #endif
 #include "nn3.h"
@@ -41,10 +42,12 @@ static void usage(void)
            "  --voronoi         Voronoi statistics from CGAL's periodic 3-D triangulation: faces\n"
            "                    per cell (mean, standard deviation) and the variance of n V (V a\n"
            "                    cell's volume); only in builds with CGAL\n"
+           "  --certify         (builds with CGAL) the FPD certificate: can any point move farther\n"
+           "                    from the rest? adds fpd_pass= fpd_points= fpd_max_violation= fpd_seconds=\n"
            "  -h, --help\n\n"
            "prints: ANALYZE3D n= delta_min= delta_avg= packing_fraction= q6_global= q6_local= crystal_like= crystal_fraction=\n"
            "        neighbours= bond= bonds= w6= w6_local= [p0= peak= peak_shell= kmax=] [pcf_peak= pcf_peak_r=]\n"
-           "        [vor_faces= vor_faces_sd= vor_volume_var=]\n", CFPO3_SPEC_KMAX);
+           "        [vor_faces= vor_faces_sd= vor_volume_var=] [fpd_pass= fpd_points= fpd_max_violation= fpd_seconds=]\n", CFPO3_SPEC_KMAX);
 }
 
 /* The shell-averaged spectrum into path; " p0=... peak=..." into extra. */
@@ -146,13 +149,14 @@ int main(int argc, char **argv)
                                        {"exact", no_argument, 0, 'E'},
                                        {"pcf", required_argument, 0, 'P'},
                                        {"voronoi", no_argument, 0, 'Y'},
+                                       {"certify", no_argument, 0, 'C'},
                                        {"help", no_argument, 0, 'h'},
                                        {0, 0, 0, 0}};
     int64_t k = 12, bonds = 8;
     double bond = 0.7;
     const char *spec_out = NULL, *pcf_out = NULL;
     int64_t kmax = 0;
-    int exact = 0, voronoi = 0;
+    int exact = 0, voronoi = 0, certify = 0;
     opterr = 0;
     int ch;
     while ((ch = getopt_long(argc, argv, ":h", lo, NULL)) != -1) {
@@ -174,6 +178,12 @@ int main(int argc, char **argv)
             cli_usage_error(prog, "--voronoi needs a build with CGAL (CFPO_CGAL)");
 #endif
             voronoi = 1;
+            break;
+        case 'C':
+#ifndef CFPO3_HAVE_VORONOI
+            cli_usage_error(prog, "--certify needs a build with CGAL (CFPO_CGAL)");
+#endif
+            certify = 1;
             break;
         case 'K':
             if (cli_parse_i64(optarg, 1, CFPO3_SPEC_KMAX, &kmax) != 0)
@@ -206,8 +216,16 @@ int main(int argc, char **argv)
 #ifdef CFPO3_HAVE_VORONOI
     if (voronoi && vor_stats(p, n, extra + strlen(extra), sizeof extra - strlen(extra), err, sizeof err) != 0)
         cli_fail(prog, "%s", err);
+    if (certify) {
+        cfpo3_fpd_result fr;
+        const double t0 = cli_now();
+        if (cfpo3_fpd_certify(p, n, &fr, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        const size_t l = strlen(extra);
+        snprintf(extra + l, sizeof extra - l, " fpd_pass=%s fpd_points=%zu fpd_max_violation=%.3g fpd_seconds=%.3f",
+                 fr.passed == n ? "yes" : "no", fr.passed, fr.max_violation, cli_now() - t0);
+    }
 #else
-    (void)voronoi;
+    (void)voronoi, (void)certify;
 #endif
     printf("ANALYZE3D n=%zu delta_min=%.6f delta_avg=%.6f packing_fraction=%.6f q6_global=%.6f q6_local=%.6f "
            "crystal_like=%lld crystal_fraction=%.6f neighbours=%lld bond=%g bonds=%lld%s\n",

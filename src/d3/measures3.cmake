@@ -12,11 +12,12 @@ target_link_libraries(test_d3_measures PRIVATE cfpo_d3m)
 # (registered in baselines/d3.cmake: tests are enabled after src/d3 is read)
 
 # The Voronoi cells on CGAL's periodic 3-D triangulation (faces per cell,
-# volumes, centroids): cfpo3d-analyze --voronoi and 3-D Lloyd, where CGAL is.
+# volumes, centroids) and the FPD certificate: cfpo3d-analyze --voronoi and
+# --certify, and 3-D Lloyd, where CGAL is.
 if(CFPO_HAVE_CGAL)
-  add_library(cfpo_d3vor STATIC measures3_vor.cpp)
+  add_library(cfpo_d3vor STATIC measures3_vor.cpp measures3_fpd.cpp)
   target_include_directories(cfpo_d3vor PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-  target_link_libraries(cfpo_d3vor PUBLIC CGAL::CGAL)
+  target_link_libraries(cfpo_d3vor PUBLIC cfpo_d3 CGAL::CGAL)
   target_link_libraries(cfpo3d-analyze PRIVATE cfpo_d3vor)
   target_compile_definitions(cfpo3d-analyze PRIVATE CFPO3_HAVE_VORONOI=1)
   add_executable(test_d3_voronoi ${PROJECT_SOURCE_DIR}/tests/d3/test_d3_voronoi.c)
