@@ -35,3 +35,5 @@ set_tests_properties(baselines_cli3d PROPERTIES LABELS cli)
 # The 3-D measures' unit test (built in src/d3/measures3.cmake).
 add_test(NAME test_d3_measures COMMAND test_d3_measures)
 set_tests_properties(test_d3_measures PROPERTIES LABELS unit)
+add_test(NAME test_d3_analyze_cli COMMAND ${PROJECT_SOURCE_DIR}/tests/d3/test_d3_analyze_cli.sh ${CMAKE_BINARY_DIR})
+set_tests_properties(test_d3_analyze_cli PROPERTIES LABELS cli)
