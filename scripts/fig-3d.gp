@@ -45,6 +45,7 @@ plot for [i = 1:NM] (KEY[i] eq "cfpo3d" ? DIR."/data/d3/cfpo3d-s1.trace" : "/dev
 set title "packing fraction of spheres of diameter δ_{min} Δ_3(n)"
 set ylabel "packing fraction"
 set yrange [0.2:0.76]
+set key top left
 plot for [i = 1:NM] (KEY[i] eq "cfpo3d" ? DIR."/data/d3/cfpo3d-s1.trace" : "/dev/null") \
        using (c = (column(1) == 1 ? 0 : c) + $7, c):(phi($2)) with linespoints pt 7 ps 0.5 lw 2 lc rgb COL[i] title LBL[i], \
      for [i = 1:NM] (IT[i] && KEY[i] ne "cfpo3d" ? DIR."/data/d3/".KEY[i]."-s1.trace" : "/dev/null") \

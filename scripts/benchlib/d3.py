@@ -1,4 +1,4 @@
-"""d3 - the 3-D part of `make bench` (docs/testing.md, "3-D bench"): cfpo3d
+"""d3 - the 3-D part of `make bench` (docs/results/2026-11-28-3d-baselines.md): cfpo3d
 against the 3-D baselines (baselines/README.md, "Three dimensions") on the
 unit 3-torus, each set measured by cfpo3d-analyze (delta, packing fraction,
 Q6, W6, crystal-like fraction, the shell-averaged spectrum and P0, g(r)).

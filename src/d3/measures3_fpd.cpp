@@ -16,6 +16,7 @@
 
 extern "C" {
 #include "nn3.h"
+#include "rng.h"
 #include "solve3.h"
 }
 
@@ -72,12 +73,14 @@ extern "C" int cfpo3_fpd_certify(const double *p, size_t n, cfpo3_fpd_result *r,
         }
         PDT T(PDT::Iso_cuboid(0, 0, 0, 1, 1, 1));
         std::vector<Vertex_handle> vh(n);
-        Cell_handle hint;
-        for (size_t i = 0; i < n; i++) {
-            Vertex_handle v = T.insert(Point(p[3 * i], p[3 * i + 1], p[3 * i + 2]), hint);
+        /* in a fixed pseudo-random order: a spatially ordered set (grown
+         * from a seed, or sorted by cells) keeps CGAL's triangulation in its
+         * 27-sheeted covering until nearly the end, slow and large */
+        for (size_t k = 0; k < n; k++) {
+            const size_t i = (size_t)cfpo_permute(k, n, 0x564f524f4e4f49ULL);
+            Vertex_handle v = T.insert(Point(p[3 * i], p[3 * i + 1], p[3 * i + 2]));
             v->info() = (uint32_t)i;
             vh[i] = v;
-            hint = v->cell();
         }
         if (T.number_of_vertices() != n) {
             std::snprintf(err, errlen, "certify: the set has duplicate points");
