@@ -137,6 +137,15 @@ void register_around(Engine &E, Vertex_handle v)
         if (c->info().stamp == 0) register_cell(E, c);
 }
 
+/* Every cell registered anew (the heap rebuilt): after CGAL changed its
+ * covering, the cells a removal or insertion made need not be incident to
+ * the vertices register_around visits. */
+void register_all(Engine &E)
+{
+    E.heap.clear();
+    for (auto c = E.T.cells_begin(); c != E.T.cells_end(); ++c) register_cell(E, c);
+}
+
 double wrap01(double x)
 {
     x -= std::floor(x);
@@ -159,7 +168,9 @@ int step(Engine &E, uint32_t id, double tolL)
     for (Vertex_handle w : nb) q0 = std::min(q0, pd2(&E.p[3 * id], &E.p[3 * w->info()]));
     const double d0 = std::sqrt(q0);
     E.T.remove(v);
-    for (Vertex_handle w : nb) register_around(E, w);
+    if (!E.T.is_1_cover()) register_all(E); /* CGAL went to its 27-sheeted covering: small n */
+    else
+        for (Vertex_handle w : nb) register_around(E, w);
     const Cell_handle best = heap_top(E);
     const CellInfo &I = best->info();
     double x[3] = {E.p[3 * id], E.p[3 * id + 1], E.p[3 * id + 2]};
@@ -172,7 +183,8 @@ int step(Engine &E, uint32_t id, double tolL)
     nv->info() = id;
     E.vh[id] = nv;
     for (int k = 0; k < 3; k++) E.p[3 * id + k] = x[k];
-    register_around(E, nv);
+    if (!E.T.is_1_cover()) register_all(E);
+    else register_around(E, nv);
     return moved;
 }
 
@@ -201,7 +213,7 @@ static int run_fpo3(int64_t n, uint64_t seed, const double *opt, bl3_iter_fn cb,
         delete E;
         return -1;
     }
-    for (auto c = E->T.cells_begin(); c != E->T.cells_end(); ++c) register_cell(*E, c);
+    register_all(*E);
     cfpo_iter_stats s = {};
     std::vector<double> before(3 * (size_t)n);
     auto stats = [&](int it) -> int {

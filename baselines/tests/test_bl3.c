@@ -39,19 +39,23 @@ static void brute_wse(const double *p, size_t M, size_t n, int limit, char *dead
 {
     const double dmax = cbrt(sqrt(2.0) / (double)n); /* the paper's 2 r_max, written out */
     const double dmin = limit ? dmax * (1 - pow((double)n / (double)M, 1.5)) * 0.65 : 0;
+    int64_t *pw = malloc(M * M * sizeof *pw); /* every pair's weight, all images */
+    for (size_t a = 0; a < M; a++)
+        for (size_t b = 0; b < M; b++) pw[a * M + b] = a == b ? 0 : pair_all_images(p + 3 * a, p + 3 * b, dmax, dmin, 8.0);
     memset(dead, 0, M);
-    for (size_t e = 0; e + n < M; e++) {
+    for (size_t e = 0; e + n < M; e++) { /* every weight summed again at every step */
         size_t best = 0;
         int64_t bw = -1;
         for (size_t a = 0; a < M; a++) {
             if (dead[a]) continue;
             int64_t w = 0;
             for (size_t b = 0; b < M; b++)
-                if (b != a && !dead[b]) w += pair_all_images(p + 3 * a, p + 3 * b, dmax, dmin, 8.0);
+                if (!dead[b]) w += pw[a * M + b];
             if (w >= bw) bw = w, best = a; /* ties: the larger index */
         }
         dead[best] = 1;
     }
+    free(pw);
 }
 
 static void compare_wse(const char *name, size_t n, size_t M, int limit, uint64_t seed)

@@ -114,11 +114,14 @@ extern "C" int cfpo3_fpd_certify(const double *p, size_t n, cfpo3_fpd_result *r,
                     break;
                 }
             T.remove(vh[i]);
-            for (Vertex_handle w : nb) {
-                cells.clear();
-                T.incident_cells(w, std::back_inserter(cells));
-                for (Cell_handle c : cells) R2 = std::max(R2, radius2(T, c));
-            }
+            if (!T.is_1_cover()) /* CGAL went to its 27-sheeted covering (a sparse set): every cell */
+                for (auto c = T.cells_begin(); c != T.cells_end(); ++c) R2 = std::max(R2, radius2(T, c));
+            else
+                for (Vertex_handle w : nb) {
+                    cells.clear();
+                    T.incident_cells(w, std::back_inserter(cells));
+                    for (Cell_handle c : cells) R2 = std::max(R2, radius2(T, c));
+                }
             Vertex_handle v = T.insert(Point(p[3 * i], p[3 * i + 1], p[3 * i + 2]), nb[0]->cell());
             v->info() = (uint32_t)i;
             vh[i] = v;

@@ -81,7 +81,7 @@ extern "C" int cfpo3_voronoi(const double *p, size_t n, int *faces, double *volu
             std::snprintf(err, errlen, "voronoi: the set has duplicate points");
             return -1;
         }
-        if (!T.is_triangulation_in_1_sheet()) {
+        if (!T.is_1_cover()) {
             std::snprintf(err, errlen, "voronoi: %zu points are too few or too uneven for a one-sheeted periodic "
                                        "triangulation", n);
             return -1;
