@@ -165,7 +165,8 @@ int step(Engine &E, uint32_t id, double tolL)
     std::vector<Vertex_handle> nb;
     E.T.adjacent_vertices(v, std::back_inserter(nb));
     double q0 = INFINITY;
-    for (Vertex_handle w : nb) q0 = std::min(q0, pd2(&E.p[3 * id], &E.p[3 * w->info()]));
+    for (Vertex_handle w : nb) /* a virtual copy (27-sheeted covering) carries no info: its original's */
+        q0 = std::min(q0, pd2(&E.p[3 * id], &E.p[3 * E.T.get_original_vertex(w)->info()]));
     const double d0 = std::sqrt(q0);
     E.T.remove(v);
     if (!E.T.is_1_cover()) register_all(E); /* CGAL went to its 27-sheeted covering: small n */

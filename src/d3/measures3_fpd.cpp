@@ -89,8 +89,10 @@ extern "C" int cfpo3_fpd_certify(const double *p, size_t n, cfpo3_fpd_result *r,
         std::vector<Big> big;
         big.reserve(T.number_of_cells());
         for (auto c = T.cells_begin(); c != T.cells_end(); ++c)
-            big.push_back(Big{radius2(T, c), {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
-                                             c->vertex(3)->info()}});
+            big.push_back(Big{radius2(T, c), {T.get_original_vertex(c->vertex(0))->info(),
+                                             T.get_original_vertex(c->vertex(1))->info(),
+                                             T.get_original_vertex(c->vertex(2))->info(),
+                                             T.get_original_vertex(c->vertex(3))->info()}});
         std::sort(big.begin(), big.end(), [](const Big &a, const Big &b) { return a.r2 > b.r2; });
         const double D = cfpo3_delta_bound((double)n);
         r->passed = 0;
@@ -102,7 +104,7 @@ extern "C" int cfpo3_fpd_certify(const double *p, size_t n, cfpo3_fpd_result *r,
             T.adjacent_vertices(vh[i], std::back_inserter(nb));
             double q0 = INFINITY;
             for (Vertex_handle w : nb) {
-                const size_t j = w->info();
+                const size_t j = T.get_original_vertex(w)->info(); /* virtual copies carry no info */
                 const double dx = cfpo3_pdiff(p[3 * i], p[3 * j]), dy = cfpo3_pdiff(p[3 * i + 1], p[3 * j + 1]),
                              dz = cfpo3_pdiff(p[3 * i + 2], p[3 * j + 2]);
                 q0 = std::min(q0, dx * dx + dy * dy + dz * dz);
