@@ -98,8 +98,8 @@ static int run(const bl3_method *m, int64_t n, uint64_t seed, const double *opt,
 
 static void check_seeded(const bl3_method *m, int64_t n)
 {
-    double *a, *b, *c;
-    int64_t na, nb, nc;
+    double *a = NULL, *b = NULL, *c = NULL;
+    int64_t na = 0, nb = 0, nc = 0;
     CHECK(run(m, n, 5, NULL, &a, &na) == 0 && run(m, n, 5, NULL, &b, &nb) == 0 && run(m, n, 6, NULL, &c, &nc) == 0,
           "%s runs", m->name);
     CHECK(na == nb && memcmp(a, b, 3 * (size_t)na * sizeof *a) == 0, "%s: same seed, same bytes", m->name);
