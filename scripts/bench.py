@@ -11,7 +11,8 @@ measures are the C tools' own: cfpo, the baselines, cfpo-analyze, cfpo-bench).
   bench.py methods --get KEY FIELD        one field of a method's row
   bench.py profile PROFILE                a profile's plan as NAME=VALUE lines
 
-PROFILE: smoke, default (the default), paper, seeds, lowk or density. Environment: CFPO_RESULTS
+PROFILE: smoke, default (the default), paper, seeds, lowk, density or 3d (the 3-D part
+alone, benchlib/d3.py; smoke and default run a small 3-D part too). Environment: CFPO_RESULTS
 (results root, default results/), CFPO_BENCH_KEEP=1 (keep the temporary
 folder of a failed run). The modules: scripts/benchlib/.
 """
@@ -33,6 +34,14 @@ def main(argv):
         return 0 if argv else 2
     cmd, args = argv[0], argv[1:]
     try:
+        if cmd == "run" and len(args) == 2 and args[1] == "3d":  # the 3-D part alone (benchlib/d3.py)
+            from benchlib import d3
+            try:
+                d3.main(args[0], "3d")
+            except common.Failure as e:
+                print(f"bench: {e}", file=sys.stderr)
+                return e.code
+            return 0
         if cmd == "run" and 1 <= len(args) <= 3 and (len(args) < 3 or args[2] == "--plan"):
             return runner.main(args[0], args[1] if len(args) > 1 else "default", len(args) == 3)
         if cmd == "replot" and len(args) <= 1:

@@ -348,16 +348,22 @@ png_ok() { # PNG signature, then an IHDR chunk with a non-zero width and height
   h=$(head -c 24 "$1" | tail -c 4 | od -An -tu1 | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }')
   [ "$w" -ge 400 ] && [ "$h" -ge 300 ] && [ "$(stat -c %s "$1")" -gt 10000 ]
 }
-FIGS="evolution comparison lowfreq convergence runtime speedup integration time-to-quality stipple"
+FIGS="evolution comparison lowfreq convergence runtime speedup integration time-to-quality stipple 3d-slabs 3d"
 for f in $FIGS; do
   check "fig-$f.png is a PNG image" png_ok "$R/fig-$f.png"
   check "summary.md shows fig-$f.png" grep -q "](fig-$f.png)" "$R/summary.md"
   check "scripts/fig-$f.gp exists" [ -f scripts/fig-$f.gp ]
 done
+# the 3-D part (scripts/benchlib/d3.py): one d3.csv row per 3-D command built, each
+# with its analysis (delta, packing fraction, P0), and the table in summary.md
+n3=$(ls "$B"/cfpo3d "$B"/cfpo3d-white "$B"/cfpo3d-jitter "$B"/cfpo3d-dart "$B"/cfpo3d-bridson "$B"/cfpo3d-wse "$B"/cfpo3d-fpo "$B"/cfpo3d-lloyd 2>/dev/null | wc -l)
+check "d3.csv: one row per 3-D method ($n3), each measured" \
+  holds '[ "$(tail -n +2 "$R/d3.csv" | wc -l)" -eq "$n3" ] && ! tail -n +2 "$R/d3.csv" | grep -q ",None,\|,,"'
+check "summary.md: the 3-D table" grep -q "^| sample elimination | 0\.6" "$R/summary.md"
 # cfpo-analyze writes pcf.txt: the g(r) figure, a panel per comparison group
 npcf=$(find "$R/data/analysis" -path '*/comparison-*/pcf.txt' | wc -l)
 check "the comparison's analyses hold pcf.txt" [ "$npcf" -ge 2 ]
-check "no other PNG than the figures, fig-pcf.png among them" [ "$(find "$R" -name '*.png' | wc -l)" -eq 10 ] && png_ok "$R/fig-pcf.png"
+check "no other PNG than the figures, fig-pcf.png among them" [ "$(find "$R" -name '*.png' | wc -l)" -eq 12 ] && png_ok "$R/fig-pcf.png"
 check "fig-pcf: one panel per comparison group with pcf.txt" [ "$(grep -c "^GRP\[" "$R/plotdata/fig-pcf.vars.gp")" -eq "$npcf" ]
 check "the low-frequency panel draws every method of the comparison" \
   [ "$(grep -c "^GRP\[[0-9]*\] = 'comparison-" "$R/plotdata/fig-lowfreq.vars.gp")" -eq "$N_COMP" ]

@@ -295,6 +295,8 @@ def replot(R=None):
         for f in [f"fig-{fig}.png", f"plotdata/fig-{fig}.vars.gp"] + data:
             if os.path.exists(f"{R}/{f}"):
                 os.remove(f"{R}/{f}")
+    from . import d3  # the 3-D part's two figures, where the folder has d3.csv
+    figs += d3.write_figures(R, WRITTEN)
     for f in os.listdir(P):
         if f.startswith("ttq-") and f.endswith(".dat"):
             os.remove(f"{P}/{f}")

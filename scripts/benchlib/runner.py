@@ -426,6 +426,8 @@ class Bench:
         from . import density, stipple
         density.run(self, p)
         stipple.run(self, p)
+        from . import d3  # the 3-D part (small in smoke and default)
+        d3.run(self, p)
         quality = [QUALITY_COLUMNS]
         for q, (run, out) in enumerate(ttq_sets, 1):
             self.progress(N, f"final-set analysis {q} of {len(ttq_sets)} (run {run})", 1, 1, 0)

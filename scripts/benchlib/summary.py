@@ -289,6 +289,9 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), dens=(
     if "stipple" in figs:
         from .stipple import section
         section(p, stip)
+    if "3d" in figs:
+        from .d3 import section
+        section(p, F.R)
     return "\n".join(out) + "\n"
 
 
