@@ -23,11 +23,9 @@
 #include <cstdlib>
 #include <vector>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Periodic_3_Delaunay_triangulation_3.h>
-#include <CGAL/Periodic_3_Delaunay_triangulation_traits_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include "cgal3_types.h"
 
 extern "C" {
 #include "bl3.h"
@@ -46,12 +44,10 @@ struct CellInfo {
     double r2 = 0, c[3] = {0, 0, 0};
 };
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Periodic_3_Delaunay_triangulation_traits_3<K> Gt;
-typedef CGAL::Periodic_3_triangulation_ds_vertex_base_3<> VbDS;
-typedef CGAL::Triangulation_vertex_base_3<Gt, VbDS> Vbb;
-typedef CGAL::Triangulation_vertex_base_with_info_3<uint32_t, Gt, Vbb> Vb;
-typedef CGAL::Periodic_3_triangulation_ds_cell_base_3<> CbDS;
+using cfpo_cgal3::CbDS;
+using cfpo_cgal3::Gt;
+using cfpo_cgal3::K;
+using cfpo_cgal3::Vb;
 typedef CGAL::Triangulation_cell_base_3<Gt, CbDS> Cbb;
 typedef CGAL::Triangulation_cell_base_with_info_3<CellInfo, Gt, Cbb> Cb;
 typedef CGAL::Triangulation_data_structure_3<Vb, Cb> Tds;

@@ -7,26 +7,11 @@
 #include <new>
 #include <vector>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Periodic_3_Delaunay_triangulation_3.h>
-#include <CGAL/Periodic_3_Delaunay_triangulation_traits_3.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
-
-extern "C" {
-#include "rng.h"
-}
+#include "cgal3_types.h"
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Periodic_3_Delaunay_triangulation_traits_3<K> Gt;
-typedef CGAL::Periodic_3_triangulation_ds_vertex_base_3<> VbDS;
-typedef CGAL::Triangulation_vertex_base_3<Gt, VbDS> Vbb;
-typedef CGAL::Triangulation_vertex_base_with_info_3<uint32_t, Gt, Vbb> Vb;
-typedef CGAL::Periodic_3_triangulation_ds_cell_base_3<> CbDS;
-typedef CGAL::Triangulation_cell_base_3<Gt, CbDS> Cb;
-typedef CGAL::Triangulation_data_structure_3<Vb, Cb> Tds;
-typedef CGAL::Periodic_3_Delaunay_triangulation_3<Gt, Tds> PDT;
+using namespace cfpo_cgal3;
 typedef PDT::Point Point;
 typedef PDT::Cell_handle Cell_handle;
 typedef PDT::Vertex_handle Vertex_handle;
@@ -68,15 +53,7 @@ extern "C" int cfpo3_voronoi(const double *p, size_t n, int *faces, double *volu
     try {
         PDT T(PDT::Iso_cuboid(0, 0, 0, 1, 1, 1));
         std::vector<Vertex_handle> vh(n);
-        /* in a fixed pseudo-random order: a spatially ordered set (grown
-         * from a seed, or sorted by cells) keeps CGAL's triangulation in its
-         * 27-sheeted covering until nearly the end, slow and large */
-        for (size_t k = 0; k < n; k++) {
-            const size_t i = (size_t)cfpo_permute(k, n, 0x564f524f4e4f49ULL);
-            Vertex_handle v = T.insert(Point(p[3 * i], p[3 * i + 1], p[3 * i + 2]));
-            v->info() = (uint32_t)i;
-            vh[i] = v;
-        }
+        insert_all(T, p, n, vh);
         if (T.number_of_vertices() != n) {
             std::snprintf(err, errlen, "voronoi: the set has duplicate points");
             return -1;
