@@ -9,7 +9,11 @@
  *    float rounding of the upper levels, 1e-6 relative; a
  *    level of the pyramid is chosen where the span covers at most two
  *    texels, each under twice the span plus three pixels), so it is
- *    not the global maximum in disguise. */
+ *    not the global maximum in disguise;
+ *  - the pyramid of minima (over the non-zero pixels) bounds q from
+ *    below at every point of the box whose pixel is not zero, and is
+ *    local in the same sense (at least the smallest non-zero q over the
+ *    widened box, less the float rounding). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,25 +31,29 @@ static double urand(unsigned long long *s)
     return (double)(*s >> 11) / 9007199254740992.0;
 }
 
-/* The largest q over the pixels whose centres lie within [x0, x1] x [y0,
- * y1] widened by `grow` each side (the torus: taken modulo 1). */
-static double brute(const cfpo_density *d, double x0, double y0, double x1, double y1, double grow)
+/* The largest (lowest: the smallest non-zero) q over the pixels whose
+ * centres lie within [x0, x1] x [y0, y1] widened by `grow` each side (the
+ * torus: taken modulo 1). */
+static double brute(const cfpo_density *d, double x0, double y0, double x1, double y1, double grow, int lowest)
 {
-    double m = 0;
+    double m = lowest ? INFINITY : 0;
     for (int64_t j = 0; j < d->h; j++)
         for (int64_t i = 0; i < d->w; i++) {
             const double cx = (i + 0.5) / (double)d->w, cy = (j + 0.5) / (double)d->h;
             const double ux = cx - (x0 - grow) - floor(cx - (x0 - grow)), uy = cy - (y0 - grow) - floor(cy - (y0 - grow));
-            if (ux <= x1 - x0 + 2 * grow && uy <= y1 - y0 + 2 * grow && sqrt(d->rho[j * d->w + i]) > m)
-                m = sqrt(d->rho[j * d->w + i]);
+            const double q = sqrt(d->rho[j * d->w + i]);
+            if (ux <= x1 - x0 + 2 * grow && uy <= y1 - y0 + 2 * grow && (lowest ? q > 0 && q < m : q > m)) m = q;
         }
     return m;
 }
 
-static void boxes(const cfpo_density *d, const char *what, unsigned long long seed, int count)
+static void boxes(const cfpo_density *d, const char *what, unsigned long long seed, int count, int lowest)
 {
     cfpo_dens_qbound b;
-    if (cfpo_dens_qbound_build(&b, d) != 0) { CHECK(0, "%s: out of memory", what); return; }
+    if ((lowest ? cfpo_dens_qbound_build_min(&b, d) : cfpo_dens_qbound_build(&b, d)) != 0) {
+        CHECK(0, "%s: out of memory", what);
+        return;
+    }
     int below = 0, loose = 0, global = 0;
     const double px = 1.0 / (double)d->w, py = 1.0 / (double)d->h;
     for (int t = 0; t < count; t++) {
@@ -58,16 +66,19 @@ static void boxes(const cfpo_density *d, const char *what, unsigned long long se
         for (int s = 0; s < 50; s++) {
             const double cx = x0 + (s == 0 ? 0 : s == 1 ? sx : urand(&seed) * sx);
             const double cy = y0 + (s == 0 ? 0 : s == 1 ? sy : urand(&seed) * sy);
-            if (cfpo_dens_local_q(d, 0, 0, cx, cy) > q) below++;
+            const double qc = cfpo_dens_local_q(d, 0, 0, cx, cy);
+            if (lowest ? qc > 0 && qc < q : qc > q) below++;
         }
         const double grow = 2 * (sx > sy ? sx : sy) + 8 * (px > py ? px : py);
-        if (q > brute(d, x0, y0, x1, y1, grow) * (1 + 1e-6)) loose++; /* levels above 0 hold floats rounded up */
-        global += q >= sqrt(d->rho_max);
+        const double near = brute(d, x0, y0, x1, y1, grow, lowest); /* levels above 0: floats rounded outward */
+        if (lowest ? q < near * (1 - 1e-6) : q > near * (1 + 1e-6)) loose++;
+        global += lowest ? q <= sqrt(d->rho_min) : q >= sqrt(d->rho_max);
     }
-    CHECK(below == 0, "%s: %d points of a box above its bound", what, below);
-    CHECK(loose == 0, "%s: %d bounds above the largest q near the box", what, loose);
-    CHECK(global < count, "%s: every bound is the global maximum", what);
-    printf("%s: %d boxes, %d of them bounded by the global maximum\n", what, count, global);
+    const char *side = lowest ? "below" : "above", *ext = lowest ? "minimum" : "maximum";
+    CHECK(below == 0, "%s: %d points of a box on the wrong side of its %s bound", what, below, side);
+    CHECK(loose == 0, "%s: %d %s bounds past the extreme q near the box", what, loose, side);
+    CHECK(global < count, "%s: every %s bound is the global %s", what, side, ext);
+    printf("%s: %d boxes, %d of them bounded by the global %s\n", what, count, global, ext);
     cfpo_dens_qbound_free(&b);
 }
 
@@ -86,7 +97,8 @@ int main(void)
         if (cfpo_density_from_values(v, w, h, what, &d, err, sizeof err) != 0) {
             CHECK(0, "%s: %s", what, err);
         } else {
-            boxes(&d, what, seed + (unsigned long long)z, 400);
+            boxes(&d, what, seed + (unsigned long long)z, 400, 0);
+            boxes(&d, what, seed + (unsigned long long)z, 400, 1);
             cfpo_density_free(&d);
         }
         free(v);
@@ -94,7 +106,8 @@ int main(void)
     cfpo_density d;
     char err[256];
     if (cfpo_density_load("cos:a=0.9,res=128", &d, err, sizeof err) == 0) {
-        boxes(&d, "cos a=0.9", seed, 400);
+        boxes(&d, "cos a=0.9", seed, 400, 0);
+        boxes(&d, "cos a=0.9", seed, 400, 1);
         cfpo_density_free(&d);
     } else {
         CHECK(0, "cos: %s", err);

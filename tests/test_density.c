@@ -180,6 +180,27 @@ static void named(void)
     CHECK(refused("swirl", "not an image"), "unknown name refused");
 }
 
+/* cfpo_dens_nn on xy against the O(n^2) pair measure, each point's. */
+static void brute_measure(const cfpo_density *d, const double *xy, size_t n, double *m, const char *what)
+{
+    double b0, b1;
+    cfpo_dens_nn(d, xy, n, m, &b0, &b1);
+    double worst = 0, mn = INFINITY, D = cfpo_delta_bound((double)n);
+    for (size_t i = 0; i < n; i++) {
+        double best = INFINITY;
+        const double qi = sqrt(sqrt(cfpo_density_at(d, xy[2 * i], xy[2 * i + 1])));
+        for (size_t j = 0; j < n; j++) {
+            if (j == i) continue;
+            const double qj = sqrt(sqrt(cfpo_density_at(d, xy[2 * j], xy[2 * j + 1])));
+            const double v = sqrt(cfpo_torus_dist2(xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1])) * qi * qj / D;
+            if (v < best) best = v;
+        }
+        if (fabs(best - m[i]) > worst) worst = fabs(best - m[i]);
+        if (best < mn) mn = best;
+    }
+    CHECK(worst < 1e-12 && fabs(mn - b0) < 1e-12, "%s: each point's measure against brute force: %g", what, worst);
+}
+
 static void measure(void)
 {
     const size_t n = 3000;
@@ -193,22 +214,17 @@ static void measure(void)
     cfpo_dens_nn(&u, xy, n, NULL, &b0, &b1);
     CHECK(fabs(a0 - b0) <= 1e-12 * a0 && fabs(a1 - b1) <= 1e-12 * a1,
           "rho = 1: delta_min %.17g / %.17g, delta_avg %.17g / %.17g", a0, b0, a1, b1);
+    /* each point's measure against brute force: uniform points on the
+     * ramp 1:16, and points that follow Balzer's field (1:256), where a
+     * dense region's points stop their search by the smallest q near
+     * them, not the density's */
     CHECK(cfpo_density_load("ramp:contrast=16,res=64", &d, err, sizeof err) == 0, "%s", err);
-    cfpo_dens_nn(&d, xy, n, m, &b0, &b1);
-    double worst = 0, mn = INFINITY, D = cfpo_delta_bound((double)n);
-    for (size_t i = 0; i < n; i++) {
-        double best = INFINITY;
-        const double qi = sqrt(sqrt(cfpo_density_at(&d, xy[2 * i], xy[2 * i + 1])));
-        for (size_t j = 0; j < n; j++) {
-            if (j == i) continue;
-            const double qj = sqrt(sqrt(cfpo_density_at(&d, xy[2 * j], xy[2 * j + 1])));
-            const double v = sqrt(cfpo_torus_dist2(xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1])) * qi * qj / D;
-            if (v < best) best = v;
-        }
-        if (fabs(best - m[i]) > worst) worst = fabs(best - m[i]);
-        if (best < mn) mn = best;
-    }
-    CHECK(worst < 1e-12 && fabs(mn - b0) < 1e-12, "ramp: each point's measure against brute force: %g", worst);
+    brute_measure(&d, xy, n, m, "ramp");
+    cfpo_density bz;
+    CHECK(cfpo_density_load("balzer", &bz, err, sizeof err) == 0, "%s", err);
+    cfpo_dens_start(&bz, (int64_t)n, 7, xy);
+    brute_measure(&bz, xy, n, m, "balzer, points that follow it");
+    cfpo_density_free(&bz);
     /* the start: exactly n, none on zero pixels, deterministic */
     cfpo_density z;
     double v[16 * 16];

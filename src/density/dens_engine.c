@@ -101,7 +101,7 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     E->dirty = malloc((size_t)(g * g));
     E->tb = calloc((size_t)E->nthreads, sizeof *E->tb);
     if (cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cstart || !E->dirty || !E->tb ||
-        cfpo_dens_qbound_build(&E->qb, d) != 0 ||
+        cfpo_dens_qbound_build(&E->qb, d) != 0 || cfpo_dens_qbound_build_min(&E->qlow, d) != 0 ||
         (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0) : cfpo_dens_start(d, n, o->seed, E->s.xy)) != 0) {
         snprintf(err, errlen, "out of memory for %lld points", (long long)n);
         cfpo_dens_free(E);
@@ -153,7 +153,7 @@ static int fit_cells(cfpo_dens_engine *E)
  * edge), so its measure is at least e (q_i q_min)^(1/2) / Delta. */
 static int measure_own(cfpo_dens_engine *E, double *m)
 {
-    if (cfpo_dens_nn_first(E->d, E->s.xy, (size_t)E->s.loc, (size_t)E->s.own, E->D, m) != 0) return -1;
+    if (cfpo_dens_nn_first(E->d, &E->qlow, E->s.xy, (size_t)E->s.loc, (size_t)E->s.own, E->D, m) != 0) return -1;
     const double lo = sqrt(E->d->rho_min), G = (double)E->g;
     for (int64_t i = 0; i < E->s.own; i++) {
         if (!(E->s.q[i] > 0)) continue;
@@ -370,6 +370,7 @@ void cfpo_dens_free(cfpo_dens_engine *E)
     free(E->tb); free(E->dirty); free(E->cell); free(E->cidx); free(E->cstart); free(E->all);
     cfpo_dens_store_free(&E->s);
     cfpo_dens_qbound_free(&E->qb);
+    cfpo_dens_qbound_free(&E->qlow);
     cfpo_dens_dist_free(E->T);
     free(E);
 }

@@ -31,7 +31,8 @@ typedef struct { /* one thread's buffers */
 
 struct cfpo_dens_engine {
     const cfpo_density *d;
-    cfpo_dens_qbound qb; /* the bound of q over a box, for the solve's prunings */
+    cfpo_dens_qbound qb;   /* the bound of q over a box, for the solve's prunings */
+    cfpo_dens_qbound qlow; /* q's lower bound over a box, for the measure's search */
     int64_t n, g;
     cfpo_options o;
     double D, L, sx, sy;

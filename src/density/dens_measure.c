@@ -1,21 +1,36 @@
 /* dens_measure.c - layer 2: see dens_measure.h. Grid of about 2 points per
  * cell at the mean density; a point looks at rings of cells outward until
- * a ring's distance k L, scaled by (q_i q_min)^(1/2) / Delta (q =
- * sqrt(rho)), reaches its best measure so far (no unvisited point can be nearer in m); once
- * the rings cover the torus every cell has been seen once. */
+ * no unvisited point can be nearer in m: every such point is at least k L
+ * away (k the rings seen), so its d^2 q_j is at least (k L)^2 q_lo with
+ * q_lo the smallest q (= sqrt(rho)) it can have. Beyond R, with R^2 q_min
+ * = the best d^2 q_j so far (q_min the density's smallest non-zero q), no
+ * point can win, so q_lo is the smallest q over the box of half-side R
+ * around the point (a pyramid of minima, dens_qbound.h); the density's
+ * global q_min alone made a point of a dense region beside a sparse one
+ * scan rings until (k L)^2 q_min passed its value, 17% of an iteration at
+ * a million points on the shipped image. The result is the exact minimum,
+ * whatever the rings seen. Once the rings cover the torus every cell has
+ * been seen once. */
 #include "dens_measure.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "dens_qbound.h"
 #include "geom.h"
 #include "omp_compat.h"
 
 static inline double wrapd(double d) { return d - rint(d); }
 
-int cfpo_dens_nn_first(const cfpo_density *d, const double *xy, size_t n, size_t k, double D, double *mm)
+int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, size_t k,
+                       double D, double *mm)
 {
+    cfpo_dens_qbound own;
+    if (!qlow) {
+        if (cfpo_dens_qbound_build_min(&own, d) != 0) return -1;
+        qlow = &own;
+    }
     int64_t g = (int64_t)floor(sqrt((double)n / 2));
     if (g < 1) g = 1;
     if (g > 4096) g = 4096;
@@ -67,19 +82,26 @@ int cfpo_dens_nn_first(const cfpo_density *d, const double *xy, size_t n, size_t
             if (all) break;
             const double reach = (double)k * L;
             if (reach * reach * lo >= best) break;
+            if (k > 0 && best < INFINITY) {
+                const double R = sqrt(best / lo) * (1 + 1e-9) + L; /* past it no point can win */
+                double ql = cfpo_dens_qbound_box(qlow, x - R, y - R, x + R, y + R);
+                if (ql < lo) ql = lo;
+                if (reach * reach * ql >= best * (1 + 1e-9)) break;
+            }
         }
         mm[i] = sqrt(best * ri) / D; /* d (q_i q_j)^(1/2) / Delta */
     }
     rc = 0;
 done:
     free(start); free(fill); free(idx); free(rho); free(cell);
+    if (qlow == &own) cfpo_dens_qbound_free(&own);
     return rc;
 }
 
 int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg)
 {
     double *mm = m ? m : malloc(n * sizeof *mm);
-    if (!mm || cfpo_dens_nn_first(d, xy, n, n, cfpo_delta_bound((double)n), mm) != 0) {
+    if (!mm || cfpo_dens_nn_first(d, NULL, xy, n, n, cfpo_delta_bound((double)n), mm) != 0) {
         if (!m) free(mm);
         return -1;
     }

@@ -15,6 +15,7 @@
 
 #include <stddef.h>
 
+#include "dens_qbound.h"
 #include "density.h"
 
 /* Each point's smallest measure into m (n doubles; may be NULL), and
@@ -24,10 +25,12 @@ int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, d
 
 /* Pieces of it, for a rank that holds part of the set (dens_engine.c):
  * the smallest measure of each of the first k of the n points xy against
- * all n (Delta = D, that of the whole set) into m; 0, or -1 when out of
- * memory. Then delta_min and delta_avg of the n measures m, summed in
+ * all n (Delta = D, that of the whole set) into m, with qlow the pyramid
+ * of minima of d (cfpo_dens_qbound_build_min; NULL: built here); 0, or
+ * -1 when out of memory. Then delta_min and delta_avg of the n measures m, summed in
  * their order. */
-int cfpo_dens_nn_first(const cfpo_density *d, const double *xy, size_t n, size_t k, double D, double *m);
+int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, size_t k,
+                       double D, double *m);
 void cfpo_dens_nn_sum(const double *m, size_t n, double *delta_min, double *delta_avg);
 
 #endif

@@ -1,4 +1,4 @@
-/* dens_qbound.c - layer 2: the pyramid of maxima of q (dens_qbound.h). */
+/* dens_qbound.c - layer 2: the pyramids of maxima and minima of q (dens_qbound.h). */
 #include "dens_qbound.h"
 
 #include <math.h>
@@ -11,15 +11,29 @@ static float up(double v)
     return (double)f < v ? nextafterf(f, INFINITY) : f;
 }
 
-/* Level l's texel (i, j): the max of q over the pixels it covers. */
-static double texel(const cfpo_dens_qbound *b, int l, int64_t i, int64_t j)
+/* A float at most v (v >= 0, or +inf). */
+static float down(double v)
 {
-    return l == 0 ? sqrt(b->d->rho[j * b->w[0] + i]) : (double)b->q[l][j * b->w[l] + i];
+    float f = (float)v;
+    return (double)f > v ? nextafterf(f, 0) : f;
 }
 
-int cfpo_dens_qbound_build(cfpo_dens_qbound *b, const cfpo_density *d)
+/* Level l's texel (i, j): the max (min over the non-zero ones, +inf if
+ * none) of q over the pixels it covers. */
+static double texel(const cfpo_dens_qbound *b, int l, int64_t i, int64_t j)
+{
+    if (l > 0) return (double)b->q[l][j * b->w[l] + i];
+    const double r = b->d->rho[j * b->w[0] + i];
+    return b->lowest && !(r > 0) ? INFINITY : sqrt(r);
+}
+
+/* a better than m in the pyramid's sense */
+static int beats(const cfpo_dens_qbound *b, double a, double m) { return b->lowest ? a < m : a > m; }
+
+static int build(cfpo_dens_qbound *b, const cfpo_density *d, int lowest)
 {
     b->d = d;
+    b->lowest = lowest;
     b->levels = 1;
     b->w[0] = d->w;
     b->h[0] = d->h;
@@ -39,20 +53,24 @@ int cfpo_dens_qbound_build(cfpo_dens_qbound *b, const cfpo_density *d)
         b->levels = l + 1;
         for (int64_t j = 0; j < h; j++)
             for (int64_t i = 0; i < w; i++) {
-                double m = 0;
+                double m = lowest ? INFINITY : 0;
                 for (int64_t dj = 0; dj < 2; dj++)
                     for (int64_t di = 0; di < 2; di++) {
                         const int64_t ii = 2 * i + di, jj = 2 * j + dj;
                         if (ii < pw && jj < ph) {
                             const double v = texel(b, l - 1, ii, jj);
-                            if (v > m) m = v;
+                            if (beats(b, v, m)) m = v;
                         }
                     }
-                b->q[l][j * w + i] = up(m);
+                b->q[l][j * w + i] = lowest ? down(m) : up(m);
             }
     }
     return 0;
 }
+
+int cfpo_dens_qbound_build(cfpo_dens_qbound *b, const cfpo_density *d) { return build(b, d, 0); }
+
+int cfpo_dens_qbound_build_min(cfpo_dens_qbound *b, const cfpo_density *d) { return build(b, d, 1); }
 
 /* The pixel range [a, z] of one axis (n pixels) that [lo, hi] touches,
  * widened by one pixel each side, as at most two ranges inside [0, n). */
@@ -79,17 +97,17 @@ static int ranges(double lo, double hi, int64_t n, int64_t r[2][2])
     return 2;
 }
 
-/* The max over pixels [xa, xz] x [ya, yz] of level 0: the lowest level
- * where each axis's range spans at most two texels. */
+/* The max (min) over pixels [xa, xz] x [ya, yz] of level 0: the lowest
+ * level where each axis's range spans at most two texels. */
 static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya, int64_t yz)
 {
     int l = 0;
     while (l + 1 < b->levels && ((xz >> l) - (xa >> l) > 1 || (yz >> l) - (ya >> l) > 1)) l++;
-    double m = 0;
+    double m = b->lowest ? INFINITY : 0;
     for (int64_t j = ya >> l; j <= yz >> l; j++)
         for (int64_t i = xa >> l; i <= xz >> l; i++) {
             const double v = texel(b, l, i, j);
-            if (v > m) m = v;
+            if (beats(b, v, m)) m = v;
         }
     return m;
 }
@@ -98,11 +116,11 @@ double cfpo_dens_qbound_box(const cfpo_dens_qbound *b, double x0, double y0, dou
 {
     int64_t rx[2][2], ry[2][2];
     const int nx = ranges(x0, x1, b->w[0], rx), ny = ranges(y0, y1, b->h[0], ry);
-    double m = 0;
+    double m = b->lowest ? INFINITY : 0;
     for (int j = 0; j < ny; j++)
         for (int i = 0; i < nx; i++) {
             const double v = rect(b, rx[i][0], rx[i][1], ry[j][0], ry[j][1]);
-            if (v > m) m = v;
+            if (beats(b, v, m)) m = v;
         }
     return m;
 }

@@ -11,7 +11,11 @@
  * evaluates in the box reads one of those pixels (the box is widened by
  * one pixel each side against rounding), so the bound holds bit for bit
  * and the solve's result does not change; only its work does.
- * Owns: the pyramid and its box query. */
+ * The same pyramid of minima (over the non-zero pixels: no point sits on
+ * a zero-density pixel) bounds q from below, for the measure's search
+ * (dens_measure.c): how far a point must look before no unvisited point
+ * can come nearer in the measure.
+ * Owns: the pyramids and their box query. */
 #ifndef CFPO_DENS_QBOUND_H
 #define CFPO_DENS_QBOUND_H
 
@@ -24,16 +28,23 @@
 typedef struct {
     const cfpo_density *d; /* level 0 */
     int levels;
+    int lowest; /* 0: maxima (floats rounded up); 1: minima over the non-zero pixels (rounded down) */
     int64_t w[CFPO_QBOUND_LEVELS], h[CFPO_QBOUND_LEVELS];
-    float *q[CFPO_QBOUND_LEVELS]; /* level l >= 1: w[l] x h[l] texels, row after row, each at least its max */
+    float *q[CFPO_QBOUND_LEVELS]; /* level l >= 1: w[l] x h[l] texels, row after row, each at least its max
+                                     (at most its min) */
 } cfpo_dens_qbound;
 
 /* Builds the pyramid of d (which must outlive it); 0, or -1 when out of
  * memory (nothing held). */
 int cfpo_dens_qbound_build(cfpo_dens_qbound *b, const cfpo_density *d);
 
+/* The pyramid of minima of q over the non-zero pixels (+inf where a
+ * texel covers none); the same ownership and result. */
+int cfpo_dens_qbound_build_min(cfpo_dens_qbound *b, const cfpo_density *d);
+
 /* The largest q over the pixels that the torus points of [x0, x1] x [y0,
- * y1] fall in (x0 <= x1, y0 <= y1, any reals: the box is taken modulo 1). */
+ * y1] fall in (x0 <= x1, y0 <= y1, any reals: the box is taken modulo 1);
+ * for a pyramid of minima, at most the smallest non-zero q there. */
 double cfpo_dens_qbound_box(const cfpo_dens_qbound *b, double x0, double y0, double x1, double y1);
 
 void cfpo_dens_qbound_free(cfpo_dens_qbound *b);
