@@ -31,12 +31,14 @@ typedef struct {
  * against every point), no point outside the block can be nearer in f
  * than the old value (their distance is at least the spot's distance e
  * to the block's edge, their density at least rho_min), and it lies in
- * cell `cell`. Then *cc its bucket and (*x, *y) its place on the torus. */
+ * cell `cell`. Then *cc its bucket and (*x, *y) its place on the torus;
+ * else *viol the block index of a point that is too near, if one is. */
 static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, int p, const scan_limits *m, double thr,
                    double oldf, double ox, double oy, double px, double py, double rc, int64_t cell, int *cc, double *x,
-                   double *y)
+                   double *y, int *viol)
 {
     const int c0 = cfpo_dens_bucket_of(bk, px, py);
+    *viol = -1;
     for (int k = 0;; k++) {
         if (k > 1 && m->qlo > 0) {
             const double e = (double)(k - 1) * m->h;
@@ -49,7 +51,10 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
                 if (j == p) continue;
                 double ex = b->bx[j] - px, ey = b->by[j] - py;
                 if (m->wrap) { ex -= rint(ex); ey -= rint(ey); }
-                if (!((ex * ex + ey * ey) * b->br[j] * rc > thr)) return 0;
+                if (!((ex * ex + ey * ey) * b->br[j] * rc > thr)) {
+                    *viol = j;
+                    return 0;
+                }
             }
     }
     if (!m->wrap) {
@@ -179,6 +184,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (S.y1 > hi) S.y1 = hi;
         double cxp, cyp, fc;
         const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
+    solve:
         if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX))
             continue;
         /* a move must gain more than tol local spacings in the measure
@@ -187,13 +193,13 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
          * passes the same rules, else the candidate */
         const double thr = oldf * (1 + 1e-12), w = CFPO_POLICY_DENSITY_RELAX;
         double rc = 0, x = 0, y = 0;
-        int cc = -1;
+        int cc = -1, viol;
         const double rx = ax + w * (cxp - ax), ry = ay + w * (cyp - ay);
         if (w > 1 && rx >= S.x0 && rx <= S.x1 && ry >= S.y0 && ry <= S.y1) {
             const double rr = cfpo_dens_local_q(E->d, ox, oy, rx, ry);
             const double fr = rr > 0 ? cfpo_dens_value(b->nx, b->ny, b->nr, kk, rr, rx, ry) : -1;
             if (rr > 0 && sqrt(fr) > sqrt(oldf) + gain && fr > thr &&
-                spot_ok(E, b, bk, p, &lim, thr, oldf, ox, oy, rx, ry, rr, cy * g + cx, &cc, &x, &y)) {
+                spot_ok(E, b, bk, p, &lim, thr, oldf, ox, oy, rx, ry, rr, cy * g + cx, &cc, &x, &y, &viol)) {
                 rc = rr;
                 cxp = rx;
                 cyp = ry;
@@ -203,7 +209,21 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
             if (!(sqrt(fc) > sqrt(oldf) + gain && fc > thr)) continue;
             rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
             if (!(rc > 0)) continue;
-            if (!spot_ok(E, b, bk, p, &lim, thr, oldf, ox, oy, cxp, cyp, rc, cy * g + cx, &cc, &x, &y)) continue;
+            if (!spot_ok(E, b, bk, p, &lim, thr, oldf, ox, oy, cxp, cyp, rc, cy * g + cx, &cc, &x, &y, &viol)) {
+                /* a point the solve did not look at is too near the
+                 * candidate (the KMAX nearest in the measure can all lie
+                 * on one side: a sparse point beside a dense edge sees
+                 * only the edge's points and is refused every spot on
+                 * its sparse side): add it and solve again */
+                int listed = viol < 0 || kk >= KMAX + KADD;
+                for (int t = 0; t < kk && !listed; t++) listed = b->nj[t] == viol; /* rounding: no new point */
+                if (listed) continue;
+                double ex = b->bx[viol] - ax, ey = b->by[viol] - ay;
+                if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                b->nx[kk] = ax + ex; b->ny[kk] = ay + ey; b->nr[kk] = b->br[viol];
+                b->nj[kk++] = viol;
+                goto solve;
+            }
         }
         const int64_t id = b->bid[p];
         const double dd = sqrt((cxp - ax) * (cxp - ax) + (cyp - ay) * (cyp - ay)) / ri;

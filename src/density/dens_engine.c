@@ -52,17 +52,17 @@ static int ensure_buffers(cfpo_dens_engine *E, size_t m)
         if (b->cap >= m) continue;
         size_t cap = m + m / 2 + 16;
         free(b->bx); free(b->bid); free(b->scratch); free(b->nj);
-        b->bx = malloc(6 * cap * sizeof *b->bx + 3 * (KMAX + 1) * sizeof *b->bx);
+        b->bx = malloc(6 * cap * sizeof *b->bx + 3 * (KMAX + KADD + 1) * sizeof *b->bx);
         b->bid = malloc(cap * sizeof *b->bid);
-        b->scratch = malloc((KMAX + cfpo_dens_scratch(KMAX)) * sizeof *b->scratch);
-        b->nj = malloc((KMAX + 1) * sizeof *b->nj);
+        b->scratch = malloc((KMAX + cfpo_dens_scratch(KMAX + KADD)) * sizeof *b->scratch);
+        b->nj = malloc((KMAX + KADD + 1) * sizeof *b->nj);
         if (!b->bx || !b->bid || !b->scratch || !b->nj) return -1;
         b->by = b->bx + cap;
         b->br = b->by + cap;
         b->nd = b->br + cap; /* squared distances to the moving point */
-        b->nx = b->bx + 6 * cap; /* nx, ny, nr: KMAX + 1 each */
-        b->ny = b->nx + KMAX + 1;
-        b->nr = b->ny + KMAX + 1;
+        b->nx = b->bx + 6 * cap; /* nx, ny, nr: KMAX + KADD + 1 each */
+        b->ny = b->nx + KMAX + KADD + 1;
+        b->nr = b->ny + KMAX + KADD + 1;
         b->cap = cap;
     }
     return 0;
