@@ -100,8 +100,14 @@ done:
 
 int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg)
 {
+    return cfpo_dens_nn_q(d, NULL, xy, n, m, delta_min, delta_avg);
+}
+
+int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, double *m,
+                   double *delta_min, double *delta_avg)
+{
     double *mm = m ? m : malloc(n * sizeof *mm);
-    if (!mm || cfpo_dens_nn_first(d, NULL, xy, n, n, cfpo_delta_bound((double)n), mm) != 0) {
+    if (!mm || cfpo_dens_nn_first(d, qlow, xy, n, n, cfpo_delta_bound((double)n), mm) != 0) {
         if (!m) free(mm);
         return -1;
     }

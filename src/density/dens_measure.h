@@ -22,6 +22,10 @@
  * delta_min, delta_avg. n >= 2. 0, or -1 when out of memory. The result
  * does not depend on the number of threads. */
 int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg);
+/* The same with qlow, d's pyramid of minima (cfpo_dens_qbound_build_min),
+ * built once by a caller that measures many times (NULL: built here). */
+int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, double *m,
+                   double *delta_min, double *delta_avg);
 
 /* Pieces of it, for a rank that holds part of the set (dens_engine.c):
  * the smallest measure of each of the first k of the n points xy against
