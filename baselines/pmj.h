@@ -20,7 +20,18 @@
  * occupied interval at its first digit. A point is uniform in a valid fine
  * cell of side 2^-k (53 random bits a coordinate). pmj02 draws one such
  * candidate; pmj02bn draws `candidates` of them and keeps the one farthest
- * (periodic distance) from every earlier point (Mitchell's best candidate).
+ * (periodic distance) from every earlier point (Mitchell's best candidate),
+ * in the odd step over both free subquadrants.
+ * A derived fact that bounds what the best candidate can do: the first
+ * 2^(k-1) points hold one point in every elementary interval of area
+ * 2^-(k-1), and two sibling intervals of area 2^-k (halves of one such
+ * interval) hold one old point between them; so inside a subquadrant the
+ * digit tree leaves at most one valid x stratum and one valid y stratum of
+ * width 2^-k, and the candidates differ only inside one cell of side 2^-k
+ * (and, in the odd step, in the subquadrant). `global` instead draws the
+ * candidates from every subquadrant with a valid position (a list of the
+ * subquadrants whose fixed shapes are free, kept as points fill them): not
+ * the paper's order, tried as the widest choice the strata allow.
  * A step that meets a subquadrant with no valid position (a dead end of
  * the random choices) is redone with other random numbers (at most
  * PMJ_RETRIES times; the count is reported).
