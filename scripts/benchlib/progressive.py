@@ -243,5 +243,6 @@ def main(build, name="progressive"):
                                  "Host %s, %d cores; load average after: %s; took %.0f s.\n"
                                  % (socket.gethostname(), os.cpu_count() or 1, load, time.time() - t0)] + out)
     os.rename(work, final)
+    write_figures(final, "# written by scripts/benchlib/progressive.py")  # the data's folder, renamed
     print(f"bench: progressive results in {final} (summary.md, progressive.csv, fig-progressive-*.png)",
           file=sys.stderr)
