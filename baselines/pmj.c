@@ -13,7 +13,6 @@
 static const uint64_t STREAM = 0x504d4a303242ULL; /* "PMJ02B" */
 
 typedef struct {
-    int64_t n;
     int cand;
     uint64_t seed, stream;
     uint64_t *px, *py; /* the points as 53-digit integers */
@@ -53,11 +52,17 @@ static void box_remove(pmj *P, uint64_t id)
 
 static void mark(pmj *P, int64_t j)
 {
-    const int k = P->k, f = P->f;
+    const int k = P->k;
     const uint64_t X = P->px[j] >> (BITS - k), Y = P->py[j] >> (BITS - k);
     for (int a = 0; a <= k; a++) P->occ[cell_index(k, a, X, Y)] = 1;
-    if (!P->global) return;
-    /* the subquadrants inside the cells of the shapes they fix are taken */
+}
+
+/* Global: point j takes the subquadrants inside the cells it occupies of
+ * the shapes a subquadrant fixes. */
+static void take_boxes(pmj *P, int64_t j)
+{
+    const int k = P->k, f = P->f;
+    const uint64_t X = P->px[j] >> (BITS - k), Y = P->py[j] >> (BITS - k);
     for (int a = k - f > 0 ? k - f : 0; a <= f; a++) {
         const uint64_t xa = X >> (k - a), ya = Y >> a;
         for (uint64_t u = 0; u < (uint64_t)1 << (f - a); u++)
@@ -242,6 +247,7 @@ static int place_global(pmj *P, int64_t j)
     P->px[j] = bx;
     P->py[j] = by;
     mark(P, j);
+    take_boxes(P, j);
     if (P->cand > 1) grid_insert(P, j);
     return 0;
 }
@@ -252,11 +258,8 @@ static void start_step(pmj *P, int k, int64_t count)
     P->k = k;
     P->f = (k + 1) / 2;
     memset(P->occ, 0, (size_t)(k + 1) << k);
-    const int global = P->global;
-    P->global = 0;
     for (int64_t j = 0; j < count; j++) mark(P, j);
-    P->global = global;
-    if (global) { /* every subquadrant whose fixed shapes are free */
+    if (P->global) { /* every subquadrant whose fixed shapes are free */
         const int f = P->f;
         P->nbox = 0;
         for (uint64_t id = 0; id < (uint64_t)1 << (2 * f); id++) {
@@ -332,7 +335,7 @@ int pmj_points(int64_t n, uint64_t seed, const pmj_params *prm, double *xy, int 
     }
     int K = 0;
     while (((int64_t)1 << K) < n) K++;
-    pmj P = {.n = n, .cand = candidates, .seed = seed, .global = prm->global};
+    pmj P = {.cand = candidates, .seed = seed, .global = prm->global};
     const size_t side = (size_t)1 << ((K + 1) / 2 + 1);
     P.px = malloc((size_t)n * sizeof *P.px);
     P.py = malloc((size_t)n * sizeof *P.py);
