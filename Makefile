@@ -78,7 +78,7 @@ help:
 	@echo "  make test-sanitize unit tests in an ASan+UBSan build (build-asan/)"
 	@echo "  make fuzz          libFuzzer harnesses, FUZZ_SECONDS each (default 60), in $(FUZZ_BUILD)/"
 	@echo "  make python        the Python package (import cfpo) in a virtual environment $(BUILD)/venv"
-	@echo "  make bench         method comparison and figures (PROFILE=smoke|default|paper|seeds|lowk|density|3d); results/<date>-<host>/"
+	@echo "  make bench         method comparison and figures (PROFILE=smoke|default|paper|seeds|lowk|density|3d|progressive); results/<date>-<host>/"
 	@echo "  make replot        redraw figures and summary.md of RESULTS=results/... (default: newest)"
 	@echo "  make bench-core    core CFPO benchmark, sweeps and convergence (PROFILE=smoke|default)"
 	@echo "  make deps-GROUP    missing Debian packages of GROUP = fuzz, python, bench (with core; all but fuzz with cgal)"

@@ -6,11 +6,11 @@
 #include "bl_method.h"
 
 extern const bl_method bl_dart, bl_bs, bl_bridson, bl_fpo, bl_lfpo, bl_ccvt, bl_ccdt, bl_bnot, bl_white, bl_jitter,
-    bl_sobol, bl_lloyd, bl_gbn, bl_wse;
+    bl_sobol, bl_lloyd, bl_gbn, bl_wse, bl_pmj02bn;
 
 const bl_method *const bl_methods[] = {&bl_dart, &bl_bs, &bl_bridson, &bl_fpo, &bl_lfpo,
                                        &bl_ccvt, &bl_ccdt, &bl_bnot, &bl_white, &bl_jitter,
-                                       &bl_sobol, &bl_lloyd, &bl_gbn, &bl_wse, NULL};
+                                       &bl_sobol, &bl_lloyd, &bl_gbn, &bl_wse, &bl_pmj02bn, NULL};
 
 const bl_method *bl_method_find(const char *name)
 {

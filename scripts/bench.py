@@ -12,7 +12,9 @@ measures are the C tools' own: cfpo, the baselines, cfpo-analyze, cfpo-bench).
   bench.py profile PROFILE                a profile's plan as NAME=VALUE lines
 
 PROFILE: smoke, default (the default), paper, seeds, lowk, density or 3d (the 3-D part
-alone, benchlib/d3.py; smoke and default run a small 3-D part too). Environment: CFPO_RESULTS
+alone, benchlib/d3.py; smoke and default run a small 3-D part too) or progressive (the
+progressive part alone at 2^20 points, CFPO_PROG_N=N another n, benchlib/progressive.py;
+smoke and default run it small). Environment: CFPO_RESULTS
 (results root, default results/), CFPO_BENCH_KEEP=1 (keep the temporary
 folder of a failed run). The modules: scripts/benchlib/.
 """
@@ -38,6 +40,14 @@ def main(argv):
             from benchlib import d3
             try:
                 d3.main(args[0], "3d")
+            except common.Failure as e:
+                print(f"bench: {e}", file=sys.stderr)
+                return e.code
+            return 0
+        if cmd == "run" and len(args) == 2 and args[1] == "progressive":  # alone (benchlib/progressive.py)
+            from benchlib import progressive
+            try:
+                progressive.main(args[0], "progressive")
             except common.Failure as e:
                 print(f"bench: {e}", file=sys.stderr)
                 return e.code

@@ -348,7 +348,7 @@ png_ok() { # PNG signature, then an IHDR chunk with a non-zero width and height
   h=$(head -c 24 "$1" | tail -c 4 | od -An -tu1 | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }')
   [ "$w" -ge 400 ] && [ "$h" -ge 300 ] && [ "$(stat -c %s "$1")" -gt 10000 ]
 }
-FIGS="evolution comparison lowfreq convergence runtime speedup integration time-to-quality stipple 3d-slabs 3d"
+FIGS="evolution comparison lowfreq convergence runtime speedup integration time-to-quality stipple 3d-slabs 3d progressive-prefixes progressive-sets"
 for f in $FIGS; do
   check "fig-$f.png is a PNG image" png_ok "$R/fig-$f.png"
   check "summary.md shows fig-$f.png" grep -q "](fig-$f.png)" "$R/summary.md"
@@ -360,10 +360,20 @@ n3=$(ls "$B"/cfpo3d "$B"/cfpo3d-white "$B"/cfpo3d-jitter "$B"/cfpo3d-dart "$B"/c
 check "d3.csv: one row per 3-D method ($n3), each measured" \
   holds '[ "$(tail -n +2 "$R/d3.csv" | wc -l)" -eq "$n3" ] && ! tail -n +2 "$R/d3.csv" | grep -q ",None,\|,,"'
 check "summary.md: the 3-D table" grep -q "^| sample elimination | 0\.6" "$R/summary.md"
+# the progressive part (scripts/benchlib/progressive.py): one row per method, each
+# measured; every method's prefixes and drawn points; its tables in summary.md
+check "progressive.csv: five rows, each measured" \
+  holds '[ "$(tail -n +3 "$R/progressive.csv" | wc -l)" -eq 5 ] && ! tail -n +3 "$R/progressive.csv" | grep -q ",,"'
+for k in cfpo wse pmj02bn sobol ordered; do
+  check "progressive: $k's prefixes and points" \
+    holds '[ "$(grep -c " dyadic " "$R/data/progressive/$k-s1.prefixes.txt")" -ge 5 ] && [ "$(wc -l <"$R/data/progressive/$k-s1.xy")" -eq 2048 ]'
+done
+check "summary.md: the progressive tables" \
+  holds 'grep -q "^## Progressive sets" "$R/summary.md" && grep -q "^| PMJ02BN (seed 1) | 0\.[0-9]" "$R/summary.md"'
 # cfpo-analyze writes pcf.txt: the g(r) figure, a panel per comparison group
 npcf=$(find "$R/data/analysis" -path '*/comparison-*/pcf.txt' | wc -l)
 check "the comparison's analyses hold pcf.txt" [ "$npcf" -ge 2 ]
-check "no other PNG than the figures, fig-pcf.png among them" [ "$(find "$R" -name '*.png' | wc -l)" -eq 12 ] && png_ok "$R/fig-pcf.png"
+check "no other PNG than the figures, fig-pcf.png among them" [ "$(find "$R" -name '*.png' | wc -l)" -eq 14 ] && png_ok "$R/fig-pcf.png"
 check "fig-pcf: one panel per comparison group with pcf.txt" [ "$(grep -c "^GRP\[" "$R/plotdata/fig-pcf.vars.gp")" -eq "$npcf" ]
 check "the low-frequency panel draws every method of the comparison" \
   [ "$(grep -c "^GRP\[[0-9]*\] = 'comparison-" "$R/plotdata/fig-lowfreq.vars.gp")" -eq "$N_COMP" ]

@@ -177,5 +177,19 @@ expect 1 "^cfpo-dart: saturated: placed [0-9]+ of 2000 points at radius r = [0-9
 expect 0 "" "$B/cfpo-dart" -n 1234 -q -o "$T/d.txt"
 [ "$(grep -vc '^#' "$T/d.txt")" = 1234 ] && ok || bad "cfpo-dart -n 1234 wrote $(grep -vc '^#' "$T/d.txt") points"
 
+# PMJ02BN: its options, SUMMARY names, and bad input (one line, no file).
+P="$B/cfpo-pmj02bn"
+expect 2 "^cfpo-pmj02bn: --candidates: '0' is not a whole number" "$P" -n 300 --candidates 0 -o "$T/pm0.npy"
+[ -e "$T/pm0.npy" ] && bad "cfpo-pmj02bn --candidates 0 left an output file" || ok
+expect 2 "^cfpo-pmj02bn: -n: 'x' is not" "$P" -n x
+for o in "" "--candidates 1" "--global" "--candidates 1 --global"; do
+  expect 0 "" "$P" -n 1000 -q -s 3 $o -o "$T/pm.npy"
+  want=pmj02bn; [[ $o == *"--candidates 1"* ]] && want=pmj02; [[ $o == *global* ]] && want=$want-global
+  grep -q "^SUMMARY method=$want " "$T/out" && ok || bad "cfpo-pmj02bn $o: $(cat "$T/out")"
+done
+expect 0 "" "$P" -n 1000 -q -s 3 -o "$T/pm1.txt"
+expect 0 "" "$P" -n 1000 -q -s 3 --candidates 1 -o "$T/pm2.txt"
+cmp -s "$T/pm1.txt" "$T/pm2.txt" && bad "cfpo-pmj02bn: --candidates 1 changes nothing" || ok
+
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

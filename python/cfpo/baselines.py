@@ -4,7 +4,7 @@ dart, bs, bridson: Poisson-disk samplers (cfpo-dart, cfpo-bs,
 cfpo-bridson) returning an (m, 2) float64 array (for bs and bridson m is
 about n: the maximal set at the radius n gives). fpo, lfpo, ccvt, ccdt,
 bnot, lloyd, gbn: iterative methods (cfpo-fpo, cfpo-lfpo, cfpo-ccvt,
-cfpo-ccdt, cfpo-bnot, cfpo-lloyd, cfpo-gbn), and white, jitter, sobol, wse:
+cfpo-ccdt, cfpo-bnot, cfpo-lloyd, cfpo-gbn), and white, jitter, sobol, wse, pmj02bn:
 direct samplers run the same way (0 iterations), returning a cfpo.Result, with the commands' stop rules
 (convergence by tol, target_min, target_avg, time_limit, max_iter), a
 progress callable that stops the run by returning True, and each
@@ -227,6 +227,11 @@ def wse(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None,
     return _iterative("wse", **locals())
 
 
+def pmj02bn(n, *, seed=1, tol=None, max_iter=None, target_min=None, target_avg=None, time_limit=None,
+            candidates=None, global_candidates=None, progress=None):
+    return _iterative("pmj02bn", **locals())
+
+
 white.__doc__ = ("White noise: n independent uniform points (cfpo-white); direct (0 iterations).\n"
                  + _options_doc("white") + _ITER_DOC)
 jitter.__doc__ = ("Jittered sampling: one uniform point in each of n strata, round(sqrt(n)) rows of\n"
@@ -239,6 +244,10 @@ wse.__doc__ = ("Weighted sample elimination (Yuksel 2015) on the periodic unit s
                "    ratio * n white-noise candidates eliminated to n; progressive=True: the order in\n"
                "    which every prefix n / 2^k is the set left at that stage. Direct (0 iterations).\n"
                + _options_doc("wse") + _ITER_DOC)
+pmj02bn.__doc__ = ("Progressive multi-jittered (0,2) sequence with blue noise (Christensen, Kensler,\n"
+                   "    Kilpatrick 2018) on the unit square (cfpo-pmj02bn): every prefix of 2^k points a\n"
+                   "    (0,k,2)-net, rows in sequence order; candidates=1: pmj02. Direct (0 iterations).\n"
+                   + _options_doc("pmj02bn") + _ITER_DOC)
 lloyd.__doc__ = ("Lloyd's algorithm towards a centroidal Voronoi tessellation on the torus\n"
                  "    (cfpo-lloyd); converged when no site moves tol * L, or after iterations (100).\n" + _options_doc("lloyd") + _ITER_DOC)
 gbn.__doc__ = ("Gaussian blue noise (Ahmed, Ren, Wonka 2022) as the authors' toroidal code runs it\n"

@@ -141,6 +141,10 @@ B = cfpo.baselines
      lambda: B.wse(300, seed=4, progressive=True), lambda: B.wse(300, seed=4)),
     ("cfpo-wse", ["-n", 300, "--seed", 4, "--ratio", 3, "--alpha", 6, "--no-weight-limit"],
      lambda: B.wse(300, seed=4, ratio=3, alpha=6, weight_limit=False), lambda: B.wse(300, seed=4)),
+    ("cfpo-pmj02bn", ["-n", 300, "--seed", 4, "--candidates", 1],
+     lambda: B.pmj02bn(300, seed=4, candidates=1), lambda: B.pmj02bn(300, seed=4)),
+    ("cfpo-pmj02bn", ["-n", 300, "--seed", 4, "--global"],
+     lambda: B.pmj02bn(300, seed=4, global_candidates=True), lambda: B.pmj02bn(300, seed=4)),
 ])
 def test_baseline_options_same_bytes(tmp_path, command, name, args, call, plain):
     out = command(name, *args, "-o", "c.npy").stdout

@@ -297,6 +297,8 @@ def replot(R=None):
                 os.remove(f"{R}/{f}")
     from . import d3  # the 3-D part's two figures, where the folder has d3.csv
     figs += d3.write_figures(R, WRITTEN)
+    from . import progressive  # the progressive part's two figures, where the folder has progressive.csv
+    figs += progressive.write_figures(R, WRITTEN)
     for f in os.listdir(P):
         if f.startswith("ttq-") and f.endswith(".dat"):
             os.remove(f"{P}/{f}")

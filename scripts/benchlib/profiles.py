@@ -223,8 +223,8 @@ _MODEL = dict(paper=(230, 0.5, 1250, 1.1e-6), adaptive=(116, 0.5, 1250, 1.1e-6),
               ccvt=(330, 0, 5000, 1.5e-5), ccdt=(120, 0.1, 5000, 1.5e-5), bnot=(20, 0, 20, 1.05e-5),
               lloyd=(100, 0, 100, 8.5e-6), gbn=(1000, 0, 1000, 3.4e-6),
               hyperuniform=(110, 0, 110, 1.3e-6))
-# the direct samplers (white, jitter, sobol, wse) as the Poisson-disk ones: s a point
-_PD = dict(dart=8e-6, bs=1.5e-6, bridson=5e-6, white=1e-7, jitter=1e-7, sobol=2e-7, wse=4e-5)
+# the direct samplers (white, jitter, sobol, wse, pmj02bn) as the Poisson-disk ones: s a point
+_PD = dict(dart=8e-6, bs=1.5e-6, bridson=5e-6, white=1e-7, jitter=1e-7, sobol=2e-7, wse=4e-5, pmj02bn=3e-5)
 
 
 def estimate(key, n, threads, maxiter):

@@ -428,6 +428,8 @@ class Bench:
         stipple.run(self, p)
         from . import d3  # the 3-D part (small in smoke and default)
         d3.run(self, p)
+        from . import progressive  # the progressive part (small in smoke and default)
+        progressive.run(self, p)
         quality = [QUALITY_COLUMNS]
         for q, (run, out) in enumerate(ttq_sets, 1):
             self.progress(N, f"final-set analysis {q} of {len(ttq_sets)} (run {run})", 1, 1, 0)

@@ -292,6 +292,9 @@ def text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ=(), figs=(), dens=(
     if "3d" in figs:
         from .d3 import section
         section(p, F.R)
+    if "progressive-prefixes" in figs:
+        from .progressive import section
+        section(p, F.R)
     return "\n".join(out) + "\n"
 
 
