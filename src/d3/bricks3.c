@@ -47,8 +47,9 @@ int cfpo3_bricks_init(cfpo3_bricks *B, int g, int P, int rank, char *err, size_t
     }
     if (best[0] == 0) {
         snprintf(err, errlen, "%d ranks cannot cut the %dx%dx%d grid into bricks of at least 3 cells a side "
-                 "(px py pz = %d, each at most %d; at most %lld ranks for this n): use fewer ranks or more points",
-                 P, g, g, g, P, s, (long long)cfpo3_bricks_max(g));
+                 "(the rank count must be px py pz with each factor at most %d: at most %lld rank%s): use fewer "
+                 "ranks or more points", P, g, g, g, s, (long long)cfpo3_bricks_max(g),
+                 cfpo3_bricks_max(g) == 1 ? "" : "s");
         return -1;
     }
     B->g = g, B->P = P, B->rank = rank;

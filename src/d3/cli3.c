@@ -196,6 +196,14 @@ static int parse(cmdline *c, int argc, char **argv)
     if (c->n_given && c->n < cfpo3_grid_min_n())
         cli_usage_error(prog, "n = %lld is too small: at least %lld points are needed in 3-D",
                         (long long)c->n, (long long)cfpo3_grid_min_n());
+    cfpo3_grid G;
+    char gerr[512];
+    if (c->n_given && !c->dry && cfpo3_grid_choose(c->n, &G, gerr, sizeof gerr) == 0) { /* bricks for this many ranks */
+        cfpo3_bricks B;
+        if (cfpo3_bricks_init(&B, G.g, comm_size(), comm_rank(), gerr, sizeof gerr) != 0)
+            cli_usage_error(prog, "%s", gerr);
+        cfpo3_bricks_free(&B);
+    }
     for (int i = 0; i < c->nout; i++) {
         if (p3_format_of(c->out[i]) == P3F_UNKNOWN)
             cli_usage_error(prog, "%s: unknown output format (use " P3_EXTENSIONS ")", c->out[i]);
