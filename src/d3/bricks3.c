@@ -61,7 +61,7 @@ int cfpo3_bricks_init(cfpo3_bricks *B, int g, int P, int rank, char *err, size_t
             snprintf(err, errlen, "out of memory");
             return -1;
         }
-        for (int k = 0; k <= B->p[a]; k++) B->lo[a][k] = 3 * (int)((int64_t)k * s / B->p[a]);
+        for (int k = 0; k <= B->p[a]; k++) B->lo[a][k] = (int)((int64_t)k * g / B->p[a]);
     }
     cfpo3_bricks_runs(B, rank, B->me);
     /* neighbours: runs within one of ours on every axis (cyclically) */

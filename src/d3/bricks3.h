@@ -2,10 +2,11 @@
  * the cut of the g x g x g cells into one brick per rank (docs/mpi.md,
  * "Three dimensions").
  *
- * Each axis's g / 3 slabs of three cells are cut into p_a runs of nearly
- * equal length (run k holds slabs [k s / p_a, (k + 1) s / p_a), s = g / 3),
- * px py pz = P, so a brick is at least 3 cells a side and holds cells of
- * all 27 colours. The factors are the ones with the fewest halo cells a
+ * Each axis's g cells are cut into p_a runs of nearly equal length (run k
+ * holds cells [k g / p_a, (k + 1) g / p_a)), px py pz = P with each p_a at
+ * most g / 3, so a brick is at least 3 cells a side and holds cells of all
+ * 27 colours (not the same number of each when a side is not a multiple of
+ * 3). The factors are the ones with the fewest halo cells a
  * brick (ties: more cuts along z, then y). A rank's region is its brick
  * and the one layer of cells around it (across the wrap): every 3x3x3
  * block of a cell of the brick lies in the region. Bricks whose regions

@@ -251,14 +251,20 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
     int64_t moved = 0, solved = 0;
     double max_move = 0.0;
     int fail = 0;
-    /* this rank's brick: corner lo, w[a] / 3 cells of each colour a side */
+    /* this rank's brick: cells [lo, hi) along each axis */
     const cfpo3_bricks *B = &e->B;
-    const int lo[3] = {B->lo[0][B->me[0]], B->lo[1][B->me[1]], B->lo[2][B->me[2]]};
-    const int nx = (B->lo[0][B->me[0] + 1] - lo[0]) / 3, ny = (B->lo[1][B->me[1] + 1] - lo[1]) / 3,
-              nz = (B->lo[2][B->me[2] + 1] - lo[2]) / 3, per = nx * ny * nz;
+    int lo[3], hi[3];
+    for (int ax = 0; ax < 3; ax++) lo[ax] = B->lo[ax][B->me[ax]], hi[ax] = B->lo[ax][B->me[ax] + 1];
     const int nth = e->o.threads > 0 ? e->o.threads : omp_get_max_threads();
     for (int colour = 0; colour < 27; colour++) {
-        const int a = colour % 3, b = (colour / 3) % 3, cz = colour / 9;
+        const int col[3] = {colour % 3, (colour / 3) % 3, colour / 9};
+        /* the brick's cells of this colour: first[ax] + 3 t, t < cnt[ax] */
+        int first[3], cnt[3];
+        for (int ax = 0; ax < 3; ax++) {
+            first[ax] = lo[ax] + ((col[ax] - lo[ax]) % 3 + 3) % 3;
+            cnt[ax] = first[ax] < hi[ax] ? (hi[ax] - first[ax] + 2) / 3 : 0;
+        }
+        const int nx = cnt[0], ny = cnt[1], per = cnt[0] * cnt[1] * cnt[2];
         const uint64_t ph = ++e->phase;
         int crossed = 0;
         const double tc = omp_get_wtime();
@@ -269,8 +275,8 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
             memset(&sc, 0, sizeof sc);
 #pragma omp for schedule(dynamic, 8)
             for (int q = 0; q < per; q++) {
-                const int ci = lo[0] + a + 3 * (q % nx), cj = lo[1] + b + 3 * ((q / nx) % ny),
-                          ck = lo[2] + cz + 3 * (q / (nx * ny));
+                const int ci = first[0] + 3 * (q % nx), cj = first[1] + 3 * ((q / nx) % ny),
+                          ck = first[2] + 3 * (q / (nx * ny));
                 cell_result r = {0, 0, 0.0, 0, 0};
                 solve_cell(e, ci, cj, ck, emargin, force, ph, w, &sc, &r);
                 moved += r.moved;
