@@ -8,7 +8,12 @@
  * Y(x); a point with t >= 1.5 L stays. A move is taken only when the new
  * spot is farther than t from every point of the block (checked by brute
  * force on the block, whatever the solver says), so delta(X) never falls
- * and the sorted nearest-neighbour distances rise with every move. */
+ * and the sorted nearest-neighbour distances rise with every move.
+ *
+ * On several ranks (engine3_dist.h) a rank solves its brick's cells of
+ * each colour, sends the phase's moves to its neighbours before the next
+ * colour, and migrates points at a new grid shift; the counts and maxima
+ * are reduced over ranks. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
