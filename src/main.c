@@ -70,7 +70,7 @@ static void usage(void)
            "                       ends by itself (docs/method.md, \"Density\")\n"
            "  -q, --quiet          no progress line\n"
            "      --dim D          2 (default) or 3: with 3 the 3-D engine on the unit\n"
-           "                       3-torus, one rank (cfpo --dim 3 --help; docs/cli.md)\n"
+           "                       3-torus, one brick a rank (cfpo --dim 3 --help; docs/cli.md)\n"
            "      --progressive    one set whose every prefix of base * 2^k points is blue\n"
            "                       noise: built level by level, earlier levels held fixed;\n"
            "                       output in prefix order (one rank; docs/cli.md)\n"
@@ -564,12 +564,10 @@ static int take_dim(int *argc, char **argv)
     return dim;
 }
 
-/* cfpo --dim 3: the 3-D front end (src/d3/cli3.h), on one rank. */
+/* cfpo --dim 3: the 3-D front end (src/d3/cli3.h); under mpirun one
+ * brick of the grid per rank. */
 static int run_3d(int argc, char **argv)
 {
-    if (comm_size() > 1)
-        cli_usage_error(prog, "--dim 3 runs on one rank (this run has %d; MPI bricks in 3-D are not built yet): "
-                        "use threads (-t)", comm_size());
     int rc = cfpo3_cli_main(prog, argc, argv);
     comm_finalize();
     return rc;

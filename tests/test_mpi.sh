@@ -137,7 +137,7 @@ expect_err 2 "not a positive whole number" 2 -n abc
 expect_err 2 "tiles too small" 5 -n 100 -o x.npy
 expect_err 2 "use at most 9 ranks" 11 -n 100
 expect_err 2 "does not give one tile" 2 -n $N --tiles 3x1
-expect_err 2 "--dim 3 runs on one rank" 2 --dim 3 -n 324 -o x.npy
+expect_err 2 "cannot cut the 6x6x6 grid" 3 --dim 3 -n 324 -o x.npy
 expect_err 2 "text output needs one rank" 2 -n $N -o x.txt
 expect_err 2 "the checkpoint is for" 2 --resume ck.bin --seed 9
 head -c 1000 ck.bin >trunc.bin

@@ -3,7 +3,11 @@
  * "Three dimensions"). Parses the options, opens the 3-D engine behind the
  * one engine interface (engine3_ops.h) and runs it through the one run
  * loop (stop rules, progress line, checkpoints), then writes the point
- * files (points3.h) and the SUMMARY and BOX3D lines. */
+ * files (points3.h) and the SUMMARY and BOX3D lines. Under mpirun every
+ * rank runs this; the engine cuts the grid into bricks (engine3_dist.h),
+ * rank 0 alone prints, traces and writes the files (of the set gathered
+ * in id order), and every failure is agreed so that the job reports it
+ * once and every rank exits alike. */
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -11,8 +15,10 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "bricks3.h"
 #include "cli.h"
 #include "cli3.h"
+#include "comm.h"
 #include "engine3.h"
 #include "engine3_ops.h"
 #include "omp_compat.h"
@@ -75,6 +81,8 @@ static void usage(void)
            "      --trace FILE     one line an iteration: iteration delta_min delta_avg moved solved max_disp seconds\n"
            "      --dry-run        print the grid and memory and exit\n"
            "  -q, --quiet          no progress line\n"
+           "Under mpirun the grid is cut into one brick per rank (bricks of at least 3 cells a side);\n"
+           "the output and checkpoints are the same bytes for any rank and thread count.\n"
            "  -h, --help, -V, --version\n",
            prog, strcmp(prog, "cfpo") == 0 ? " --dim 3" : "", (long long)cfpo3_grid_min_n(), MAX_OUT, CFPO_DEFAULT_MAX_ITER, CFPO3_DEFAULT_TOL);
 }
@@ -170,7 +178,7 @@ static int parse(cmdline *c, int argc, char **argv)
                                 optarg);
             break;
         case 2000: case 2001: case 2002: case 2003:
-            cli_usage_error(prog, "--%s does not apply in 3-D (the 3-D engine runs the uniform torus on one rank)",
+            cli_usage_error(prog, "--%s does not apply in 3-D (the 3-D engine runs the uniform torus; under mpirun its rank count is mpirun's)",
                             two_d_only[ch - 2000]);
         case 'h': usage(); return 1;
         case 'V': printf("%s %s (3-D engine)\n", prog, CFPO_VERSION); return 1;
@@ -188,6 +196,14 @@ static int parse(cmdline *c, int argc, char **argv)
     if (c->n_given && c->n < cfpo3_grid_min_n())
         cli_usage_error(prog, "n = %lld is too small: at least %lld points are needed in 3-D",
                         (long long)c->n, (long long)cfpo3_grid_min_n());
+    cfpo3_grid G;
+    char gerr[512];
+    if (c->n_given && !c->dry && cfpo3_grid_choose(c->n, &G, gerr, sizeof gerr) == 0) { /* bricks for this many ranks */
+        cfpo3_bricks B;
+        if (cfpo3_bricks_init(&B, G.g, comm_size(), comm_rank(), gerr, sizeof gerr) != 0)
+            cli_usage_error(prog, "%s", gerr);
+        cfpo3_bricks_free(&B);
+    }
     for (int i = 0; i < c->nout; i++) {
         if (p3_format_of(c->out[i]) == P3F_UNKNOWN)
             cli_usage_error(prog, "%s: unknown output format (use " P3_EXTENSIONS ")", c->out[i]);
@@ -202,10 +218,72 @@ static int parse(cmdline *c, int argc, char **argv)
     return 0;
 }
 
-typedef struct {
-    cli_progress prog;
-    double t0;
-} runctx;
+/* Rank 0's verdict bad (with its message in err) becomes every rank's:
+ * the job fails once, every rank alike. */
+static void agree_or_fail(int64_t bad, char *err, size_t errlen)
+{
+    comm_bcast(&bad, sizeof bad, 0);
+    if (!bad) return;
+    comm_bcast(err, errlen, 0);
+    cli_fail(prog, "%s", err);
+}
+
+/* Writes the output files: the set gathered in id order, rank 0 writes.
+ * 0, or -1 with err (the same on every rank). */
+static int write_outputs(const cmdline *c, cfpo3_engine *e, char *err, size_t errlen)
+{
+    const int64_t n = cfpo3_n(e);
+    double *all = NULL;
+    const double *pts = cfpo3_points(e);
+    if (comm_size() > 1) {
+        all = malloc(sizeof(double) * 3 * (size_t)n);
+        if (comm_all(all != NULL) == 0 || cfpo3_gather(e, all) != 0) {
+            free(all);
+            snprintf(err, errlen, "out of memory gathering the points");
+            return -1;
+        }
+        pts = all;
+    }
+    int64_t bad = 0;
+    if (comm_rank() == 0)
+        for (int i = 0; i < c->nout && !bad; i++)
+            if (p3_write(c->out[i], pts, (size_t)n, c->box, err, errlen) != 0) bad = 1;
+    free(all);
+    comm_bcast(&bad, sizeof bad, 0);
+    if (bad) comm_bcast(err, errlen, 0);
+    return bad ? -1 : 0;
+}
+
+/* The RANKS line (several ranks; collective): into line on rank 0. */
+static void ranks_line(cfpo_run_engine *R, char *line, size_t len)
+{
+    line[0] = 0;
+    cfpo3_engine *e = R->E;
+    cfpo_engine_timing tm;
+    R->ops->timing(R->E, &tm);
+    int b[3];
+    double v[5];
+    int64_t ph0;
+    cfpo3_rank_timers(e, v, &ph0, b);
+    const int P = comm_size();
+    int64_t *own = calloc((size_t)P, sizeof *own);
+    if (comm_all(own != NULL) == 0) {
+        free(own);
+        return;
+    }
+    comm_allgather_i64(cfpo3_own_points(e), own);
+    if (comm_rank() == 0) {
+        const double ph = tm.phases > 0 ? (double)tm.phases : 1;
+        size_t k = (size_t)snprintf(line, len, "RANKS ranks=%d bricks=%dx%dx%d points=", P, b[0], b[1], b[2]);
+        for (int r = 0; r < P && k < len; r++) k += (size_t)snprintf(line + k, len - k, "%s%lld", r ? "," : "", (long long)own[r]);
+        if (k < len) snprintf(line + k, len - k, " phases=%lld compute_s=%.3f/%.3f/%.3f migrate_s=%.3f/%.3f/%.3f halo_s=%.3f/%.3f/%.3f "
+               "halo_bytes_per_phase=%.0f/%.0f/%.0f migrate_bytes_per_phase=%.0f/%.0f/%.0f\n",
+               (long long)tm.phases, tm.compute[0], tm.compute[1], tm.compute[2], tm.migrate[0], tm.migrate[1],
+               tm.migrate[2], tm.halo[0], tm.halo[1], tm.halo[2], tm.halo_bytes[0] / ph, tm.halo_bytes[1] / ph,
+               tm.halo_bytes[2] / ph, tm.migrate_bytes[0] / ph, tm.migrate_bytes[1] / ph, tm.migrate_bytes[2] / ph);
+    }
+    free(own);
+}
 
 int cfpo3_cli_main(const char *name, int argc, char **argv)
 {
@@ -219,22 +297,31 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
         cfpo3_grid G;
         if (cfpo3_grid_choose(n, &G, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
         const double bpp = cfpo3_bytes_per_point(n);
-        printf("%s dry run: n=%lld grid=%d^3 cells=%lld points_per_cell=%.3f L/Delta3=%.4f "
-               "bytes_per_point=%.1f total_bytes=%.0f\n",
-               prog, (long long)n, G.g, (long long)G.g * G.g * G.g, (double)n / ((double)G.g * G.g * G.g),
-               G.L / G.delta3, bpp, bpp * (double)n);
+        if (comm_rank() == 0)
+            printf("%s dry run: n=%lld grid=%d^3 cells=%lld points_per_cell=%.3f L/Delta3=%.4f "
+                   "bytes_per_point=%.1f total_bytes=%.0f max_ranks=%lld\n",
+                   prog, (long long)n, G.g, (long long)G.g * G.g * G.g, (double)n / ((double)G.g * G.g * G.g),
+                   G.L / G.delta3, bpp, bpp * (double)n, (long long)cfpo3_bricks_max(G.g));
         return 0;
     }
-    for (int i = 0; i < c.nout; i++)
-        if (p3_probe(c.out[i], err, sizeof err) != 0) cli_fail(prog, "%s", err);
-    if (c.ckpt) { /* the checkpoint's folder must take a file */
-        char *tmp = NULL;
-        const int fd = safefile_create(c.ckpt, &tmp, err, sizeof err);
-        if (fd < 0) cli_fail(prog, "%s", err);
-        close(fd);
-        unlink(tmp);
-        free(tmp);
+    /* the files can be written (rank 0 writes them; every rank learns) */
+    int64_t bad = 0;
+    if (comm_rank() == 0) {
+        for (int i = 0; i < c.nout && !bad; i++)
+            if (p3_probe(c.out[i], err, sizeof err) != 0) bad = 1;
+        if (c.ckpt && !bad) { /* the checkpoint's folder must take a file */
+            char *tmp = NULL;
+            const int fd = safefile_create(c.ckpt, &tmp, err, sizeof err);
+            if (fd < 0) {
+                bad = 1;
+            } else {
+                close(fd);
+                unlink(tmp);
+                free(tmp);
+            }
+        }
     }
+    agree_or_fail(bad, err, sizeof err);
     const double t0 = cli_now();
     cfpo3_engine *e = NULL;
     if (c.resume) {
@@ -260,15 +347,18 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
         if (!e) cli_fail(prog, "%s", err);
     }
     const int64_t n = cfpo3_n(e);
+    const int root = comm_rank() == 0;
     cli_atomic tr = {0};
-    if (c.trace) {
-        if (cli_atomic_open(&tr, c.trace, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-        fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds\n");
+    if (c.trace) { /* rank 0's */
+        bad = root && cli_atomic_open(&tr, c.trace, err, sizeof err) != 0;
+        agree_or_fail(bad, err, sizeof err);
+        if (root) fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds\n");
     }
+    const int tracing = c.trace && root;
     cli_progress pr;
-    cli_progress_init(&pr, c.quiet);
+    cli_progress_init(&pr, c.quiet || !root);
     /* the one run loop (src/engine/run_loop.h) over the engine's table */
-    run_ctx ctx = {.pr = &pr, .trace = c.trace ? tr.f : NULL, .t0 = t0};
+    run_ctx ctx = {.pr = &pr, .trace = tracing ? tr.f : NULL, .t0 = t0};
     cfpo_options lo;
     memset(&lo, 0, sizeof lo);
     lo.max_iter = c.max_iter;
@@ -283,33 +373,45 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     runsignal_restore();
     cli_progress_end(&pr);
     if (rc != 0) {
-        if (c.trace) cli_atomic_abort(&tr);
+        if (tracing) cli_atomic_abort(&tr);
         cli_fail(prog, "%s", err);
     }
     const int stop = res.stop, converged = res.converged;
     if (stop == CFPO_STOP_SIGNAL) {
-        if (c.trace) cli_atomic_abort(&tr);
+        if (tracing) cli_atomic_abort(&tr);
     } else {
-        if (c.trace && cli_atomic_commit(&tr, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-        for (int i = 0; i < c.nout; i++)
-            if (p3_write(c.out[i], cfpo3_points(e), (size_t)n, c.box, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        if (write_outputs(&c, e, err, sizeof err) != 0) {
+            if (tracing) cli_atomic_abort(&tr);
+            cli_fail(prog, "%s", err);
+        }
+        bad = tracing && cli_atomic_commit(&tr, err, sizeof err) != 0;
+        agree_or_fail(bad, err, sizeof err);
+    }
+    long work[3];
+    cfpo3_work(e, &work[0], &work[1], &work[2]);
+    int64_t wsum[3] = {work[0], work[1], work[2]};
+    comm_sum_i64(wsum, 3);
+    char rline[4096];
+    if (comm_size() > 1) ranks_line(&R, rline, sizeof rline);
+    if (!root) {
+        cfpo3_free(e);
+        return stop == CFPO_STOP_SIGNAL ? 3 : 0;
     }
     double dmin, davg;
     cfpo3_measure(e, &dmin, &davg);
     const cfpo3_options *o = cfpo3_options_of(e);
     cli_summary s = {"cfpo3d", /* the 3-D engine, under either command */ o->relax ? "adaptive" : "adaptive-norelax", n, o->seed,
-                     o->threads > 0 ? o->threads : omp_get_max_threads(), 1, cfpo3_iterations(e),
+                     o->threads > 0 ? o->threads : omp_get_max_threads(), comm_size(), cfpo3_iterations(e),
                      cli_now() - t0, dmin, davg, stop == CFPO_STOP_CONVERGED ? 1 : converged ? 1 : 0,
                      cli_peak_rss(), cfpo_stop_name(stop)};
     cli_print_summary(stdout, &s);
     const double d = dmin * cfpo3_delta_bound((double)n);
     printf("BOX3D side=%.17g delta_min_box=%.9g packing_fraction=%.6f\n", c.box, d * c.box,
            M_PI / 6.0 * (double)n * d * d * d);
-    if (getenv("CFPO3D_WORK")) { /* the solver's work, for measuring */
-        long cells, tests, cuts;
-        cfpo3_work(e, &cells, &tests, &cuts);
-        printf("WORK3D cells=%ld tests=%ld cuts=%ld\n", cells, tests, cuts);
-    }
+    if (comm_size() > 1) printf("%s", rline);
+    if (getenv("CFPO3D_WORK")) /* the solver's work over every rank, for measuring */
+        printf("WORK3D cells=%lld tests=%lld cuts=%lld\n", (long long)wsum[0], (long long)wsum[1],
+               (long long)wsum[2]);
     if (stop == CFPO_STOP_SIGNAL)
         fprintf(stderr, "%s: stopped by a signal at iteration %d; checkpoint %s written, no output; continue "
                 "with --resume %s\n", prog, res.iterations, c.ckpt, c.ckpt);

@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine3_dist.h"
 #include "engine3_impl.h"
-#include "nn3.h"
 #include "rng.h"
 #include "solve3.h"
 
@@ -47,7 +47,7 @@ cfpo3_engine *cfpo3_alloc(int64_t n, const cfpo3_options *o, char *err, size_t e
     const size_t g3 = (size_t)G.g * G.g * G.g;
     e->pos = malloc(sizeof(double) * 3 * (size_t)n);
     e->prev = malloc(sizeof(double) * 3 * (size_t)n);
-    e->cellof = malloc(sizeof(int32_t) * (size_t)n);
+    e->cellof = calloc((size_t)n, sizeof(int32_t)); /* every point held until the first assign */
     e->cids = malloc(sizeof(int64_t) * (size_t)n);
     e->cstart = calloc(g3 + 1, sizeof(int64_t));
     e->changed = calloc(g3, sizeof(uint64_t));
@@ -58,6 +58,10 @@ cfpo3_engine *cfpo3_alloc(int64_t n, const cfpo3_options *o, char *err, size_t e
         !e->needm) {
         cfpo3_free(e);
         goto oom;
+    }
+    if (cfpo3_dist_init(e, err, errlen) != 0) {
+        cfpo3_free(e);
+        return NULL;
     }
     return e;
 oom:
@@ -70,6 +74,7 @@ void cfpo3_free(cfpo3_engine *e)
     if (!e) return;
     free(e->pos), free(e->prev), free(e->cellof), free(e->cids), free(e->cstart);
     free(e->changed), free(e->solvedat), free(e->needm), free(e->fill);
+    cfpo3_dist_free(e);
     free(e);
 }
 
@@ -88,31 +93,25 @@ void cfpo3_rebucket(cfpo3_engine *e)
     const int g = e->G.g;
     const size_t g3 = (size_t)g * g * g;
     memset(e->cstart, 0, sizeof(int64_t) * (g3 + 1));
-    for (int64_t i = 0; i < e->n; i++) e->cstart[e->cellof[i] + 1]++;
+    for (int64_t i = 0; i < e->n; i++)
+        if (e->cellof[i] >= 0) e->cstart[e->cellof[i] + 1]++;
     for (size_t c = 0; c < g3; c++) e->cstart[c + 1] += e->cstart[c];
     /* fill by id: the ids of a cell come out increasing */
     int64_t *fill = e->fill;
     memcpy(fill, e->cstart, sizeof(int64_t) * g3);
-    for (int64_t i = 0; i < e->n; i++) e->cids[fill[e->cellof[i]]++] = i;
+    for (int64_t i = 0; i < e->n; i++)
+        if (e->cellof[i] >= 0) e->cids[fill[e->cellof[i]]++] = i;
 }
 
 void cfpo3_assign(cfpo3_engine *e)
 {
-    const int g = e->G.g;
-#pragma omp parallel for schedule(static)
-    for (int64_t i = 0; i < e->n; i++) {
-        const double *x = e->pos + 3 * i;
-        const int a = cfpo3_cell1(cfpo3_u(x[0], e->shift[0]), g);
-        const int b = cfpo3_cell1(cfpo3_u(x[1], e->shift[1]), g);
-        const int c = cfpo3_cell1(cfpo3_u(x[2], e->shift[2]), g);
-        e->cellof[i] = (int32_t)((c * g + b) * g + a);
-    }
+    cfpo3_dist_cells(e);
     cfpo3_rebucket(e);
 }
 
 int cfpo3_remeasure(cfpo3_engine *e)
 {
-    return cfpo3_nn_stats(e->pos, (size_t)e->n, NULL, &e->dmin, &e->davg);
+    return cfpo3_dist_measure(e);
 }
 
 static cfpo3_engine *finish_create(cfpo3_engine *e, char *err, size_t errlen)
@@ -152,14 +151,25 @@ cfpo3_engine *cfpo3_create_given(const double *xyz, int64_t n, const cfpo3_optio
     memcpy(e->pos, xyz, sizeof(double) * 3 * (size_t)n);
     e = finish_create(e, err, errlen);
     if (!e) return NULL;
+    /* the first crowded cell: each rank reads the cells it holds, and the
+     * answers are merged (every cell is held whole by some rank) */
     const int64_t g3 = (int64_t)e->G.g * e->G.g * e->G.g;
+    int64_t v[2] = {0, 0}; /* g3 - the first crowded cell, its count */
     for (int64_t c = 0; c < g3; c++)
         if (e->cstart[c + 1] - e->cstart[c] > CFPO3_INIT_MAX_CELL) {
-            snprintf(err, errlen, "a cell of the %dx%dx%d grid holds %lld of the given points (at most %d)", e->G.g,
-                     e->G.g, e->G.g, (long long)(e->cstart[c + 1] - e->cstart[c]), CFPO3_INIT_MAX_CELL);
-            cfpo3_free(e);
-            return NULL;
+            v[0] = g3 - c;
+            break;
         }
+    comm_max_i64(v, 1);
+    if (v[0] > 0) {
+        const int64_t c = g3 - v[0];
+        v[1] = e->cstart[c + 1] - e->cstart[c];
+        comm_max_i64(v + 1, 1);
+        snprintf(err, errlen, "a cell of the %dx%dx%d grid holds %lld of the given points (at most %d)", e->G.g,
+                 e->G.g, e->G.g, (long long)v[1], CFPO3_INIT_MAX_CELL);
+        cfpo3_free(e);
+        return NULL;
+    }
     return e;
 }
 
@@ -180,4 +190,14 @@ void cfpo3_work(const cfpo3_engine *e, long *cells, long *tests, long *cuts)
     *cells = e->count.cells;
     *tests = e->count.tests;
     *cuts = e->count.cuts;
+}
+
+int cfpo3_gather(const cfpo3_engine *e, double *all) { return cfpo3_dist_gather(e, all); }
+int64_t cfpo3_own_points(const cfpo3_engine *e) { return cfpo3_dist_own(e); }
+
+void cfpo3_rank_timers(const cfpo3_engine *e, double v[5], int64_t *phases, int bricks[3])
+{
+    v[0] = e->t_compute, v[1] = e->t_halo, v[2] = e->t_migrate, v[3] = e->b_halo, v[4] = e->b_migrate;
+    *phases = e->phases;
+    for (int a = 0; a < 3; a++) bricks[a] = e->B.p[a];
 }

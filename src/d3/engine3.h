@@ -60,8 +60,19 @@ int cfpo3_iterations(const cfpo3_engine *e);
 int64_t cfpo3_n(const cfpo3_engine *e);
 const cfpo3_grid *cfpo3_grid_of(const cfpo3_engine *e);
 const cfpo3_options *cfpo3_options_of(const cfpo3_engine *e);
-/* The points by id, 3n doubles in [0,1): valid until the next step. */
+/* The points by id, 3n doubles in [0,1): valid until the next step. On
+ * one rank only (several ranks hold their region's points: use
+ * cfpo3_gather). */
 const double *cfpo3_points(const cfpo3_engine *e);
+/* Collective: every point by id into all (3n doubles), on every rank. 0,
+ * or -1 (memory, on any rank). */
+int cfpo3_gather(const cfpo3_engine *e, double *all);
+/* This rank's timers so far: v = compute, halo and migration seconds,
+ * halo and migration bytes sent; the colour phases run; bricks[3] the
+ * cut's runs along x, y, z. */
+void cfpo3_rank_timers(const cfpo3_engine *e, double v[5], int64_t *phases, int bricks[3]);
+/* The points of this rank's brick. */
+int64_t cfpo3_own_points(const cfpo3_engine *e);
 /* The local solver's work so far, summed over solves: Voronoi cells
  * clipped, bisector planes tested, cuts made (for measuring). */
 void cfpo3_work(const cfpo3_engine *e, long *cells, long *tests, long *cuts);

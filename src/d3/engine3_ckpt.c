@@ -18,13 +18,16 @@
  * seed and the iteration), delta(X) (of the points); the skip stamps start
  * empty, which solves every cell once and changes nothing (a skipped cell
  * is one whose answer is "stay"). So a resumed run gives the bytes of an
- * uninterrupted one. */
+ * uninterrupted one, on any rank count: under several ranks the set is
+ * gathered in id order and rank 0 writes the file, so its bytes do not
+ * depend on the rank count either. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <zlib.h>
 
+#include "engine3_dist.h"
 #include "engine3_impl.h"
 #include "safefile.h"
 #include "tmpguard.h"
@@ -82,7 +85,8 @@ uint32_t cfpo3_checkpoint_crc(const unsigned char *buf, size_t len)
     return (uint32_t)crc32(c, buf + HDR, (uInt)(len - HDR));
 }
 
-int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, size_t errlen)
+/* Writes the file from pos (3n doubles by id): one process. */
+static int write_file(const cfpo3_engine *e, const double *pos, const char *path, char *err, size_t errlen)
 {
     unsigned char h[HDR];
     memset(h, 0, sizeof h);
@@ -94,13 +98,13 @@ int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, s
     put64(h + 32, (uint64_t)e->iter);
     memcpy(h + 40, &e->o.tol, 8);
     put32(h + 48, (uint32_t)((e->o.relax ? 1 : 0) | (e->o.shift ? 2 : 0) | (e->o.skip ? 4 : 0)));
-    put32(h + 60, crc_of(h, e->pos, e->n));
+    put32(h + 60, crc_of(h, pos, e->n));
     safefile f;
     if (safefile_open(&f, path, "wb", err, errlen) != 0) return -1;
     tmpguard_file(f.tmp);
     char *tmp = strdup(f.tmp);
     int ok = fwrite(h, 1, HDR, f.f) == HDR &&
-             fwrite(e->pos, sizeof(double), 3 * (size_t)e->n, f.f) == 3 * (size_t)e->n;
+             fwrite(pos, sizeof(double), 3 * (size_t)e->n, f.f) == 3 * (size_t)e->n;
     int rc;
     if (!ok) {
         snprintf(err, errlen, "%s: write failed", path);
@@ -112,6 +116,24 @@ int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, s
     if (tmp) tmpguard_forget(tmp);
     free(tmp);
     return rc;
+}
+
+int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, size_t errlen)
+{
+    if (!e->dist) return write_file(e, e->pos, path, err, errlen);
+    /* several ranks: the set gathered, rank 0 writes, every rank learns how it went */
+    double *all = malloc(sizeof(double) * 3 * (size_t)e->n);
+    if (comm_all(all != NULL) == 0 || cfpo3_dist_gather(e, all) != 0) {
+        free(all);
+        snprintf(err, errlen, "%s: out of memory gathering the points", path);
+        return -1;
+    }
+    int64_t rc = 0;
+    if (comm_rank() == 0) rc = write_file(e, all, path, err, errlen);
+    free(all);
+    comm_bcast(&rc, sizeof rc, 0);
+    if (rc != 0) comm_bcast(err, errlen, 0);
+    return rc == 0 ? 0 : -1;
 }
 
 cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const char *name, int threads,

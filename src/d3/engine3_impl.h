@@ -9,12 +9,34 @@
  * the last phase that moved a point in or out of (or inside) c, solvedat[c]
  * the phase c was last solved in, needm[c] the largest L - t of its points
  * then; c is solved again when a cell of its block changed since, or the
- * margin fell below needm[c], or the grid moved. */
+ * margin fell below needm[c], or the grid moved.
+ *
+ * Several ranks (engine3_dist.h): B is the cut into bricks; a rank solves
+ * its brick's cells and holds its region's points only (cellof -1 for the
+ * others, whose pos and prev are stale); the stamps are current for the
+ * region. On one rank the brick is the whole grid and every point is
+ * held. */
 #ifndef CFPO_ENGINE3_IMPL_H
 #define CFPO_ENGINE3_IMPL_H
 
+#include "bricks3.h"
+#include "comm.h"
 #include "engine3.h"
 #include "solve3.h"
+
+/* A point's move in a colour phase, sent to the neighbours that hold
+ * either cell (engine3_dist.c). */
+typedef struct {
+    int64_t id;
+    int32_t from, to; /* cells before and after */
+    double x[3];      /* the new position */
+    double p0[3];     /* the position at the iteration's start */
+} cfpo3_move;
+
+typedef struct {
+    cfpo3_move *v;
+    int64_t len, cap;
+} cfpo3_move_list;
 
 struct cfpo3_engine {
     cfpo3_grid G;
@@ -33,6 +55,16 @@ struct cfpo3_engine {
     uint64_t phase;        /* phases run (the stamps' clock) */
     double dmin, davg;     /* the current set, over Delta3 */
     cfpo3_solve_count count; /* the solver's work so far (for measuring) */
+    /* several ranks (engine3_dist.c) */
+    cfpo3_bricks B;
+    int dist;              /* 1 when P > 1 */
+    cfpo3_move_list mv;    /* this phase's moves on this rank */
+    comm_msg *msg;         /* one a neighbour */
+    void *sendbuf[26];
+    size_t sendcap[26];
+    double t_compute, t_halo, t_migrate; /* seconds on this rank */
+    double b_halo, b_migrate;            /* bytes this rank sent */
+    int64_t phases;
 };
 
 /* u of coordinate x under shift s: wrapped into [0,1). */

@@ -28,10 +28,27 @@ static int checkpoint(void *E, const char *path, int iteration, int converged, c
     return cfpo3_checkpoint_write(E, path, err, errlen);
 }
 
+/* min, mean, max of v over ranks into out[3] */
+static void spread(double v, double out[3])
+{
+    out[0] = out[1] = out[2] = v;
+    comm_min_d(out, 1);
+    comm_sum_d(out + 1, 1);
+    comm_max_d(out + 2, 1);
+    out[1] /= comm_size();
+}
+
 static void timing(void *E, cfpo_engine_timing *t)
 {
-    (void)E;
+    double v[5];
+    int b[3];
     memset(t, 0, sizeof *t);
+    cfpo3_rank_timers(E, v, &t->phases, b);
+    spread(v[0], t->compute);
+    spread(v[1], t->halo);
+    spread(v[2], t->migrate);
+    spread(v[3], t->halo_bytes);
+    spread(v[4], t->migrate_bytes);
 }
 
 static int64_t cells_per_side(const void *E) { return cfpo3_grid_of(E)->g; }

@@ -8,12 +8,18 @@
  * Y(x); a point with t >= 1.5 L stays. A move is taken only when the new
  * spot is farther than t from every point of the block (checked by brute
  * force on the block, whatever the solver says), so delta(X) never falls
- * and the sorted nearest-neighbour distances rise with every move. */
+ * and the sorted nearest-neighbour distances rise with every move.
+ *
+ * On several ranks (engine3_dist.h) a rank solves its brick's cells of
+ * each colour, sends the phase's moves to its neighbours before the next
+ * colour, and migrates points at a new grid shift; the counts and maxima
+ * are reduced over ranks. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "engine3_dist.h"
 #include "engine3_impl.h"
 #include "omp_compat.h"
 #include "solve3.h"
@@ -36,6 +42,7 @@ typedef struct {
     int cap;
     cfpo3_poly poly[2];
     cfpo3_solve_count cnt;
+    cfpo3_move_list mv; /* several ranks: this thread's moves */
 } scratch3;
 
 static int scratch_grow(scratch3 *w, int need)
@@ -209,6 +216,7 @@ static void solve_cell(cfpo3_engine *e, int ci, int cj, int ck, double emargin, 
         if (mv > r->max_move) r->max_move = mv;
         s->y[3 * p] = nu[0], s->y[3 * p + 1] = nu[1], s->y[3 * p + 2] = nu[2];
         const int32_t nc = (int32_t)(((int64_t)cell[2] * g + cell[1]) * g + cell[0]);
+        if (e->dist && cfpo3_dist_note(&s->mv, id, (int32_t)c, nc, xp, e->prev + 3 * id) != 0) r->fail = 1;
         e->changed[c] = ph;
         if (nc != e->cellof[id]) {
             e->changed[nc] = ph;
@@ -231,7 +239,12 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
     cfpo3_shift_for(e, k, s);
     if (s[0] != e->shift[0] || s[1] != e->shift[1] || s[2] != e->shift[2]) {
         memcpy(e->shift, s, sizeof s);
-        cfpo3_assign(e);
+        if (e->dist) { /* points go to the bricks of their new cells */
+            if (cfpo3_dist_migrate(e) != 0) return -1;
+            cfpo3_rebucket(e);
+        } else {
+            cfpo3_assign(e);
+        }
         force = 1;
     }
     memcpy(e->prev, e->pos, sizeof(double) * 3 * (size_t)e->n);
@@ -243,12 +256,23 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
     int64_t moved = 0, solved = 0;
     double max_move = 0.0;
     int fail = 0;
-    const int g3c = g / 3, per = g3c * g3c * g3c;
+    /* this rank's brick: cells [lo, hi) along each axis */
+    const cfpo3_bricks *B = &e->B;
+    int lo[3], hi[3];
+    for (int ax = 0; ax < 3; ax++) lo[ax] = B->lo[ax][B->me[ax]], hi[ax] = B->lo[ax][B->me[ax] + 1];
     const int nth = e->o.threads > 0 ? e->o.threads : omp_get_max_threads();
     for (int colour = 0; colour < 27; colour++) {
-        const int a = colour % 3, b = (colour / 3) % 3, cz = colour / 9;
+        const int col[3] = {colour % 3, (colour / 3) % 3, colour / 9};
+        /* the brick's cells of this colour: first[ax] + 3 t, t < cnt[ax] */
+        int first[3], cnt[3];
+        for (int ax = 0; ax < 3; ax++) {
+            first[ax] = lo[ax] + ((col[ax] - lo[ax]) % 3 + 3) % 3;
+            cnt[ax] = first[ax] < hi[ax] ? (hi[ax] - first[ax] + 2) / 3 : 0;
+        }
+        const int nx = cnt[0], ny = cnt[1], per = cnt[0] * cnt[1] * cnt[2];
         const uint64_t ph = ++e->phase;
         int crossed = 0;
+        const double tc = omp_get_wtime();
 #pragma omp parallel num_threads(nth) reduction(+ : moved, solved) reduction(max : max_move) \
     reduction(| : crossed, fail)
         {
@@ -256,7 +280,8 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
             memset(&sc, 0, sizeof sc);
 #pragma omp for schedule(dynamic, 8)
             for (int q = 0; q < per; q++) {
-                const int ci = a + 3 * (q % g3c), cj = b + 3 * ((q / g3c) % g3c), ck = cz + 3 * (q / (g3c * g3c));
+                const int ci = first[0] + 3 * (q % nx), cj = first[1] + 3 * ((q / nx) % ny),
+                          ck = first[2] + 3 * (q / (nx * ny));
                 cell_result r = {0, 0, 0.0, 0, 0};
                 solve_cell(e, ci, cj, ck, emargin, force, ph, w, &sc, &r);
                 moved += r.moved;
@@ -265,7 +290,14 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
                 crossed |= r.crossed;
                 fail |= r.fail;
             }
-            free(sc.y), free(sc.id), free(sc.rel), free(sc.ord), free(sc.key);
+            if (sc.mv.len > 0) {
+#pragma omp critical(cfpo3_moves)
+                for (int64_t q = 0; q < sc.mv.len && !fail; q++) {
+                    const cfpo3_move *m = &sc.mv.v[q];
+                    if (cfpo3_dist_note(&e->mv, m->id, m->from, m->to, m->x, m->p0) != 0) fail = 1;
+                }
+            }
+            free(sc.y), free(sc.id), free(sc.rel), free(sc.ord), free(sc.key), free(sc.mv.v);
 #pragma omp atomic
             e->count.cells += sc.cnt.cells;
 #pragma omp atomic
@@ -273,12 +305,21 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
 #pragma omp atomic
             e->count.cuts += sc.cnt.cuts;
         }
-        if (fail) return -1;
+        e->t_compute += omp_get_wtime() - tc;
+        e->phases++;
+        if (e->dist) {
+            if (comm_all(!fail) == 0 || cfpo3_dist_halo(e, ph, &crossed) != 0) return -1;
+        } else if (fail) {
+            return -1;
+        }
         if (crossed) cfpo3_rebucket(e);
     }
     double max_disp = 0.0;
 #pragma omp parallel for num_threads(nth) reduction(max : max_disp) schedule(static)
     for (int64_t i = 0; i < e->n; i++) {
+        if (e->cellof[i] < 0) continue;
+        const int64_t c = e->cellof[i];
+        if (!cfpo3_bricks_mine(B, (int)(c % g), (int)((c / g) % g), (int)(c / ((int64_t)g * g)))) continue;
         double d2 = 0.0;
         for (int a = 0; a < 3; a++) {
             double d = e->pos[3 * i + a] - e->prev[3 * i + a];
@@ -289,6 +330,11 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
         if (d2 > max_disp) max_disp = d2;
     }
     max_disp = sqrt(max_disp) / L;
+    int64_t counts[2] = {moved, solved};
+    double maxes[2] = {max_disp, max_move};
+    comm_sum_i64(counts, 2);
+    comm_max_d(maxes, 2);
+    moved = counts[0], solved = counts[1], max_disp = maxes[0], max_move = maxes[1];
     if (cfpo3_remeasure(e) != 0) return -1;
     e->iter = k;
     memset(st, 0, sizeof *st);
@@ -301,5 +347,6 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
     st->max_move = max_move;
     st->converged = cfpo_net_converged(moved, max_disp, e->o.tol);
     st->seconds = omp_get_wtime() - t0;
+    comm_max_d(&st->seconds, 1);
     return 0;
 }
