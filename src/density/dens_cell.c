@@ -120,7 +120,15 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
          * million points on the image) saw only the dense side's points
          * and never moved */
         int kk = 0, fx, nx_, fy, ny_;
-        const double R = sqrt(T / qlo);
+        double R = sqrt(T / qlo);
+        if (ra > 2 * qlo) {
+            /* a point of a dense part of a high-contrast block: a winner
+             * within R has q_j at least the smallest q over the box of
+             * half-side R around the point (dens_qbound.h), so the reach
+             * shrinks to what that q allows; the same neighbours */
+            const double ql = cfpo_dens_qbound_box(&E->qlow, ox + ax - R, oy + ay - R, ox + ax + R, oy + ay + R);
+            if (ql > qlo) R = sqrt(T / ql) * BOUND_SAFE;
+        }
         cfpo_dens_span(bk, ax - R, ax + R, bk->x0, &fx, &nx_);
         cfpo_dens_span(bk, ay - R, ay + R, bk->y0, &fy, &ny_);
         for (int iy = 0; iy < ny_; iy++) {
