@@ -8,8 +8,9 @@
  *
  * Build: cc -O2 -fopenmp -o imprint scripts/imprint.c -lm
  * Use:   imprint FILE.npy G [3]   (3: also the colours' period
- *        (0, g/3), (0, 2g/3) and the x ones; G: cfpo's cells a side, its SUMMARY's
- *        cells_per_side)
+ *        (0, g/3), (0, 2g/3) and the x ones, and the cells' diagonals
+ *        (g, g), (-g, g) over the ring of |k| = g sqrt 2; G: cfpo's cells
+ *        a side, its SUMMARY's cells_per_side)
  * Prints one line: n g and, per vector, P, ring mean and their ratio. */
 #include <math.h>
 #include <stdint.h>
@@ -108,6 +109,10 @@ int main(int argc, char **argv)
         const double m1 = ring_mean(p, n, g1), m2 = ring_mean(p, n, g2);
         printf(" P(0,g/3)/ring=%.1f P(0,2g/3)/ring=%.1f P(g/3,0)/ring=%.1f P(2g/3,0)/ring=%.1f",
                power(p, n, 0, g1) / m1, power(p, n, 0, g2) / m2, power(p, n, g1, 0) / m1, power(p, n, g2, 0) / m2);
+        /* the cells' diagonals: the grid's offset is the same on both
+         * axes, so its walk cannot turn a print at (-g, g) */
+        const double md = ring_mean(p, n, (int)lround(g * sqrt(2.0)));
+        printf(" P(g,g)/ring=%.1f P(-g,g)/ring=%.1f", power(p, n, g, g) / md, power(p, n, -g, g) / md);
     }
     printf("\n");
     free(p);
