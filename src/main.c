@@ -538,32 +538,6 @@ static void report(const cmdline *c, cfpo_run_engine *R, const cfpo_result *res,
     free(own);
 }
 
-/* --dim D (or --dim=D), taken out of argv (the rest keeps its order, up
- * to a "--"): 2 (also without the option) or 3; anything else is a usage
- * error. */
-static int take_dim(int *argc, char **argv)
-{
-    int dim = 2, k = 1, i = 1;
-    for (; i < *argc && strcmp(argv[i], "--") != 0; i++) {
-        const char *v = NULL;
-        if (strcmp(argv[i], "--dim") == 0) {
-            if (i + 1 >= *argc) cli_usage_error(prog, "option '--dim' needs a value");
-            v = argv[++i];
-        } else if (strncmp(argv[i], "--dim=", 6) == 0) v = argv[i] + 6;
-        if (!v) {
-            argv[k++] = argv[i];
-            continue;
-        }
-        if (strcmp(v, "2") != 0 && strcmp(v, "3") != 0)
-            cli_usage_error(prog, "--dim: '%s' is not 2 or 3 (the dimension of the torus)", v);
-        dim = v[0] - '0';
-    }
-    for (; i < *argc; i++) argv[k++] = argv[i];
-    argv[k] = NULL;
-    *argc = k;
-    return dim;
-}
-
 /* cfpo --dim 3: the 3-D front end (src/d3/cli3.h); under mpirun one
  * brick of the grid per rank. */
 static int run_3d(int argc, char **argv)
@@ -577,7 +551,7 @@ int main(int argc, char **argv)
 {
     comm_init(&argc, &argv);
     cli_set_exit(comm_rank() != 0, comm_finalize);
-    if (take_dim(&argc, argv) == 3) return run_3d(argc, argv);
+    if (cfpo_cli_take_dim(prog, &argc, argv) == 3) return run_3d(argc, argv);
     if (!cfpo_solver_name()) cli_usage_error(prog, "CFPO_SOLVER: bad value '%s' (plain, avx2, avx512 or auto)", getenv("CFPO_SOLVER"));
     cmdline c = {0};
     parse(argc, argv, &c);

@@ -418,3 +418,29 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     cfpo3_free(e);
     return stop == CFPO_STOP_SIGNAL ? 3 : 0;
 }
+
+/* --dim D (or --dim=D), taken out of argv (the rest keeps its order, up
+ * to a "--"): 2 (also without the option) or 3; anything else is a usage
+ * error. */
+int cfpo_cli_take_dim(const char *prog, int *argc, char **argv)
+{
+    int dim = 2, k = 1, i = 1;
+    for (; i < *argc && strcmp(argv[i], "--") != 0; i++) {
+        const char *v = NULL;
+        if (strcmp(argv[i], "--dim") == 0) {
+            if (i + 1 >= *argc) cli_usage_error(prog, "option '--dim' needs a value");
+            v = argv[++i];
+        } else if (strncmp(argv[i], "--dim=", 6) == 0) v = argv[i] + 6;
+        if (!v) {
+            argv[k++] = argv[i];
+            continue;
+        }
+        if (strcmp(v, "2") != 0 && strcmp(v, "3") != 0)
+            cli_usage_error(prog, "--dim: '%s' is not 2 or 3 (the dimension of the torus)", v);
+        dim = v[0] - '0';
+    }
+    for (; i < *argc; i++) argv[k++] = argv[i];
+    argv[k] = NULL;
+    *argc = k;
+    return dim;
+}

@@ -7,8 +7,13 @@
 /* Runs the 3-D command line argv (argv[0] the program, no --dim option)
  * as the command `name` (the prefix of its error lines). Returns the exit
  * status (0, or 3 after a signal with a checkpoint); usage errors and
- * failures print one line and exit (2 and 1) through cli.h. One process:
- * the caller refuses several MPI ranks. */
+ * failures print one line and exit (2 and 1) through cli.h. Under mpirun
+ * each rank runs it: one brick of the grid per rank (docs/mpi.md). */
 int cfpo3_cli_main(const char *name, int argc, char **argv);
+
+/* `cfpo`'s --dim D (or --dim=D), taken out of argv (the rest keeps its
+ * order, up to a "--"): 2 (also without the option) or 3; anything else
+ * is a usage error of the command prog. */
+int cfpo_cli_take_dim(const char *prog, int *argc, char **argv);
 
 #endif
