@@ -36,12 +36,16 @@ def lattice(kind, m):
 
 @pytest.fixture(scope="module")
 def set3():
-    """A partly optimised set (some order, some disorder) and a white-noise one."""
+    """A partly optimised set, a white-noise one, and a jittered FCC lattice
+    whose half x < 1/2 is white noise (some crystal-like points, not all)."""
+    rng = np.random.default_rng(5)
+    half = (lattice("fcc", 5) + rng.normal(0, 0.003, (500, 3))) % 1.0
+    half[half[:, 0] < 0.5] = rng.random((int((half[:, 0] < 0.5).sum()), 3)) * [0.5, 1, 1]
     return {"cfpo": cfpo.sample(600, dim=3, seed=4, max_iter=6),
-            "white": np.random.default_rng(11).random((500, 3))}
+            "white": np.random.default_rng(11).random((500, 3)), "half": half}
 
 
-@pytest.mark.parametrize("name", ["cfpo", "white"])
+@pytest.mark.parametrize("name", ["cfpo", "white", "half"])
 def test_matches_command_defaults(build, tmp_path, set3, name):
     pts = set3[name]
     np.save(tmp_path / "p.npy", pts)
@@ -53,6 +57,8 @@ def test_matches_command_defaults(build, tmp_path, set3, name):
     b = analysis.bond_order(pts)
     assert f"{b.q6_global:.6f}" == s["q6_global"] and f"{b.q6_local:.6f}" == s["q6_local"]
     assert str(b.crystal_like) == s["crystal_like"] and f"{b.crystal_fraction:.6f}" == s["crystal_fraction"]
+    if name == "half":
+        assert 0.2 < b.crystal_fraction < 0.8
     assert f"{b.w6:.6f}" == s["w6"] and f"{b.w6_local:.6f}" == s["w6_local"]
     sp = analysis.spectrum(pts)
     assert isinstance(sp, analysis.Spectrum3) and str(sp.K) == s["kmax"]
