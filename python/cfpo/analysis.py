@@ -1,6 +1,9 @@
 """Analysis of point sets on the unit torus: the numbers of cfpo-analyze.
 
-Every function takes points as an (n, 2) array in [0, 1)^2. Any real
+Every function takes points as an (n, 2) array in [0, 1)^2. deltas,
+spectrum, pcf, structure and certify also take an (n, 3) array in
+[0, 1)^3 and then give cfpo3d-analyze's numbers (the 3-D measures,
+cfpo._analysis3); bond_order (Q6, W6, crystal-like points) is 3-D only. Any real
 numeric dtype and any memory layout is accepted and converted to a
 C-contiguous float64 array (one copy only when needed); complex, boolean,
 object and string arrays raise TypeError saying how to convert. Wrong
@@ -12,6 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import _analysis3
 from . import _args
 from . import _core
 
@@ -19,12 +23,33 @@ CERT_TOL = 1e-3  # analysis/certify.h AN_CERT_TOL
 KMAX = 4096      # analysis/power.h AN_KMAX
 
 
+def _is3(points):
+    """True for an (n, 3) set (the 3-D measures); ValueError for (n, d)
+    with d other than 2 and 3."""
+    try:
+        shape = np.shape(points)
+    except (ValueError, TypeError):
+        return False  # as_points says why
+    if len(shape) == 2 and shape[1] not in (2, 3):
+        raise ValueError(f"points: expected an (n, 2) or (n, 3) array of points, got shape {shape}")
+    return len(shape) == 2 and shape[1] == 3
+
+
+def _not_in_3d(**given):
+    """ValueError when a 2-D-only argument is given for an (n, 3) set."""
+    for k, v in given.items():
+        if v is not None:
+            raise ValueError(f"{k}: does not apply to a 3-D set (n, 3)")
+
+
 @dataclass
 class Deltas:
     """delta_min, delta_avg: the smallest and the mean nearest-neighbour
     distance over Delta(n) = sqrt(2 / (sqrt(3) n)); nn: each point's
     nearest-neighbour distance (not normalised); hist: the counts of
-    nn / Delta(n) in 200 bins of 0.01 (cfpo-analyze's nn_hist.txt)."""
+    nn / Delta(n) in 200 bins of 0.01 (cfpo-analyze's nn_hist.txt). For an
+    (n, 3) set: over Delta3(n) = (sqrt(2) / n)^(1/3), and hist is None
+    (cfpo3d-analyze's delta_min= delta_avg=)."""
     delta_min: float
     delta_avg: float
     nn: np.ndarray = field(repr=False)
@@ -33,6 +58,8 @@ class Deltas:
 
 def deltas(points):
     """Nearest-neighbour statistics of a set of at least 2 points (Deltas)."""
+    if _is3(points):
+        return _analysis3.deltas(points, Deltas)
     a = _args.as_points(points, min_n=2)
     return Deltas(*_core.deltas(a))
 
@@ -101,7 +128,15 @@ def spectrum(points, K=None, *, exact=False, width=None, grid=None):
     none). Returns a Spectrum with the same numbers as `cfpo-analyze -K K
     FILE` (with `--grid G`) for one set. FFTW's planner is
     guarded, so several threads may call this at once.
+
+    An (n, 3) set gives a Spectrum3 (cfpo._analysis3): the 3-D periodogram
+    over [-K, K]^3 (K default ceil(2 n^(1/3)) in 8..64, at most 128), its
+    shell averages, P0 and the highest shell, as `cfpo3d-analyze --spectrum
+    F --kmax K [--exact]`; width and grid do not apply.
     """
+    if _is3(points):
+        _not_in_3d(width=width, grid=grid)
+        return _analysis3.spectrum(points, K, exact)
     a = _args.as_points(points)
     K = default_K(a.shape[0]) if K is None else _args.whole("K", K, 1, KMAX)
     w = 0 if width is None else _args.whole("width", width, 4, 16)
@@ -142,14 +177,25 @@ INTEG_M = 1024     # analysis/measures/integration.h AN_INTEG_M
 INTEG_SEED = 2022  # AN_INTEG_SEED
 
 
-def pcf(points, sigma=PCF_SIGMA, rmax=PCF_RMAX):
+def pcf(points, sigma=None, rmax=None, *, dr=None):
     """Pair correlation g(r) on the torus (analysis/README.md): returns (r,
     g), r in units of Delta(n) at b sigma / 5, b = 1..B, up to rmax (and
     below 1/2 - 6 sigma Delta); g with a Gaussian kernel of width sigma
-    Delta(n), no window correction. cfpo-analyze's pcf.txt for one set."""
+    Delta(n) (default PCF_SIGMA), no window correction, rmax default
+    PCF_RMAX. cfpo-analyze's pcf.txt for one set.
+
+    An (n, 3) set: g(r) from pair counts in bins of dr (default 0.02) of
+    r / Delta3(n), r the bin centres, up to rmax (default 3, lowered by dr
+    until rmax Delta3(n) < 1/2): cfpo3d-analyze --pcf's file; sigma does
+    not apply (nor dr in 2-D)."""
+    if _is3(points):
+        _not_in_3d(sigma=sigma)
+        return _analysis3.pcf(points, rmax, dr)
+    if dr is not None:
+        raise ValueError("dr: applies to 3-D sets (n, 3) only; 2-D g(r) has a kernel of width sigma")
     a = _args.as_points(points, min_n=2)
-    s = _args.real("sigma", sigma, 0.005, 1)
-    r = _args.real("rmax", rmax, 0.1, 100)
+    s = _args.real("sigma", PCF_SIGMA if sigma is None else sigma, 0.005, 1)
+    r = _args.real("rmax", PCF_RMAX if rmax is None else rmax, 0.1, 100)
     g = _core.pcf(a, s, r)
     return (np.arange(1, g.shape[0] + 1) * (s / 5), g)
 
@@ -172,7 +218,13 @@ def structure(points):
     """psi6, Voronoi area variance and mesh ratio of a set (Structure), from
     one CGAL periodic Delaunay triangulation: cfpo-analyze's numbers for one
     set. ValueError for duplicate points and sets too few or too clustered
-    for a triangulation of the torus."""
+    for a triangulation of the torus.
+
+    An (n, 3) set gives a Structure3 (cfpo._analysis3): faces per Voronoi
+    cell and the volume variance from CGAL's periodic 3-D triangulation,
+    cfpo3d-analyze --voronoi's numbers."""
+    if _is3(points):
+        return _analysis3.structure(points)
     a = _args.as_points(points)
     psi6, var, cover, dmin, mesh = _core.delaunay(a)
     D = math.sqrt(2 / (math.sqrt(3) * a.shape[0]))
@@ -257,14 +309,21 @@ class Certificate:
     summary: dict = field(default_factory=dict)
 
 
-def certify(points, tol=CERT_TOL):
+def certify(points, tol=None):
     """FPD certificate of a set of at least 2 points (Certificate).
 
-    tol: tolerance relative to Delta(n), in [0, 1] (default 1e-3). The
-    summary holds cfpo-analyze --certify's numbers.
+    tol: tolerance relative to Delta(n), in [0, 1] (default CERT_TOL,
+    1e-3). The summary holds cfpo-analyze --certify's numbers.
+
+    An (n, 3) set gives a Certificate3 (cfpo._analysis3: fpd, points that
+    pass, the largest violation over Delta3(n)), cfpo3d-analyze --certify's
+    numbers; its tolerance is fixed (tol does not apply).
     """
+    if _is3(points):
+        _not_in_3d(tol=tol)
+        return _analysis3.certify(points)
     a = _args.as_points(points, min_n=2)
-    t = _args.real("tol", tol, 0, 1)
+    t = _args.real("tol", CERT_TOL if tol is None else tol, 0, 1)
     flags, viol, target, summary = _core.certify(a, t)
     passed = (flags & 1) != 0
     lct = (flags & 6) == 6
@@ -350,3 +409,20 @@ def density(points, density, K=None):
                            r["count_fidelity_max"], r["count_fidelity16_rms"], r["count_fidelity16_max"],
                            r["blocks"], r["off_support"], r["capacity_deviation"], r["capacities"],
                            r["capacity_sum_error"], dda)
+
+
+Spectrum3 = _analysis3.Spectrum3
+Structure3 = _analysis3.Structure3
+Certificate3 = _analysis3.Certificate3
+BondOrder = _analysis3.BondOrder
+
+
+def bond_order(points, neighbours=_analysis3.NEIGHBOURS, bond=_analysis3.BOND, bonds=_analysis3.BONDS):
+    """Steinhardt's Q6 and W6 and the crystal-like points of an (n, 3) set
+    (BondOrder), over each point's `neighbours` nearest (1..64, default 12;
+    n must exceed it); a point is crystal-like with at least `bonds` (0..64,
+    default 8) neighbours whose normalised q6 product exceeds `bond` (in
+    [0, 1], default 0.7): cfpo3d-analyze --neighbours K --bond C --bonds B."""
+    if not _is3(points):
+        raise ValueError("points: bond_order takes a 3-D set, an (n, 3) array")
+    return _analysis3.bond_order(points, neighbours, bond, bonds)

@@ -109,5 +109,12 @@ PyObject *core_poisson(PyObject *self, PyObject *args);
 int core_density_in(PyObject *dens, cfpo_density *d);
 PyObject *core_iterative(PyObject *self, PyObject *args);
 PyObject *core_methods(PyObject *self, PyObject *args);
+/* The 3-D measures of cfpo3d-analyze (core_measures3.c). */
+PyObject *core_deltas3(PyObject *self, PyObject *args);
+PyObject *core_bond_order3(PyObject *self, PyObject *args);
+PyObject *core_spectrum3(PyObject *self, PyObject *args);
+PyObject *core_pcf3(PyObject *self, PyObject *args);
+PyObject *core_voronoi3(PyObject *self, PyObject *args);
+PyObject *core_certify3(PyObject *self, PyObject *args);
 
 #endif

@@ -62,7 +62,7 @@ def test_bad_arguments(call, exc, msg):
 
 
 @pytest.mark.parametrize("points,exc,msg", [
-    (np.zeros((5, 3)), ValueError, "expected an (n, 2) array of points, got shape (5, 3)"),
+    (np.zeros((5, 4)), ValueError, "expected an (n, 2) or (n, 3) array of points, got shape (5, 4)"),
     (np.zeros(10), ValueError, "got shape (10,)"),
     (np.zeros((2, 5, 2)), ValueError, "got shape (2, 5, 2)"),
     (np.array([[0.5, np.nan], [0.1, 0.1]]), ValueError, "point 0 is not finite"),
