@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "engine3_dist.h"
-#include "engine3_impl.h"
+#include "state3.h"
 #include "rng.h"
 #include "solve3.h"
 

@@ -28,7 +28,7 @@
 #include <zlib.h>
 
 #include "engine3_dist.h"
-#include "engine3_impl.h"
+#include "state3.h"
 #include "safefile.h"
 #include "tmpguard.h"
 

@@ -27,7 +27,7 @@
 #ifndef CFPO_ENGINE3_DIST_H
 #define CFPO_ENGINE3_DIST_H
 
-#include "engine3_impl.h"
+#include "state3.h"
 
 /* Sets up e->B and the message buffers for comm_size() ranks. 0, or -1
  * with one line in err (too many ranks for the grid; out of memory). */

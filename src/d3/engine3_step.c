@@ -20,7 +20,7 @@
 #include <time.h>
 
 #include "engine3_dist.h"
-#include "engine3_impl.h"
+#include "state3.h"
 #include "omp_compat.h"
 #include "solve3.h"
 #include "stoprule.h"

@@ -1,6 +1,6 @@
-/* engine3_impl.h - the 3-D engine's state, shared by engine3.c (create,
+/* state3.h - the 3-D engine's state, shared by engine3.c (create,
  * buckets, measure), engine3_step.c (the iteration) and engine3_ckpt.c
- * (checkpoints) and by no other file.
+ * (checkpoints), and engine3_dist.c (several ranks); by no other file.
  *
  * Frame: the grid is shifted by s (each axis in [0, L)); a point's grid
  * coordinate is u = x - s wrapped into [0,1) and its cell floor(u g).
@@ -16,8 +16,8 @@
  * others, whose pos and prev are stale); the stamps are current for the
  * region. On one rank the brick is the whole grid and every point is
  * held. */
-#ifndef CFPO_ENGINE3_IMPL_H
-#define CFPO_ENGINE3_IMPL_H
+#ifndef CFPO_STATE3_H
+#define CFPO_STATE3_H
 
 #include "bricks3.h"
 #include "comm.h"
