@@ -145,9 +145,7 @@ PyObject *core_spectrum3(PyObject *self, PyObject *args)
     }
     for (npy_intp i = 0; i < sl; i++) ((int64_t *)PyArray_DATA((PyArrayObject *)count))[i] = cnt[i];
     free(cnt);
-    int peak = 1; /* the command's: the highest shell of 1..K, the first on ties */
-    for (int i = 1; i <= K; i++)
-        if (s[i] > s[peak]) peak = i;
+    const int peak = cfpo3_power_peak(s, K); /* the command's */
     return Py_BuildValue("(NNNdldii)", P, sh, count, p0, c0, s[peak], peak, K);
 }
 
@@ -162,13 +160,12 @@ PyObject *core_pcf3(PyObject *self, PyObject *args)
     size_t n;
     PyArrayObject *a = points3_in(obj, 2, &n);
     if (!a) return NULL;
-    const double D = cfpo3_delta_bound((double)n), r0 = rmax;
-    while (rmax * D >= 0.5) rmax -= dr;
-    const int bins = (int)floor(rmax / dr + 1e-9);
+    const double D = cfpo3_delta_bound((double)n);
+    const int bins = cfpo3_pcf_bins(n, rmax, dr); /* the command's range */
     if (bins < 1) {
         Py_DECREF(a);
         return PyErr_Format(PyExc_ValueError, "g(r): no bin of width dr = %g fits below rmax = %g and half the box "
-                            "(Delta3(n) = %.3g)", dr, r0, D);
+                            "(Delta3(n) = %.3g)", dr, rmax, D);
     }
     double *g = malloc((size_t)bins * sizeof *g);
     int rc = -1;

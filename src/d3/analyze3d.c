@@ -70,9 +70,7 @@ static int spectrum(const double *p, size_t n, int K, int exact, const char *pat
     cfpo3_power_shells(P, K, sh, cnt);
     long c0;
     const double p0 = cfpo3_power_p0(P, K, n, &c0);
-    int peak = 1;
-    for (int s = 1; s <= K; s++)
-        if (sh[s] > sh[peak]) peak = s;
+    const int peak = cfpo3_power_peak(sh, K);
     cli_atomic f;
     if (cli_atomic_open(&f, path, err, errlen) != 0) goto done;
     fprintf(f.f, "shell\tpower\tfrequencies\n");
@@ -89,10 +87,7 @@ done:
 static int pcf(const double *p, size_t n, const char *path, char *extra, size_t xl, char *err, size_t errlen)
 {
     const double dr = 0.02;
-    double rmax = 3.0;
-    const double D = cfpo3_delta_bound((double)n);
-    while (rmax * D >= 0.5) rmax -= dr;
-    const int bins = (int)floor(rmax / dr + 1e-9);
+    const int bins = cfpo3_pcf_bins(n, 3.0, dr);
     double *g = malloc((size_t)(bins > 0 ? bins : 1) * sizeof *g);
     if (!g || bins < 1 || cfpo3_pcf(p, n, bins * dr, dr, g, bins) != 0) {
         free(g);

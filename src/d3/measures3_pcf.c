@@ -60,3 +60,10 @@ int cfpo3_pcf(const double *p, size_t n, double rmax, double dr, double *g, int 
     free(start), free(idx), free(h);
     return 0;
 }
+
+int cfpo3_pcf_bins(size_t n, double rmax, double dr)
+{
+    const double D = cfpo3_delta_bound((double)n);
+    while (rmax * D >= 0.5) rmax -= dr;
+    return (int)floor(rmax / dr + 1e-9);
+}

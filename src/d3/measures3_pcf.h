@@ -15,5 +15,9 @@
 /* g[0..bins): bins = ceil(rmax / dr). 0, or -1 (memory, or rmax too
  * large for n). */
 int cfpo3_pcf(const double *p, size_t n, double rmax, double dr, double *g, int bins);
+/* The bins of width dr that g(r) of n points takes up to rmax (in units
+ * of Delta3(n)), rmax first lowered by dr until rmax Delta3(n) < 1/2 (half
+ * the box); 0 or less when none fits. */
+int cfpo3_pcf_bins(size_t n, double rmax, double dr);
 
 #endif

@@ -141,6 +141,14 @@ void cfpo3_power_shells(const double *P, int K, double *shell, long *count)
     for (int s = 0; s <= K; s++) shell[s] = count[s] ? shell[s] / (double)count[s] : NAN;
 }
 
+int cfpo3_power_peak(const double *shell, int K)
+{
+    int peak = 1;
+    for (int s = 1; s <= K; s++)
+        if (shell[s] > shell[peak]) peak = s;
+    return peak;
+}
+
 double cfpo3_power_p0(const double *P, int K, size_t n, long *cnt)
 {
     const double R = 0.2 * cbrt((double)n);

@@ -29,5 +29,7 @@ void cfpo3_power_shells(const double *P, int K, double *shell, long *count);
 /* P0 over 0 < |k| <= 0.2 n^(1/3) (NAN when the box does not hold it or it
  * holds no frequency); *cnt the frequencies averaged. */
 double cfpo3_power_p0(const double *P, int K, size_t n, long *cnt);
+/* The highest of shells 1..K (the first on ties; K >= 1). */
+int cfpo3_power_peak(const double *shell, int K);
 
 #endif
