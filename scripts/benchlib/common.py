@@ -26,3 +26,21 @@ def write(path, lines):
     with open(tmp, "w") as f:
         f.write("".join(l + "\n" for l in lines))
     os.rename(tmp, path)
+
+
+def gnuplot_fig(R, P, fig):
+    """Draws scripts/fig-FIG.gp from P/fig-FIG.vars.gp into R/fig-FIG.png
+    (written whole or not at all); its log in P/gnuplot-FIG.log."""
+    gpdir = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    out = f"{R}/.fig-{fig}.png.tmp.{os.getpid()}"
+    with open(f"{P}/gnuplot-{fig}.log", "w") as log:
+        rc = subprocess.run(["gnuplot", "-e", f"VARS='{P}/fig-{fig}.vars.gp'; OUT='{out}'",
+                             f"{gpdir}/fig-{fig}.gp"], stdout=subprocess.DEVNULL, stderr=log).returncode
+    if rc != 0:
+        first = next((l.strip() for l in open(f"{P}/gnuplot-{fig}.log") if l.strip()), "")
+        if os.path.exists(out):
+            os.remove(out)
+        raise Failure(f"gnuplot failed on scripts/fig-{fig}.gp: {first}")
+    if not os.path.isfile(out) or os.path.getsize(out) == 0:
+        raise Failure(f"scripts/fig-{fig}.gp wrote no image")
+    os.rename(out, f"{R}/fig-{fig}.png")

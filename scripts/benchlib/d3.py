@@ -17,7 +17,7 @@ import subprocess
 import sys
 import time
 
-from .common import Failure, write
+from .common import Failure, gnuplot_fig, write
 
 # (key, label, command, its own arguments, iterative, colour)
 METHODS = (("cfpo3d", "CFPO 3-D", "cfpo3d", ["-t", "1"], True, "#d62728"),
@@ -167,14 +167,9 @@ def section(p, R):
 
 def draw(R):
     """The figures with gnuplot (for the standalone 3d profile)."""
-    gpdir = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     os.makedirs(f"{R}/plotdata", exist_ok=True)
     for fig in write_figures(R, "# written by scripts/benchlib/d3.py"):
-        with open(f"{R}/plotdata/gnuplot-{fig}.log", "w") as log:
-            rc = subprocess.run(["gnuplot", "-e", f"VARS='{R}/plotdata/fig-{fig}.vars.gp'; OUT='{R}/fig-{fig}.png'",
-                                 f"{gpdir}/fig-{fig}.gp"], stdout=subprocess.DEVNULL, stderr=log).returncode
-        if rc != 0:
-            raise Failure(f"gnuplot failed on scripts/fig-{fig}.gp (see {R}/plotdata/gnuplot-{fig}.log)")
+        gnuplot_fig(R, f"{R}/plotdata", fig)
 
 
 class _Alone:

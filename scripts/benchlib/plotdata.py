@@ -14,12 +14,11 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 
 from . import methods as M
 from . import stats as S
-from .common import Failure, write
+from .common import Failure, gnuplot_fig, write
 
 WRITTEN = "# written by scripts/bench.py replot"
 
@@ -319,18 +318,7 @@ def replot(R=None):
             if os.path.exists(f):
                 os.remove(f)
     for fig in figs:
-        out = f"{R}/.fig-{fig}.png.tmp.{os.getpid()}"
-        with open(f"{P}/gnuplot-{fig}.log", "w") as log:
-            rc = subprocess.run(["gnuplot", "-e", f"VARS='{P}/fig-{fig}.vars.gp'; OUT='{out}'",
-                                 f"{gpdir}/fig-{fig}.gp"], stdout=subprocess.DEVNULL, stderr=log).returncode
-        if rc != 0:
-            first = next((l.strip() for l in open(f"{P}/gnuplot-{fig}.log") if l.strip()), "")
-            if os.path.exists(out):
-                os.remove(out)
-            raise Failure(f"gnuplot failed on scripts/fig-{fig}.gp: {first}")
-        if not os.path.isfile(out) or os.path.getsize(out) == 0:
-            raise Failure(f"scripts/fig-{fig}.gp wrote no image")
-        os.rename(out, f"{R}/fig-{fig}.png")
+        gnuplot_fig(R, P, fig)
     from . import summary
     write_text(f"{R}/summary.md", summary.text(F, meth, conv_keys, rt, sp, runs, tmin, tavg, integ, figs, dens, stip))
     print(f"replot: figures and summary.md in {R}", file=sys.stderr)

@@ -24,7 +24,7 @@ import subprocess
 import sys
 import time
 
-from .common import Failure, write
+from .common import Failure, gnuplot_fig, write
 
 # (key, label, command, its arguments besides -n -s -q -o, colour, point type)
 METHODS = (("cfpo", "CFPO --progressive", "cfpo", ["--progressive"], "#d62728", 7),
@@ -198,13 +198,8 @@ def section(p, R):
 
 
 def draw(R):
-    gpdir = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     for fig in write_figures(R, "# written by scripts/benchlib/progressive.py"):
-        with open(f"{R}/plotdata/gnuplot-{fig}.log", "w") as log:
-            rc = subprocess.run(["gnuplot", "-e", f"VARS='{R}/plotdata/fig-{fig}.vars.gp'; OUT='{R}/fig-{fig}.png'",
-                                 f"{gpdir}/fig-{fig}.gp"], stdout=subprocess.DEVNULL, stderr=log).returncode
-        if rc != 0:
-            raise Failure(f"gnuplot failed on scripts/fig-{fig}.gp (see {R}/plotdata/gnuplot-{fig}.log)")
+        gnuplot_fig(R, f"{R}/plotdata", fig)
 
 
 class _Alone:
