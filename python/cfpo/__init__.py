@@ -239,26 +239,51 @@ def progressive_run(n, *, seed=1, variant="adaptive", threads=None, tol=None, ma
             line.end()
     return r[0], r[7]
 
-def load(path):
-    """Reads a point file into an (n, 2) float64 array.
+def load(path, dim=2):
+    """Reads a point file into an (n, 2) float64 array ((n, 3) with dim=3).
 
     The format comes from the extension: .txt/.dat/.pts/.xy (text "x y"
     lines, '#' comments), .csv (a header line "x,y", then "x,y" a line),
     .npy (NumPy, float64 or float32), .bin/.raw/.f64 (raw little-endian
-    float64 pairs). The reader is the commands' own: it refuses empty,
-    truncated or corrupt files, NaN/inf and points outside [0, 1)^2
+    float64 pairs). dim=3 reads what `cfpo --dim 3 --init` reads: .npy
+    (n x 3), text "x y z" lines, CSV with the header "x,y,z" and raw
+    float64 triples. The reader is the commands' own: it refuses empty,
+    truncated or corrupt files, NaN/inf and points outside the unit torus
     (ValueError), and missing or unreadable files (OSError).
     """
+    if _dim(dim) == 3:
+        if _core.format3_of(str(path)) != 2:
+            raise ValueError(f"{path}: not a 3-D format cfpo reads (use .npy, .txt/.dat/.pts, .csv, "
+                             ".bin/.raw/.f64)")
+        return _core.load3(path)
     return _core.load(path)
 
 
-def save(path, points):
-    """Writes points ((n, 2), in [0, 1)^2) to path, format from the extension.
+def save(path, points, box=None):
+    """Writes points ((n, 2) in [0, 1)^2, or (n, 3) in [0, 1)^3) to path,
+    format from the extension.
 
     The file is written under a temporary name and renamed when complete,
     so a failure leaves nothing behind; the bytes are those the commands
-    write. Unknown extensions raise ValueError, unwritable paths OSError.
+    write (`cfpo -o`, `cfpo --dim 3 --box L -o`). 3-D sets also go to the
+    files simulation codes read: extended XYZ (.xyz/.extxyz, the periodic
+    cell), LAMMPS data (.data/.lmp) and GROMACS .gro, which hold the box of
+    side box (default 1; coordinates times box); the other formats hold
+    the unit torus. box is for 3-D sets only. Unknown extensions and a box
+    that is not positive and finite raise ValueError, unwritable paths
+    OSError.
     """
+    shape = np.shape(points)
+    if len(shape) == 2 and shape[1] == 3:
+        a = _args.as_points(points, dim=3)
+        b = 1.0 if box is None else _args.real("box", box, 0.0, float("inf"), open_lo=True)
+        if _core.format3_of(str(path)) == 0:
+            raise ValueError(f"{path}: unknown output format (use .npy, .txt/.dat/.pts, .csv, .bin/.raw/.f64, "
+                             ".xyz/.extxyz, .data/.lmp, .gro)")
+        _core.save3(path, a, b)
+        return
+    if box is not None:
+        raise ValueError("box: only for 3-D sets ((n, 3) points)")
     a = _args.as_points(points)
     if _core.format_of(str(path)) == "unknown":
         raise ValueError(f"{path}: unknown output format (use {_core.extensions})")

@@ -116,5 +116,9 @@ PyObject *core_spectrum3(PyObject *self, PyObject *args);
 PyObject *core_pcf3(PyObject *self, PyObject *args);
 PyObject *core_voronoi3(PyObject *self, PyObject *args);
 PyObject *core_certify3(PyObject *self, PyObject *args);
+/* The 3-D point files (core_files3.c). */
+PyObject *core_load3(PyObject *self, PyObject *args);
+PyObject *core_save3(PyObject *self, PyObject *args);
+PyObject *core_format3_of(PyObject *self, PyObject *args);
 
 #endif
