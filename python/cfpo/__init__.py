@@ -40,7 +40,10 @@ class Result:
     stop: which rule ended the run, one of "converged", "target", "time",
     "max-iter", "caller"; trace: dict of numpy arrays, one entry a row of the
     command's --trace file (columns TRACE_COLUMNS; a baseline's are its
-    command's: the first eight of them, then its own).
+    command's: the first eight of them, then its own). packing_fraction
+    (dim=3 only, else None): the packing fraction of spheres of diameter
+    delta_min (pi/6 n d^3 on the unit torus, d = delta_min Delta3(n)): the
+    command's BOX3D packing_fraction=, the same at any --box.
     """
     points: np.ndarray
     iterations: int
@@ -50,6 +53,7 @@ class Result:
     converged: bool
     stop: str
     trace: dict = field(repr=False, default_factory=dict)
+    packing_fraction: float = None
 
 
 def _callback(progress, n, max_iter, stops):
@@ -165,7 +169,11 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
     r = _call(True, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
               progress, density, dim)
     pts, it, secs, dmin, davg, conv, stop, tr = r
-    return Result(pts, it, secs, dmin, davg, conv, stop, dict(zip(TRACE_COLUMNS, tr)))
+    pf = None
+    if pts.shape[1] == 3:  # the command's BOX3D line (src/d3/cli3.c)
+        d = dmin * np.cbrt(np.sqrt(2.0) / pts.shape[0])
+        pf = float(np.pi / 6.0 * pts.shape[0] * d * d * d)
+    return Result(pts, it, secs, dmin, davg, conv, stop, dict(zip(TRACE_COLUMNS, tr)), pf)
 
 def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
            target_avg=None, time_limit=None, init=None, progress=None, density=None, dim=2, progressive=False,
