@@ -79,6 +79,10 @@ static void usage(void)
            "                       delta_min reaches D (default: each level to convergence)\n"
            "      --relax J        after each level, J iterations with the level before it\n"
            "                       moving too (lifts the full set, lowers earlier prefixes)\n"
+           "      --joint S        after the last level, S sweeps of the bounded joint move:\n"
+           "                       every point may move, no prefix's delta_min falls\n"
+           "      --joint-prefix T, --joint-full T  the joint move's targets (0.78, 0.90)\n"
+           "      --joint-hold H   a pair shorter than H Delta(prefix) may not shrink (0: off)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
            "                       output, built like the levels (docs/cli.md)\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
@@ -306,7 +310,10 @@ static void parse(int argc, char **argv, cmdline *c)
         {"box", required_argument, 0, 1005},
         {"progressive", no_argument, 0, PROG_OPT_PROGRESSIVE}, {"base", required_argument, 0, PROG_OPT_BASE},
         {"classes", required_argument, 0, PROG_OPT_CLASSES}, {"level-min", required_argument, 0, PROG_OPT_LEVEL_MIN},
-        {"relax", required_argument, 0, PROG_OPT_RELAX},
+        {"relax", required_argument, 0, PROG_OPT_RELAX}, {"joint", required_argument, 0, PROG_OPT_JOINT},
+        {"joint-prefix", required_argument, 0, PROG_OPT_JOINT_PREFIX},
+        {"joint-full", required_argument, 0, PROG_OPT_JOINT_FULL},
+        {"joint-hold", required_argument, 0, PROG_OPT_JOINT_HOLD},
         {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;
