@@ -79,8 +79,10 @@ static void usage(void)
            "                       delta_min reaches D (default: each level to convergence)\n"
            "      --relax J        after each level, J iterations with the level before it\n"
            "                       moving too (lifts the full set, lowers earlier prefixes)\n"
-           "      --joint S        after the last level, S sweeps of the bounded joint move:\n"
-           "                       every point may move, no prefix's delta_min falls\n"
+           "      --joint S        after each level from level 1, S sweeps of the bounded\n"
+           "                       joint move: every point so far may move, no prefix's\n"
+           "                       delta_min falls (docs/method.md)\n"
+           "      --joint-last S   the last level's sweeps (default: --joint's)\n"
            "      --joint-prefix T, --joint-full T  the joint move's targets (0.78, 0.90)\n"
            "      --joint-hold H   a pair shorter than H Delta(prefix) may not shrink (0: off)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
@@ -314,6 +316,7 @@ static void parse(int argc, char **argv, cmdline *c)
         {"joint-prefix", required_argument, 0, PROG_OPT_JOINT_PREFIX},
         {"joint-full", required_argument, 0, PROG_OPT_JOINT_FULL},
         {"joint-hold", required_argument, 0, PROG_OPT_JOINT_HOLD},
+        {"joint-last", required_argument, 0, PROG_OPT_JOINT_LAST},
         {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;

@@ -47,6 +47,12 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
         pc->p.joint.sweeps = (int)v;
         pc->joint_given = 1;
         return 1;
+    case PROG_OPT_JOINT_LAST:
+        if (cli_parse_i64(arg, 1, 1000000, &v) != 0)
+            cli_usage_error(prog, "--joint-last: '%s' is not a whole number in 1..1e6", arg);
+        pc->p.joint_last = (int)v;
+        pc->joint_given = 1;
+        return 1;
     case PROG_OPT_JOINT_HOLD:
         if (cli_parse_double(arg, 0, 1.2, &pc->p.joint.hold) != 0)
             cli_usage_error(prog, "--joint-hold: '%s' is not a number in [0, 1.2]", arg);
@@ -196,7 +202,7 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     o->user = &ctx;
     char *jbuf = NULL;
     size_t jlen = 0;
-    if (pc->p.joint.sweeps > 0) {
+    if (pc->p.joint.sweeps > 0 || pc->p.joint_last > 0) {
         ctx.joint = open_memstream(&jbuf, &jlen);
         if (!ctx.joint) cli_fail(prog, "out of memory for the JOINT lines");
         pc->p.joint.sweep_done = on_sweep;

@@ -146,6 +146,7 @@ static int joint_phase(double *xy, const int64_t *sizes, int k, int K, const cfp
                        const cfpo_prog_options *p, cfpo_prog_level *levels, cfpo_result *res, char *err, size_t errlen)
 {
     cfpo_prog_joint_options jo = p->joint;
+    if (k == K - 1 && p->joint_last > 0) jo.sweeps = p->joint_last;
     jo.seed = o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT + 0x4a4f494e54ULL);
     if (k < K - 1) jo.target_full = jo.target_prefix;
     double dmin[CFPO_PROG_MAX_LEVELS], davg[CFPO_PROG_MAX_LEVELS];
@@ -221,7 +222,8 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         R->ops->copy(R->E, xy); /* the prefix, in id order */
         R->ops->free(R->E);
         if (cfpo_prog_order(xy, prev, m, err, errlen) != 0) break;
-        const int joint = p->joint.sweeps > 0 && p->classes == 0 && k > 0;
+        const int joint = p->classes == 0 && k > 0 &&
+                          (k == K - 1 && p->joint_last > 0 ? p->joint_last : p->joint.sweeps) > 0;
         if (joint && joint_phase(xy, sizes, k, K, o, p, levels, res, err, errlen) != 0) break;
         if (k == K - 1) {
             if (joint) {

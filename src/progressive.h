@@ -45,8 +45,9 @@ typedef struct {
     int relax;        /* > 0: after each level k >= 1, this many iterations with level k - 1
                          moving too (prefix m_(k-2) held); the earlier prefixes are measured
                          again at the end */
-    cfpo_prog_joint_options joint; /* sweeps > 0: the bounded joint move after the last level
-                                      (its seed is set from the run's) */
+    cfpo_prog_joint_options joint; /* sweeps > 0: the bounded joint move after every level from
+                                      level 1 on (its seed is set from the run's) */
+    int joint_last;                /* > 0: the last level's sweeps instead of joint.sweeps */
     const char *checkpoint; /* the level under way's engine checkpoint (ckpt.h) here ... */
     int checkpoint_every;   /* ... every this many of its iterations and at its end */
     const char *resume;     /* go on from such a checkpoint (its size says its level) */
