@@ -78,7 +78,6 @@ void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
         cli_usage_error(prog, "%s needs --progressive or --classes K",
                         pc->base_given ? "--base" : pc->relax_given ? "--relax" : pc->joint_given ? "--joint" : "--level-min");
     if (!pc->on) return;
-    if (pc->joint_given && pc->p.classes > 0) cli_usage_error(prog, "--joint does not go with --classes (not supported yet)");
     const double tp = pc->p.joint.target_prefix > 0 ? pc->p.joint.target_prefix : 0.78;
     const double tf = pc->p.joint.target_full > 0 ? pc->p.joint.target_full : 0.90;
     if (tf >= sqrt(2.0) * tp) /* the pair weights must fall with the level (prog_joint.h) */
@@ -100,6 +99,7 @@ typedef struct {
     const cfpo_prog_level *done; /* the finished levels */
     int ndone;
     FILE *joint;          /* the JOINT lines, printed after the LEVEL lines */
+    int classes;          /* --classes: the JOINT lines' groups are the classes and their union */
     double worst_min;     /* over the finished levels */
     int64_t worst_m;
 } prog_ctx;
@@ -138,33 +138,38 @@ static int on_iteration(const cfpo_iter_stats *s, void *user)
 
 /* One sweep of the joint move: a JOINT line (kept until the LEVEL lines
  * are out) and a trace row (level = the level count, prefix = n). */
-static void on_sweep(int sweep, int64_t moved, const double *dmin, const double *davg, int K, void *user)
+static void on_sweep(int sweep, int64_t moved, const double *dmin, const double *davg, int NG, void *user)
 {
     prog_ctx *c = user;
+    const int K = c->classes ? NG - 1 : NG; /* the levels so far (classes: NG - 1 classes, then the union) */
     int w = 0;
     for (int k = 1; k < K; k++)
         if (dmin[k] < dmin[w]) w = k;
-    const int64_t wm = c->done[w].m > 0 ? c->done[w].m : 0;
+    const int64_t wm = c->classes ? w : c->done[w].m;
     if (c->joint) {
-        fprintf(c->joint, "JOINT level=%d prefix=%lld sweep=%d moved=%lld worst_prefix_min=%lld worst_delta_min=%.9f delta_min=", K - 1, (long long)c->done[K - 1].m, sweep,
-                (long long)moved, (long long)wm, dmin[w]);
-        for (int k = 0; k < K; k++) fprintf(c->joint, "%s%.9f", k ? "," : "", dmin[k]);
+        fprintf(c->joint, "JOINT level=%d prefix=%lld sweep=%d moved=%lld %s=%lld worst_delta_min=%.9f delta_min=",
+                K - 1, (long long)c->done[K - 1].m, sweep, (long long)moved,
+                c->classes ? "worst_class" : "worst_prefix_min", (long long)wm, dmin[w]);
+        for (int k = 0; k < NG; k++) fprintf(c->joint, "%s%.9f", k ? "," : "", dmin[k]);
         fprintf(c->joint, " delta_avg=");
-        for (int k = 0; k < K; k++) fprintf(c->joint, "%s%.9f", k ? "," : "", davg[k]);
+        for (int k = 0; k < NG; k++) fprintf(c->joint, "%s%.9f", k ? "," : "", davg[k]);
         fprintf(c->joint, "\n");
     }
     const double el = cli_now() - c->t0;
     if (c->trace) {
-        const cfpo_iter_stats s = {.iteration = sweep, .delta_min = dmin[K - 1], .delta_avg = davg[K - 1],
+        const cfpo_iter_stats s = {.iteration = sweep, .delta_min = dmin[NG - 1], .delta_avg = davg[NG - 1],
                                    .moved = moved, .solved = 0, .max_disp = NAN, .seconds = NAN, .max_move = NAN};
         double row[CFPO_TRACE_COLUMNS];
         cfpo_trace_values(&s, el, row);
         fprintf(c->trace, "%d\t%lld\t", K - 1, (long long)c->done[K - 1].m);
         cfpo_trace_write_values(c->trace, cfpo_trace_columns, row, CFPO_TRACE_COLUMNS, 1);
-        fprintf(c->trace, "\t%lld\t%.9f\n", (long long)wm, dmin[w]);
+        if (c->classes) /* (the classes' sweeps measure classes, not prefixes: the worst finished prefix) */
+            fprintf(c->trace, "\t%lld\t%.9f\n", (long long)c->worst_m, c->worst_min);
+        else
+            fprintf(c->trace, "\t%lld\t%.9f\n", (long long)wm, dmin[w]);
     }
-    cli_progress_line(&c->prog, 0, "joint move of levels 0-%d  sweep %d  worst prefix %lld: %.4f  full set %.4f / %.4f  moved %lld  "
-                      "elapsed %.1fs", K - 1, sweep, (long long)wm, dmin[w], dmin[K - 1], davg[K - 1], (long long)moved, el);
+    cli_progress_line(&c->prog, 0, "joint move of levels 0-%d  sweep %d  worst group %lld: %.4f  full set %.4f / %.4f  moved %lld  "
+                      "elapsed %.1fs", K - 1, sweep, (long long)wm, dmin[w], dmin[NG - 1], davg[NG - 1], (long long)moved, el);
 }
 
 /* The trace's rows into a memory stream, its file written whole at the end. */
@@ -206,6 +211,7 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
         ctx.joint = open_memstream(&jbuf, &jlen);
         if (!ctx.joint) cli_fail(prog, "out of memory for the JOINT lines");
         pc->p.joint.sweep_done = on_sweep;
+        ctx.classes = pc->p.classes > 0;
         pc->p.joint.user = &ctx;
     }
     pc->p.level_begin = level_begin;

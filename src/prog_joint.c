@@ -106,13 +106,17 @@ static double nearest_other2(const grid *B, int64_t i)
     return best;
 }
 
-/* The prefixes' measures, and (raw, may be NULL) each prefix's smallest
- * distance itself, the floors' exact values. */
-static int measure(const double *xy, const int64_t *sizes, int K, double *dmin, double *davg, double *raw, char *err,
-                   size_t errlen)
+/* The groups' measures, and (raw, may be NULL) each group's smallest
+ * distance itself, the floors' exact values. Groups: the prefixes
+ * [0, sizes[k]); with classes, class k [sizes[k - 1], sizes[k]) and then
+ * the union [0, sizes[K - 1]) (K + 1 groups). */
+static int measure(const double *xy, const int64_t *sizes, int K, int classes, double *dmin, double *davg,
+                   double *raw, char *err, size_t errlen)
 {
-    for (int k = 0; k < K; k++) {
-        const int64_t m = sizes[k];
+    for (int k = 0; k < K + (classes ? 1 : 0); k++) {
+        const int64_t lo0 = classes && k > 0 && k < K ? sizes[k - 1] : 0;
+        const int64_t m = (k < K ? sizes[k] : sizes[K - 1]) - lo0;
+        xy += 2 * lo0;
         grid B = {0};
         if (grid_init(&B, xy, m) != 0) {
             grid_free(&B);
@@ -130,6 +134,7 @@ static int measure(const double *xy, const int64_t *sizes, int K, double *dmin, 
         dmin[k] = lo / D;
         davg[k] = sum / (double)m / D;
         if (raw) raw[k] = lo;
+        xy -= 2 * lo0;
     }
     return 0;
 }
@@ -137,7 +142,7 @@ static int measure(const double *xy, const int64_t *sizes, int K, double *dmin, 
 int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmin, double *davg, char *err,
                       size_t errlen)
 {
-    return measure(xy, sizes, K, dmin, davg, NULL, err, errlen);
+    return measure(xy, sizes, K, 0, dmin, davg, NULL, err, errlen);
 }
 
 /* ---- the moves */
@@ -145,10 +150,11 @@ int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmi
 typedef struct {
     grid B;
     const int *lev;     /* each point's level */
-    double F[64], G[64]; /* the pair floors (distances) and weights by pair level */
-    double Gmax[64];     /* max over L >= l of G_L */
-    double H[64];        /* hold distances: a pair shorter than H_L may not shrink */
-    double Fmax[64];     /* max over L >= l of F_L */
+    int K, classes;
+    double F[65], G[65]; /* the pair floors (distances) and weights by pair level */
+    double Gmax[65];     /* max of G over the pair levels a point of level l can be in */
+    double H[65];        /* hold distances: a pair shorter than H_L may not shrink */
+    double Fmax[65];     /* the same for F */
     double cap;          /* the measure counted up to this (a mover at or past it has nothing to gain) */
 } joint;
 
@@ -172,7 +178,7 @@ static double measure_at(const joint *J, int64_t i, double x, double y, int64_t 
             for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
                 if (k == i) continue;
                 const double d = sqrt(torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]));
-                const int L = J->lev[k] > l ? J->lev[k] : l;
+                const int L = J->classes ? (J->lev[k] == l ? l : J->K) : J->lev[k] > l ? J->lev[k] : l;
                 if (d < J->F[L]) return -1;
                 if (d < J->H[L] && d < sqrt(torus_d2(B->xy[2 * i], B->xy[2 * i + 1], B->xy[2 * k], B->xy[2 * k + 1])))
                     return -1; /* a pair below its hold distance may not shrink */
@@ -184,10 +190,17 @@ static double measure_at(const joint *J, int64_t i, double x, double y, int64_t 
     return best;
 }
 
-/* The floors from the prefixes' smallest distances raw[k] (dmin_k
- * Delta(m_k), exactly as measured): F_L = max over k >= L of raw[k]. */
+/* The floors from the groups' smallest distances raw[k] (dmin_k
+ * Delta(m_k), exactly as measured): F_L = max over k >= L of raw[k]; with
+ * classes, F_c = max(raw[c], raw[K]) (a pair within class c) and F_K =
+ * raw[K] (a pair across classes: the union only). */
 static void set_floors(joint *J, int K, const double *raw)
 {
+    if (J->classes) {
+        J->F[K] = raw[K];
+        for (int c = 0; c < K; c++) J->F[c] = J->Fmax[c] = fmax(raw[c], raw[K]);
+        return;
+    }
     double f = 0;
     for (int L = K - 1; L >= 0; L--) {
         const double v = raw[L];
@@ -224,16 +237,30 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
         lev[i] = (int)l;
     }
     J.lev = lev;
-    for (int L = 0; L < K; L++) J.G[L] = (L == K - 1 ? tf : tp) * cfpo_delta_bound((double)sizes[L]);
-    for (int l = 0; l < K; l++) {
-        J.Gmax[l] = 0;
-        for (int L = l; L < K; L++) J.Gmax[l] = fmax(J.Gmax[l], J.G[L]);
+    J.K = K;
+    J.classes = jo->classes;
+    if (J.classes) { /* class c's size in its own units, the union in Delta(n) */
+        for (int c = 0; c < K; c++) {
+            const double Dc = cfpo_delta_bound((double)(sizes[c] - (c ? sizes[c - 1] : 0)));
+            J.G[c] = tp * Dc;
+            J.H[c] = jo->hold * Dc;
+        }
+        J.G[K] = tf * cfpo_delta_bound((double)n);
+        J.H[K] = jo->hold * cfpo_delta_bound((double)n);
+        for (int c = 0; c < K; c++) J.Gmax[c] = fmax(J.G[c], J.G[K]);
+    } else {
+        for (int L = 0; L < K; L++) J.G[L] = (L == K - 1 ? tf : tp) * cfpo_delta_bound((double)sizes[L]);
+        for (int l = 0; l < K; l++) {
+            J.Gmax[l] = 0;
+            for (int L = l; L < K; L++) J.Gmax[l] = fmax(J.Gmax[l], J.G[L]);
+        }
+        for (int L = 0; L < K; L++) J.H[L] = jo->hold * cfpo_delta_bound((double)sizes[L]);
     }
-    for (int L = 0; L < K; L++) J.H[L] = jo->hold * cfpo_delta_bound((double)sizes[L]);
     J.cap = 1.25;
-    double raw[64];
-    int rc = measure(xy, sizes, K, dmin, davg, raw, err, errlen);
-    if (rc == 0 && jo->sweep_done) jo->sweep_done(0, 0, dmin, davg, K, jo->user);
+    const int NG = K + (J.classes ? 1 : 0);
+    double raw[65];
+    int rc = measure(xy, sizes, K, J.classes, dmin, davg, raw, err, errlen);
+    if (rc == 0 && jo->sweep_done) jo->sweep_done(0, 0, dmin, davg, NG, jo->user);
     static const double steps[4] = {0.4, 0.2, 0.08, 0.02}; /* of the nearest neighbour's distance */
     for (int s = 1; rc == 0 && s <= jo->sweeps; s++) {
         set_floors(&J, K, raw);
@@ -276,8 +303,8 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
                 moved++;
             }
         }
-        rc = measure(xy, sizes, K, dmin, davg, raw, err, errlen);
-        if (rc == 0 && jo->sweep_done) jo->sweep_done(s, moved, dmin, davg, K, jo->user);
+        rc = measure(xy, sizes, K, J.classes, dmin, davg, raw, err, errlen);
+        if (rc == 0 && jo->sweep_done) jo->sweep_done(s, moved, dmin, davg, NG, jo->user);
         if (moved == 0) break;
     }
     grid_free(&J.B);

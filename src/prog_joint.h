@@ -39,6 +39,10 @@ typedef struct {
     double target_full;   /* t_L for the last level (0: 0.90) */
     double hold;          /* > 0: a pair of level L shorter than hold Delta(m_L) may not shrink
                              (guards each prefix's delta_avg); 0: off */
+    int classes;          /* 1: the levels are classes (progressive.h's --classes): a pair within
+                             class c has level c (weight target_prefix Delta(class size), floor
+                             the class's and the union's), a pair across classes level K (weight
+                             target_full Delta(n), floor the union's); K + 1 groups are measured */
     uint64_t seed;
     /* Called with sweep 0 (the start) and after every sweep: the points
      * moved, each prefix's delta_min and delta_avg in its own Delta(m_k);
@@ -54,7 +58,8 @@ int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmi
                       size_t errlen);
 
 /* The joint move of xy (sizes[K - 1] points, prefix order) in place; the
- * prefixes' final measures into dmin, davg (K each). The ids never change
+ * prefixes' final measures into dmin, davg (K each; with classes K + 1:
+ * the classes in their own units, then the union). The ids never change
  * level. 0, or -1 with one line in err (xy unchanged but for moves that
  * were made; out of memory is the only failure, checked before any move). */
 int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joint_options *jo, double *dmin,

@@ -46,7 +46,6 @@ expect 2 "--base does not go with --classes" -n 1024 --classes 4 --base 64 -o x.
 expect 2 "needs --progressive" -n 1024 --base 64 -o x.npy
 expect 2 "needs --progressive" -n 1024 --relax 3 -o x.npy
 expect 2 "needs --progressive" -n 1024 --joint 3 -o x.npy
-expect 2 "--joint does not go with --classes" -n 1024 --classes 4 --joint 3 -o x.npy
 expect 2 "must be below sqrt(2)" -n 1024 --progressive --joint 3 --joint-prefix 0.6 --joint-full 0.9 -o x.npy
 expect 2 "--joint-last" -n 1024 --progressive --joint-last 0 -o x.npy
 
