@@ -83,6 +83,7 @@ static void usage(void)
            "                       joint move: every point so far may move, no prefix's\n"
            "                       delta_min falls (docs/method.md)\n"
            "      --joint-last S   the last level's sweeps (default: --joint's)\n"
+           "      --joint-candidates C  trial positions per point and sweep (default 12)\n"
            "      --joint-prefix T, --joint-full T  the joint move's targets (0.78, 0.90)\n"
            "      --joint-hold H   a pair shorter than H Delta(prefix) may not shrink (0: off)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
@@ -317,6 +318,7 @@ static void parse(int argc, char **argv, cmdline *c)
         {"joint-full", required_argument, 0, PROG_OPT_JOINT_FULL},
         {"joint-hold", required_argument, 0, PROG_OPT_JOINT_HOLD},
         {"joint-last", required_argument, 0, PROG_OPT_JOINT_LAST},
+        {"joint-candidates", required_argument, 0, PROG_OPT_JOINT_CANDIDATES},
         {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;

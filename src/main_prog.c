@@ -53,6 +53,12 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
         pc->p.joint_last = (int)v;
         pc->joint_given = 1;
         return 1;
+    case PROG_OPT_JOINT_CANDIDATES:
+        if (cli_parse_i64(arg, 1, 1000, &v) != 0)
+            cli_usage_error(prog, "--joint-candidates: '%s' is not a whole number in 1..1000", arg);
+        pc->p.joint.candidates = (int)v;
+        pc->joint_given = 1;
+        return 1;
     case PROG_OPT_JOINT_HOLD:
         if (cli_parse_double(arg, 0, 1.2, &pc->p.joint.hold) != 0)
             cli_usage_error(prog, "--joint-hold: '%s' is not a number in [0, 1.2]", arg);
