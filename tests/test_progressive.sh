@@ -48,6 +48,7 @@ expect 2 "needs --progressive" -n 1024 --relax 3 -o x.npy
 expect 2 "needs --progressive" -n 1024 --joint 3 -o x.npy
 expect 2 "must be below sqrt(2)" -n 1024 --progressive --joint 3 --joint-prefix 0.6 --joint-full 0.9 -o x.npy
 expect 2 "--joint-last" -n 1024 --progressive --joint-last 0 -o x.npy
+expect 2 "--joint-candidates" -n 1024 --progressive --joint 3 --joint-candidates 0 -o x.npy
 
 run() { "$CFPO" -q "$@"; }
 field() { grep -o " $1=[^ ]*" | head -1 | cut -d= -f2; }
