@@ -6,104 +6,21 @@
 #include <stdlib.h>
 
 #include "geom.h"
+#include "prog_buckets.h"
 #include "rng.h"
 
-typedef struct {
-    int64_t gs;    /* buckets per side */
-    double cs;     /* bucket side, 1 / gs */
-    int64_t *head; /* first point of each bucket, -1 if none */
-    int64_t *next; /* the next point of its bucket */
-    const double *xy;
-} grid;
-
-static int64_t cell_of(const grid *B, double x, double y)
-{
-    int64_t bx = (int64_t)(x * (double)B->gs), by = (int64_t)(y * (double)B->gs);
-    if (bx >= B->gs) bx = B->gs - 1;
-    if (by >= B->gs) by = B->gs - 1;
-    if (bx < 0) bx = 0;
-    if (by < 0) by = 0;
-    return by * B->gs + bx;
-}
-
 /* Buckets of side about Delta(m) holding points 0 .. m - 1 of xy. */
-static int grid_init(grid *B, const double *xy, int64_t m)
+static int grid_init(prog_buckets *B, const double *xy, int64_t m)
 {
-    B->gs = (int64_t)floor(1.0 / cfpo_delta_bound((double)m));
-    if (B->gs < 1) B->gs = 1;
-    B->cs = 1.0 / (double)B->gs;
-    B->xy = xy;
-    B->head = malloc((size_t)(B->gs * B->gs) * sizeof *B->head);
-    B->next = malloc((size_t)m * sizeof *B->next);
-    if (!B->head || !B->next) return -1;
-    for (int64_t b = 0; b < B->gs * B->gs; b++) B->head[b] = -1;
-    for (int64_t k = m - 1; k >= 0; k--) {
-        const int64_t b = cell_of(B, xy[2 * k], xy[2 * k + 1]);
-        B->next[k] = B->head[b];
-        B->head[b] = k;
-    }
+    if (prog_buckets_init(B, xy, m, m) != 0) return -1;
+    for (int64_t k = m - 1; k >= 0; k--) prog_buckets_link(B, k);
     return 0;
-}
-
-static void grid_free(grid *B)
-{
-    free(B->head);
-    free(B->next);
-}
-
-static void grid_unlink(grid *B, int64_t k)
-{
-    const int64_t b = cell_of(B, B->xy[2 * k], B->xy[2 * k + 1]);
-    int64_t *p = &B->head[b];
-    while (*p != k) p = &B->next[*p];
-    *p = B->next[k];
-}
-
-static void grid_link(grid *B, int64_t k)
-{
-    const int64_t b = cell_of(B, B->xy[2 * k], B->xy[2 * k + 1]);
-    B->next[k] = B->head[b];
-    B->head[b] = k;
 }
 
 static double wrap1(double v)
 {
     const double w = v - floor(v);
     return w < 1.0 ? w : 0.0;
-}
-
-static double torus_d2(double ax, double ay, double bx, double by)
-{
-    double dx = fabs(ax - bx), dy = fabs(ay - by);
-    if (dx > 0.5) dx = 1.0 - dx;
-    if (dy > 0.5) dy = 1.0 - dy;
-    return dx * dx + dy * dy;
-}
-
-/* Squared distance from point i of B to its nearest other point of B:
- * rings of buckets outwards until no nearer point can remain. */
-static double nearest_other2(const grid *B, int64_t i)
-{
-    const double x = B->xy[2 * i], y = B->xy[2 * i + 1];
-    const int64_t gs = B->gs, b = cell_of(B, x, y), bx = b % gs, by = b / gs;
-    double best = INFINITY;
-    for (int64_t r = 0; r <= gs / 2 + 1; r++) {
-        const int64_t span = 2 * r + 1 >= gs ? gs : 2 * r + 1, lo = span == gs ? 0 : r;
-        for (int64_t oy = 0; oy < span; oy++)
-            for (int64_t ox = 0; ox < span; ox++) {
-                if (span != gs && ox != 0 && ox != span - 1 && oy != 0 && oy != span - 1) continue; /* the ring */
-                const int64_t cx = ((bx - lo + ox) % gs + gs) % gs, cy = ((by - lo + oy) % gs + gs) % gs;
-                for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
-                    if (k == i) continue;
-                    const double d2 = torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]);
-                    if (d2 < best) best = d2;
-                }
-            }
-        if (span == gs) break; /* every bucket seen */
-        const double reach = (double)r * B->cs; /* every point beyond ring r is farther */
-        if (best <= reach * reach) break;
-    }
-    return best;
 }
 
 /* The groups' measures, and (raw, may be NULL) each group's smallest
@@ -117,19 +34,19 @@ static int measure(const double *xy, const int64_t *sizes, int K, int classes, d
         const int64_t lo0 = classes && k > 0 && k < K ? sizes[k - 1] : 0;
         const int64_t m = (k < K ? sizes[k] : sizes[K - 1]) - lo0;
         xy += 2 * lo0;
-        grid B = {0};
+        prog_buckets B = {0};
         if (grid_init(&B, xy, m) != 0) {
-            grid_free(&B);
+            prog_buckets_free(&B);
             snprintf(err, errlen, "out of memory");
             return -1;
         }
         double lo = INFINITY, sum = 0;
         for (int64_t i = 0; i < m; i++) {
-            const double d = sqrt(nearest_other2(&B, i));
+            const double d = sqrt(prog_buckets_nearest2(&B, xy[2 * i], xy[2 * i + 1], i, -1.0));
             if (d < lo) lo = d;
             sum += d;
         }
-        grid_free(&B);
+        prog_buckets_free(&B);
         const double D = cfpo_delta_bound((double)m);
         dmin[k] = lo / D;
         davg[k] = sum / (double)m / D;
@@ -148,7 +65,7 @@ int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmi
 /* ---- the moves */
 
 typedef struct {
-    grid B;
+    prog_buckets B;
     const int *lev;     /* each point's level */
     int K, classes;
     double F[65], G[65]; /* the pair floors (distances) and weights by pair level */
@@ -163,12 +80,12 @@ typedef struct {
  * below its floor. *bind: the binding partner (-1 if none within reach). */
 static double measure_at(const joint *J, int64_t i, double x, double y, int64_t *bind)
 {
-    const grid *B = &J->B;
+    const prog_buckets *B = &J->B;
     const int l = J->lev[i];
     const double r = fmax(J->Fmax[l], J->cap * J->Gmax[l]);
     double best = J->cap;
     *bind = -1;
-    const int64_t gs = B->gs, b = cell_of(B, x, y), bx = b % gs, by = b / gs;
+    const int64_t gs = B->gs, b = prog_buckets_of(B, x, y), bx = b % gs, by = b / gs;
     int64_t reach = (int64_t)ceil(r / B->cs);
     const int64_t span = 2 * reach + 1 >= gs ? gs : 2 * reach + 1, lo = span == gs ? 0 : reach;
     for (int64_t oy = 0; oy < span; oy++) {
@@ -177,10 +94,10 @@ static double measure_at(const joint *J, int64_t i, double x, double y, int64_t 
             const int64_t cx = ((bx - lo + ox) % gs + gs) % gs;
             for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
                 if (k == i) continue;
-                const double d = sqrt(torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]));
+                const double d = sqrt(prog_torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]));
                 const int L = J->classes ? (J->lev[k] == l ? l : J->K) : J->lev[k] > l ? J->lev[k] : l;
                 if (d < J->F[L]) return -1;
-                if (d < J->H[L] && d < sqrt(torus_d2(B->xy[2 * i], B->xy[2 * i + 1], B->xy[2 * k], B->xy[2 * k + 1])))
+                if (d < J->H[L] && d < sqrt(prog_torus_d2(B->xy[2 * i], B->xy[2 * i + 1], B->xy[2 * k], B->xy[2 * k + 1])))
                     return -1; /* a pair below its hold distance may not shrink */
                 const double q = d / J->G[L];
                 if (q < best) best = q, *bind = k;
@@ -228,7 +145,7 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
     int *lev = malloc((size_t)n * sizeof *lev);
     if (!lev || grid_init(&J.B, xy, n) != 0) {
         free(lev);
-        grid_free(&J.B);
+        prog_buckets_free(&J.B);
         snprintf(err, errlen, "out of memory");
         return -1;
     }
@@ -273,7 +190,7 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
             const double dx = x0 - xy[2 * bind], dy = y0 - xy[2 * bind + 1];
             const double ux = dx - round(dx), uy = dy - round(dy); /* away from the binding partner */
             const double dn = sqrt(ux * ux + uy * uy);
-            const double scale = sqrt(torus_d2(x0, y0, xy[2 * bind], xy[2 * bind + 1]));
+            const double scale = sqrt(prog_torus_d2(x0, y0, xy[2 * bind], xy[2 * bind + 1]));
             double bq = q0, bx = x0, by = y0;
             const uint64_t stream = ((uint64_t)s << 40) ^ (uint64_t)i;
             for (int c = 0; c < cand; c++) {
@@ -296,10 +213,10 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
                 if (q > bq) bq = q, bx = cx, by = cy;
             }
             if (bq > q0) {
-                grid_unlink(&J.B, i);
+                prog_buckets_unlink(&J.B, i);
                 xy[2 * i] = bx;
                 xy[2 * i + 1] = by;
-                grid_link(&J.B, i);
+                prog_buckets_link(&J.B, i);
                 moved++;
             }
         }
@@ -307,7 +224,7 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
         if (rc == 0 && jo->sweep_done) jo->sweep_done(s, moved, dmin, davg, NG, jo->user);
         if (moved == 0) break;
     }
-    grid_free(&J.B);
+    prog_buckets_free(&J.B);
     free(lev);
     return rc;
 }
