@@ -177,15 +177,17 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
 
 def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
            target_avg=None, time_limit=None, init=None, progress=None, density=None, dim=2, progressive=False,
-           classes=None, base=None, level_min=None, relax=None):
+           classes=None, base=None, level_min=None, relax=None, joint=None, joint_last=None):
     """CFPO points: run(...).points, an (n, 2) float64 array (dim=3: (n, 3)) that owns its memory.
 
     The same arguments as cfpo.run; the same bytes as `cfpo ... -o x.npy`
     (dim=3: `cfpo --dim 3 ... -o x.npy`).
     progressive=True: the set of `cfpo --progressive` (every prefix of
     base * 2^k points blue noise, rows in prefix order); classes=K: that of
-    `cfpo --classes K` (class c = rows [c n/K, (c+1) n/K)); base, level_min
-    and relax as the command's --base, --level-min and --relax. Both take
+    `cfpo --classes K` (class c = rows [c n/K, (c+1) n/K)); base, level_min,
+    relax, joint and joint_last as the command's --base, --level-min,
+    --relax, --joint S and --joint-last S (the bounded joint move's sweeps,
+    docs/cli.md). Both take
     neither init, density nor time_limit (the command refuses them too),
     and only dim=2.
     """
@@ -194,16 +196,18 @@ def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_it
             raise ValueError("progressive and classes are two-dimensional (dim=2)")
         return progressive_run(n, seed=seed, variant=variant, threads=threads, tol=tol, max_iter=max_iter,
                                target_min=target_min, target_avg=target_avg, progress=progress,
-                               classes=classes, base=base, level_min=level_min, relax=relax,
+                               classes=classes, base=base, level_min=level_min, relax=relax, joint=joint,
+                               joint_last=joint_last,
                                _refuse=dict(init=init, density=density, time_limit=time_limit))[0]
-    if base is not None or level_min is not None or relax is not None:
-        raise ValueError("base, level_min and relax need progressive=True or classes=K")
+    if base is not None or level_min is not None or relax is not None or joint is not None or joint_last is not None:
+        raise ValueError("base, level_min, relax, joint and joint_last need progressive=True or classes=K")
     return _call(False, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
                  progress, density, dim)[0]
 
 
 def progressive_run(n, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
-                    target_avg=None, progress=None, classes=None, base=None, level_min=None, relax=None,
+                    target_avg=None, progress=None, classes=None, base=None, level_min=None, relax=None, joint=None,
+                    joint_last=None,
                     _refuse=None):
     """Progressive CFPO (`cfpo --progressive`, or `--classes K`): returns
     (points, levels), points (n, 2) in prefix order, the same bytes as the
@@ -237,11 +241,13 @@ def progressive_run(n, *, seed=1, variant="adaptive", threads=None, tol=None, ma
     rx = 0 if relax is None else relax
     if isinstance(rx, bool) or not isinstance(rx, int) or rx < 0:
         raise ValueError(f"relax: '{relax}' is not a whole number >= 0")
+    js = 0 if joint is None else _args.whole("joint", joint, 0, 1000000)
+    jl = 0 if joint_last is None else _args.whole("joint_last", joint_last, 1, 1000000)
     stops = _args.stop_rules(target_min, target_avg, None)
     cb, line = _callback(progress, nn, _args.max_iter(max_iter), stops)
     try:
         r = _core.progressive(nn, _args.seed(seed), variant, _args.threads(threads), _args.tol(tol, -1.0),
-                              _args.max_iter(max_iter), stops[0], stops[1], b, K, lm, rx, cb)
+                              _args.max_iter(max_iter), stops[0], stops[1], b, K, lm, rx, js, jl, cb)
     finally:
         if line is not None:
             line.end()
