@@ -28,6 +28,7 @@ typedef struct {
     int relax;       /* 1: over-relaxed moves (the default), 0: to the solver's spot */
     int shift;       /* 1: the grid moves before iterations 1, 5, 9, ... (default) */
     int skip;        /* 1: cells whose block did not change are not solved again */
+    int near;        /* 1: start in the near phase (the default), 0: the exact solve from the start */
 } cfpo3_options;
 
 void cfpo3_options_default(cfpo3_options *o);

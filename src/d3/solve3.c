@@ -225,14 +225,21 @@ static void sort_rest(const double *okey, const int *oord, int n, double *key, i
 double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double floor2,
                          double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count)
 {
+    return cfpo3_near_solve(y, m, m, lo, hi, floor2, best, scratch, count);
+}
+
+double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], const double hi[3], double floor2,
+                        double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count)
+{
     if (m <= 0 || m > CFPO3_MAXM) return -1.0;
+    if (cells > m) cells = m;
     double bestd = floor2 > 0.0 ? floor2 : -1.0;
     int found = 0;
     cfpo3_poly box;
     double key[CFPO3_MAXM], okey[CFPO3_MAXM];
     int ord[CFPO3_MAXM], oord[CFPO3_MAXM];
     cfpo3_poly_box(&box, lo, hi);
-    for (int i = 0; i < m; i++) {
+    for (int i = 0; i < cells; i++) {
         const double *yi = y + 3 * i;
         double far = far_cached(&box, yi, 1);
         if (far <= bestd) continue;

@@ -68,4 +68,14 @@ typedef struct {
 double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double floor2,
                          double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count);
 
+/* The near solve: LocalCFPO-3D searching only the Voronoi cells of the
+ * first `cells` sites of y (the hint's order: with the sites ordered by
+ * distance to x, cells = 1 searches the cell x lies in). Every cell it
+ * searches is clipped by all the sites' bisectors, so its answer is a
+ * vertex of the clipped diagram, in S, at its returned squared distance
+ * from Y; it is the exact solve's when the winner lies in those cells.
+ * cells >= m is cfpo3_local_solve. */
+double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], const double hi[3], double floor2,
+                        double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count);
+
 #endif
