@@ -155,21 +155,44 @@ static void solve_cell(cfpo3_engine *e, int ci, int cj, int ck, double emargin, 
     double need = -INFINITY;
     for (int p = own0; p < own1; p++) {
         const double *x = s->y + 3 * p;
-        /* Y relative to x, in the hint order (nearest first, stable) */
+        /* Y relative to x, in the hint order: all of it sorted by distance
+         * to x (stable) for the exact solve; for the near solve only the
+         * cells it searches first (nearest, then lowest place), the others
+         * after them in block order */
         int m = 0;
-        for (int q = 0; q < cnt; q++) {
-            if (q == p) continue;
-            const double dx = s->y[3 * q] - x[0], dy = s->y[3 * q + 1] - x[1], dz = s->y[3 * q + 2] - x[2];
-            const double d = dx * dx + dy * dy + dz * dz;
-            int at = m;
-            while (at > 0 && s->key[at - 1] > d) {
-                s->key[at] = s->key[at - 1];
-                s->ord[at] = s->ord[at - 1];
-                at--;
+        if (cells > 0) {
+            for (int q = 0; q < cnt; q++) {
+                if (q == p) continue;
+                const double dx = s->y[3 * q] - x[0], dy = s->y[3 * q + 1] - x[1], dz = s->y[3 * q + 2] - x[2];
+                s->key[m] = dx * dx + dy * dy + dz * dz;
+                s->ord[m++] = q;
             }
-            s->key[at] = d;
-            s->ord[at] = q;
-            m++;
+            for (int k = 0; k < cells && k < m; k++) { /* selection: the k-th nearest to place k */
+                int b = k;
+                for (int q = k + 1; q < m; q++)
+                    if (s->key[q] < s->key[b] || (s->key[q] == s->key[b] && s->ord[q] < s->ord[b])) b = q;
+                if (b != k) { /* the ones between shift up one: block order kept */
+                    const double kb = s->key[b];
+                    const int ob = s->ord[b];
+                    for (int q = b; q > k; q--) s->key[q] = s->key[q - 1], s->ord[q] = s->ord[q - 1];
+                    s->key[k] = kb, s->ord[k] = ob;
+                }
+            }
+        } else {
+            for (int q = 0; q < cnt; q++) {
+                if (q == p) continue;
+                const double dx = s->y[3 * q] - x[0], dy = s->y[3 * q + 1] - x[1], dz = s->y[3 * q + 2] - x[2];
+                const double d = dx * dx + dy * dy + dz * dz;
+                int at = m;
+                while (at > 0 && s->key[at - 1] > d) {
+                    s->key[at] = s->key[at - 1];
+                    s->ord[at] = s->ord[at - 1];
+                    at--;
+                }
+                s->key[at] = d;
+                s->ord[at] = q;
+                m++;
+            }
         }
         for (int k = 0; k < m; k++) {
             const int q = s->ord[k];

@@ -208,6 +208,18 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
     return cfpo3_near_solve(y, m, m, lo, hi, floor2, best, scratch, count);
 }
 
+/* The planes kept sorted at the front of a cell's list (most cells need
+ * only the nearest few). */
+#define NEAR_K 12
+
+static void put_plane(double pn[3][CFPO3_MAXM + NEAR_K], double *poff, double *pdd, int at, const double nv[3],
+                      double off, double dd)
+{
+    pn[0][at] = nv[0], pn[1][at] = nv[1], pn[2][at] = nv[2];
+    poff[at] = off;
+    pdd[at] = dd;
+}
+
 double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], const double hi[3], double floor2,
                         double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count)
 {
@@ -216,9 +228,9 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
     double bestd = floor2 > 0.0 ? floor2 : -1.0;
     int found = 0;
     cfpo3_poly box;
-    /* the bisectors that can reach the box: normal, offset, squared length, used */
-    double pn[3][CFPO3_MAXM], poff[CFPO3_MAXM], pdd[CFPO3_MAXM];
-    unsigned char used[CFPO3_MAXM];
+    /* the bisectors that can reach the box: normal, offset (+inf once
+     * used), squared length */
+    double pn[3][CFPO3_MAXM + NEAR_K], poff[CFPO3_MAXM + NEAR_K], pdd[CFPO3_MAXM + NEAR_K];
     cfpo3_poly_box(&box, lo, hi);
     for (int i = 0; i < cells; i++) {
         const double *yi = y + 3 * i;
@@ -227,7 +239,7 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
         /* One pass over the other sites: the kill test (one bisector puts
          * the whole box on y_j's side: the cell misses S), and the planes
          * whose bisector can reach the box. */
-        int killed = 0, np = 0;
+        int killed = 0, np = 0, nr = 0;
         for (int j = 0; j < m; j++) {
             if (j == i) continue;
             const double *yj = y + 3 * j;
@@ -241,11 +253,26 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
                 break;
             }
             if (dd >= 4.0 * far) continue;
-            pn[0][np] = nv[0], pn[1][np] = nv[1], pn[2][np] = nv[2];
-            poff[np] = off;
-            pdd[np] = dd;
-            used[np] = 0;
-            np++;
+            /* the NEAR_K nearest kept in the order (squared distance to
+             * y_i, index) at the front; the others wait unsorted behind
+             * slot NEAR_K (a kept one pushed out joins them) */
+            if (np == NEAR_K) {
+                if (!(dd < pdd[NEAR_K - 1])) {
+                    put_plane(pn, poff, pdd, NEAR_K + nr++, nv, off, dd);
+                    continue;
+                }
+                const double last[3] = {pn[0][NEAR_K - 1], pn[1][NEAR_K - 1], pn[2][NEAR_K - 1]};
+                put_plane(pn, poff, pdd, NEAR_K + nr++, last, poff[NEAR_K - 1], pdd[NEAR_K - 1]);
+                np--;
+            }
+            int at = np++;
+            while (at > 0 && pdd[at - 1] > dd) {
+                pn[0][at] = pn[0][at - 1], pn[1][at] = pn[1][at - 1], pn[2][at] = pn[2][at - 1];
+                poff[at] = poff[at - 1];
+                pdd[at] = pdd[at - 1];
+                at--;
+            }
+            put_plane(pn, poff, pdd, at, nv, off, dd);
         }
         if (killed) continue;
         if (count) count->cells++;
@@ -256,7 +283,7 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
          * (it cuts most), and again. A cell is abandoned once v is no farther than the
          * best. Each plane is applied at most once. */
         cfpo3_poly *cur = &box;
-        int which = 0, empty = 0, abandoned = 0, at = -1;
+        int which = 0, empty = 0, abandoned = 0, at = -1, first = 0;
         far = far_cached(cur, yi, 0, &at);
         for (;;) {
             if (far <= bestd) {
@@ -264,17 +291,27 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
                 break;
             }
             const double vx = cur->v[0][at], vy = cur->v[1][at], vz = cur->v[2][at];
+            /* the first plane in order, not used yet, that cuts v off; a used
+             * plane's offset is +inf, and the used ones at the front are passed */
             int k = -1;
-            double kd = 4.0 * far;
-            for (int q = 0; q < np; q++) {
-                const double d = pn[0][q] * vx + pn[1][q] * vy + pn[2][q] * vz - poff[q];
-                if (d > 0.0 && !used[q] && pdd[q] < kd) kd = pdd[q], k = q;
+            while (first < np && poff[first] == INFINITY) first++;
+            for (int q = first; q < np && pdd[q] < 4.0 * far; q++)
+                if (pn[0][q] * vx + pn[1][q] * vy + pn[2][q] * vz - poff[q] > 0.0) {
+                    k = q;
+                    break;
+                }
+            if (k < 0 && nr > 0) { /* none of the kept: the nearest of the waiting ones */
+                double kd = 4.0 * far;
+                for (int q = NEAR_K; q < NEAR_K + nr; q++)
+                    if (pn[0][q] * vx + pn[1][q] * vy + pn[2][q] * vz - poff[q] > 0.0 && pdd[q] < kd)
+                        kd = pdd[q], k = q;
             }
             if (count) count->tests++;
             if (k < 0) break; /* no plane cuts v off: v is the cell's farthest point */
-            used[k] = 1;
+            const double koff = poff[k];
+            poff[k] = INFINITY;
             const double nv[3] = {pn[0][k], pn[1][k], pn[2][k]};
-            const int r = cfpo3_poly_clip(cur, &scratch[which], nv, poff[k]);
+            const int r = cfpo3_poly_clip(cur, &scratch[which], nv, koff);
             if (r == 0 || r == -2) continue; /* (rounding or no room: the plane is passed over) */
             if (r == -1) {
                 empty = 1;
