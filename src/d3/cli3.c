@@ -50,8 +50,8 @@ static int on_iteration(const cfpo_iter_stats *st, void *user)
                       st->iteration, st->delta_min, st->delta_avg, (long long)st->moved, (long long)st->solved,
                       st->seconds, cli_now() - x->t0);
     if (x->trace)
-        fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f\n", st->iteration, st->delta_min, st->delta_avg,
-                (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds);
+        fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f %d\n", st->iteration, st->delta_min, st->delta_avg,
+                (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds, st->near);
     return 0;
 }
 #define MAX_OUT 8
@@ -80,6 +80,7 @@ static void usage(void)
            "      --no-skip        solve every cell every iteration (same output, slower)\n"
            "      --no-near        the exact solve from the first iteration (no near phase)\n"
            "      --trace FILE     one line an iteration: iteration delta_min delta_avg moved solved max_disp seconds\n"
+           "                       near (1: the near solve)\n"
            "      --dry-run        print the grid and memory and exit\n"
            "  -q, --quiet          no progress line\n"
            "Under mpirun the grid is cut into one brick per rank (bricks of at least 3 cells a side);\n"
@@ -355,7 +356,7 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     if (c.trace) { /* rank 0's */
         bad = root && cli_atomic_open(&tr, c.trace, err, sizeof err) != 0;
         agree_or_fail(bad, err, sizeof err);
-        if (root) fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds\n");
+        if (root) fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds near\n");
     }
     const int tracing = c.trace && root;
     cli_progress pr;
