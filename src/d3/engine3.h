@@ -75,7 +75,8 @@ void cfpo3_rank_timers(const cfpo3_engine *e, double v[5], int64_t *phases, int 
 /* The points of this rank's brick. */
 int64_t cfpo3_own_points(const cfpo3_engine *e);
 /* The local solver's work so far, summed over solves: Voronoi cells
- * clipped, bisector planes tested, cuts made (for measuring). */
+ * clipped, farthest vertices tested against the bisectors, cuts made (for
+ * measuring). */
 void cfpo3_work(const cfpo3_engine *e, long *cells, long *tests, long *cuts);
 /* Bytes the engine holds for n points (for --dry-run): the same formula
  * cfpo3_create allocates by. */

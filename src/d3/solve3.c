@@ -1,4 +1,6 @@
-/* solve3.c - see solve3.h. The clipping: Sutherland-Hodgman on every face
+/* solve3.c - see solve3.h. The solve clips each cell lazily (the
+ * farthest vertex's cutting bisectors only, nearest site first). The
+ * clipping: Sutherland-Hodgman on every face
  * loop, a cut edge's new vertex made once (an edge map keyed by its two
  * old vertices, computed from the inside end), and the cap face on the
  * plane ordered by pseudo-angle in the projection that drops the normal's
