@@ -35,6 +35,9 @@ int core_import_numpy(void);
 /* Raises the exception that fits a library message: MemoryError for "out
  * of memory" / "too large for memory", else `type`. Returns NULL. */
 PyObject *core_error(PyObject *type, const char *msg);
+/* A point-file reader's one line raised as OSError (the file cannot be
+ * opened or read) or ValueError (its contents are refused); NULL. */
+PyObject *core_read_error(const char *msg);
 
 /* A C-contiguous float64 (n, 2) view of obj (a new reference), or NULL
  * with TypeError/ValueError. The Python layer has already converted. */

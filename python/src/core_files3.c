@@ -4,7 +4,6 @@
  * formats `--init` reads. */
 #include "core.h"
 
-#include <string.h>
 
 #include "points3.h"
 
@@ -23,11 +22,7 @@ PyObject *core_load3(PyObject *self, PyObject *args)
     rc = p3_read(path, &xyz, &n, err, sizeof err);
     Py_END_ALLOW_THREADS
     Py_DECREF(pathobj);
-    if (rc != 0) {
-        if (strstr(err, "cannot open") || strstr(err, "not a regular file") || strstr(err, "read error"))
-            return core_error(PyExc_OSError, err);
-        return core_error(PyExc_ValueError, err);
-    }
+    if (rc != 0) return core_read_error(err);
     const npy_intp dims[2] = {(npy_intp)n, 3};
     return core_adopt(xyz, 2, dims);
 }

@@ -5,7 +5,6 @@
 #include "core.h"
 
 #include <stdlib.h>
-#include <string.h>
 
 #include "cfpo.h"
 #include "pointfile.h"
@@ -27,11 +26,7 @@ static PyObject *core_load(PyObject *self, PyObject *args)
     rc = pf_read(path, &xy, &n, err, sizeof err);
     Py_END_ALLOW_THREADS
     Py_DECREF(pathobj);
-    if (rc != 0) {
-        if (strstr(err, "cannot open") || strstr(err, "not a regular file") || strstr(err, "read error"))
-            return core_error(PyExc_OSError, err);
-        return core_error(PyExc_ValueError, err);
-    }
+    if (rc != 0) return core_read_error(err);
     return core_points_adopt(xy, n);
 }
 
