@@ -68,6 +68,71 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
     return 1;
 }
 
+/* The block's points j != p that the buckets (fx.., fy..) hold with
+ * d^2 q_j < T, by (d^2 q_j, j): the KMAX smallest, in order, into
+ * b->scratch (keys) and b->nj. Returns their count. They are gathered
+ * first (b->ck, b->cj: room for the whole block) and then placed: a few by
+ * counting each one's place, with no branches (an insertion as they come
+ * mispredicts on most of them), more by insertion; the list depends on
+ * the set alone, so both give the same one. */
+#ifndef RANK_MAX
+#define RANK_MAX 64 /* a build with another value gives the same bytes (both placements) */
+#endif
+static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double ax, double ay, double T, int wrap,
+                            int fx, int nx_, int fy, int ny_)
+{
+    /* the loop's arrays in locals: the stores to the list do not make the
+     * compiler load them again */
+    const double *restrict px_ = b->bx, *restrict py_ = b->by, *restrict pr_ = b->br;
+    const int *restrict head = bk->head, *restrict next = bk->next;
+    double *restrict key = b->scratch, *restrict ck = b->ck, *restrict cj = b->cj;
+    int *restrict nj = b->nj;
+    const int B = bk->B;
+    int cnt = 0;
+    for (int iy = 0; iy < ny_; iy++) {
+        const int ry = fy + iy < B ? fy + iy : fy + iy - B;
+        for (int ix = 0; ix < nx_; ix++) {
+            const int c = ry * B + (fx + ix < B ? fx + ix : fx + ix - B);
+            for (int j = head[c]; j >= 0; j = next[j]) {
+                if (j == p) continue;
+                double ex = px_[j] - ax, ey = py_[j] - ay;
+                if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                const double d2 = (ex * ex + ey * ey) * pr_[j];
+                if (!(d2 < T)) continue;
+                ck[cnt] = d2;
+                cj[cnt++] = (double)j;
+            }
+        }
+    }
+    if (cnt <= RANK_MAX) { /* each one's place: the keys below it, and the equal keys of a smaller j */
+        for (int i = 0; i < cnt; i++) {
+            const double ki = ck[i], ji = cj[i];
+            int r = 0;
+            for (int l = 0; l < cnt; l++) r += (ck[l] < ki) | ((ck[l] == ki) & (cj[l] < ji));
+            if (r < KMAX) {
+                key[r] = ki;
+                nj[r] = (int)ji;
+            }
+        }
+        return cnt < KMAX ? cnt : KMAX;
+    }
+    int kk = 0;
+    for (int i = 0; i < cnt; i++) {
+        const double d2 = ck[i];
+        const int j = (int)cj[i];
+        if (kk == KMAX && (d2 > key[KMAX - 1] || (d2 == key[KMAX - 1] && j > nj[KMAX - 1]))) continue;
+        int t = kk < KMAX ? kk++ : KMAX - 1;
+        while (t > 0 && (key[t - 1] > d2 || (key[t - 1] == d2 && nj[t - 1] > j))) {
+            key[t] = key[t - 1];
+            nj[t] = nj[t - 1];
+            t--;
+        }
+        key[t] = d2;
+        nj[t] = j;
+    }
+    return kk;
+}
+
 /* Solves the points of cell (cx, cy) one after another; returns the moves
  * made, the largest move (in local spacings) into *maxd. */
 int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, double *maxd)
@@ -131,37 +196,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         cfpo_dens_span(bk, ax - R, ax + R, bk->x0, &fx, &nx_);
         cfpo_dens_span(bk, ay - R, ay + R, bk->y0, &fy, &ny_);
-        {
-            /* the loop's arrays in locals: the stores to the list do not
-             * make the compiler load them again */
-            const double *restrict px_ = b->bx, *restrict py_ = b->by, *restrict pr_ = b->br;
-            const int *restrict head = bk->head, *restrict next = bk->next;
-            double *restrict key = b->scratch;
-            int *restrict nj = b->nj;
-            const int B = bk->B;
-            for (int iy = 0; iy < ny_; iy++) {
-                const int ry = fy + iy < B ? fy + iy : fy + iy - B;
-                for (int ix = 0; ix < nx_; ix++) {
-                    const int c = ry * B + (fx + ix < B ? fx + ix : fx + ix - B);
-                    for (int j = head[c]; j >= 0; j = next[j]) {
-                        if (j == p) continue;
-                        double ex = px_[j] - ax, ey = py_[j] - ay;
-                        if (wrap) { ex -= rint(ex); ey -= rint(ey); }
-                        const double d2 = (ex * ex + ey * ey) * pr_[j];
-                        if (!(d2 < T)) continue;
-                        if (kk == KMAX && (d2 > key[KMAX - 1] || (d2 == key[KMAX - 1] && j > nj[KMAX - 1]))) continue;
-                        int t = kk < KMAX ? kk++ : KMAX - 1;
-                        while (t > 0 && (key[t - 1] > d2 || (key[t - 1] == d2 && nj[t - 1] > j))) {
-                            key[t] = key[t - 1];
-                            nj[t] = nj[t - 1];
-                            t--;
-                        }
-                        key[t] = d2;
-                        nj[t] = j;
-                    }
-                }
-            }
-        }
+        kk = nearest_in_reach(b, bk, p, ax, ay, T, wrap, fx, nx_, fy, ny_);
         for (int t = 0; t < kk; t++) { /* their places, as the scan computed them */
             const int j = b->nj[t];
             double ex = b->bx[j] - ax, ey = b->by[j] - ay;

@@ -59,7 +59,8 @@ static int ensure_buffers(cfpo_dens_engine *E, size_t m)
         if (!b->bx || !b->bid || !b->scratch || !b->nj) return -1;
         b->by = b->bx + cap;
         b->br = b->by + cap;
-        b->nd = b->br + cap; /* squared distances to the moving point */
+        b->ck = b->br + cap; /* a scan's candidates: their keys, their indices */
+        b->cj = b->ck + cap;
         b->nx = b->bx + 6 * cap; /* nx, ny, nr: KMAX + KADD + 1 each */
         b->ny = b->nx + KMAX + KADD + 1;
         b->nr = b->ny + KMAX + KADD + 1;

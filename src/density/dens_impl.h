@@ -22,7 +22,7 @@
 #define DENS_SHIFT_EVERY 4      /* the grid keeps an offset for this many iterations */
 
 typedef struct { /* one thread's buffers */
-    double *bx, *by, *br, *nx, *ny, *nr, *nd, *scratch;
+    double *bx, *by, *br, *nx, *ny, *nr, *ck, *cj, *scratch;
     int64_t *bid;
     int *nj, *ring; /* the nearest's block indices; a ring's buckets */
     size_t cap, ring_cap;
