@@ -1,8 +1,8 @@
 /* solve3.c - see solve3.h. The solve clips each cell lazily (the
  * farthest vertex's cutting bisectors only, the deepest cut first). The
  * clipping: Sutherland-Hodgman on every face
- * loop, a cut edge's new vertex made once (an edge map keyed by its two
- * old vertices, computed from the inside end), and the cap face on the
+ * loop, a cut edge's new vertex made once (looked up among the cut edges
+ * of its outside vertex, computed from the inside end), and the cap face on the
  * plane ordered by pseudo-angle in the projection that drops the normal's
  * largest axis (a linear map of the plane, so it keeps the cyclic order).
  * Vertices with n.c - off <= 0 are inside: a vertex exactly on the plane
