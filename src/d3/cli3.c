@@ -301,11 +301,17 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
         cfpo3_grid G;
         if (cfpo3_grid_choose(n, &G, err, sizeof err) != 0) cli_usage_error(prog, "%s", err);
         const double bpp = cfpo3_bytes_per_point(n);
+        /* a rank: the heap (every rank holds n-long arrays) and what this
+         * process holds already (libraries, MPI) */
+        const double bpr = cfpo3_bytes_per_point_ranks(n, comm_size());
+        const double proc = (double)cli_peak_rss();
         if (comm_rank() == 0)
             printf("%s dry run: n=%lld grid=%d^3 cells=%lld points_per_cell=%.3f L/Delta3=%.4f "
-                   "bytes_per_point=%.1f total_bytes=%.0f max_ranks=%lld\n",
+                   "bytes_per_point=%.1f total_bytes=%.0f max_ranks=%lld ranks=%d bytes_per_point_rank=%.1f "
+                   "process_bytes=%.0f rank_bytes=%.0f\n",
                    prog, (long long)n, G.g, (long long)G.g * G.g * G.g, (double)n / ((double)G.g * G.g * G.g),
-                   G.L / G.delta3, bpp, bpp * (double)n, (long long)cfpo3_bricks_max(G.g));
+                   G.L / G.delta3, bpp, bpp * (double)n, (long long)cfpo3_bricks_max(G.g), comm_size(), bpr, proc,
+                   bpr * (double)n + proc);
         return 0;
     }
     /* the files can be written (rank 0 writes them; every rank learns) */

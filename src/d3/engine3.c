@@ -23,18 +23,25 @@ void cfpo3_options_default(cfpo3_options *o)
     o->near = 1;
 }
 
-double cfpo3_bytes_per_point(int64_t n)
+double cfpo3_bytes_per_point_ranks(int64_t n, int ranks)
 {
     cfpo3_grid G;
     char err[16];
-    if (n < 1 || cfpo3_grid_choose(n, &G, err, sizeof err) != 0) return 0.0;
+    if (n < 1 || ranks < 1 || cfpo3_grid_choose(n, &G, err, sizeof err) != 0) return 0.0;
     const double g3 = (double)G.g * G.g * G.g;
-    /* pos, prev, cellof, cids; per cell cstart, changed, solvedat, needm, fill;
-     * the measure's temporaries (knn: start, ids, cell, distances, ids). */
+    /* pos, prev, cellof, cids; per cell cstart, changed, solvedat, needm, fill */
     const double engine = (double)n * (24 + 24 + 4 + 8) + g3 * (8 + 8 + 8 + 8 + 8);
-    const double measure = (double)n * (8 + 8 + 4 + 8 + 8 + 8) + (double)n / 2.0 * 8 * 2;
+    /* the measure's whole-set fallback: d2, the set, its distances, then
+     * the k-NN (start, ids, cell, distances, ids, fill over about n / 2
+     * cells); on several ranks the gather (own points 4 doubles, all
+     * points 4 doubles) comes before the k-NN */
+    const double knn = 8.0 + 24 + 8 + (8 + 4 + 8 + 8) + 0.5 * (8 + 8);
+    const double gather = 8.0 + 24 + 8 + 32 + 32.0 / ranks;
+    const double measure = (double)n * (ranks > 1 && gather > knn ? gather : knn);
     return (engine + measure) / (double)n;
 }
+
+double cfpo3_bytes_per_point(int64_t n) { return cfpo3_bytes_per_point_ranks(n, 1); }
 
 cfpo3_engine *cfpo3_alloc(int64_t n, const cfpo3_options *o, char *err, size_t errlen)
 {

@@ -78,8 +78,16 @@ int64_t cfpo3_own_points(const cfpo3_engine *e);
  * clipped, farthest vertices tested against the bisectors, cuts made (for
  * measuring). */
 void cfpo3_work(const cfpo3_engine *e, long *cells, long *tests, long *cuts);
-/* Bytes the engine holds for n points (for --dry-run): the same formula
- * cfpo3_create allocates by. */
+/* Heap bytes a point at the peak of one rank's run (for --dry-run), from
+ * what cfpo3_create and the measure allocate: every rank holds n-long
+ * arrays (positions, previous positions, cell, cell lists: 60 B a point)
+ * and 40 B a grid cell, and the measure's peak, at the start, when a
+ * nearest neighbour may lie beyond its block and the whole set is
+ * measured: 76 B a point on one rank, 72 + 32 / ranks + 32 B (the set
+ * gathered) on several (docs/results/2026-11-29-3d-solve.md). Not divided
+ * by the ranks. */
+double cfpo3_bytes_per_point_ranks(int64_t n, int ranks);
+/* The same on one rank. */
 double cfpo3_bytes_per_point(int64_t n);
 
 /* Checkpoints (engine3_ckpt.c): a versioned binary file with a CRC-32,

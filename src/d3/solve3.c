@@ -1,8 +1,8 @@
 /* solve3.c - see solve3.h. The solve clips each cell lazily (the
- * farthest vertex's cutting bisectors only, nearest site first). The
+ * farthest vertex's cutting bisectors only, the deepest cut first). The
  * clipping: Sutherland-Hodgman on every face
- * loop, a cut edge's new vertex made once (an edge map keyed by its two
- * old vertices, computed from the inside end), and the cap face on the
+ * loop, a cut edge's new vertex made once (looked up among the cut edges
+ * of its outside vertex, computed from the inside end), and the cap face on the
  * plane ordered by pseudo-angle in the projection that drops the normal's
  * largest axis (a linear map of the plane, so it keeps the cyclic order).
  * Vertices with n.c - off <= 0 are inside: a vertex exactly on the plane
@@ -55,8 +55,14 @@ static double pseudo_angle(double dx, double dy)
     return dy < 0.0 ? 4.0 + p : p;
 }
 
-int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], double off)
+/* cfpo3_poly_clip; with y, also the farthest vertex of q from y (the
+ * first in vertex order among equals) into *far, *at, every w of q then
+ * the squared distance to y (those of p must be already). */
+static int clip_far(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], double off, const double *y, double *far,
+                    int *at)
 {
+    double fbest = -1.0;
+    int fat = -1;
     double d[P3_MAXV];
     int out = 0;
     for (int i = 0; i < p->nv; i++) /* apart from the count, so that it vectorises */
@@ -64,8 +70,9 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
     for (int i = 0; i < p->nv; i++) out += d[i] > 0.0;
     if (out == 0) return 0;
     if (out == p->nv) return -1;
-    /* inside vertices keep their coordinates under new indices */
-    int map[P3_MAXV];
+    /* inside vertices keep their coordinates under new indices; each
+     * outside vertex heads a list of the cut edges that end in it */
+    int map[P3_MAXV], head[P3_MAXV];
     int nv = 0;
     for (int i = 0; i < p->nv; i++) {
         if (d[i] <= 0.0) {
@@ -74,27 +81,30 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
             q->v[1][nv] = p->v[1][i];
             q->v[2][nv] = p->v[2][i];
             q->w[nv] = p->w[i];
+            if (p->w[i] > fbest) fbest = p->w[i], fat = nv;
             nv++;
         } else {
             map[i] = -1;
+            head[i] = -1;
         }
     }
-    /* cut edges: (inside end, outside end) -> new vertex */
-    int ea[P3_MAXV], eb[P3_MAXV], ev[P3_MAXV];
+    /* cut edges: (inside end, outside end) -> new vertex, in the order made */
+    int ea[P3_MAXV], enx[P3_MAXV], ev[P3_MAXV];
     int ne = 0;
     int nf = 0, ni = 0;
     for (int f = 0; f < p->nf; f++) {
         const int s0 = p->fs[f], len = p->fs[f + 1] - s0;
+        const int *pf = p->fi + s0;
         const int start = ni;
         int nout = 0;
         if (ni + len <= P3_MAXI) { /* the face copied as it counts (kept if no vertex is cut) */
             for (int k = 0; k < len; k++) {
-                const int v = map[p->fi[s0 + k]];
+                const int v = map[pf[k]];
                 q->fi[ni + k] = v;
                 nout += v < 0;
             }
         } else {
-            for (int k = 0; k < len; k++) nout += map[p->fi[s0 + k]] < 0;
+            for (int k = 0; k < len; k++) nout += map[pf[k]] < 0;
         }
         if (nout == len) continue; /* the whole face is cut away */
         if (ni + 2 * len > P3_MAXI) return -2;
@@ -104,18 +114,18 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
             if (nf >= P3_MAXF) return -2;
             continue;
         }
+        int a = pf[0], ma = map[a];
         for (int k = 0; k < len; k++) {
-            const int a = p->fi[s0 + k], b = p->fi[k + 1 == len ? s0 : s0 + k + 1];
-            const int ina = map[a] >= 0, inb = map[b] >= 0;
-            if (ina && (ni == start || q->fi[ni - 1] != map[a])) q->fi[ni++] = map[a];
-            if (ina != inb) {
-                const int vi = ina ? a : b, vo = ina ? b : a;
+            const int b = pf[k + 1 == len ? 0 : k + 1], mb = map[b];
+            if (ma >= 0 && (ni == start || q->fi[ni - 1] != ma)) q->fi[ni++] = ma;
+            if ((ma >= 0) != (mb >= 0)) {
+                const int vi = ma >= 0 ? a : b, vo = ma >= 0 ? b : a;
                 int nvx = -1;
                 if (d[vi] == 0.0) {
                     nvx = map[vi];
                 } else {
-                    for (int e = 0; e < ne; e++)
-                        if (ea[e] == vi && eb[e] == vo) {
+                    for (int e = head[vo]; e >= 0; e = enx[e])
+                        if (ea[e] == vi) {
                             nvx = ev[e];
                             break;
                         }
@@ -124,9 +134,17 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
                         const double t = d[vi] / (d[vi] - d[vo]);
                         for (int c = 0; c < 3; c++)
                             q->v[c][nv] = p->v[c][vi] + (p->v[c][vo] - p->v[c][vi]) * t;
-                        q->w[nv] = -1.0;
+                        if (y) {
+                            const double dx = q->v[0][nv] - y[0], dy = q->v[1][nv] - y[1], dz = q->v[2][nv] - y[2];
+                            const double dw = dx * dx + dy * dy + dz * dz;
+                            q->w[nv] = dw;
+                            if (dw > fbest) fbest = dw, fat = nv;
+                        } else {
+                            q->w[nv] = -1.0;
+                        }
                         ea[ne] = vi;
-                        eb[ne] = vo;
+                        enx[ne] = head[vo];
+                        head[vo] = ne;
                         ev[ne] = nv;
                         ne++;
                         nvx = nv++;
@@ -134,6 +152,7 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
                 }
                 if (ni == start || q->fi[ni - 1] != nvx) q->fi[ni++] = nvx;
             }
+            a = b, ma = mb;
         }
         while (ni - start > 1 && q->fi[ni - 1] == q->fi[start]) ni--;
         if (ni > start) {
@@ -179,7 +198,13 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
     q->fs[nf] = ni;
     q->nf = nf;
     q->nv = nv;
+    if (y) *far = fbest, *at = fat;
     return 1;
+}
+
+int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], double off)
+{
+    return clip_far(p, q, n, off, NULL, NULL, NULL);
 }
 
 /* The farthest vertex of p from y (the first in vertex order among
@@ -210,18 +235,6 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
     return cfpo3_near_solve(y, m, m, lo, hi, floor2, best, scratch, count);
 }
 
-/* The planes kept sorted at the front of a cell's list (most cells need
- * only the nearest few). */
-#define NEAR_K 12
-
-static void put_plane(double pn[3][CFPO3_MAXM + NEAR_K], double *poff, double *pdd, int at, const double nv[3],
-                      double off, double dd)
-{
-    pn[0][at] = nv[0], pn[1][at] = nv[1], pn[2][at] = nv[2];
-    poff[at] = off;
-    pdd[at] = dd;
-}
-
 double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], const double hi[3], double floor2,
                         double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count)
 {
@@ -230,62 +243,48 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
     double bestd = floor2 > 0.0 ? floor2 : -1.0;
     int found = 0;
     cfpo3_poly box;
-    /* the bisectors that can reach the box: normal, offset (+inf once
-     * used), squared length */
-    double pn[3][CFPO3_MAXM + NEAR_K], poff[CFPO3_MAXM + NEAR_K], pdd[CFPO3_MAXM + NEAR_K];
+    /* the bisectors that can reach the box, in site order: normal,
+     * offset (+inf once used), squared length */
+    double pn[3][CFPO3_MAXM], poff[CFPO3_MAXM], pdd[CFPO3_MAXM];
     cfpo3_poly_box(&box, lo, hi);
     for (int i = 0; i < cells; i++) {
         const double *yi = y + 3 * i;
         double far = far_cached(&box, yi, 1, NULL);
         if (far <= bestd) continue;
+        const double far4 = 4.0 * far;
         /* One pass over the other sites: the kill test (one bisector puts
          * the whole box on y_j's side: the cell misses S), and the planes
          * whose bisector can reach the box. */
-        int killed = 0, np = 0, nr = 0;
+        int killed = 0, ns = 0;
         for (int j = 0; j < m; j++) {
             if (j == i) continue;
             const double *yj = y + 3 * j;
-            const double nv[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
-            const double dd = nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2];
-            const double off = nv[0] * yi[0] + nv[1] * yi[1] + nv[2] * yi[2] + 0.5 * dd;
-            double low = 0.0; /* the box's smallest n.c */
-            for (int a = 0; a < 3; a++) low += nv[a] * (nv[a] > 0.0 ? lo[a] : hi[a]);
+            const double n0 = yj[0] - yi[0], n1 = yj[1] - yi[1], n2 = yj[2] - yi[2];
+            const double dd = n0 * n0 + n1 * n1 + n2 * n2;
+            const double off = n0 * yi[0] + n1 * yi[1] + n2 * yi[2] + 0.5 * dd;
+            /* the box's smallest n.c */
+            const double low = n0 * (n0 > 0.0 ? lo[0] : hi[0]) + n1 * (n1 > 0.0 ? lo[1] : hi[1]) +
+                               n2 * (n2 > 0.0 ? lo[2] : hi[2]);
             if (low - off > 1e-12 * (dd + fabs(off))) {
                 killed = 1;
                 break;
             }
-            if (dd >= 4.0 * far) continue;
-            /* the NEAR_K nearest kept in the order (squared distance to
-             * y_i, index) at the front; the others wait unsorted behind
-             * slot NEAR_K (a kept one pushed out joins them) */
-            if (np == NEAR_K) {
-                if (!(dd < pdd[NEAR_K - 1])) {
-                    put_plane(pn, poff, pdd, NEAR_K + nr++, nv, off, dd);
-                    continue;
-                }
-                const double last[3] = {pn[0][NEAR_K - 1], pn[1][NEAR_K - 1], pn[2][NEAR_K - 1]};
-                put_plane(pn, poff, pdd, NEAR_K + nr++, last, poff[NEAR_K - 1], pdd[NEAR_K - 1]);
-                np--;
-            }
-            int at = np++;
-            while (at > 0 && pdd[at - 1] > dd) {
-                pn[0][at] = pn[0][at - 1], pn[1][at] = pn[1][at - 1], pn[2][at] = pn[2][at - 1];
-                poff[at] = poff[at - 1];
-                pdd[at] = pdd[at - 1];
-                at--;
-            }
-            put_plane(pn, poff, pdd, at, nv, off, dd);
+            if (dd >= far4) continue;
+            const int sl = ns++;
+            pn[0][sl] = n0, pn[1][sl] = n1, pn[2][sl] = n2;
+            poff[sl] = off;
+            pdd[sl] = dd;
         }
         if (killed) continue;
         if (count) count->cells++;
         /* Lazy clipping: the farthest vertex v of the polytope so far is
          * the cell's answer once no bisector cuts it off (the cell lies
-         * inside the polytope); else the polytope is clipped by the plane
-         * of the site nearest to y_i among those whose bisector cuts v off
-         * (it cuts most), and again. A cell is abandoned once v is no farther than the
-         * best. Each plane is applied at most once. */
+         * inside the polytope); else the polytope is clipped by the
+         * bisector that v lies deepest beyond (Euclidean distance), and
+         * again. A cell is abandoned once v is no farther than the best.
+         * Each plane is applied at most once. */
         cfpo3_poly *cur = &box;
-        int which = 0, empty = 0, abandoned = 0, at = -1, first = 0;
+        int which = 0, empty = 0, abandoned = 0, at = -1;
         far = far_cached(cur, yi, 0, &at);
         for (;;) {
             if (far <= bestd) {
@@ -293,27 +292,25 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
                 break;
             }
             const double vx = cur->v[0][at], vy = cur->v[1][at], vz = cur->v[2][at];
-            /* the first plane in order, not used yet, that cuts v off; a used
-             * plane's offset is +inf, and the used ones at the front are passed */
+            const double f4 = 4.0 * far;
+            /* among the planes not used yet, the one v lies deepest beyond
+             * (the largest (n.v - off)^2 / |n|^2, the first in site order
+             * among equals); a used plane's offset is +inf */
             int k = -1;
-            while (first < np && poff[first] == INFINITY) first++;
-            for (int q = first; q < np && pdd[q] < 4.0 * far; q++)
-                if (pn[0][q] * vx + pn[1][q] * vy + pn[2][q] * vz - poff[q] > 0.0) {
-                    k = q;
-                    break;
-                }
-            if (k < 0 && nr > 0) { /* none of the kept: the nearest of the waiting ones */
-                double kd = 4.0 * far;
-                for (int q = NEAR_K; q < NEAR_K + nr; q++)
-                    if (pn[0][q] * vx + pn[1][q] * vy + pn[2][q] * vz - poff[q] > 0.0 && pdd[q] < kd)
-                        kd = pdd[q], k = q;
+            double kb = -1.0;
+            for (int sl = 0; sl < ns; sl++) {
+                if (!(pdd[sl] < f4)) continue;
+                const double dv = pn[0][sl] * vx + pn[1][sl] * vy + pn[2][sl] * vz - poff[sl];
+                if (dv > 0.0 && dv * dv > kb * pdd[sl]) kb = dv * dv / pdd[sl], k = sl;
             }
             if (count) count->tests++;
             if (k < 0) break; /* no plane cuts v off: v is the cell's farthest point */
             const double koff = poff[k];
             poff[k] = INFINITY;
             const double nv[3] = {pn[0][k], pn[1][k], pn[2][k]};
-            const int r = cfpo3_poly_clip(cur, &scratch[which], nv, koff);
+            double nfar;
+            int nat;
+            const int r = clip_far(cur, &scratch[which], nv, koff, yi, &nfar, &nat);
             if (r == 0 || r == -2) continue; /* (rounding or no room: the plane is passed over) */
             if (r == -1) {
                 empty = 1;
@@ -322,7 +319,7 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
             if (count) count->cuts++;
             cur = &scratch[which];
             which ^= 1;
-            far = far_cached(cur, yi, 0, &at);
+            far = nfar, at = nat;
         }
         if (empty || abandoned) continue;
         if (far > bestd) {

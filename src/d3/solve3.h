@@ -6,7 +6,8 @@
  * largest empty ball centred in S). The maximum of f(c) = min_j |c - y_j|
  * over S is a vertex of the Voronoi diagram of Y clipped to S; for each y_i
  * (nearest to the hint first) the box is clipped lazily, only by the
- * bisectors that cut off its current farthest vertex from y_i, until none
+ * bisectors that cut off its current farthest vertex from y_i (the one it
+ * lies deepest beyond first), until none
  * does (that vertex is the cell's answer) or the vertex is no farther than
  * the best found (the cell is abandoned) (docs/method.md, "Three
  * dimensions"). Pure functions: no allocation, no globals, no I/O; local

@@ -8,7 +8,7 @@
 # and 4 ranks give the uninterrupted bytes; SIGUSR1 to mpirun: exit 3, a
 # checkpoint, no output, and a resume on 3 ranks gives the uninterrupted
 # bytes; more ranks than the grid's bricks allow: one line, exit 2, no
-# file; cfpo3d under mpirun too.
+# file; cfpo3d under mpirun too; --dry-run prints the memory a rank.
 set -u
 HERE=$(cd "$(dirname "$0")/.." && pwd)
 . "$HERE/mpi_common.sh" "$1" "$2" cfpo-d3mpi
@@ -87,6 +87,21 @@ expect_err 2 "cannot cut the 9x9x9 grid" 5 --dim 3 -n $N -o bad.npy
 "$CFPO" -q --dim 3 -n $N --max-iter 2 -t 1 -o c1.npy >/dev/null
 timeout 120 "$MPIRUN" --oversubscribe -np 2 "$B/cfpo3d" -q -n $N --max-iter 2 -t 1 -o c2.npy >c2.out 2>&1
 cmp -s c1.npy c2.npy && grep -q "ranks=2 " c2.out && ok || bad "cfpo3d on 2 ranks: $(head -2 c2.out)"
+
+# --dry-run under mpirun: the memory a rank for the ranks it runs on (every
+# rank holds n-long arrays, so a rank of two holds no less than one
+# process), and the process's own bytes
+field() { sed -n "s/.* $1=\([0-9.]*\).*/\1/p" "$2"; }
+"$CFPO" --dim 3 --dry-run -n 65536 >d1.out 2>&1
+run 2 --dim 3 --dry-run -n 65536 >d2.out 2>&1
+if grep -q " ranks=1 " d1.out && grep -q " ranks=2 " d2.out && [ "$(grep -c "dry run" d2.out)" = 1 ]; then
+  awk -v a="$(field bytes_per_point d1.out)" -v b="$(field bytes_per_point_rank d1.out)" \
+      -v c="$(field bytes_per_point_rank d2.out)" -v r="$(field rank_bytes d2.out)" -v p="$(field process_bytes d2.out)" \
+      'BEGIN { exit !(a > 0 && a == b && c >= a && p > 0 && r > c * 65536) }' && ok ||
+    bad "--dry-run memory a rank: $(cat d1.out d2.out)"
+else
+  bad "--dry-run under mpirun: $(cat d1.out d2.out)"
+fi
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
