@@ -6,20 +6,13 @@
  * commands keep the iterative baselines' options (trace, targets) so
  * every method runs the same way in the benchmark. */
 #include <stdio.h>
-#include <math.h>
-#include <stdlib.h>
 
 #include "bl_method.h"
+#include "bl_set.h"
 #include "jitter.h"
 #include "sobol.h"
-#include "stats.h"
 
 enum { WHITE, JITTER, SOBOL };
-
-typedef struct {
-    int64_t n;
-    double *xy;
-} direct;
 
 static int check_n(const bl_value *v, int64_t n, double tol, char *err, size_t errlen)
 {
@@ -34,16 +27,9 @@ static int check_n(const bl_value *v, int64_t n, double tol, char *err, size_t e
 
 static void *make(int kind, const bl_value *v, int64_t n, uint64_t seed, char *err, size_t errlen)
 {
-    direct *D = malloc(sizeof *D);
-    double *xy = malloc(2 * (size_t)n * sizeof *xy);
-    if (!D || !xy) {
-        free(D);
-        free(xy);
-        snprintf(err, errlen, "out of memory for n = %lld", (long long)n);
-        return NULL;
-    }
-    D->n = n;
-    D->xy = xy;
+    bl_set *D = bl_set_new(n, err, errlen);
+    if (!D) return NULL;
+    double *xy = D->xy;
     if (kind == WHITE) white_points(n, seed, xy);
     else if (kind == JITTER) jitter_points(n, seed, xy);
     else sobol_points(n, seed, !v[0].i, xy);
@@ -66,23 +52,6 @@ static void *create_sobol(const bl_value *v, int64_t n, uint64_t seed, double to
     return make(SOBOL, v, n, seed, err, errlen);
 }
 
-static void deltas(void *E, double *dmin, double *davg)
-{
-    const direct *D = E;
-    /* out of memory: NaN statistics, as the other engines */
-    if (cfpo_nn_stats(D->xy, (size_t)D->n, NULL, dmin, davg) != 0) *dmin = *davg = NAN;
-}
-
-static const double *points(void *E) { return ((direct *)E)->xy; }
-
-static void destroy(void *E)
-{
-    direct *D = E;
-    if (!D) return;
-    free(D->xy);
-    free(D);
-}
-
 static const char *sobol_name(const bl_value *v) { return v[0].i ? "sobol-plain" : "sobol"; }
 
 static const bl_option SOBOL_OPTS[] = {
@@ -91,7 +60,7 @@ static const bl_option SOBOL_OPTS[] = {
              "                       SUMMARY method=sobol-plain)\n"},
 };
 
-#define DIRECT_ENGINE .check_n = check_n, .deltas = deltas, .points = points, .destroy = destroy
+#define DIRECT_ENGINE .check_n = check_n, BL_SET_ENGINE
 
 const bl_method bl_white = {
     .name = "white", .prog = "cfpo-white", .kind = BL_ITERATIVE,

@@ -3,11 +3,10 @@
  * set; no iterations), pmj02bn by default, pmj02 with --candidates 1. */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "bl_method.h"
+#include "bl_set.h"
 #include "pmj.h"
-#include "stats.h"
 
 enum { CANDIDATES, GLOBAL };
 
@@ -22,11 +21,6 @@ static const bl_option OPTS[] = {
              "                       not only the one the progressive order names (not the\n"
              "                       paper's; SUMMARY method=pmj02bn-global)\n"},
 };
-
-typedef struct {
-    int64_t n;
-    double *xy;
-} pmj_set;
 
 static int check_n(const bl_value *v, int64_t n, double tol, char *err, size_t errlen)
 {
@@ -44,32 +38,12 @@ static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, cha
 {
     (void)tol;
     const pmj_params p = {.candidates = (int)v[CANDIDATES].i, .global = (int)v[GLOBAL].i};
-    pmj_set *S = malloc(sizeof *S);
-    double *xy = malloc(2 * (size_t)n * sizeof *xy);
-    if (!S || !xy || pmj_points(n, seed, &p, xy, NULL, err, errlen) != 0) {
-        if (!S || !xy) snprintf(err, errlen, "out of memory for n = %lld", (long long)n);
-        free(S), free(xy);
+    bl_set *S = bl_set_new(n, err, errlen);
+    if (S && pmj_points(n, seed, &p, S->xy, NULL, err, errlen) != 0) {
+        bl_set_destroy(S);
         return NULL;
     }
-    S->n = n;
-    S->xy = xy;
     return S;
-}
-
-static void deltas(void *E, double *dmin, double *davg)
-{
-    const pmj_set *S = E;
-    if (cfpo_nn_stats(S->xy, (size_t)S->n, NULL, dmin, davg) != 0) *dmin = *davg = NAN;
-}
-
-static const double *points(void *E) { return ((pmj_set *)E)->xy; }
-
-static void destroy(void *E)
-{
-    pmj_set *S = E;
-    if (!S) return;
-    free(S->xy);
-    free(S);
 }
 
 static const char *pmj_name(const bl_value *v)
@@ -88,6 +62,5 @@ const bl_method bl_pmj02bn = {
              "distance to the earlier points. The output order is the sequence's: every\n"
              "prefix is the sequence so far. Direct: no iterations. Prints one SUMMARY line\n"
              "on stdout.",
-    BL_OPTIONS(OPTS), .method_name = pmj_name, .check_n = check_n, .create = create, .deltas = deltas,
-    .points = points, .destroy = destroy,
+    BL_OPTIONS(OPTS), .method_name = pmj_name, .check_n = check_n, .create = create, BL_SET_ENGINE,
 };

@@ -3,10 +3,9 @@
  * iterations), with the paper's defaults and its progressive order. */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "bl_method.h"
-#include "stats.h"
+#include "bl_set.h"
 #include "wse.h"
 
 enum { PROGRESSIVE, RATIO, ALPHA, WEIGHT_LIMIT };
@@ -28,11 +27,6 @@ static const bl_option OPTS[] = {
              "                       beta 0.65, gamma 1.5)\n"},
 };
 
-typedef struct {
-    int64_t n;
-    double *xy;
-} wse_set;
-
 static int check_n(const bl_value *v, int64_t n, double tol, char *err, size_t errlen)
 {
     /* candidates (16 bytes), their grid, weights, heap and flags (about 50 bytes), the output */
@@ -42,34 +36,14 @@ static int check_n(const bl_value *v, int64_t n, double tol, char *err, size_t e
 static void *create(const bl_value *v, int64_t n, uint64_t seed, double tol, char *err, size_t errlen)
 {
     (void)tol;
-    wse_set *S = malloc(sizeof *S);
-    double *xy = malloc(2 * (size_t)n * sizeof *xy);
     const wse_params p = {.alpha = v[ALPHA].d, .weight_limit = (int)v[WEIGHT_LIMIT].i,
                           .progressive = (int)v[PROGRESSIVE].i};
-    if (!S || !xy || wse_points(n, seed, v[RATIO].d, &p, xy, err, errlen) != 0) {
-        if (!S || !xy) snprintf(err, errlen, "out of memory for n = %lld", (long long)n);
-        free(S), free(xy);
+    bl_set *S = bl_set_new(n, err, errlen);
+    if (S && wse_points(n, seed, v[RATIO].d, &p, S->xy, err, errlen) != 0) {
+        bl_set_destroy(S);
         return NULL;
     }
-    S->n = n;
-    S->xy = xy;
     return S;
-}
-
-static void deltas(void *E, double *dmin, double *davg)
-{
-    const wse_set *S = E;
-    if (cfpo_nn_stats(S->xy, (size_t)S->n, NULL, dmin, davg) != 0) *dmin = *davg = NAN;
-}
-
-static const double *points(void *E) { return ((wse_set *)E)->xy; }
-
-static void destroy(void *E)
-{
-    wse_set *S = E;
-    if (!S) return;
-    free(S->xy);
-    free(S);
 }
 
 static const char *wse_name(const bl_value *v) { return v[PROGRESSIVE].i ? "wse-progressive" : "wse"; }
@@ -81,6 +55,5 @@ const bl_method bl_wse = {
              "d_max = 2 r_max, r_max = sqrt(1 / (2 sqrt(3) n)), weight limiting, the heaviest\n"
              "sample eliminated until n remain. Direct: no iterations. Prints one SUMMARY line\n"
              "on stdout.",
-    BL_OPTIONS(OPTS), .method_name = wse_name, .check_n = check_n, .create = create, .deltas = deltas,
-    .points = points, .destroy = destroy,
+    BL_OPTIONS(OPTS), .method_name = wse_name, .check_n = check_n, .create = create, BL_SET_ENGINE,
 };

@@ -11,6 +11,7 @@
 #include "dens_measure.h"
 #include "geom.h"
 #include "grid.h"
+#include "hilbert.h"
 #include "rng.h"
 #include "stats.h"
 #include "stoprule.h"
@@ -159,34 +160,12 @@ ccvt_engine *ccvt_create_from(int64_t n, int64_t m, const double *pts, double L,
     return E;
 }
 
-/* Index of (x, y) in [0, 2^16)^2 along the Hilbert curve of order 16. */
-static uint32_t hilbert(uint32_t x, uint32_t y)
-{
-    uint32_t d = 0;
-    for (uint32_t s = 1u << 15; s > 0; s >>= 1) {
-        uint32_t rx = (x & s) > 0, ry = (y & s) > 0;
-        d += s * s * ((3 * rx) ^ ry);
-        if (ry == 0) { /* rotate the quadrant */
-            if (rx == 1) {
-                x = (s - 1) - (x & (s - 1));
-                y = (s - 1) - (y & (s - 1));
-            }
-            uint32_t t = x;
-            x = y;
-            y = t;
-        }
-        x &= s - 1;
-        y &= s - 1;
-    }
-    return d;
-}
-
 /* The curve's index of (x, y) shifted by (ox, oy) on the torus. */
 static uint32_t hilbert_key(double x, double y, double ox, double oy)
 {
     uint32_t hx = (uint32_t)(cfpo_wrap01(x + ox) * 65536.0) & 0xffff;
     uint32_t hy = (uint32_t)(cfpo_wrap01(y + oy) * 65536.0) & 0xffff;
-    return hilbert(hx, hy);
+    return (uint32_t)cfpo_hilbert(65536, hx, hy);
 }
 
 static int cmp_u64(const void *a, const void *b)

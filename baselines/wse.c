@@ -1,5 +1,6 @@
 /* wse.c - weighted sample elimination and its progressive order (wse.h). */
 #include "wse.h"
+#include "wse_heap.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -27,9 +28,7 @@ typedef struct {
     double dmax, dmin, alpha;
     long G;              /* cells a side; 0: every pair, every image */
     size_t *cstart, *cell; /* the points of each cell (local indices) */
-    int64_t *w;
-    size_t *heap, *pos;  /* max-heap of local indices */
-    size_t len;          /* live points in the heap */
+    wse_heap H;          /* the weights' max-heap of local indices, ties by candidate index */
     char *dead;
 } stage;
 
@@ -73,38 +72,12 @@ static void neighbours(stage *S, size_t a, int64_t sign, void (*f)(stage *, size
         }
 }
 
-/* heap order: larger weight first; ties: larger candidate index first */
-static int above(const stage *S, size_t a, size_t b)
-{
-    return S->w[a] > S->w[b] || (S->w[a] == S->w[b] && S->ids[a] > S->ids[b]);
-}
-
-static void swap_at(stage *S, size_t i, size_t j)
-{
-    const size_t a = S->heap[i], b = S->heap[j];
-    S->heap[i] = b, S->heap[j] = a;
-    S->pos[b] = i, S->pos[a] = j;
-}
-
-static void sift_down(stage *S, size_t i, size_t len)
-{
-    for (;;) {
-        size_t l = 2 * i + 1, best = i;
-        if (l < len && above(S, S->heap[l], S->heap[best])) best = l;
-        if (l + 1 < len && above(S, S->heap[l + 1], S->heap[best])) best = l + 1;
-        if (best == i) return;
-        swap_at(S, i, best);
-        i = best;
-    }
-}
-
-static void add_weight(stage *S, size_t a, size_t b, int64_t sign) { S->w[a] += sign * weight_ab(S, a, b); }
+static void add_weight(stage *S, size_t a, size_t b, int64_t sign) { S->H.w[a] += sign * weight_ab(S, a, b); }
 
 static void lower_weight(stage *S, size_t a, size_t b, int64_t sign)
 {
     (void)sign;
-    S->w[b] -= weight_ab(S, a, b);
-    sift_down(S, S->pos[b], S->len);
+    wse_heap_lower(&S->H, b, weight_ab(S, a, b));
 }
 
 /* ids[0..c) to ids[0..t) kept (in their order) and ids[t..c) eliminated,
@@ -120,13 +93,11 @@ static int eliminate(const double *xy, size_t *ids, size_t c, size_t t, const ws
     const size_t cells = S.G ? (size_t)S.G * (size_t)S.G : 0;
     S.cstart = calloc(cells + 2, sizeof *S.cstart);
     S.cell = malloc(c * sizeof *S.cell);
-    S.w = calloc(c, sizeof *S.w);
-    S.heap = malloc(c * sizeof *S.heap);
-    S.pos = malloc(c * sizeof *S.pos);
+    const int heap_ok = wse_heap_alloc(&S.H, c, ids) == 0;
     S.dead = calloc(c, 1);
     size_t *gone = malloc(c * sizeof *gone);
     int rc = -1;
-    if (!S.cstart || !S.cell || !S.w || !S.heap || !S.pos || !S.dead || !gone) goto done;
+    if (!S.cstart || !S.cell || !heap_ok || !S.dead || !gone) goto done;
     if (S.G) { /* counting sort of the points into cells */
         for (size_t a = 0; a < c; a++)
             S.cstart[cell_of(xy[2 * ids[a] + 1], S.G) * S.G + cell_of(xy[2 * ids[a]], S.G) + 2]++;
@@ -135,14 +106,9 @@ static int eliminate(const double *xy, size_t *ids, size_t c, size_t t, const ws
             S.cell[S.cstart[cell_of(xy[2 * ids[a] + 1], S.G) * S.G + cell_of(xy[2 * ids[a]], S.G) + 1]++] = a;
     }
     for (size_t a = 0; a < c; a++) neighbours(&S, a, 1, add_weight);
-    for (size_t a = 0; a < c; a++) S.heap[a] = a, S.pos[a] = a;
-    S.len = c;
-    for (size_t i = c / 2; i-- > 0;) sift_down(&S, i, c);
+    wse_heap_build(&S.H, c);
     for (size_t e = 0; e < c - t; e++) {
-        const size_t a = S.heap[0];
-        swap_at(&S, 0, S.len - 1);
-        S.len--;
-        sift_down(&S, 0, S.len);
+        const size_t a = wse_heap_pop(&S.H);
         S.dead[a] = 1;
         gone[e] = ids[a];
         neighbours(&S, a, -1, lower_weight);
@@ -153,7 +119,8 @@ static int eliminate(const double *xy, size_t *ids, size_t c, size_t t, const ws
     for (size_t e = c - t; e-- > 0;) ids[k++] = gone[e];
     rc = 0;
 done:
-    free(S.cstart), free(S.cell), free(S.w), free(S.heap), free(S.pos), free(S.dead), free(gone);
+    free(S.cstart), free(S.cell), free(S.dead), free(gone);
+    wse_heap_free(&S.H);
     return rc;
 }
 

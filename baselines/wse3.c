@@ -1,6 +1,7 @@
 /* wse3.c - weighted sample elimination on the unit 3-torus (wse3.h) and
  * its command cfpo3d-wse (bl3.h). */
 #include "wse3.h"
+#include "wse_heap.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -27,8 +28,7 @@ typedef struct {
     double dmax, dmin, alpha;
     long G;                /* cells a side; 0: every pair, every image */
     size_t *cstart, *cell;
-    int64_t *w;
-    size_t *heap, *pos, len;
+    wse_heap H; /* the weights' max-heap, ties by index */
     char *dead;
 } stage;
 
@@ -77,33 +77,11 @@ static void neighbours(stage *S, size_t a, void (*f)(stage *, size_t, size_t))
             }
 }
 
-static int above(const stage *S, size_t a, size_t b) { return S->w[a] > S->w[b] || (S->w[a] == S->w[b] && a > b); }
-
-static void swap_at(stage *S, size_t i, size_t j)
-{
-    const size_t a = S->heap[i], b = S->heap[j];
-    S->heap[i] = b, S->heap[j] = a;
-    S->pos[b] = i, S->pos[a] = j;
-}
-
-static void sift_down(stage *S, size_t i, size_t len)
-{
-    for (;;) {
-        size_t l = 2 * i + 1, best = i;
-        if (l < len && above(S, S->heap[l], S->heap[best])) best = l;
-        if (l + 1 < len && above(S, S->heap[l + 1], S->heap[best])) best = l + 1;
-        if (best == i) return;
-        swap_at(S, i, best);
-        i = best;
-    }
-}
-
-static void add_weight(stage *S, size_t a, size_t b) { S->w[a] += weight_ab(S, a, b); }
+static void add_weight(stage *S, size_t a, size_t b) { S->H.w[a] += weight_ab(S, a, b); }
 
 static void lower_weight(stage *S, size_t a, size_t b)
 {
-    S->w[b] -= weight_ab(S, a, b);
-    sift_down(S, S->pos[b], S->len);
+    wse_heap_lower(&S->H, b, weight_ab(S, a, b));
 }
 
 int wse3_order(const double *xyz, size_t M, size_t n, double alpha, int limit, size_t *keep)
@@ -116,26 +94,19 @@ int wse3_order(const double *xyz, size_t M, size_t n, double alpha, int limit, s
     const size_t cells = S.G ? (size_t)S.G * (size_t)S.G * (size_t)S.G : 0;
     S.cstart = calloc(cells + 2, sizeof *S.cstart);
     S.cell = malloc(M * sizeof *S.cell);
-    S.w = calloc(M, sizeof *S.w);
-    S.heap = malloc(M * sizeof *S.heap);
-    S.pos = malloc(M * sizeof *S.pos);
+    const int heap_ok = wse_heap_alloc(&S.H, M, NULL) == 0;
     S.dead = calloc(M, 1);
     int rc = -1;
-    if (!S.cstart || !S.cell || !S.w || !S.heap || !S.pos || !S.dead) goto done;
+    if (!S.cstart || !S.cell || !heap_ok || !S.dead) goto done;
     if (S.G) { /* counting sort into cells */
         for (size_t a = 0; a < M; a++) S.cstart[cell_of(xyz + 3 * a, S.G) + 2]++;
         for (size_t k = 2; k < cells + 2; k++) S.cstart[k] += S.cstart[k - 1];
         for (size_t a = 0; a < M; a++) S.cell[S.cstart[cell_of(xyz + 3 * a, S.G) + 1]++] = a;
     }
     for (size_t a = 0; a < M; a++) neighbours(&S, a, add_weight);
-    for (size_t a = 0; a < M; a++) S.heap[a] = a, S.pos[a] = a;
-    S.len = M;
-    for (size_t i = M / 2; i-- > 0;) sift_down(&S, i, M);
+    wse_heap_build(&S.H, M);
     for (size_t e = 0; e + n < M; e++) {
-        const size_t a = S.heap[0];
-        swap_at(&S, 0, S.len - 1);
-        S.len--;
-        sift_down(&S, 0, S.len);
+        const size_t a = wse_heap_pop(&S.H);
         S.dead[a] = 1;
         neighbours(&S, a, lower_weight);
     }
@@ -144,7 +115,8 @@ int wse3_order(const double *xyz, size_t M, size_t n, double alpha, int limit, s
         if (!S.dead[a]) keep[k++] = a;
     rc = 0;
 done:
-    free(S.cstart), free(S.cell), free(S.w), free(S.heap), free(S.pos), free(S.dead);
+    free(S.cstart), free(S.cell), free(S.dead);
+    wse_heap_free(&S.H);
     return rc;
 }
 

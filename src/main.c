@@ -79,6 +79,13 @@ static void usage(void)
            "                       delta_min reaches D (default: each level to convergence)\n"
            "      --relax J        after each level, J iterations with the level before it\n"
            "                       moving too (lifts the full set, lowers earlier prefixes)\n"
+           "      --joint S        after each level from level 1, S sweeps of the bounded\n"
+           "                       joint move: every point so far may move, no prefix's\n"
+           "                       delta_min falls (docs/method.md)\n"
+           "      --joint-last S   the last level's sweeps (default: --joint's)\n"
+           "      --joint-candidates C  trial positions per point and sweep (default 12)\n"
+           "      --joint-prefix T, --joint-full T  the joint move's targets (0.78, 0.90)\n"
+           "      --joint-hold H   a pair shorter than H Delta(prefix) may not shrink (0: off)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
            "                       output, built like the levels (docs/cli.md)\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
@@ -306,7 +313,12 @@ static void parse(int argc, char **argv, cmdline *c)
         {"box", required_argument, 0, 1005},
         {"progressive", no_argument, 0, PROG_OPT_PROGRESSIVE}, {"base", required_argument, 0, PROG_OPT_BASE},
         {"classes", required_argument, 0, PROG_OPT_CLASSES}, {"level-min", required_argument, 0, PROG_OPT_LEVEL_MIN},
-        {"relax", required_argument, 0, PROG_OPT_RELAX},
+        {"relax", required_argument, 0, PROG_OPT_RELAX}, {"joint", required_argument, 0, PROG_OPT_JOINT},
+        {"joint-prefix", required_argument, 0, PROG_OPT_JOINT_PREFIX},
+        {"joint-full", required_argument, 0, PROG_OPT_JOINT_FULL},
+        {"joint-hold", required_argument, 0, PROG_OPT_JOINT_HOLD},
+        {"joint-last", required_argument, 0, PROG_OPT_JOINT_LAST},
+        {"joint-candidates", required_argument, 0, PROG_OPT_JOINT_CANDIDATES},
         {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;

@@ -42,16 +42,52 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
         pc->p.relax = (int)v;
         pc->relax_given = 1;
         return 1;
+    case PROG_OPT_JOINT:
+        if (cli_parse_i64(arg, 0, 1000000, &v) != 0) cli_usage_error(prog, "--joint: '%s' is not a whole number in 0..1e6", arg);
+        pc->p.joint.sweeps = (int)v;
+        pc->joint_given = 1;
+        return 1;
+    case PROG_OPT_JOINT_LAST:
+        if (cli_parse_i64(arg, 1, 1000000, &v) != 0)
+            cli_usage_error(prog, "--joint-last: '%s' is not a whole number in 1..1e6", arg);
+        pc->p.joint_last = (int)v;
+        pc->joint_given = 1;
+        return 1;
+    case PROG_OPT_JOINT_CANDIDATES:
+        if (cli_parse_i64(arg, 1, 1000, &v) != 0)
+            cli_usage_error(prog, "--joint-candidates: '%s' is not a whole number in 1..1000", arg);
+        pc->p.joint.candidates = (int)v;
+        pc->joint_given = 1;
+        return 1;
+    case PROG_OPT_JOINT_HOLD:
+        if (cli_parse_double(arg, 0, 1.2, &pc->p.joint.hold) != 0)
+            cli_usage_error(prog, "--joint-hold: '%s' is not a number in [0, 1.2]", arg);
+        pc->joint_given = 1;
+        return 1;
+    case PROG_OPT_JOINT_PREFIX:
+    case PROG_OPT_JOINT_FULL: {
+        double t;
+        const char *name = ch == PROG_OPT_JOINT_PREFIX ? "--joint-prefix" : "--joint-full";
+        if (cli_parse_double(arg, 0.05, 1.2, &t) != 0) cli_usage_error(prog, "%s: '%s' is not a number in [0.05, 1.2]", name, arg);
+        if (ch == PROG_OPT_JOINT_PREFIX) pc->p.joint.target_prefix = t;
+        else pc->p.joint.target_full = t;
+        pc->joint_given = 1;
+        return 1;
+    }
     default: return 0;
     }
 }
 
 void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
 {
-    if (!pc->on && (pc->base_given || pc->level_min_given || pc->relax_given))
+    if (!pc->on && (pc->base_given || pc->level_min_given || pc->relax_given || pc->joint_given))
         cli_usage_error(prog, "%s needs --progressive or --classes K",
-                        pc->base_given ? "--base" : pc->relax_given ? "--relax" : "--level-min");
+                        pc->base_given ? "--base" : pc->relax_given ? "--relax" : pc->joint_given ? "--joint" : "--level-min");
     if (!pc->on) return;
+    const double tp = pc->p.joint.target_prefix > 0 ? pc->p.joint.target_prefix : 0.78;
+    const double tf = pc->p.joint.target_full > 0 ? pc->p.joint.target_full : 0.90;
+    if (tf >= sqrt(2.0) * tp) /* the pair weights must fall with the level (prog_joint.h) */
+        cli_usage_error(prog, "--joint-full %g must be below sqrt(2) times --joint-prefix %g", tf, tp);
     if (pc->base_given && pc->p.classes > 0) cli_usage_error(prog, "--base does not go with --classes");
     if (variant == CFPO_VARIANT_HYPERUNIFORM)
         cli_usage_error(prog, "--variant hyperuniform does not go with %s", pc->p.classes ? "--classes" : "--progressive");
@@ -68,6 +104,8 @@ typedef struct {
     int64_t m;
     const cfpo_prog_level *done; /* the finished levels */
     int ndone;
+    FILE *joint;          /* the JOINT lines, printed after the LEVEL lines */
+    int classes;          /* --classes: the JOINT lines' groups are the classes and their union */
     double worst_min;     /* over the finished levels */
     int64_t worst_m;
 } prog_ctx;
@@ -104,6 +142,42 @@ static int on_iteration(const cfpo_iter_stats *s, void *user)
     return 0;
 }
 
+/* One sweep of the joint move: a JOINT line (kept until the LEVEL lines
+ * are out) and a trace row (level = the level count, prefix = n). */
+static void on_sweep(int sweep, int64_t moved, const double *dmin, const double *davg, int NG, void *user)
+{
+    prog_ctx *c = user;
+    const int K = c->classes ? NG - 1 : NG; /* the levels so far (classes: NG - 1 classes, then the union) */
+    int w = 0;
+    for (int k = 1; k < K; k++)
+        if (dmin[k] < dmin[w]) w = k;
+    const int64_t wm = c->classes ? w : c->done[w].m;
+    if (c->joint) {
+        fprintf(c->joint, "JOINT level=%d prefix=%lld sweep=%d moved=%lld %s=%lld worst_delta_min=%.9f delta_min=",
+                K - 1, (long long)c->done[K - 1].m, sweep, (long long)moved,
+                c->classes ? "worst_class" : "worst_prefix_min", (long long)wm, dmin[w]);
+        for (int k = 0; k < NG; k++) fprintf(c->joint, "%s%.9f", k ? "," : "", dmin[k]);
+        fprintf(c->joint, " delta_avg=");
+        for (int k = 0; k < NG; k++) fprintf(c->joint, "%s%.9f", k ? "," : "", davg[k]);
+        fprintf(c->joint, "\n");
+    }
+    const double el = cli_now() - c->t0;
+    if (c->trace) {
+        const cfpo_iter_stats s = {.iteration = sweep, .delta_min = dmin[NG - 1], .delta_avg = davg[NG - 1],
+                                   .moved = moved, .solved = 0, .max_disp = NAN, .seconds = NAN, .max_move = NAN};
+        double row[CFPO_TRACE_COLUMNS];
+        cfpo_trace_values(&s, el, row);
+        fprintf(c->trace, "%d\t%lld\t", K - 1, (long long)c->done[K - 1].m);
+        cfpo_trace_write_values(c->trace, cfpo_trace_columns, row, CFPO_TRACE_COLUMNS, 1);
+        if (c->classes) /* (the classes' sweeps measure classes, not prefixes: the worst finished prefix) */
+            fprintf(c->trace, "\t%lld\t%.9f\n", (long long)c->worst_m, c->worst_min);
+        else
+            fprintf(c->trace, "\t%lld\t%.9f\n", (long long)wm, dmin[w]);
+    }
+    cli_progress_line(&c->prog, 0, "joint move of levels 0-%d  sweep %d  worst group %lld: %.4f  full set %.4f / %.4f  moved %lld  "
+                      "elapsed %.1fs", K - 1, sweep, (long long)wm, dmin[w], dmin[NG - 1], davg[NG - 1], (long long)moved, el);
+}
+
 /* The trace's rows into a memory stream, its file written whole at the end. */
 static int commit_trace(const char *path, const char *buf, size_t len, char *err, size_t errlen)
 {
@@ -137,6 +211,15 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     cli_progress_init(&ctx.prog, quiet);
     o->progress = on_iteration;
     o->user = &ctx;
+    char *jbuf = NULL;
+    size_t jlen = 0;
+    if (pc->p.joint.sweeps > 0 || pc->p.joint_last > 0) {
+        ctx.joint = open_memstream(&jbuf, &jlen);
+        if (!ctx.joint) cli_fail(prog, "out of memory for the JOINT lines");
+        pc->p.joint.sweep_done = on_sweep;
+        ctx.classes = pc->p.classes > 0;
+        pc->p.joint.user = &ctx;
+    }
     pc->p.level_begin = level_begin;
     pc->p.user = &ctx;
     pc->p.checkpoint = checkpoint;
@@ -152,6 +235,8 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     cli_progress_end(&ctx.prog);
     const double seconds = cli_now() - ctx.t0;
     if (ctx.trace) fclose(ctx.trace);
+    if (ctx.joint) fclose(ctx.joint);
+    if (rc != 0) free(jbuf);
     if (rc == 1) { /* stopped by a signal after the checkpoint */
         free(tbuf);
         cfpo_runfiles_abort(files);
@@ -185,6 +270,8 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
         printf("LEVEL level=%d prefix=%lld iterations=%s seconds=%.6f start_delta_min=%s delta_min=%.6f "
                "delta_avg=%.6f\n", k, (long long)L->m, its, L->seconds, d0, L->delta_min, L->delta_avg);
     }
+    if (jbuf) fwrite(jbuf, 1, jlen, stdout);
+    free(jbuf);
     int wm, wa;
     cfpo_prog_worst(levels, K, &wm, &wa);
     char extra[256];

@@ -2,8 +2,10 @@
  * path of the cfpo command (main.c parses the command line and refuses the
  * options this path does not take): the run of progressive.h, its files
  * (the points in prefix order; a trace with the level, the prefix and the
- * worst prefix so far), the LEVEL lines and the SUMMARY with the worst
- * prefix.
+ * worst prefix so far, and one row per sweep of the joint move, level =
+ * the level count), the LEVEL lines, a JOINT line per sweep of the joint
+ * move (every prefix's delta_min and delta_avg) and the SUMMARY with the
+ * worst prefix.
  * May include: progressive.h and the layers below, cli.h. */
 #ifndef CFPO_MAIN_PROG_H
 #define CFPO_MAIN_PROG_H
@@ -12,12 +14,14 @@
 
 typedef struct {
     int on;              /* --progressive or --classes given */
-    int base_given, level_min_given, relax_given;
+    int base_given, level_min_given, relax_given, joint_given;
     cfpo_prog_options p; /* base, classes, level_min */
 } prog_cli;
 
 /* Option codes of main.c's getopt table. */
-enum { PROG_OPT_PROGRESSIVE = 1101, PROG_OPT_BASE, PROG_OPT_CLASSES, PROG_OPT_LEVEL_MIN, PROG_OPT_RELAX };
+enum { PROG_OPT_PROGRESSIVE = 1101, PROG_OPT_BASE, PROG_OPT_CLASSES, PROG_OPT_LEVEL_MIN, PROG_OPT_RELAX, PROG_OPT_JOINT,
+       PROG_OPT_JOINT_PREFIX, PROG_OPT_JOINT_FULL, PROG_OPT_JOINT_HOLD, PROG_OPT_JOINT_LAST,
+       PROG_OPT_JOINT_CANDIDATES };
 
 /* One option of this path: 1 when ch is one (a bad value is a usage
  * error), 0 otherwise. */

@@ -6,107 +6,32 @@
 #include <stdlib.h>
 
 #include "geom.h"
+#include "prog_buckets.h"
 #include "rng.h"
-
-typedef struct {
-    int64_t gs;    /* buckets per side */
-    double cs;     /* bucket side, 1 / gs */
-    int64_t *head; /* first point of each bucket, -1 if none */
-    int64_t *next; /* the next point of its bucket */
-    const double *xy;
-} buckets;
-
-static int64_t bucket_of(const buckets *B, double x, double y)
-{
-    int64_t bx = (int64_t)(x * (double)B->gs), by = (int64_t)(y * (double)B->gs);
-    if (bx >= B->gs) bx = B->gs - 1;
-    if (by >= B->gs) by = B->gs - 1;
-    return by * B->gs + bx;
-}
-
-/* Buckets of side about Delta(m) for points of xy, none stored yet. */
-static int buckets_init(buckets *B, const double *xy, int64_t m, int64_t cap)
-{
-    B->gs = (int64_t)floor(1.0 / cfpo_delta_bound((double)m));
-    if (B->gs < 1) B->gs = 1;
-    B->cs = 1.0 / (double)B->gs;
-    B->xy = xy;
-    B->head = malloc((size_t)(B->gs * B->gs) * sizeof *B->head);
-    B->next = malloc((size_t)cap * sizeof *B->next);
-    if (!B->head || !B->next) return -1;
-    for (int64_t b = 0; b < B->gs * B->gs; b++) B->head[b] = -1;
-    return 0;
-}
-
-static void buckets_free(buckets *B)
-{
-    free(B->head);
-    free(B->next);
-}
-
-static void add(buckets *B, int64_t k)
-{
-    const int64_t b = bucket_of(B, B->xy[2 * k], B->xy[2 * k + 1]);
-    B->next[k] = B->head[b];
-    B->head[b] = k;
-}
-
-static double torus_d2(double ax, double ay, double bx, double by)
-{
-    double dx = fabs(ax - bx), dy = fabs(ay - by);
-    if (dx > 0.5) dx = 1.0 - dx;
-    if (dy > 0.5) dy = 1.0 - dy;
-    return dx * dx + dy * dy;
-}
-
-/* Squared distance from (x, y) to its nearest stored point, searching
- * rings of buckets outwards until no nearer point can remain; stops early
- * (returning a value <= stop2) once the distance falls to stop2. */
-static double nearest2(const buckets *B, double x, double y, double stop2)
-{
-    const int64_t gs = B->gs, b = bucket_of(B, x, y), bx = b % gs, by = b / gs;
-    double best = INFINITY;
-    for (int64_t r = 0; r <= gs / 2 + 1; r++) {
-        for (int64_t dy = -r; dy <= r; dy++)
-            for (int64_t dx = -r; dx <= r; dx++) {
-                if (dx != -r && dx != r && dy != -r && dy != r) continue; /* the ring only */
-                const int64_t cx = ((bx + dx) % gs + gs) % gs, cy = ((by + dy) % gs + gs) % gs;
-                for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
-                    const double d2 = torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]);
-                    if (d2 < best) best = d2;
-                }
-            }
-        if (best <= stop2) return best;
-        const double reach = (double)r * B->cs; /* every point beyond ring r is farther */
-        if (best <= reach * reach) return best;
-        if (2 * r + 1 >= gs) break; /* every bucket seen */
-    }
-    return best;
-}
 
 int cfpo_prog_insert(double *xy, int64_t m0, int64_t m1, int cand, uint64_t seed, uint64_t stream, char *err,
                      size_t errlen)
 {
-    buckets B = {0};
-    if (buckets_init(&B, xy, m1, m1) != 0) {
-        buckets_free(&B);
+    prog_buckets B = {0};
+    if (prog_buckets_init(&B, xy, m1, m1) != 0) {
+        prog_buckets_free(&B);
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    for (int64_t k = 0; k < m0; k++) add(&B, k);
+    for (int64_t k = 0; k < m0; k++) prog_buckets_link(&B, k);
     uint64_t counter = 0;
     for (int64_t k = m0; k < m1; k++) {
         double bx = 0, by = 0, bd = -1;
         for (int c = 0; c < cand; c++) {
             const double x = cfpo_rand01(seed, stream, counter++), y = cfpo_rand01(seed, stream, counter++);
-            const double d2 = k > 0 ? nearest2(&B, x, y, bd) : 1.0;
+            const double d2 = k > 0 ? prog_buckets_nearest2(&B, x, y, -1, bd) : 1.0;
             if (d2 > bd) bx = x, by = y, bd = d2;
         }
         xy[2 * k] = bx;
         xy[2 * k + 1] = by;
-        add(&B, k);
+        prog_buckets_link(&B, k);
     }
-    buckets_free(&B);
+    prog_buckets_free(&B);
     return 0;
 }
 
@@ -149,21 +74,21 @@ int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen
 {
     const int64_t q = m1 - m0;
     if (q <= 1) return 0;
-    buckets P = {0}, Q = {0};
+    prog_buckets P = {0}, Q = {0};
     double *d = malloc((size_t)q * sizeof *d), *out = malloc(2 * (size_t)q * sizeof *out);
     unsigned char *taken = calloc((size_t)q, 1);
     const int64_t hcap = 8 * q + 16;
     hitem *h = malloc((size_t)hcap * sizeof *h);
     int rc = -1;
-    if (!d || !out || !taken || !h || buckets_init(&P, xy, m1, m1) != 0 || buckets_init(&Q, xy, m1, m1) != 0) {
+    if (!d || !out || !taken || !h || prog_buckets_init(&P, xy, m1, m1) != 0 || prog_buckets_init(&Q, xy, m1, m1) != 0) {
         snprintf(err, errlen, "out of memory");
         goto done;
     }
-    for (int64_t k = 0; k < m0; k++) add(&P, k);
+    for (int64_t k = 0; k < m0; k++) prog_buckets_link(&P, k);
     int64_t hn = 0;
     for (int64_t j = 0; j < q; j++) { /* each new point's distance to the prefix */
-        d[j] = m0 > 0 ? nearest2(&P, xy[2 * (m0 + j)], xy[2 * (m0 + j) + 1], -1.0) : INFINITY;
-        add(&Q, m0 + j);
+        d[j] = m0 > 0 ? prog_buckets_nearest2(&P, xy[2 * (m0 + j)], xy[2 * (m0 + j) + 1], -1, -1.0) : INFINITY;
+        prog_buckets_link(&Q, m0 + j);
         hpush(h, &hn, (hitem){d[j], j});
     }
     for (int64_t t = 0; t < q; t++) {
@@ -179,7 +104,7 @@ int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen
          * largest such distance, sqrt(top.d), of p */
         const double r = sqrt(top.d);
         const int64_t gs = Q.gs, reach = isinf(r) ? gs : (int64_t)ceil(r / Q.cs) + 1;
-        const int64_t b = bucket_of(&Q, px, py), bx = b % gs, by = b / gs;
+        const int64_t b = prog_buckets_of(&Q, px, py), bx = b % gs, by = b / gs;
         const int64_t span = 2 * reach + 1 >= gs ? gs : 2 * reach + 1;
         for (int64_t oy = 0; oy < span; oy++)
             for (int64_t ox = 0; ox < span; ox++) {
@@ -188,7 +113,7 @@ int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen
                 for (int64_t k = Q.head[cy * gs + cx]; k >= 0; k = Q.next[k]) {
                     const int64_t j = k - m0;
                     if (taken[j]) continue;
-                    const double d2 = torus_d2(px, py, xy[2 * k], xy[2 * k + 1]);
+                    const double d2 = prog_torus_d2(px, py, xy[2 * k], xy[2 * k + 1]);
                     if (d2 >= d[j]) continue;
                     d[j] = d2;
                     if (hn == hcap) { /* compact: one live entry per untaken point */
@@ -203,8 +128,8 @@ int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen
     for (int64_t t = 0; t < 2 * q; t++) xy[2 * m0 + t] = out[t];
     rc = 0;
 done:
-    buckets_free(&P);
-    buckets_free(&Q);
+    prog_buckets_free(&P);
+    prog_buckets_free(&Q);
     free(d);
     free(out);
     free(taken);

@@ -137,6 +137,35 @@ static int hold(int64_t n, const double *xy, const cfpo_options *o, cfpo_run_eng
     return 0;
 }
 
+/* The bounded joint move (prog_joint.h) of levels 0 .. k in xy (prefix
+ * m_k; its pair weights use the full set's target only at the last level
+ * K - 1), each level's points in greedy order again after it (the dyadic
+ * prefixes are the same sets), levels 0 .. k measured again as prefixes
+ * (and res at the last level). With classes the move's groups are the
+ * classes 0 .. k and their union (prog_joint.h). */
+static int joint_phase(double *xy, const int64_t *sizes, int k, int K, const cfpo_options *o,
+                       const cfpo_prog_options *p, cfpo_prog_level *levels, cfpo_result *res, char *err, size_t errlen)
+{
+    cfpo_prog_joint_options jo = p->joint;
+    if (k == K - 1 && p->joint_last > 0) jo.sweeps = p->joint_last;
+    jo.seed = o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT + 0x4a4f494e54ULL);
+    jo.classes = p->classes > 0;
+    if (k < K - 1 && !jo.classes) jo.target_full = jo.target_prefix;
+    double dmin[CFPO_PROG_MAX_LEVELS + 1], davg[CFPO_PROG_MAX_LEVELS + 1];
+    const double t0 = omp_get_wtime();
+    if (cfpo_prog_joint(xy, sizes, k + 1, &jo, dmin, davg, err, errlen) != 0) return -1;
+    for (int j = 0; j <= k; j++)
+        if (cfpo_prog_order(xy, j > 0 ? sizes[j - 1] : 0, sizes[j], err, errlen) != 0) return -1;
+    if (jo.classes && cfpo_prog_measure(xy, sizes, k + 1, dmin, davg, err, errlen) != 0) return -1;
+    for (int j = 0; j <= k; j++) levels[j].delta_min = dmin[j], levels[j].delta_avg = davg[j];
+    levels[k].seconds += omp_get_wtime() - t0;
+    if (k == K - 1) {
+        res->delta_min = dmin[K - 1];
+        res->delta_avg = davg[K - 1];
+    }
+    return 0;
+}
+
 int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, cfpo_run_engine *R,
                   cfpo_result *res, cfpo_prog_level *levels, int *nlevels, char *err, size_t errlen)
 {
@@ -196,7 +225,16 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         R->ops->copy(R->E, xy); /* the prefix, in id order */
         R->ops->free(R->E);
         if (cfpo_prog_order(xy, prev, m, err, errlen) != 0) break;
+        const int joint = k > 0 &&
+                          (k == K - 1 && p->joint_last > 0 ? p->joint_last : p->joint.sweeps) > 0;
+        if (joint && joint_phase(xy, sizes, k, K, o, p, levels, res, err, errlen) != 0) break;
         if (k == K - 1) {
+            if (joint) {
+                *nlevels = K;
+                const int rc = hold(n, xy, o, R, err, errlen);
+                free(xy);
+                return rc;
+            }
             int rc = p->relax > 0 ? remeasure(xy, K, o, levels, err, errlen) : 0;
             if (rc == 0) rc = hold(n, xy, o, R, err, errlen);
             free(xy);

@@ -11,7 +11,11 @@
  * moves never lower a set's delta_min), and the bytes do not depend on the
  * thread count (the engine's do not; the insertion is serial).
  * Owns: the level sizes, the per-level runs, the per-level results.
- * May include: engine.h, run_loop.h, prog_insert.h (layers 0-4). */
+ * With joint.sweeps > 0 (progressive levels only) the bounded joint move
+ * of prog_joint.h follows the last level: every point may move while no
+ * dyadic prefix's delta_min falls; then each level's points are put in
+ * greedy order again and every level measured again.
+ * May include: engine.h, run_loop.h, prog_insert.h, prog_joint.h (layers 0-4). */
 #ifndef CFPO_PROGRESSIVE_H
 #define CFPO_PROGRESSIVE_H
 
@@ -19,6 +23,7 @@
 #include <stdint.h>
 
 #include "engine.h"
+#include "prog_joint.h"
 
 #define CFPO_PROG_DEFAULT_BASE 64
 #define CFPO_PROG_MAX_LEVELS 64
@@ -40,6 +45,9 @@ typedef struct {
     int relax;        /* > 0: after each level k >= 1, this many iterations with level k - 1
                          moving too (prefix m_(k-2) held); the earlier prefixes are measured
                          again at the end */
+    cfpo_prog_joint_options joint; /* sweeps > 0: the bounded joint move after every level from
+                                      level 1 on (its seed is set from the run's) */
+    int joint_last;                /* > 0: the last level's sweeps instead of joint.sweeps */
     const char *checkpoint; /* the level under way's engine checkpoint (ckpt.h) here ... */
     int checkpoint_every;   /* ... every this many of its iterations and at its end */
     const char *resume;     /* go on from such a checkpoint (its size says its level) */

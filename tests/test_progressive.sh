@@ -13,7 +13,13 @@
 #  - SUMMARY's worst prefix is the worst LEVEL line, and the trace's last
 #    row says the same;
 #  - SIGUSR1 mid-run leaves the level's checkpoint, exit 3 and no output,
-#    and --resume from it gives the uninterrupted bytes and levels.
+#    and --resume from it gives the uninterrupted bytes and levels;
+#  - the joint move (--joint): no prefix's delta_min falls from one JOINT
+#    line to the next over the whole run (every sweep of every level's
+#    joint move, the levels between them), nor within a level's trace rows
+#    (its engine iterations, then its sweeps); the same bytes for 1-3
+#    threads and on resume; the LEVEL lines are the file's prefixes and
+#    SUMMARY's and the trace's worst prefix the worst of them.
 set -u
 HERE=$(cd "$(dirname "$0")" && pwd)
 B=$(cd "$1" && pwd)
@@ -39,6 +45,10 @@ expect 2 "hyperuniform does not go" -n 1024 --progressive --variant hyperuniform
 expect 2 "--base does not go with --classes" -n 1024 --classes 4 --base 64 -o x.npy
 expect 2 "needs --progressive" -n 1024 --base 64 -o x.npy
 expect 2 "needs --progressive" -n 1024 --relax 3 -o x.npy
+expect 2 "needs --progressive" -n 1024 --joint 3 -o x.npy
+expect 2 "must be below sqrt(2)" -n 1024 --progressive --joint 3 --joint-prefix 0.6 --joint-full 0.9 -o x.npy
+expect 2 "--joint-last" -n 1024 --progressive --joint-last 0 -o x.npy
+expect 2 "--joint-candidates" -n 1024 --progressive --joint 3 --joint-candidates 0 -o x.npy
 
 run() { "$CFPO" -q "$@"; }
 field() { grep -o " $1=[^ ]*" | head -1 | cut -d= -f2; }
@@ -141,6 +151,53 @@ PY
 expect 2 "needs the run's -n" --progressive --resume ck.bin -o x.npy
 expect 1 "checkpoint is for another run" -n 16384 -s 3 --progressive --resume ck.bin -o x.npy
 expect 1 "no level of this run has that size" -n 16000 --base 100 -s 2 --progressive --resume ck.bin -o x.npy
+
+# ---- the joint move: threads, the prefixes never fall, LEVEL = file, worst prefix
+for t in 1 2 3; do
+  run -n 2048 -s 4 -t $t --progressive --joint 4 --level-min 0.8 -o j$t.npy >j$t.sum || bad "--joint run, $t threads"
+done
+cmp -s j1.npy j2.npy && cmp -s j1.npy j3.npy && ok || bad "--joint: bytes differ across 1-3 threads"
+cmp -s j1.npy p1.npy && bad "--joint changed nothing" || ok
+run -n 2048 -s 4 -t 1 --progressive --joint 4 --level-min 0.8 --trace jt.tsv -o jt.npy >jt.sum || bad "--joint with a trace"
+cmp -s jt.npy j1.npy && ok || bad "--joint: the trace changed the bytes"
+"$AN" -q --prefixes --prefix-base 64 -t 1 j1.npy >/dev/null 2>&1 || bad "cfpo-analyze of the --joint run"
+python3 - <<'PY' && ok || bad "--joint: a prefix fell, or LEVEL / SUMMARY / trace misreport the prefixes"
+import sys
+kv = lambda l: dict(x.split("=", 1) for x in l.split()[1:])
+J = [kv(l) for l in open("jt.sum") if l.startswith("JOINT")]
+assert len(J) >= 10, len(J)
+best = {}
+for j in J:  # every prefix's delta_min, in run order, never falls
+    for k, v in enumerate(float(x) for x in j["delta_min"].split(",")):
+        if k in best and v < best[k]: sys.exit("prefix %d fell at level %s sweep %s" % (k, j["level"], j["sweep"]))
+        best[k] = v
+rows = [l.rstrip("\n").split("\t") for l in open("jt.tsv")]
+h = rows[0]; rows = rows[1:]
+L, D, W, WD = (h.index(c) for c in ("level", "delta_min", "worst_prefix", "worst_delta_min"))
+for a, b in zip(rows, rows[1:]):
+    if a[L] == b[L] and float(b[D]) < float(a[D]): sys.exit("trace: delta_min fell within level %s" % a[L])
+lv = {int(kv(l)["prefix"]): (float(kv(l)["delta_min"]), float(kv(l)["delta_avg"])) for l in open("jt.sum") if l.startswith("LEVEL")}
+an = {int(w[0]): (float(w[2]), float(w[3])) for w in (l.split() for l in open("j1.analysis/prefixes.txt") if not l.startswith("#")) if w[1] == "dyadic"}
+if any(abs(lv[m][0] - an[m][0]) > 2e-6 or abs(lv[m][1] - an[m][1]) > 2e-6 for m in lv): sys.exit("LEVEL != file")
+last = [float(x) for x in J[-1]["delta_min"].split(",")]
+if any(abs(a - lv[m][0]) > 2e-6 for a, m in zip(last, sorted(lv))): sys.exit("last JOINT line != LEVEL lines")
+w = min((v[0], m) for m, v in lv.items())
+s = kv("SUMMARY" + open("jt.sum").read().split("SUMMARY")[1])
+if int(s["worst_prefix_min"]) != w[1] or abs(float(s["worst_delta_min"]) - w[0]) > 1e-6: sys.exit("SUMMARY worst")
+if int(rows[-1][W]) != w[1] or abs(float(rows[-1][WD]) - w[0]) > 1e-6: sys.exit("trace worst")
+PY
+# resume with the joint move: SIGUSR1 mid-run, then --resume gives the same bytes
+run -n 8192 -s 2 -t 2 --progressive --joint 3 -o jref.npy >jref.sum || bad "--joint reference run"
+"$CFPO" -q -n 8192 -s 2 -t 2 --progressive --joint 3 --checkpoint jck.bin --checkpoint-every 3 -o jcut.npy >jcut.sum 2>jcut.err &
+P=$!
+for i in $(seq 1 400); do [ -f jck.bin ] && break; sleep 0.05; done
+sleep 0.2
+kill -USR1 $P 2>/dev/null
+wait $P; rc=$?
+[ "$rc" -eq 3 ] || [ "$rc" -eq 0 ] || bad "--joint signalled run: exit $rc ($(cat jcut.err))"
+[ "$rc" -eq 0 ] && echo "note: the --joint run ended before the signal; resuming from its last level's checkpoint"
+run -n 8192 -s 2 -t 1 --progressive --joint 3 --resume jck.bin -o jres.npy >jres.sum || bad "--joint --resume"
+cmp -s jref.npy jres.npy && ok || bad "--joint --resume: not the uninterrupted bytes"
 
 echo "test_progressive: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

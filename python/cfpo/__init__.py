@@ -40,7 +40,10 @@ class Result:
     stop: which rule ended the run, one of "converged", "target", "time",
     "max-iter", "caller"; trace: dict of numpy arrays, one entry a row of the
     command's --trace file (columns TRACE_COLUMNS; a baseline's are its
-    command's: the first eight of them, then its own).
+    command's: the first eight of them, then its own). packing_fraction
+    (dim=3 only, else None): the packing fraction of spheres of diameter
+    delta_min (pi/6 n d^3 on the unit torus, d = delta_min Delta3(n)): the
+    command's BOX3D packing_fraction=, the same at any --box.
     """
     points: np.ndarray
     iterations: int
@@ -50,6 +53,7 @@ class Result:
     converged: bool
     stop: str
     trace: dict = field(repr=False, default_factory=dict)
+    packing_fraction: float = None
 
 
 def _callback(progress, n, max_iter, stops):
@@ -165,19 +169,25 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
     r = _call(True, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
               progress, density, dim)
     pts, it, secs, dmin, davg, conv, stop, tr = r
-    return Result(pts, it, secs, dmin, davg, conv, stop, dict(zip(TRACE_COLUMNS, tr)))
+    pf = None
+    if pts.shape[1] == 3:  # the command's BOX3D line (src/d3/cli3.c)
+        d = dmin * np.cbrt(np.sqrt(2.0) / pts.shape[0])
+        pf = float(np.pi / 6.0 * pts.shape[0] * d * d * d)
+    return Result(pts, it, secs, dmin, davg, conv, stop, dict(zip(TRACE_COLUMNS, tr)), pf)
 
 def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
            target_avg=None, time_limit=None, init=None, progress=None, density=None, dim=2, progressive=False,
-           classes=None, base=None, level_min=None, relax=None):
+           classes=None, base=None, level_min=None, relax=None, joint=None, joint_last=None):
     """CFPO points: run(...).points, an (n, 2) float64 array (dim=3: (n, 3)) that owns its memory.
 
     The same arguments as cfpo.run; the same bytes as `cfpo ... -o x.npy`
     (dim=3: `cfpo --dim 3 ... -o x.npy`).
     progressive=True: the set of `cfpo --progressive` (every prefix of
     base * 2^k points blue noise, rows in prefix order); classes=K: that of
-    `cfpo --classes K` (class c = rows [c n/K, (c+1) n/K)); base, level_min
-    and relax as the command's --base, --level-min and --relax. Both take
+    `cfpo --classes K` (class c = rows [c n/K, (c+1) n/K)); base, level_min,
+    relax, joint and joint_last as the command's --base, --level-min,
+    --relax, --joint S and --joint-last S (the bounded joint move's sweeps,
+    docs/cli.md). Both take
     neither init, density nor time_limit (the command refuses them too),
     and only dim=2.
     """
@@ -186,16 +196,18 @@ def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_it
             raise ValueError("progressive and classes are two-dimensional (dim=2)")
         return progressive_run(n, seed=seed, variant=variant, threads=threads, tol=tol, max_iter=max_iter,
                                target_min=target_min, target_avg=target_avg, progress=progress,
-                               classes=classes, base=base, level_min=level_min, relax=relax,
+                               classes=classes, base=base, level_min=level_min, relax=relax, joint=joint,
+                               joint_last=joint_last,
                                _refuse=dict(init=init, density=density, time_limit=time_limit))[0]
-    if base is not None or level_min is not None or relax is not None:
-        raise ValueError("base, level_min and relax need progressive=True or classes=K")
+    if base is not None or level_min is not None or relax is not None or joint is not None or joint_last is not None:
+        raise ValueError("base, level_min, relax, joint and joint_last need progressive=True or classes=K")
     return _call(False, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
                  progress, density, dim)[0]
 
 
 def progressive_run(n, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
-                    target_avg=None, progress=None, classes=None, base=None, level_min=None, relax=None,
+                    target_avg=None, progress=None, classes=None, base=None, level_min=None, relax=None, joint=None,
+                    joint_last=None,
                     _refuse=None):
     """Progressive CFPO (`cfpo --progressive`, or `--classes K`): returns
     (points, levels), points (n, 2) in prefix order, the same bytes as the
@@ -229,36 +241,63 @@ def progressive_run(n, *, seed=1, variant="adaptive", threads=None, tol=None, ma
     rx = 0 if relax is None else relax
     if isinstance(rx, bool) or not isinstance(rx, int) or rx < 0:
         raise ValueError(f"relax: '{relax}' is not a whole number >= 0")
+    js = 0 if joint is None else _args.whole("joint", joint, 0, 1000000)
+    jl = 0 if joint_last is None else _args.whole("joint_last", joint_last, 1, 1000000)
     stops = _args.stop_rules(target_min, target_avg, None)
     cb, line = _callback(progress, nn, _args.max_iter(max_iter), stops)
     try:
         r = _core.progressive(nn, _args.seed(seed), variant, _args.threads(threads), _args.tol(tol, -1.0),
-                              _args.max_iter(max_iter), stops[0], stops[1], b, K, lm, rx, cb)
+                              _args.max_iter(max_iter), stops[0], stops[1], b, K, lm, rx, js, jl, cb)
     finally:
         if line is not None:
             line.end()
     return r[0], r[7]
 
-def load(path):
-    """Reads a point file into an (n, 2) float64 array.
+def load(path, dim=2):
+    """Reads a point file into an (n, 2) float64 array ((n, 3) with dim=3).
 
     The format comes from the extension: .txt/.dat/.pts/.xy (text "x y"
     lines, '#' comments), .csv (a header line "x,y", then "x,y" a line),
     .npy (NumPy, float64 or float32), .bin/.raw/.f64 (raw little-endian
-    float64 pairs). The reader is the commands' own: it refuses empty,
-    truncated or corrupt files, NaN/inf and points outside [0, 1)^2
+    float64 pairs). dim=3 reads what `cfpo --dim 3 --init` reads: .npy
+    (n x 3), text "x y z" lines, CSV with the header "x,y,z" and raw
+    float64 triples. The reader is the commands' own: it refuses empty,
+    truncated or corrupt files, NaN/inf and points outside the unit torus
     (ValueError), and missing or unreadable files (OSError).
     """
+    if _dim(dim) == 3:
+        if _core.format3_of(str(path)) != 2:
+            raise ValueError(f"{path}: not a 3-D format cfpo reads (use .npy, .txt/.dat/.pts, .csv, "
+                             ".bin/.raw/.f64)")
+        return _core.load3(path)
     return _core.load(path)
 
 
-def save(path, points):
-    """Writes points ((n, 2), in [0, 1)^2) to path, format from the extension.
+def save(path, points, box=None):
+    """Writes points ((n, 2) in [0, 1)^2, or (n, 3) in [0, 1)^3) to path,
+    format from the extension.
 
     The file is written under a temporary name and renamed when complete,
     so a failure leaves nothing behind; the bytes are those the commands
-    write. Unknown extensions raise ValueError, unwritable paths OSError.
+    write (`cfpo -o`, `cfpo --dim 3 --box L -o`). 3-D sets also go to the
+    files simulation codes read: extended XYZ (.xyz/.extxyz, the periodic
+    cell), LAMMPS data (.data/.lmp) and GROMACS .gro, which hold the box of
+    side box (default 1; coordinates times box); the other formats hold
+    the unit torus. box is for 3-D sets only. Unknown extensions and a box
+    that is not positive and finite raise ValueError, unwritable paths
+    OSError.
     """
+    shape = np.shape(points)
+    if len(shape) == 2 and shape[1] == 3:
+        a = _args.as_points(points, dim=3)
+        b = 1.0 if box is None else _args.real("box", box, 0.0, float("inf"), open_lo=True)
+        if _core.format3_of(str(path)) == 0:
+            raise ValueError(f"{path}: unknown output format (use .npy, .txt/.dat/.pts, .csv, .bin/.raw/.f64, "
+                             ".xyz/.extxyz, .data/.lmp, .gro)")
+        _core.save3(path, a, b)
+        return
+    if box is not None:
+        raise ValueError("box: only for 3-D sets ((n, 3) points)")
     a = _args.as_points(points)
     if _core.format_of(str(path)) == "unknown":
         raise ValueError(f"{path}: unknown output format (use {_core.extensions})")

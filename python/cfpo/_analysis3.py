@@ -132,13 +132,17 @@ class Certificate3:
     when every point passes (none can be moved farther from the rest;
     relative tolerance 1e-9), passed (points that pass), max_violation
     (max over points of (R_i - d_i) / Delta3(n), <= 0 when all pass).
-    cfpo3d-analyze --certify's fpd_pass= fpd_points= fpd_max_violation=."""
+    cfpo3d-analyze --certify's fpd_pass= fpd_points= fpd_max_violation=.
+    violation: each point's (R_i - d_i) / Delta3(n) ((n,) float64, in
+    the points' order; a point passes when R_i <= d_i (1 + 1e-9), so the
+    points with violation > 1e-9 fail)."""
     fpd: bool
     passed: int
     max_violation: float
+    violation: np.ndarray = field(repr=False, default=None)
 
 
 def certify(p):
     a = points(p, 2)
-    passed, viol = _core.certify3(a)
-    return Certificate3(passed == a.shape[0], passed, viol)
+    passed, viol, each = _core.certify3(a)
+    return Certificate3(passed == a.shape[0], passed, viol, each)

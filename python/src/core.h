@@ -35,6 +35,9 @@ int core_import_numpy(void);
 /* Raises the exception that fits a library message: MemoryError for "out
  * of memory" / "too large for memory", else `type`. Returns NULL. */
 PyObject *core_error(PyObject *type, const char *msg);
+/* A point-file reader's one line raised as OSError (the file cannot be
+ * opened or read) or ValueError (its contents are refused); NULL. */
+PyObject *core_read_error(const char *msg);
 
 /* A C-contiguous float64 (n, 2) view of obj (a new reference), or NULL
  * with TypeError/ValueError. The Python layer has already converted. */
@@ -116,5 +119,9 @@ PyObject *core_spectrum3(PyObject *self, PyObject *args);
 PyObject *core_pcf3(PyObject *self, PyObject *args);
 PyObject *core_voronoi3(PyObject *self, PyObject *args);
 PyObject *core_certify3(PyObject *self, PyObject *args);
+/* The 3-D point files (core_files3.c). */
+PyObject *core_load3(PyObject *self, PyObject *args);
+PyObject *core_save3(PyObject *self, PyObject *args);
+PyObject *core_format3_of(PyObject *self, PyObject *args);
 
 #endif

@@ -223,7 +223,8 @@ PyObject *core_voronoi3(PyObject *self, PyObject *args)
                          fmax(0, sv2 / (double)n - mv * mv));
 }
 
-/* certify3(points) -> (points that pass, max violation over Delta3(n)). */
+/* certify3(points) -> (points that pass, max violation over Delta3(n),
+ * each point's violation (n,)). */
 PyObject *core_certify3(PyObject *self, PyObject *args)
 {
     (void)self;
@@ -235,10 +236,21 @@ PyObject *core_certify3(PyObject *self, PyObject *args)
     cfpo3_fpd_result r;
     char err[512];
     int rc;
+    double *each = malloc(n * sizeof *each);
+    if (!each) {
+        Py_DECREF(a);
+        return PyErr_NoMemory();
+    }
     Py_BEGIN_ALLOW_THREADS
-    rc = cfpo3_fpd_certify((const double *)PyArray_DATA(a), n, &r, err, sizeof err);
+    rc = cfpo3_fpd_certify((const double *)PyArray_DATA(a), n, &r, each, err, sizeof err);
     Py_END_ALLOW_THREADS
     Py_DECREF(a);
-    if (rc != 0) return core_error(PyExc_ValueError, err);
-    return Py_BuildValue("(nd)", (Py_ssize_t)r.passed, r.max_violation);
+    if (rc != 0) {
+        free(each);
+        return core_error(PyExc_ValueError, err);
+    }
+    const npy_intp dims[1] = {(npy_intp)n};
+    PyObject *v = core_adopt(each, 1, dims);
+    if (!v) return NULL;
+    return Py_BuildValue("(ndN)", (Py_ssize_t)r.passed, r.max_violation, v);
 }

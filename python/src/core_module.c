@@ -5,7 +5,6 @@
 #include "core.h"
 
 #include <stdlib.h>
-#include <string.h>
 
 #include "cfpo.h"
 #include "pointfile.h"
@@ -27,11 +26,7 @@ static PyObject *core_load(PyObject *self, PyObject *args)
     rc = pf_read(path, &xy, &n, err, sizeof err);
     Py_END_ALLOW_THREADS
     Py_DECREF(pathobj);
-    if (rc != 0) {
-        if (strstr(err, "cannot open") || strstr(err, "not a regular file") || strstr(err, "read error"))
-            return core_error(PyExc_OSError, err);
-        return core_error(PyExc_ValueError, err);
-    }
+    if (rc != 0) return core_read_error(err);
     return core_points_adopt(xy, n);
 }
 
@@ -97,6 +92,9 @@ static PyMethodDef methods[] = {
     {"load", core_load, METH_VARARGS, "Reads a point file (see cfpo.load)."},
     {"save", core_save, METH_VARARGS, "Writes a point file (see cfpo.save)."},
     {"format_of", core_format_of, METH_VARARGS, "The point-file format of a file name."},
+    {"load3", core_load3, METH_VARARGS, "Reads a 3-D point file (see cfpo.load, dim=3)."},
+    {"save3", core_save3, METH_VARARGS, "Writes a 3-D point file (see cfpo.save)."},
+    {"format3_of", core_format3_of, METH_VARARGS, "0, 1 (written) or 2 (also read): a 3-D file name's format."},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_core",

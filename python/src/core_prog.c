@@ -13,7 +13,8 @@
 #include "stoprule.h"
 
 /* progressive(n, seed, variant, threads, tol, max_iter, target_min,
- * target_avg, base, classes, level_min, relax, callback) -> (points,
+ * target_avg, base, classes, level_min, relax, joint, joint_last,
+ * callback) -> (points,
  * iterations, seconds, delta_min, delta_avg, converged, stop, levels):
  * levels a list of (prefix, iterations, delta_min, delta_avg). */
 PyObject *core_progressive(PyObject *self, PyObject *args)
@@ -22,11 +23,11 @@ PyObject *core_progressive(PyObject *self, PyObject *args)
     long long n, base;
     unsigned long long seed;
     const char *variant;
-    int threads, max_iter, classes, relax;
+    int threads, max_iter, classes, relax, joint, joint_last;
     double tol, tmin, tavg, level_min;
     PyObject *callback;
-    if (!PyArg_ParseTuple(args, "LKsididdLidiO", &n, &seed, &variant, &threads, &tol, &max_iter, &tmin, &tavg,
-                          &base, &classes, &level_min, &relax, &callback))
+    if (!PyArg_ParseTuple(args, "LKsididdLidiiiO", &n, &seed, &variant, &threads, &tol, &max_iter, &tmin, &tavg,
+                          &base, &classes, &level_min, &relax, &joint, &joint_last, &callback))
         return NULL;
     cfpo_options o;
     if (core_options_of(&o, seed, variant, threads, tol, max_iter, tmin, tavg, 0) != 0) return NULL;
@@ -34,7 +35,8 @@ PyObject *core_progressive(PyObject *self, PyObject *args)
         PyErr_Format(PyExc_ValueError, "variant hyperuniform does not go with %s", classes ? "classes" : "progressive");
         return NULL;
     }
-    cfpo_prog_options p = {.base = base, .classes = classes, .level_min = level_min, .relax = relax};
+    cfpo_prog_options p = {.base = base, .classes = classes, .level_min = level_min, .relax = relax,
+                           .joint = {.sweeps = joint}, .joint_last = joint_last};
     char err[1024];
     int64_t sizes[CFPO_PROG_MAX_LEVELS];
     if (cfpo_prog_sizes(n, o.variant, &p, sizes, err, sizeof err) < 0) return core_error(PyExc_ValueError, err);

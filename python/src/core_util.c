@@ -20,6 +20,12 @@ PyObject *core_error(PyObject *type, const char *msg)
     return NULL;
 }
 
+PyObject *core_read_error(const char *msg)
+{
+    const int io = strstr(msg, "cannot open") || strstr(msg, "not a regular file") || strstr(msg, "read error");
+    return core_error(io ? PyExc_OSError : PyExc_ValueError, msg);
+}
+
 PyArrayObject *core_points_in(PyObject *obj, size_t *n)
 {
     PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 2, 2, NPY_ARRAY_IN_ARRAY);

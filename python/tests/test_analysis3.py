@@ -76,6 +76,23 @@ def test_matches_command_defaults(build, tmp_path, set3, name):
     c = analysis.certify(pts)
     assert ("yes" if c.fpd else "no") == s["fpd_pass"] and str(c.passed) == s["fpd_points"]
     assert f"{c.max_violation:.3g}" == s["fpd_max_violation"]
+    assert c.violation.shape == (len(pts),) and c.violation.max() == c.max_violation
+    assert np.count_nonzero(c.violation > 1e-9) <= len(pts) - c.passed <= np.count_nonzero(c.violation > -1e-9)
+
+
+def test_certificate_per_point():
+    """FCC passes at every point (violation 0); one point moved: it fails,
+    and every point farther than 0.3 from it keeps violation 0 (its own
+    lattice hole is the largest empty sphere without it)."""
+    q = lattice("fcc", 4)
+    c = analysis.certify(q)
+    assert c.fpd and np.all(np.abs(c.violation) < 1e-9)
+    q[17, 0] = (q[17, 0] + 0.03 * 0.25 / np.sqrt(2)) % 1.0
+    c = analysis.certify(q)
+    d = np.abs(q - q[17])
+    d = np.sqrt((np.minimum(d, 1 - d) ** 2).sum(axis=1))
+    assert not c.fpd and c.violation[17] > 1e-3 and c.violation.max() == c.max_violation
+    assert np.all(np.abs(c.violation[d > 0.3]) < 1e-9)
 
 
 def test_matches_command_options(build, tmp_path, set3):

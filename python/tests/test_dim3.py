@@ -58,6 +58,9 @@ def test_run3_statistics_match_command(command):
     assert r.points.shape == (324, 3)
     assert r.iterations == int(summary["iterations"]) == 7 and r.stop == summary["stop"] == "max-iter"
     assert f"{r.delta_min:.6f}" == summary["delta_min"] and f"{r.delta_avg:.6f}" == summary["delta_avg"]
+    box3d = dict(f.split("=") for f in out.splitlines()[1].split()[1:])
+    assert f"{r.packing_fraction:.6f}" == box3d["packing_fraction"]
+    assert cfpo.run(324, seed=8, max_iter=2).packing_fraction is None
     assert len(r.trace["iteration"]) == 8 and list(r.trace["iteration"]) == list(range(8))
     # delta_min never falls
     assert np.all(np.diff(r.trace["delta_min"]) >= 0)

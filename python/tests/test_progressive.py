@@ -23,6 +23,20 @@ def test_progressive_options_bytes(command, tmp_path):
     assert got.tobytes() == want.tobytes()
 
 
+def test_joint_bytes_of_the_command(command, tmp_path):
+    """the bounded joint move (--joint S, --joint-last S) from Python: the
+    command's bytes, for progressive levels and for classes, and it moves
+    the points (not the set without it)"""
+    command("cfpo", "-n", 1000, "-s", 4, "--progressive", "--level-min", 0.8, "--joint", 3, "--joint-last", 5,
+            "-o", "j.npy")
+    got = cfpo.sample(1000, seed=4, progressive=True, level_min=0.8, joint=3, joint_last=5)
+    assert got.tobytes() == np.load(tmp_path / "j.npy").tobytes()
+    assert got.tobytes() != cfpo.sample(1000, seed=4, progressive=True, level_min=0.8).tobytes()
+    command("cfpo", "-n", 800, "-s", 2, "--classes", 4, "--joint", 2, "-o", "k.npy")
+    got = cfpo.sample(800, seed=2, classes=4, joint=2)
+    assert got.tobytes() == np.load(tmp_path / "k.npy").tobytes()
+
+
 def test_classes_bytes_of_the_command(command, tmp_path):
     command("cfpo", "-n", 1200, "-s", 5, "--classes", 3, "-o", "c.npy")
     want = np.load(tmp_path / "c.npy")
@@ -47,6 +61,9 @@ def test_levels_are_the_prefixes():
     (dict(progressive=True, init=np.zeros((1024, 2))), "init does not go"),
     (dict(classes=4, base=64), "base does not go with classes"),
     (dict(base=64), "need progressive"),
+    (dict(joint=3), "need progressive"),
+    (dict(progressive=True, joint=-1), "joint"),
+    (dict(progressive=True, joint_last=0), "joint_last"),
     (dict(progressive=True, variant="hyperuniform"), "hyperuniform"),
 ])
 def test_refused(kw, msg):

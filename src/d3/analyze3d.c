@@ -214,7 +214,7 @@ int main(int argc, char **argv)
     if (certify) {
         cfpo3_fpd_result fr;
         const double t0 = cli_now();
-        if (cfpo3_fpd_certify(p, n, &fr, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+        if (cfpo3_fpd_certify(p, n, &fr, NULL, err, sizeof err) != 0) cli_fail(prog, "%s", err);
         const size_t l = strlen(extra);
         snprintf(extra + l, sizeof extra - l, " fpd_pass=%s fpd_points=%zu fpd_max_violation=%.3g fpd_seconds=%.3f",
                  fr.passed == n ? "yes" : "no", fr.passed, fr.max_violation, cli_now() - t0);

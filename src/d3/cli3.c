@@ -50,8 +50,8 @@ static int on_iteration(const cfpo_iter_stats *st, void *user)
                       st->iteration, st->delta_min, st->delta_avg, (long long)st->moved, (long long)st->solved,
                       st->seconds, cli_now() - x->t0);
     if (x->trace)
-        fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f\n", st->iteration, st->delta_min, st->delta_avg,
-                (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds);
+        fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f %d\n", st->iteration, st->delta_min, st->delta_avg,
+                (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds, st->near);
     return 0;
 }
 #define MAX_OUT 8
@@ -78,7 +78,9 @@ static void usage(void)
            "      --no-relax       move to the solver's spot (no over-relaxation)\n"
            "      --no-shift       keep the grid fixed\n"
            "      --no-skip        solve every cell every iteration (same output, slower)\n"
+           "      --no-near        the exact solve from the first iteration (no near phase)\n"
            "      --trace FILE     one line an iteration: iteration delta_min delta_avg moved solved max_disp seconds\n"
+           "                       near (1: the near solve)\n"
            "      --dry-run        print the grid and memory and exit\n"
            "  -q, --quiet          no progress line\n"
            "Under mpirun the grid is cut into one brick per rank (bricks of at least 3 cells a side);\n"
@@ -116,6 +118,7 @@ static int parse(cmdline *c, int argc, char **argv)
         {"checkpoint", required_argument, 0, 'P'}, {"checkpoint-every", required_argument, 0, 'E'},
         {"resume", required_argument, 0, 'R'}, {"no-relax", no_argument, 0, 1010},
         {"no-shift", no_argument, 0, 1011}, {"no-skip", no_argument, 0, 1012},
+        {"no-near", no_argument, 0, 1013},
         {"dry-run", no_argument, 0, 'D'}, {"trace", required_argument, 0, 'r'}, {"quiet", no_argument, 0, 'q'},
         {"help", no_argument, 0, 'h'}, {"version", no_argument, 0, 'V'}, {"variant", required_argument, 0, 1020},
         {"density", required_argument, 0, 2000}, {"tiles", required_argument, 0, 2001},
@@ -169,6 +172,7 @@ static int parse(cmdline *c, int argc, char **argv)
         case 1010: c->o.relax = 0; c->policy_given = 1; break;
         case 1011: c->o.shift = 0; c->policy_given = 1; break;
         case 1012: c->o.skip = 0; c->policy_given = 1; break;
+        case 1013: c->o.near = 0; c->policy_given = 1; break;
         case 'D': c->dry = 1; break;
         case 'r': c->trace = optarg; break;
         case 'q': c->quiet = 1; break;
@@ -352,7 +356,7 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     if (c.trace) { /* rank 0's */
         bad = root && cli_atomic_open(&tr, c.trace, err, sizeof err) != 0;
         agree_or_fail(bad, err, sizeof err);
-        if (root) fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds\n");
+        if (root) fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds near\n");
     }
     const int tracing = c.trace && root;
     cli_progress pr;

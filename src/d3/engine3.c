@@ -20,6 +20,7 @@ void cfpo3_options_default(cfpo3_options *o)
     o->relax = 1;
     o->shift = 1;
     o->skip = 1;
+    o->near = 1;
 }
 
 double cfpo3_bytes_per_point(int64_t n)
@@ -43,6 +44,7 @@ cfpo3_engine *cfpo3_alloc(int64_t n, const cfpo3_options *o, char *err, size_t e
     if (!e) goto oom;
     e->G = G;
     e->o = *o;
+    e->near = o->near ? 1 : 0;
     e->n = n;
     const size_t g3 = (size_t)G.g * G.g * G.g;
     e->pos = malloc(sizeof(double) * 3 * (size_t)n);

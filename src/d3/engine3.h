@@ -28,6 +28,7 @@ typedef struct {
     int relax;       /* 1: over-relaxed moves (the default), 0: to the solver's spot */
     int shift;       /* 1: the grid moves before iterations 1, 5, 9, ... (default) */
     int skip;        /* 1: cells whose block did not change are not solved again */
+    int near;        /* 1: start in the near phase (the default), 0: the exact solve from the start */
 } cfpo3_options;
 
 void cfpo3_options_default(cfpo3_options *o);
@@ -74,7 +75,8 @@ void cfpo3_rank_timers(const cfpo3_engine *e, double v[5], int64_t *phases, int 
 /* The points of this rank's brick. */
 int64_t cfpo3_own_points(const cfpo3_engine *e);
 /* The local solver's work so far, summed over solves: Voronoi cells
- * clipped, bisector planes tested, cuts made (for measuring). */
+ * clipped, farthest vertices tested against the bisectors, cuts made (for
+ * measuring). */
 void cfpo3_work(const cfpo3_engine *e, long *cells, long *tests, long *cuts);
 /* Bytes the engine holds for n points (for --dry-run): the same formula
  * cfpo3_create allocates by. */

@@ -1,14 +1,16 @@
 /* engine3_ckpt.c - the 3-D engine's checkpoint file (engine3.h).
  *
- * Version 1, little-endian, 64-byte header:
+ * Version 2, little-endian, 64-byte header (version 1, before the near
+ * phase, is refused):
  *    0  magic "CFPO3DCK"   8 bytes
- *    8  version = 1        u32
+ *    8  version = 2        u32
  *   12  header bytes = 64  u32
  *   16  n                  u64   points (id order after the header)
  *   24  seed               u64
  *   32  iteration          u64   iterations done, in [0, 1e9]
  *   40  tol                f64   in (0, CFPO_TOL_MAX]
- *   48  flags              u32   bit 0 relax, bit 1 shift, bit 2 skip; no other bit
+ *   48  flags              u32   bit 0 relax, bit 1 shift, bit 2 skip, bit 3 in the
+ *                                near phase; no other bit
  *   52  reserved           u32   0
  *   56  reserved           u32   0
  *   60  crc32              u32   zlib's crc32 of the header (this field as
@@ -91,13 +93,14 @@ static int write_file(const cfpo3_engine *e, const double *pos, const char *path
     unsigned char h[HDR];
     memset(h, 0, sizeof h);
     memcpy(h, MAGIC, 8);
-    put32(h + 8, 1);
+    put32(h + 8, 2);
     put32(h + 12, HDR);
     put64(h + 16, (uint64_t)e->n);
     put64(h + 24, e->o.seed);
     put64(h + 32, (uint64_t)e->iter);
     memcpy(h + 40, &e->o.tol, 8);
-    put32(h + 48, (uint32_t)((e->o.relax ? 1 : 0) | (e->o.shift ? 2 : 0) | (e->o.skip ? 4 : 0)));
+    put32(h + 48, (uint32_t)((e->o.relax ? 1 : 0) | (e->o.shift ? 2 : 0) | (e->o.skip ? 4 : 0) |
+                          (e->near ? 8 : 0)));
     put32(h + 60, crc_of(h, pos, e->n));
     safefile f;
     if (safefile_open(&f, path, "wb", err, errlen) != 0) return -1;
@@ -143,7 +146,7 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
         snprintf(err, errlen, "%s: not a 3-D checkpoint (bad magic or too short)", name);
         return NULL;
     }
-    if (get32(buf + 8) != 1 || get32(buf + 12) != HDR) {
+    if (get32(buf + 8) != 2 || get32(buf + 12) != HDR) {
         snprintf(err, errlen, "%s: unsupported 3-D checkpoint version %u", name, get32(buf + 8));
         return NULL;
     }
@@ -163,7 +166,7 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
         snprintf(err, errlen, "%s: tolerance out of range", name);
         return NULL;
     }
-    if ((flags & ~7u) != 0 || get32(buf + 52) != 0 || get32(buf + 56) != 0) {
+    if ((flags & ~15u) != 0 || get32(buf + 52) != 0 || get32(buf + 56) != 0) {
         snprintf(err, errlen, "%s: bad flags or reserved fields", name);
         return NULL;
     }
@@ -185,6 +188,7 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
     o.relax = (flags & 1) != 0;
     o.shift = (flags & 2) != 0;
     o.skip = (flags & 4) != 0;
+    o.near = (flags & 8) != 0;
     o.threads = threads;
     char e2[200];
     cfpo3_engine *e = NULL;

@@ -52,7 +52,7 @@ struct Big {
 
 } // namespace
 
-extern "C" int cfpo3_fpd_certify(const double *p, size_t n, cfpo3_fpd_result *r, char *err, size_t errlen)
+extern "C" int cfpo3_fpd_certify(const double *p, size_t n, cfpo3_fpd_result *r, double *each, char *err, size_t errlen)
 {
     try {
         if (n < 39) {
@@ -110,6 +110,7 @@ extern "C" int cfpo3_fpd_certify(const double *p, size_t n, cfpo3_fpd_result *r,
             const double d0 = std::sqrt(q0), R = std::sqrt(R2);
             r->passed += R <= d0 * (1 + 1e-9);
             r->max_violation = std::max(r->max_violation, (R - d0) / D);
+            if (each) each[i] = (R - d0) / D;
         }
         return 0;
     } catch (const std::bad_alloc &) {

@@ -25,8 +25,10 @@ typedef struct {
     double max_violation; /* max over points of (R_i - d_i) / Delta3(n), <= 0 when all pass */
 } cfpo3_fpd_result;
 
-/* 0, or -1 with a message (duplicates, too few points, memory). */
-int cfpo3_fpd_certify(const double *p, size_t n, cfpo3_fpd_result *r, char *err, size_t errlen);
+/* 0, or -1 with a message (duplicates, too few points, memory). each: NULL,
+ * or n doubles that receive every point's violation (R_i - d_i) /
+ * Delta3(n) (the point passes when R_i <= d_i (1 + 1e-9)). */
+int cfpo3_fpd_certify(const double *p, size_t n, cfpo3_fpd_result *r, double *each, char *err, size_t errlen);
 
 #ifdef __cplusplus
 }

@@ -1,4 +1,6 @@
-/* solve3.c - see solve3.h. The clipping: Sutherland-Hodgman on every face
+/* solve3.c - see solve3.h. The solve clips each cell lazily (the
+ * farthest vertex's cutting bisectors only, nearest site first). The
+ * clipping: Sutherland-Hodgman on every face
  * loop, a cut edge's new vertex made once (an edge map keyed by its two
  * old vertices, computed from the inside end), and the cap face on the
  * plane ordered by pseudo-angle in the projection that drops the normal's
@@ -180,13 +182,15 @@ int cfpo3_poly_clip(const cfpo3_poly *p, cfpo3_poly *q, const double n[3], doubl
     return 1;
 }
 
-/* cfpo3_poly_far(p, y, NULL) through p's cached values: a vertex whose
- * w is -1 gets its squared distance to y computed (the same expression)
- * and kept; w of the vertices kept by a cut come with them. fresh: every
- * w is recomputed (the box, whose w belong to the previous site). */
-static double far_cached(cfpo3_poly *p, const double y[3], int fresh)
+/* The farthest vertex of p from y (the first in vertex order among
+ * equals) through p's cached values: a vertex whose w is -1 gets its
+ * squared distance to y computed and kept; w of the vertices kept by a
+ * cut come with them. fresh: every w is recomputed (the box, whose w
+ * belong to the previous site). */
+static double far_cached(cfpo3_poly *p, const double y[3], int fresh, int *at)
 {
     double far = -1.0;
+    int w = -1;
     for (int i = 0; i < p->nv; i++) {
         double d = p->w[i];
         if (fresh || d < 0.0) {
@@ -194,56 +198,50 @@ static double far_cached(cfpo3_poly *p, const double y[3], int fresh)
             d = dx * dx + dy * dy + dz * dz;
             p->w[i] = d;
         }
-        if (d > far) far = d;
+        if (d > far) far = d, w = i;
     }
+    if (at) *at = w;
     return far;
-}
-
-/* The sites kept sorted in a cell's first pass (the others are sorted
- * only when a cell needs them). */
-#define NEAR_K 12
-
-/* The n waiting sites (okey, oord: squared distances and indices, in no
- * order) sorted by (distance, index) into key, ord: the order a stable
- * sort by distance of the sites in index order gives. */
-static void sort_rest(const double *okey, const int *oord, int n, double *key, int *ord)
-{
-    for (int k = 0; k < n; k++) {
-        const double d = okey[k];
-        const int j = oord[k];
-        int at = k;
-        while (at > 0 && (key[at - 1] > d || (key[at - 1] == d && ord[at - 1] > j))) {
-            key[at] = key[at - 1];
-            ord[at] = ord[at - 1];
-            at--;
-        }
-        key[at] = d;
-        ord[at] = j;
-    }
 }
 
 double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double floor2,
                          double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count)
 {
+    return cfpo3_near_solve(y, m, m, lo, hi, floor2, best, scratch, count);
+}
+
+/* The planes kept sorted at the front of a cell's list (most cells need
+ * only the nearest few). */
+#define NEAR_K 12
+
+static void put_plane(double pn[3][CFPO3_MAXM + NEAR_K], double *poff, double *pdd, int at, const double nv[3],
+                      double off, double dd)
+{
+    pn[0][at] = nv[0], pn[1][at] = nv[1], pn[2][at] = nv[2];
+    poff[at] = off;
+    pdd[at] = dd;
+}
+
+double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], const double hi[3], double floor2,
+                        double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count)
+{
     if (m <= 0 || m > CFPO3_MAXM) return -1.0;
+    if (cells > m) cells = m;
     double bestd = floor2 > 0.0 ? floor2 : -1.0;
     int found = 0;
     cfpo3_poly box;
-    double key[CFPO3_MAXM], okey[CFPO3_MAXM];
-    int ord[CFPO3_MAXM], oord[CFPO3_MAXM];
+    /* the bisectors that can reach the box: normal, offset (+inf once
+     * used), squared length */
+    double pn[3][CFPO3_MAXM + NEAR_K], poff[CFPO3_MAXM + NEAR_K], pdd[CFPO3_MAXM + NEAR_K];
     cfpo3_poly_box(&box, lo, hi);
-    for (int i = 0; i < m; i++) {
+    for (int i = 0; i < cells; i++) {
         const double *yi = y + 3 * i;
-        double far = far_cached(&box, yi, 1);
+        double far = far_cached(&box, yi, 1, NULL);
         if (far <= bestd) continue;
         /* One pass over the other sites: the kill test (one bisector puts
-         * the whole box on y_j's side: the cell misses S), and the sites
-         * whose bisector can reach the box in the order (squared distance
-         * to y_i, index), nearest first (their bisectors cut most). Most
-         * cells are abandoned after a few planes, so only the NEAR_K
-         * first are kept sorted (key, ord); the others wait unsorted
-         * (okey, oord) and are sorted only when a cell needs them. */
-        int killed = 0, nb = 0, no = 0;
+         * the whole box on y_j's side: the cell misses S), and the planes
+         * whose bisector can reach the box. */
+        int killed = 0, np = 0, nr = 0;
         for (int j = 0; j < m; j++) {
             if (j == i) continue;
             const double *yj = y + 3 * j;
@@ -257,46 +255,66 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
                 break;
             }
             if (dd >= 4.0 * far) continue;
-            if (nb == NEAR_K) {
-                if (!(dd < key[NEAR_K - 1])) { /* j comes after every kept site */
-                    okey[no] = dd;
-                    oord[no++] = j;
+            /* the NEAR_K nearest kept in the order (squared distance to
+             * y_i, index) at the front; the others wait unsorted behind
+             * slot NEAR_K (a kept one pushed out joins them) */
+            if (np == NEAR_K) {
+                if (!(dd < pdd[NEAR_K - 1])) {
+                    put_plane(pn, poff, pdd, NEAR_K + nr++, nv, off, dd);
                     continue;
                 }
-                okey[no] = key[NEAR_K - 1]; /* the last kept one waits */
-                oord[no++] = ord[NEAR_K - 1];
-                nb--;
+                const double last[3] = {pn[0][NEAR_K - 1], pn[1][NEAR_K - 1], pn[2][NEAR_K - 1]};
+                put_plane(pn, poff, pdd, NEAR_K + nr++, last, poff[NEAR_K - 1], pdd[NEAR_K - 1]);
+                np--;
             }
-            int at = nb++;
-            while (at > 0 && key[at - 1] > dd) {
-                key[at] = key[at - 1];
-                ord[at] = ord[at - 1];
+            int at = np++;
+            while (at > 0 && pdd[at - 1] > dd) {
+                pn[0][at] = pn[0][at - 1], pn[1][at] = pn[1][at - 1], pn[2][at] = pn[2][at - 1];
+                poff[at] = poff[at - 1];
+                pdd[at] = pdd[at - 1];
                 at--;
             }
-            key[at] = dd;
-            ord[at] = j;
+            put_plane(pn, poff, pdd, at, nv, off, dd);
         }
         if (killed) continue;
         if (count) count->cells++;
-        const cfpo3_poly *cur = &box;
-        int which = 0, empty = 0, abandoned = 0;
-        for (int k = 0;; k++) {
-            if (k == nb) { /* the kept sites are used up: the waiting ones, sorted, follow */
-                if (no == 0) break;
-                sort_rest(okey, oord, no, key + nb, ord + nb);
-                nb += no;
-                no = 0;
+        /* Lazy clipping: the farthest vertex v of the polytope so far is
+         * the cell's answer once no bisector cuts it off (the cell lies
+         * inside the polytope); else the polytope is clipped by the plane
+         * of the site nearest to y_i among those whose bisector cuts v off
+         * (it cuts most), and again. A cell is abandoned once v is no farther than the
+         * best. Each plane is applied at most once. */
+        cfpo3_poly *cur = &box;
+        int which = 0, empty = 0, abandoned = 0, at = -1, first = 0;
+        far = far_cached(cur, yi, 0, &at);
+        for (;;) {
+            if (far <= bestd) {
+                abandoned = 1;
+                break;
             }
-            const int j = ord[k];
-            const double dd = key[k];
-            if (dd >= 4.0 * far) break; /* this plane and the later ones lie beyond every vertex */
-            const double *yj = y + 3 * j;
-            const double nv[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
+            const double vx = cur->v[0][at], vy = cur->v[1][at], vz = cur->v[2][at];
+            /* the first plane in order, not used yet, that cuts v off; a used
+             * plane's offset is +inf, and the used ones at the front are passed */
+            int k = -1;
+            while (first < np && poff[first] == INFINITY) first++;
+            for (int q = first; q < np && pdd[q] < 4.0 * far; q++)
+                if (pn[0][q] * vx + pn[1][q] * vy + pn[2][q] * vz - poff[q] > 0.0) {
+                    k = q;
+                    break;
+                }
+            if (k < 0 && nr > 0) { /* none of the kept: the nearest of the waiting ones */
+                double kd = 4.0 * far;
+                for (int q = NEAR_K; q < NEAR_K + nr; q++)
+                    if (pn[0][q] * vx + pn[1][q] * vy + pn[2][q] * vz - poff[q] > 0.0 && pdd[q] < kd)
+                        kd = pdd[q], k = q;
+            }
             if (count) count->tests++;
-            /* (c - yi).nv <= dd/2 */
-            const double off = nv[0] * yi[0] + nv[1] * yi[1] + nv[2] * yi[2] + 0.5 * dd;
-            const int r = cfpo3_poly_clip(cur, &scratch[which], nv, off);
-            if (r == 0 || r == -2) continue;
+            if (k < 0) break; /* no plane cuts v off: v is the cell's farthest point */
+            const double koff = poff[k];
+            poff[k] = INFINITY;
+            const double nv[3] = {pn[0][k], pn[1][k], pn[2][k]};
+            const int r = cfpo3_poly_clip(cur, &scratch[which], nv, koff);
+            if (r == 0 || r == -2) continue; /* (rounding or no room: the plane is passed over) */
             if (r == -1) {
                 empty = 1;
                 break;
@@ -304,15 +322,9 @@ double cfpo3_local_solve(const double *y, int m, const double lo[3], const doubl
             if (count) count->cuts++;
             cur = &scratch[which];
             which ^= 1;
-            far = far_cached(&scratch[which ^ 1], yi, 0);
-            if (far <= bestd) {
-                abandoned = 1;
-                break;
-            }
+            far = far_cached(cur, yi, 0, &at);
         }
         if (empty || abandoned) continue;
-        int at;
-        far = cfpo3_poly_far(cur, yi, &at);
         if (far > bestd) {
             bestd = far;
             found = 1;

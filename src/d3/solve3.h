@@ -5,9 +5,10 @@
  * axis-aligned box S farthest from a small point set Y (the centre of the
  * largest empty ball centred in S). The maximum of f(c) = min_j |c - y_j|
  * over S is a vertex of the Voronoi diagram of Y clipped to S; for each y_i
- * (nearest to the hint first) the box is clipped by the bisector planes of
- * the other sites, and a cell is abandoned as soon as its farthest vertex
- * from y_i is no farther than the best found (docs/method.md, "Three
+ * (nearest to the hint first) the box is clipped lazily, only by the
+ * bisectors that cut off its current farthest vertex from y_i, until none
+ * does (that vertex is the cell's answer) or the vertex is no farther than
+ * the best found (the cell is abandoned) (docs/method.md, "Three
  * dimensions"). Pure functions: no allocation, no globals, no I/O; local
  * (already unwrapped) coordinates. */
 #ifndef CFPO_SOLVE3_H
@@ -49,7 +50,8 @@ double cfpo3_poly_far(const cfpo3_poly *p, const double y[3], int *at);
 /* The most sites one solve takes. */
 #define CFPO3_MAXM 1024
 
-/* Work counters of one solve (for measuring; may be NULL). */
+/* Work counters of one solve (for measuring; may be NULL): cells entered,
+ * farthest vertices tested against the bisectors, cuts made. */
 typedef struct {
     long cells, tests, cuts;
 } cfpo3_solve_count;
@@ -67,5 +69,15 @@ typedef struct {
  * S). */
 double cfpo3_local_solve(const double *y, int m, const double lo[3], const double hi[3], double floor2,
                          double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count);
+
+/* The near solve: LocalCFPO-3D searching only the Voronoi cells of the
+ * first `cells` sites of y (the hint's order: with x's nearest site first,
+ * cells = 1 searches the cell x lies in). Every cell it searches is
+ * solved against all the sites' bisectors, so its answer is a
+ * vertex of the clipped diagram, in S, at its returned squared distance
+ * from Y; it is the exact solve's when the winner lies in those cells.
+ * cells >= m is cfpo3_local_solve. */
+double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], const double hi[3], double floor2,
+                        double best[3], cfpo3_poly scratch[2], cfpo3_solve_count *count);
 
 #endif

@@ -53,6 +53,7 @@ struct cfpo3_engine {
     double *needm;         /* g^3 */
     int64_t *fill;         /* g^3: the rebucketing's cursors */
     uint64_t phase;        /* phases run (the stamps' clock) */
+    int near;              /* 1 while in the near phase (engine3_step.c) */
     double dmin, davg;     /* the current set, over Delta3 */
     cfpo3_solve_count count; /* the solver's work so far (for measuring) */
     /* several ranks (engine3_dist.c) */

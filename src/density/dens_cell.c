@@ -131,26 +131,34 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         cfpo_dens_span(bk, ax - R, ax + R, bk->x0, &fx, &nx_);
         cfpo_dens_span(bk, ay - R, ay + R, bk->y0, &fy, &ny_);
-        for (int iy = 0; iy < ny_; iy++) {
-            const int ry = fy + iy < bk->B ? fy + iy : fy + iy - bk->B;
-            for (int ix = 0; ix < nx_; ix++) {
-                const int c = ry * bk->B + (fx + ix < bk->B ? fx + ix : fx + ix - bk->B);
-                for (int j = bk->head[c]; j >= 0; j = bk->next[j]) {
-                    if (j == p) continue;
-                    double ex = b->bx[j] - ax, ey = b->by[j] - ay;
-                    if (wrap) { ex -= rint(ex); ey -= rint(ey); }
-                    const double d2 = (ex * ex + ey * ey) * b->br[j];
-                    if (!(d2 < T)) continue;
-                    if (kk == KMAX && (d2 > b->scratch[KMAX - 1] || (d2 == b->scratch[KMAX - 1] && j > b->nj[KMAX - 1])))
-                        continue;
-                    int t = kk < KMAX ? kk++ : KMAX - 1;
-                    while (t > 0 && (b->scratch[t - 1] > d2 || (b->scratch[t - 1] == d2 && b->nj[t - 1] > j))) {
-                        b->scratch[t] = b->scratch[t - 1];
-                        b->nj[t] = b->nj[t - 1];
-                        t--;
+        {
+            /* the loop's arrays in locals: the stores to the list do not
+             * make the compiler load them again */
+            const double *restrict px_ = b->bx, *restrict py_ = b->by, *restrict pr_ = b->br;
+            const int *restrict head = bk->head, *restrict next = bk->next;
+            double *restrict key = b->scratch;
+            int *restrict nj = b->nj;
+            const int B = bk->B;
+            for (int iy = 0; iy < ny_; iy++) {
+                const int ry = fy + iy < B ? fy + iy : fy + iy - B;
+                for (int ix = 0; ix < nx_; ix++) {
+                    const int c = ry * B + (fx + ix < B ? fx + ix : fx + ix - B);
+                    for (int j = head[c]; j >= 0; j = next[j]) {
+                        if (j == p) continue;
+                        double ex = px_[j] - ax, ey = py_[j] - ay;
+                        if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                        const double d2 = (ex * ex + ey * ey) * pr_[j];
+                        if (!(d2 < T)) continue;
+                        if (kk == KMAX && (d2 > key[KMAX - 1] || (d2 == key[KMAX - 1] && j > nj[KMAX - 1]))) continue;
+                        int t = kk < KMAX ? kk++ : KMAX - 1;
+                        while (t > 0 && (key[t - 1] > d2 || (key[t - 1] == d2 && nj[t - 1] > j))) {
+                            key[t] = key[t - 1];
+                            nj[t] = nj[t - 1];
+                            t--;
+                        }
+                        key[t] = d2;
+                        nj[t] = j;
                     }
-                    b->scratch[t] = d2;
-                    b->nj[t] = j;
                 }
             }
         }

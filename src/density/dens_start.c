@@ -3,22 +3,8 @@
 
 #include <stdlib.h>
 
+#include "hilbert.h"
 #include "rng.h"
-
-/* Index of (x, y) along the Hilbert curve of a side-s square (s a power of 2). */
-static uint64_t hilbert(uint64_t s, uint64_t x, uint64_t y)
-{
-    uint64_t d = 0;
-    for (uint64_t q = s / 2; q > 0; q /= 2) {
-        const uint64_t rx = (x & q) > 0, ry = (y & q) > 0;
-        d += q * q * ((3 * rx) ^ ry);
-        if (ry == 0) {
-            if (rx == 1) { x = s - 1 - x; y = s - 1 - y; }
-            const uint64_t t = x; x = y; y = t;
-        }
-    }
-    return d;
-}
 
 typedef struct { uint64_t key, pix; } keyed;
 
@@ -38,7 +24,7 @@ int cfpo_dens_start(const cfpo_density *d, int64_t n, uint64_t seed, double *xy)
     int64_t m = 0;
     for (int64_t j = 0; j < d->h; j++)
         for (int64_t i = 0; i < d->w; i++)
-            if (d->rho[j * d->w + i] > 0) k[m++] = (keyed){hilbert(s, (uint64_t)i, (uint64_t)j), (uint64_t)(j * d->w + i)};
+            if (d->rho[j * d->w + i] > 0) k[m++] = (keyed){cfpo_hilbert(s, (uint64_t)i, (uint64_t)j), (uint64_t)(j * d->w + i)};
     qsort(k, (size_t)m, sizeof *k, by_key);
     double total = 0;
     for (int64_t t = 0; t < m; t++) total += d->rho[k[t].pix];

@@ -1,9 +1,11 @@
 /* test_d3_engine.c - the 3-D engine's invariants (src/d3/): the k nearest
  * neighbours against brute force; delta_min never falls, iteration after
- * iteration, by brute force over all pairs, from the jittered start and
- * from white noise; the same bytes for 1, 2 and 3 threads and with or
- * without skipping; a resume from a checkpoint gives the bytes of the
- * uninterrupted run (also across a grid shift), and a corrupt checkpoint
+ * iteration, by brute force over all pairs, from the jittered start (near
+ * phase and exact solve) and from white noise; the same bytes for 1, 2
+ * and 3 threads and with or without skipping, in the near phase, with the
+ * exact solve and across the switch between them; a resume from a
+ * checkpoint gives the bytes of the uninterrupted run (also across a grid
+ * shift and around the switch), and a corrupt checkpoint
  * is refused; Steinhardt's Q6 of FCC, BCC and simple cubic lattices
  * against their known values, and of white noise. */
 #include <math.h>
@@ -100,18 +102,21 @@ static void never_falls(cfpo3_engine *e, int iters, const char *what)
     CHECK(moved > 0, "%s: nothing moved", what);
 }
 
-static cfpo3_engine *make(int64_t n, int threads, int skip)
+static cfpo3_engine *make_near(int64_t n, int threads, int skip, int near)
 {
     cfpo3_options o;
     cfpo3_options_default(&o);
     o.seed = 7;
     o.threads = threads;
     o.skip = skip;
+    o.near = near;
     char err[256];
     cfpo3_engine *e = cfpo3_create(n, &o, err, sizeof err);
     if (!e) fprintf(stderr, "%s\n", err);
     return e;
 }
+
+static cfpo3_engine *make(int64_t n, int threads, int skip) { return make_near(n, threads, skip, 1); }
 
 static void run(cfpo3_engine *e, int k)
 {
@@ -158,6 +163,9 @@ int main(void)
     {
         cfpo3_engine *e = make(324, 0, 1);
         never_falls(e, 8, "jittered start");
+        cfpo3_free(e);
+        e = make_near(324, 0, 1, 0);
+        never_falls(e, 4, "jittered start, exact solve");
         cfpo3_free(e);
         const size_t n = 324;
         double *p = malloc(sizeof(double) * 3 * n);
@@ -219,6 +227,51 @@ int main(void)
         }
         unlink(path);
         cfpo3_free(a), cfpo3_free(b), cfpo3_free(c), cfpo3_free(d);
+    }
+    /* the exact solve from the start: threads and skipping; the switch from
+     * the near phase to the exact solve: threads, and a resume at it (the
+     * checkpoint says the near phase is over) and after its first exact
+     * iteration */
+    {
+        cfpo3_engine *a = make_near(324, 1, 1, 0), *b = make_near(324, 3, 1, 0), *d = make_near(324, 2, 0, 0);
+        run(a, 3), run(b, 3), run(d, 3);
+        CHECK(same(a, b) && same(a, d), "exact solve: threads 1, 3 or no skipping give different bytes");
+        cfpo3_free(a), cfpo3_free(b), cfpo3_free(d);
+        a = make(324, 1, 1);
+        int sw = 0; /* the first exact iteration */
+        cfpo_iter_stats st;
+        for (int i = 0; i < 400 && !sw; i++) {
+            cfpo3_step(a, &st);
+            CHECK(!(st.near && st.converged), "a near iteration said converged");
+            if (!st.near) sw = st.iteration;
+        }
+        CHECK(sw > 1, "the near phase never ended (or never ran)");
+        if (sw > 1) {
+            run(a, 1);
+            b = make(324, 3, 1);
+            run(b, sw + 1);
+            CHECK(same(a, b), "threads 1, 3 differ across the switch to the exact solve");
+            cfpo3_free(b);
+            char path[64];
+            snprintf(path, sizeof path, "/tmp/test_d3_sw_%d.bin", (int)getpid());
+            for (int at = sw - 1; at <= sw; at++) {
+                cfpo3_engine *r = make(324, 2, 1);
+                run(r, at);
+                char err[256];
+                CHECK(cfpo3_checkpoint_write(r, path, err, sizeof err) == 0, "checkpoint write: %s", err);
+                cfpo3_free(r);
+                r = cfpo3_checkpoint_read(path, 2, err, sizeof err);
+                CHECK(r != NULL, "checkpoint read: %s", err);
+                if (r) {
+                    run(r, sw + 1 - at);
+                    CHECK(same(a, r), "resume after %d iterations (first exact one %d) differs", at, sw);
+                    cfpo3_free(r);
+                }
+            }
+            unlink(path);
+            printf("near phase over after %d iterations (324 points)\n", sw - 1);
+        }
+        cfpo3_free(a);
     }
     /* Q6 of lattices (Steinhardt et al. 1983; the neighbour counts fixed) */
     test_lattice_q6("FCC", 0, 4, 12, 0.57452);

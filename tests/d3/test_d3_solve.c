@@ -6,7 +6,10 @@
  * the dropped site than it says); no point of a 17^3 sample of S, refined
  * by a pattern search, is farther from Y. The last check runs the same
  * comparison on a solver that drops one bisector and must see it fail; a
- * floor below the answer leaves it unchanged, one above it leaves none. */
+ * floor below the answer leaves it unchanged, one above it leaves none.
+ * The near solve over every cell is the exact solve, bit for bit; over
+ * the first cell alone its answer is in S, at the distance it claims and
+ * no farther than the exact one. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -134,6 +137,13 @@ static int make(int kind, uint64_t seed, double *y, double lo[3], double hi[3])
     return m;
 }
 
+/* 1 when c is in S at the distance it claims from Y. */
+static int judge_at(const double *y, int m, const double lo[3], const double hi[3], const double c[3], double claimed)
+{
+    const int in = c[0] >= lo[0] && c[0] <= hi[0] && c[1] >= lo[1] && c[1] <= hi[1] && c[2] >= lo[2] && c[2] <= hi[2];
+    return in && fabs(sqrt(f(y, m, c)) - sqrt(claimed)) <= 1e-9;
+}
+
 /* 1 when the answer (c, claimed) passes every check against Y. */
 static int judge(const double *y, int m, const double lo[3], const double hi[3], const double c[3], double claimed,
                  double *want)
@@ -148,7 +158,7 @@ int main(void)
 {
     static double y[3 * 700];
     cfpo3_poly scr[2];
-    int bad = 0, runs = 0, caught = 0, mutants = 0, floorbad = 0;
+    int bad = 0, runs = 0, caught = 0, mutants = 0, floorbad = 0, nearbad = 0;
     cfpo3_solve_count cnt = {0, 0, 0};
     for (int kind = 0; kind < 4; kind++)
         for (uint64_t s = 0; s < 20; s++) {
@@ -161,6 +171,16 @@ int main(void)
                 if (bad < 5)
                     fprintf(stderr, "kind %d seed %llu: solver %.12f (true %.12f), brute %.12f\n", kind,
                             (unsigned long long)s, sqrt(v), sqrt(f(y, m, c)), sqrt(want));
+            }
+            /* the near solve: over every cell it is the exact solve; over the
+             * first cell its answer is in S, at the distance it claims, and
+             * no farther than the exact answer */
+            {
+                double c2[3];
+                const double v2 = cfpo3_near_solve(y, m, m, lo, hi, 0.0, c2, scr, NULL);
+                nearbad += !(v2 == v && c2[0] == c[0] && c2[1] == c[1] && c2[2] == c[2]);
+                const double v1 = cfpo3_near_solve(y, m, 1, lo, hi, 0.0, c2, scr, NULL);
+                nearbad += !(v1 >= 0.0 && judge_at(y, m, lo, hi, c2, v1) && v1 <= v * (1 + 1e-12));
             }
             /* a floor below the answer changes nothing; at or above it, no answer */
             {
@@ -196,6 +216,7 @@ int main(void)
         }
     CHECK(bad == 0, "%d of %d solves disagree with brute force", bad, runs);
     CHECK(floorbad == 0, "%d answers change under a floor", floorbad);
+    CHECK(nearbad == 0, "%d near solves wrong", nearbad);
     CHECK(caught == mutants, "the check missed %d of %d (random, jittered) solvers that drop a bisector", mutants - caught, mutants);
     /* the box alone: a corner, at the right distance */
     {

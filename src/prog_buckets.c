@@ -1,0 +1,85 @@
+/* prog_buckets.c - see prog_buckets.h. */
+#include "prog_buckets.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "geom.h"
+
+int prog_buckets_init(prog_buckets *B, const double *xy, int64_t m, int64_t cap)
+{
+    B->gs = (int64_t)floor(1.0 / cfpo_delta_bound((double)m));
+    if (B->gs < 1) B->gs = 1;
+    B->cs = 1.0 / (double)B->gs;
+    B->xy = xy;
+    B->head = malloc((size_t)(B->gs * B->gs) * sizeof *B->head);
+    B->next = malloc((size_t)(cap > 0 ? cap : 1) * sizeof *B->next);
+    if (!B->head || !B->next) return -1;
+    for (int64_t b = 0; b < B->gs * B->gs; b++) B->head[b] = -1;
+    return 0;
+}
+
+void prog_buckets_free(prog_buckets *B)
+{
+    free(B->head);
+    free(B->next);
+    B->head = B->next = NULL;
+}
+
+int64_t prog_buckets_of(const prog_buckets *B, double x, double y)
+{
+    int64_t bx = (int64_t)(x * (double)B->gs), by = (int64_t)(y * (double)B->gs);
+    if (bx >= B->gs) bx = B->gs - 1;
+    if (by >= B->gs) by = B->gs - 1;
+    if (bx < 0) bx = 0;
+    if (by < 0) by = 0;
+    return by * B->gs + bx;
+}
+
+void prog_buckets_link(prog_buckets *B, int64_t k)
+{
+    const int64_t b = prog_buckets_of(B, B->xy[2 * k], B->xy[2 * k + 1]);
+    B->next[k] = B->head[b];
+    B->head[b] = k;
+}
+
+void prog_buckets_unlink(prog_buckets *B, int64_t k)
+{
+    const int64_t b = prog_buckets_of(B, B->xy[2 * k], B->xy[2 * k + 1]);
+    int64_t *p = &B->head[b];
+    while (*p != k) p = &B->next[*p];
+    *p = B->next[k];
+}
+
+double prog_torus_d2(double ax, double ay, double bx, double by)
+{
+    double dx = fabs(ax - bx), dy = fabs(ay - by);
+    if (dx > 0.5) dx = 1.0 - dx;
+    if (dy > 0.5) dy = 1.0 - dy;
+    return dx * dx + dy * dy;
+}
+
+double prog_buckets_nearest2(const prog_buckets *B, double x, double y, int64_t skip, double stop2)
+{
+    const int64_t gs = B->gs, b = prog_buckets_of(B, x, y), bx = b % gs, by = b / gs;
+    double best = INFINITY;
+    for (int64_t r = 0; r <= gs / 2 + 1; r++) {
+        /* ring r; once it spans the grid, every bucket once */
+        const int64_t span = 2 * r + 1 >= gs ? gs : 2 * r + 1, lo = span == gs ? 0 : r;
+        for (int64_t oy = 0; oy < span; oy++)
+            for (int64_t ox = 0; ox < span; ox++) {
+                if (span != gs && ox != 0 && ox != span - 1 && oy != 0 && oy != span - 1) continue;
+                const int64_t cx = ((bx - lo + ox) % gs + gs) % gs, cy = ((by - lo + oy) % gs + gs) % gs;
+                for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
+                    if (k == skip) continue;
+                    const double d2 = prog_torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]);
+                    if (d2 < best) best = d2;
+                }
+            }
+        if (best <= stop2) return best;
+        if (span == gs) break; /* every bucket seen */
+        const double reach = (double)r * B->cs; /* every point beyond ring r is farther */
+        if (best <= reach * reach) break;
+    }
+    return best;
+}

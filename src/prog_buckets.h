@@ -1,0 +1,41 @@
+/* prog_buckets.h - layer 2: the bucket grid of the progressive sampler's
+ * point searches, shared by the level insertion and ordering
+ * (prog_insert.c) and the bounded joint move (prog_joint.c): buckets of
+ * side about Delta(m) on the unit torus, each a linked list of point ids
+ * of xy, and the nearest stored point by rings of buckets. */
+#ifndef CFPO_PROG_BUCKETS_H
+#define CFPO_PROG_BUCKETS_H
+
+#include <stdint.h>
+
+typedef struct {
+    int64_t gs;    /* buckets per side */
+    double cs;     /* bucket side, 1 / gs */
+    int64_t *head; /* first point of each bucket, -1 if none */
+    int64_t *next; /* the next point of its bucket */
+    const double *xy;
+} prog_buckets;
+
+/* Buckets of side about Delta(m) for up to cap points of xy (ids below
+ * cap), none stored yet. 0, or -1 when out of memory (then
+ * prog_buckets_free). */
+int prog_buckets_init(prog_buckets *B, const double *xy, int64_t m, int64_t cap);
+void prog_buckets_free(prog_buckets *B);
+
+/* The bucket of (x, y) in [0, 1)^2 (clamped to the grid). */
+int64_t prog_buckets_of(const prog_buckets *B, double x, double y);
+
+/* Stores point k (at the head of its bucket's list), or takes it out. */
+void prog_buckets_link(prog_buckets *B, int64_t k);
+void prog_buckets_unlink(prog_buckets *B, int64_t k);
+
+/* Squared distance on the unit torus. */
+double prog_torus_d2(double ax, double ay, double bx, double by);
+
+/* Squared distance from (x, y) to the nearest stored point other than
+ * skip (-1: none), by rings of buckets outwards until no nearer point can
+ * remain; stops early, returning a value <= stop2, once the distance
+ * falls to stop2 (stop2 < 0: never). INFINITY when no point is stored. */
+double prog_buckets_nearest2(const prog_buckets *B, double x, double y, int64_t skip, double stop2);
+
+#endif

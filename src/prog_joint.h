@@ -1,0 +1,68 @@
+/* prog_joint.h - layer 4: the bounded joint move of a progressive set
+ * (progressive.h), after its last level: every point, of any level, may
+ * move, but only so that no dyadic prefix's delta_min falls.
+ *
+ * Point i of level l (ids below sizes[l], not below sizes[l - 1]) and
+ * point j of level l' form a pair of level L = max(l, l'): the pair lies
+ * in the prefixes m_L .. m_(K-1). Prefix k's delta_min (in Delta(m_k)) is
+ * dmin_k, measured at the start of each sweep; so the pair's floor is
+ * F_L = max over k >= L of dmin_k Delta(m_k), and a move that keeps every
+ * pair of the mover at or above its floor keeps every prefix's delta_min
+ * at or above its value at the sweep's start (the floors rise with the
+ * prefixes, so the measured delta_min of each prefix never falls from one
+ * sweep to the next).
+ * The objective of a move is the pair measure with targets: the mover's
+ * smallest d_ij / G_L, G_L = t_L Delta(m_L), t_L = target_prefix for every
+ * level but the last and target_full for the last (the full set). Each
+ * sweep visits the points in id order (serial, so the bytes never depend
+ * on the thread count); point i tries `candidates` positions near it (half
+ * straight away from the pair that binds it, half in a disk; steps in
+ * fractions of its nearest neighbour's distance; counter-based draws from
+ * seed, sweep and i) and takes the best that keeps every floor and raises
+ * its own measure. With hold > 0, a pair of level L shorter than
+ * hold Delta(m_L) may not shrink either: each point's nearest distance in
+ * each of its prefixes m_k then never falls below the smaller of its old
+ * value and hold Delta(m_k), which guards the prefixes' delta_avg.
+ * Owns: the pair floors and weights, the bucket grid of the moves, the
+ * prefix measures of each sweep.
+ * May include: geom.h, rng.h (layers 0-1). */
+#ifndef CFPO_PROG_JOINT_H
+#define CFPO_PROG_JOINT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+    int sweeps;           /* passes over every point; the phase also ends after a pass that moved nothing */
+    int candidates;       /* trial positions per point and sweep (0: 12) */
+    double target_prefix; /* t_L for every level but the last (0: 0.78) */
+    double target_full;   /* t_L for the last level (0: 0.90) */
+    double hold;          /* > 0: a pair of level L shorter than hold Delta(m_L) may not shrink
+                             (guards each prefix's delta_avg); 0: off */
+    int classes;          /* 1: the levels are classes (progressive.h's --classes): a pair within
+                             class c has level c (weight target_prefix Delta(class size), floor
+                             the class's and the union's), a pair across classes level K (weight
+                             target_full Delta(n), floor the union's); K + 1 groups are measured */
+    uint64_t seed;
+    /* Called with sweep 0 (the start) and after every sweep: the points
+     * moved, each prefix's delta_min and delta_avg in its own Delta(m_k);
+     * may be NULL. */
+    void (*sweep_done)(int sweep, int64_t moved, const double *dmin, const double *davg, int K, void *user);
+    void *user;
+} cfpo_prog_joint_options;
+
+/* delta_min and delta_avg of each prefix sizes[0..K) of xy (the first
+ * sizes[k] points), each in its own Delta(m_k), into dmin[k], davg[k].
+ * 0, or -1 with one line in err (out of memory). */
+int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmin, double *davg, char *err,
+                      size_t errlen);
+
+/* The joint move of xy (sizes[K - 1] points, prefix order) in place; the
+ * prefixes' final measures into dmin, davg (K each; with classes K + 1:
+ * the classes in their own units, then the union). The ids never change
+ * level. 0, or -1 with one line in err (xy unchanged but for moves that
+ * were made; out of memory is the only failure, checked before any move). */
+int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joint_options *jo, double *dmin,
+                    double *davg, char *err, size_t errlen);
+
+#endif

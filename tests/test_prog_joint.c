@@ -1,0 +1,147 @@
+/* test_prog_joint.c - the bounded joint move of a progressive set
+ * (src/prog_joint.c) against brute force on the torus:
+ *  - cfpo_prog_measure: every prefix's delta_min and delta_avg, each in its
+ *    own Delta(m), equal the O(m^2) values;
+ *  - cfpo_prog_joint: after every sweep (the callback, measured again by
+ *    brute force from the points as they are) no prefix's delta_min is
+ *    below its value after the sweep before, for several targets, with and
+ *    without the hold distance; with hold H, no point's nearest distance in
+ *    any prefix falls below the smaller of its start value and H Delta(m);
+ *    the points do move and the full set rises; the same bytes twice;
+ *  - the monotonicity check can fail: a set with one point moved onto its
+ *    neighbour is caught. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom.h"
+#include "prog_joint.h"
+#include "rng.h"
+#include "testutil.h"
+
+static int passed_, failed_;
+
+static double dist(const double *a, const double *b)
+{
+    double dx = fabs(a[0] - b[0]), dy = fabs(a[1] - b[1]);
+    if (dx > 0.5) dx = 1 - dx;
+    if (dy > 0.5) dy = 1 - dy;
+    return sqrt(dx * dx + dy * dy);
+}
+
+/* Point i's nearest distance within the first m points. */
+static double nn(const double *xy, int64_t m, int64_t i)
+{
+    double b = INFINITY;
+    for (int64_t j = 0; j < m; j++)
+        if (j != i && dist(xy + 2 * i, xy + 2 * j) < b) b = dist(xy + 2 * i, xy + 2 * j);
+    return b;
+}
+
+static void brute(const double *xy, const int64_t *sizes, int K, double *dmin, double *davg)
+{
+    for (int k = 0; k < K; k++) {
+        double lo = INFINITY, sum = 0;
+        for (int64_t i = 0; i < sizes[k]; i++) {
+            const double d = nn(xy, sizes[k], i);
+            lo = d < lo ? d : lo;
+            sum += d;
+        }
+        const double D = cfpo_delta_bound((double)sizes[k]);
+        dmin[k] = lo / D;
+        davg[k] = sum / (double)sizes[k] / D;
+    }
+}
+
+typedef struct {
+    const double *xy;
+    const int64_t *sizes;
+    int K;
+    double last[8];
+    int sweeps, fell, mismatch;
+    int64_t moved;
+} watch;
+
+static void on_sweep(int sweep, int64_t moved, const double *dmin, const double *davg, int K, void *user)
+{
+    watch *w = user;
+    double bm[8], ba[8];
+    brute(w->xy, w->sizes, K, bm, ba);
+    for (int k = 0; k < K; k++) {
+        if (fabs(bm[k] - dmin[k]) > 1e-12 || fabs(ba[k] - davg[k]) > 1e-12) w->mismatch++;
+        if (sweep > 0 && bm[k] < w->last[k]) w->fell++;
+        w->last[k] = bm[k];
+    }
+    w->sweeps = sweep;
+    w->moved += moved;
+}
+
+static void uniform(double *xy, int64_t n, uint64_t seed)
+{
+    for (int64_t i = 0; i < 2 * n; i++) xy[i] = cfpo_rand01(seed, 7, (uint64_t)i);
+}
+
+int main(void)
+{
+    static const int64_t sizes[5] = {32, 64, 128, 256, 400};
+    const int K = 5, n = 400;
+    double *xy = malloc(2 * n * sizeof *xy), *xy0 = malloc(2 * n * sizeof *xy0), *again = malloc(2 * n * sizeof *again);
+    char err[128];
+    /* the measure against brute force */
+    {
+        uniform(xy, n, 3);
+        double dm[5], da[5], bm[5], ba[5];
+        CHECK(cfpo_prog_measure(xy, sizes, K, dm, da, err, sizeof err) == 0, "measure failed: %s", err);
+        brute(xy, sizes, K, bm, ba);
+        int same = 1;
+        for (int k = 0; k < K; k++) same &= fabs(dm[k] - bm[k]) <= 1e-12 && fabs(da[k] - ba[k]) <= 1e-12;
+        CHECK(same, "cfpo_prog_measure differs from brute force");
+    }
+    /* the joint move: no prefix's delta_min falls, for several settings */
+    static const double set[4][3] = {{0.78, 0.90, 0}, {0.5, 0.7, 0}, {0.78, 0.90, 0.86}, {1.0, 1.2, 0.5}};
+    for (int c = 0; c < 4; c++) {
+        uniform(xy0, n, 10 + (uint64_t)c);
+        memcpy(xy, xy0, 2 * n * sizeof *xy);
+        watch w = {.xy = xy, .sizes = sizes, .K = K};
+        cfpo_prog_joint_options jo = {.sweeps = 6, .target_prefix = set[c][0], .target_full = set[c][1],
+                                      .hold = set[c][2], .seed = 5, .sweep_done = on_sweep, .user = &w};
+        double dm[5], da[5], start[5], sa[5];
+        brute(xy0, sizes, K, start, sa);
+        CHECK(cfpo_prog_joint(xy, sizes, K, &jo, dm, da, err, sizeof err) == 0, "joint failed: %s", err);
+        CHECK(w.mismatch == 0, "setting %d: the sweep's measures differ from brute force", c);
+        CHECK(w.fell == 0, "setting %d: a prefix's delta_min fell during a sweep", c);
+        CHECK(w.sweeps == 6 && w.moved > 0, "setting %d: %d sweeps, %lld moves", c, w.sweeps, (long long)w.moved);
+        CHECK(dm[K - 1] > start[K - 1], "setting %d: the full set did not rise (%.4f -> %.4f)", c, start[K - 1],
+              dm[K - 1]);
+        if (set[c][2] > 0) { /* the hold: every point's nearest distance in each prefix */
+            int held = 1;
+            for (int k = 0; k < K; k++) {
+                const double H = set[c][2] * cfpo_delta_bound((double)sizes[k]);
+                for (int64_t i = 0; i < sizes[k]; i++) {
+                    const double a = nn(xy0, sizes[k], i), b = nn(xy, sizes[k], i);
+                    if (b < fmin(a, H) * (1 - 1e-12)) held = 0;
+                }
+            }
+            CHECK(held, "setting %d: a point's nearest distance fell below its hold", c);
+        }
+        memcpy(again, xy0, 2 * n * sizeof *again);
+        jo.sweep_done = NULL;
+        cfpo_prog_joint(again, sizes, K, &jo, dm, da, err, sizeof err);
+        CHECK(memcmp(again, xy, 2 * n * sizeof *xy) == 0, "setting %d: not the same bytes twice", c);
+    }
+    /* the check can fail: a point put next to its neighbour lowers a prefix */
+    {
+        double before[5], after[5], a2[5];
+        brute(xy, sizes, K, before, a2);
+        xy[2 * 40] = xy[2 * 3] + 1e-4;
+        xy[2 * 40 + 1] = xy[2 * 3 + 1];
+        brute(xy, sizes, K, after, a2);
+        int fell = 0;
+        for (int k = 0; k < K; k++) fell |= after[k] < before[k];
+        CHECK(fell, "a point moved onto its neighbour did not lower any prefix");
+    }
+    free(xy);
+    free(xy0);
+    free(again);
+    return test_report(passed_, failed_);
+}
