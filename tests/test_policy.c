@@ -87,14 +87,16 @@ static void test_schedule_table(void)
  * iterations 1-8, then before 9, 13, 17, ... */
 static int move_iteration(int j) { return j < 8 ? j + 1 : 9 + 4 * (j - 8); }
 
-/* The hyperuniform variant keeps the earlier schedule: one offset for
- * both axes, moved before iterations 1, 5, 9, ... by 3/7 of a cell, the
- * adaptive variant's x walk at its first move. */
+/* The hyperuniform variant up to 65,536 points keeps the earlier
+ * schedule: one offset for both axes, moved before iterations 1, 5, 9, ...
+ * by 3/7 of a cell, the adaptive variant's x walk at its first move (seed
+ * 4: n = 65,536, the last n that keeps it). Above, it walks as the
+ * adaptive variant, axis by axis and iteration by iteration. */
 static void test_shift_hyperuniform(void)
 {
     int bad = 0, moves = 0;
     for (uint64_t seed = 1; seed <= 4; seed++) {
-        const cfpo_grid G = grid(4096 * seed, CFPO_VARIANT_HYPERUNIFORM, seed);
+        const cfpo_grid G = grid(seed == 4 ? 65536 : 4096 * (int64_t)seed, CFPO_VARIANT_HYPERUNIFORM, seed);
         const cfpo_grid A = grid(4096 * seed, CFPO_VARIANT_ADAPTIVE, seed);
         if (cfpo_policy_walk(&G, 1, 0) != cfpo_policy_walk(&A, 1, 0)) bad++;
         double pw = -1;
@@ -112,6 +114,15 @@ static void test_shift_hyperuniform(void)
         }
     }
     CHECK(bad == 0, "hyperuniform grid shift: %d violations over %d moves", bad, moves);
+    bad = 0;
+    for (uint64_t seed = 1; seed <= 4; seed++) {
+        const int64_t n = seed == 4 ? 65537 : 262144 * (int64_t)seed;
+        const cfpo_grid G = grid(n, CFPO_VARIANT_HYPERUNIFORM, seed), A = grid(n, CFPO_VARIANT_ADAPTIVE, seed);
+        for (int k = 0; k <= 400; k++)
+            for (int a = 0; a < 2; a++)
+                if (cfpo_policy_walk(&G, k, a) != cfpo_policy_walk(&A, k, a)) bad++;
+    }
+    CHECK(bad == 0, "hyperuniform above 65,536 points: %d walks differ from the adaptive variant's", bad);
 }
 
 static void test_shift(void)
@@ -156,9 +167,10 @@ static void test_shift(void)
 static void test_walk(void)
 {
     int bad = 0, moves = 0;
-    for (int variant = 0; variant < 1; variant++) /* the hyperuniform variant: test_shift_hyperuniform */
+    for (int variant = 0; variant < 2; variant++) /* hyperuniform: above 65,536 points (test_shift_hyperuniform) */
         for (uint64_t seed = 1; seed <= 4; seed++) {
-            const cfpo_grid G = grid(4096 * seed, variant ? CFPO_VARIANT_HYPERUNIFORM : CFPO_VARIANT_ADAPTIVE, seed);
+            const cfpo_grid G = grid(variant ? 65536 + 4096 * (int64_t)seed : 4096 * (int64_t)seed,
+                                     variant ? CFPO_VARIANT_HYPERUNIFORM : CFPO_VARIANT_ADAPTIVE, seed);
             double w[2][64];
             for (int j = 0; j < 64; j++) {
                 const int k = move_iteration(j), last = j < 7 ? k : move_iteration(j + 1) - 1;
