@@ -39,7 +39,7 @@ for k in disc_wrap_l2 disc_centred_l2 shiftvar_gauss_0.05 shiftvar_disk_0.25; do
 done
 # The L2-star discrepancy against white noise's exact expectation,
 # E[D^2] = (2^-2 - 3^-2) / n (D = 0.0116 at 1,024 points), not one white
-# set: D^2 of one set, white or CFPO, spreads widely (this white set 0.0086;
+# set: D of one set, white or CFPO, spreads widely (this white set 0.0086;
 # CFPO seeds 2-13 0.0018-0.0046). The root mean square of four CFPO sets
 # (seeds 2-5) is asked to be 3 times below the expectation's root.
 "$B/cfpo" -n 1024 --seed 4 -t 1 -q -o c.txt >/dev/null || bad "cfpo failed"
