@@ -109,8 +109,8 @@ int main(int argc, char **argv)
         const double m1 = ring_mean(p, n, g1), m2 = ring_mean(p, n, g2);
         printf(" P(0,g/3)/ring=%.1f P(0,2g/3)/ring=%.1f P(g/3,0)/ring=%.1f P(2g/3,0)/ring=%.1f",
                power(p, n, 0, g1) / m1, power(p, n, 0, g2) / m2, power(p, n, g1, 0) / m1, power(p, n, g2, 0) / m2);
-        /* the cells' diagonals: the grid's offset is the same on both
-         * axes, so its walk cannot turn a print at (-g, g) */
+        /* the cells' diagonals: the two axes' walks have the same step,
+         * so they do not turn a print at (-g, g) */
         const double md = ring_mean(p, n, (int)lround(g * sqrt(2.0)));
         printf(" P(g,g)/ring=%.1f P(-g,g)/ring=%.1f", power(p, n, g, g) / md, power(p, n, -g, g) / md);
     }

@@ -116,7 +116,7 @@ static void solve_cell(plain *P, int64_t cx, int64_t cy, double tolL)
         const int64_t id = P->bid[gi];
         P->x[id] = cfpo_wrap01(nx + ox);
         P->y[id] = cfpo_wrap01(ny + oy);
-        P->cell[id] = cfpo_grid_coord(&P->G, P->y[id]) * P->g + cfpo_grid_coord(&P->G, P->x[id]);
+        P->cell[id] = cfpo_grid_cy(&P->G, P->y[id]) * P->g + cfpo_grid_cx(&P->G, P->x[id]);
     }
 }
 

@@ -94,7 +94,7 @@ static void test_start(void)
             for (uint64_t k = 0; k < cnt; k++) {
                 double x, y;
                 cfpo_grid_cell_point(&G, c % G.g, c / G.g, k, &x, &y);
-                if (cfpo_grid_coord(&G, x) != c % G.g || cfpo_grid_coord(&G, y) != c / G.g) bad++;
+                if (cfpo_grid_cx(&G, x) != c % G.g || cfpo_grid_cy(&G, y) != c / G.g) bad++;
             }
         }
         CHECK(total == n && bad == 0 && twos == n - G.g * G.g,
@@ -120,7 +120,7 @@ static void test_adaptive_start(void)
         for (int64_t i = 0; i < m; i++) {
             const cfpo_start_pt *p = &all[i];
             if (!(p->x >= 0 && p->x < 1 && p->y >= 0 && p->y < 1)) bad++;
-            if (cfpo_grid_coord(&G, p->y) * G.g + cfpo_grid_coord(&G, p->x) != p->cell) bad++;
+            if (cfpo_grid_cy(&G, p->y) * G.g + cfpo_grid_cx(&G, p->x) != p->cell) bad++;
             if (i && (all[i - 1].cell > p->cell || (all[i - 1].cell == p->cell && all[i - 1].key >= p->key))) bad++;
         }
         CHECK(m == n && bad == 0, "adaptive start n=%lld: %lld points, %lld bad", (long long)n, (long long)m,

@@ -3,14 +3,14 @@
  * Properties: the adaptive variant's decisions by iteration are the
  * uniform schedule docs/method.md documents (near solves in two cells in iterations 1-6,
  * one after; no over-relaxation in 1-3, w = 3.0 else 1.8 in 4-19, 1.8
- * else 1.4 from 20; one grid offset in [0, L) per group of four
- * iterations 4j + 1 .. 4j + 4, a new one at each group's first, none
- * before iteration 1); the groups' offsets walk 3/7 of a cell a group
- * around the colours' period 3 L, with the sweep's first colour turning
- * with them, so that every group's print at the frequencies m g / 3
- * (m = 1..4) turns by 360 m / 7 degrees and seven groups cancel exactly
- * (the guard of the grid imprint: random offsets, the imprint's cause,
- * fail it); the sweep solves every colour once; the margin is L - max(delta(X), 0.7 Delta(n)) up
+ * else 1.4 from 20; the grid's offsets, one per axis, each in [0, L),
+ * new before each of iterations 1-8 and then before 9, 13, 17, ..., kept
+ * in between, none before iteration 1); each axis's offsets walk 3/7 of
+ * a cell a move around the colours' period 3 L from its own start, with
+ * the sweep's first colour turning with them, so that every move's print
+ * at the frequencies m g / 3 (m = 1..4) turns by 360 m / 7 degrees and
+ * seven moves cancel exactly (the guard of the grid imprint: random
+ * offsets fail it; test_imprint measures the print itself); the sweep solves every colour once; the margin is L - max(delta(X), 0.7 Delta(n)) up
  * to a relative 1e-9 and never reaches past L - delta(X) (the convergence
  * argument's bound) nor below 0; the per-point square keeps every spot at
  * least t from the points beyond the block, and a point with t >= 1.5 L
@@ -32,9 +32,10 @@ static int passed_, failed_;
 
 static int same_policy(const cfpo_policy *a, const cfpo_policy *b)
 {
-    return a->iteration == b->iteration && a->L == b->L && a->margin == b->margin && a->shift == b->shift &&
+    return a->iteration == b->iteration && a->L == b->L && a->margin == b->margin && a->shift_x == b->shift_x &&
+           a->shift_y == b->shift_y && a->rot_x == b->rot_x && a->rot_y == b->rot_y &&
            a->cut == b->cut && a->freeze == b->freeze && a->near == b->near && a->near_cells == b->near_cells &&
-           a->relax == b->relax && a->rot == b->rot && (a->relax < 1 || a->w[0] == b->w[0]) && (a->relax < 2 || a->w[1] == b->w[1]);
+           a->relax == b->relax && (a->relax < 1 || a->w[0] == b->w[0]) && (a->relax < 2 || a->w[1] == b->w[1]);
 }
 
 static cfpo_grid grid(int64_t n, int variant, uint64_t seed)
@@ -75,80 +76,143 @@ static void test_schedule_table(void)
             }
             /* Out of the near phase, the solver is LocalCFPO; the rest holds. */
             const cfpo_policy Q = cfpo_policy_at(&G, k, 0, 0.9);
-            if (Q.near || Q.relax != P.relax || Q.margin != P.margin || Q.shift != P.shift) bad++;
+            if (Q.near || Q.relax != P.relax || Q.margin != P.margin || Q.shift_x != P.shift_x || Q.shift_y != P.shift_y)
+                bad++;
         }
     CHECK(bad == 0, "the uniform schedule's decisions differ from the documented table in %d of %d iterations", bad,
           rows);
 }
 
-static void test_shift(void)
+/* The iteration of the grid's j-th move (j from 0): before each of
+ * iterations 1-8, then before 9, 13, 17, ... */
+static int move_iteration(int j) { return j < 8 ? j + 1 : 9 + 4 * (j - 8); }
+
+/* The hyperuniform variant up to 65,536 points keeps the earlier
+ * schedule: one offset for both axes, moved before iterations 1, 5, 9, ...
+ * by 3/7 of a cell, the adaptive variant's x walk at its first move (seed
+ * 4: n = 65,536, the last n that keeps it). Above, it walks as the
+ * adaptive variant, axis by axis and iteration by iteration. */
+static void test_shift_hyperuniform(void)
 {
-    int bad = 0, groups = 0;
+    int bad = 0, moves = 0;
     for (uint64_t seed = 1; seed <= 4; seed++) {
-        const cfpo_grid G = grid(4096 * seed, CFPO_VARIANT_ADAPTIVE, seed);
-        if (cfpo_policy_shift(&G, 0) != 0 || cfpo_policy_at(&G, 0, 1, 1).shift != 0) bad++;
-        double prev = 0;
+        const cfpo_grid G = grid(seed == 4 ? 65536 : 4096 * (int64_t)seed, CFPO_VARIANT_HYPERUNIFORM, seed);
+        const cfpo_grid A = grid(4096 * seed, CFPO_VARIANT_ADAPTIVE, seed);
+        if (cfpo_policy_walk(&G, 1, 0) != cfpo_policy_walk(&A, 1, 0)) bad++;
+        double pw = -1;
         for (int k = 1; k <= 400; k++) {
-            const double s = cfpo_policy_shift(&G, k);
-            if (!(s >= 0 && s < G.L)) bad++;
-            if (cfpo_policy_at(&G, k, 1, 0.5).shift != s) bad++;
-            if ((k - 1) % 4 == 0) { /* a group's first iteration: a new offset */
-                groups++;
-                if (s == prev) bad++;
-            } else if (s != prev) bad++;
-            prev = s;
+            const double w = cfpo_policy_walk(&G, k, 0);
+            const cfpo_policy P = cfpo_policy_at(&G, k, 1, 0.5);
+            if (cfpo_policy_walk(&G, k, 1) != w || P.shift_x != P.shift_y || P.rot_x != P.rot_y) bad++;
+            if ((k - 1) % 4 == 0) {
+                moves++;
+                if (pw >= 0 && fabs(fmod(w - pw + 3, 3) - 3.0 / 7) > 1e-12) bad++;
+            } else if (w != pw) {
+                bad++;
+            }
+            pw = w;
         }
-        const cfpo_grid H = grid(4096 * seed, CFPO_VARIANT_ADAPTIVE, seed + 100);
-        if (cfpo_policy_shift(&H, 1) == cfpo_policy_shift(&G, 1)) bad++; /* the seed keys it */
     }
-    CHECK(bad == 0, "grid shift: %d violations over %d groups of four iterations", bad, groups);
+    CHECK(bad == 0, "hyperuniform grid shift: %d violations over %d moves", bad, moves);
+    bad = 0;
+    for (uint64_t seed = 1; seed <= 4; seed++) {
+        const int64_t n = seed == 4 ? 65537 : 262144 * (int64_t)seed;
+        const cfpo_grid G = grid(n, CFPO_VARIANT_HYPERUNIFORM, seed), A = grid(n, CFPO_VARIANT_ADAPTIVE, seed);
+        for (int k = 0; k <= 400; k++)
+            for (int a = 0; a < 2; a++)
+                if (cfpo_policy_walk(&G, k, a) != cfpo_policy_walk(&A, k, a)) bad++;
+    }
+    CHECK(bad == 0, "hyperuniform above 65,536 points: %d walks differ from the adaptive variant's", bad);
 }
 
-/* The walk: sigma_j / L in [0, 3), steps of 3/7 mod 3, shift = L frac,
- * rot = floor; the prints' phasors exp(2 pi i m sigma_j / (3 L)) of seven
- * consecutive groups sum to 0 and the next group's turns the last one's
- * by more than 150 degrees at m = 3 and 4 (cos < -0.85); the sweep's
- * colours are a permutation, row-major from colour (rot, rot). */
+static void test_shift(void)
+{
+    int bad = 0, moves = 0;
+    for (uint64_t seed = 1; seed <= 4; seed++) {
+        const cfpo_grid G = grid(4096 * seed, CFPO_VARIANT_ADAPTIVE, seed);
+        const cfpo_policy P0 = cfpo_policy_at(&G, 0, 1, 1);
+        if (cfpo_policy_shift(&G, 0, 0) != 0 || cfpo_policy_shift(&G, 0, 1) != 0 || P0.shift_x != 0 || P0.shift_y != 0)
+            bad++;
+        double px = 0, py = 0;
+        for (int k = 1, j = 0; k <= 400; k++) {
+            const double sx = cfpo_policy_shift(&G, k, 0), sy = cfpo_policy_shift(&G, k, 1);
+            if (!(sx >= 0 && sx < G.L && sy >= 0 && sy < G.L)) bad++;
+            const cfpo_policy P = cfpo_policy_at(&G, k, 1, 0.5);
+            if (P.shift_x != sx || P.shift_y != sy) bad++;
+            if (k == move_iteration(j)) { /* a new offset on both axes */
+                moves++;
+                j++;
+                if (sx == px || sy == py) bad++;
+            } else if (sx != px || sy != py) {
+                bad++;
+            }
+            if (sx == sy) bad++; /* the axes' offsets are apart */
+            px = sx, py = sy;
+        }
+        const cfpo_grid H = grid(4096 * seed, CFPO_VARIANT_ADAPTIVE, seed + 100);
+        if (cfpo_policy_shift(&H, 1, 0) == cfpo_policy_shift(&G, 1, 0) ||
+            cfpo_policy_shift(&H, 1, 1) == cfpo_policy_shift(&G, 1, 1))
+            bad++; /* the seed keys it */
+    }
+    CHECK(bad == 0, "grid shift: %d violations over %d moves of the grid", bad, moves);
+}
+
+/* The walk on each axis: sigma_j / L in [0, 3), steps of 3/7 mod 3 from
+ * one move of the grid to the next, shift = L frac, rot = floor; the
+ * prints' phasors exp(2 pi i m sigma_j / (3 L)) of seven consecutive
+ * moves sum to 0 and each move turns the last one's by more than 150
+ * degrees at m = 3 and 4 (cos < -0.85); the two axes' walks start apart;
+ * the sweep's colours are a permutation, row-major from colour
+ * (rot_y, rot_x). */
 static void test_walk(void)
 {
-    int bad = 0, groups = 0;
-    for (int variant = 0; variant < 2; variant++)
+    int bad = 0, moves = 0;
+    for (int variant = 0; variant < 2; variant++) /* hyperuniform: above 65,536 points (test_shift_hyperuniform) */
         for (uint64_t seed = 1; seed <= 4; seed++) {
-            const cfpo_grid G = grid(4096 * seed, variant ? CFPO_VARIANT_HYPERUNIFORM : CFPO_VARIANT_ADAPTIVE, seed);
-            double w[64];
+            const cfpo_grid G = grid(variant ? 65536 + 4096 * (int64_t)seed : 4096 * (int64_t)seed,
+                                     variant ? CFPO_VARIANT_HYPERUNIFORM : CFPO_VARIANT_ADAPTIVE, seed);
+            double w[2][64];
             for (int j = 0; j < 64; j++) {
-                const int k = 4 * j + 1;
-                groups++;
-                w[j] = cfpo_policy_walk(&G, k);
+                const int k = move_iteration(j), last = j < 7 ? k : move_iteration(j + 1) - 1;
+                moves++;
                 const cfpo_policy P = cfpo_policy_at(&G, k, 1, 0.5);
-                if (!(w[j] >= 0 && w[j] < 3) || P.rot != (int)floor(w[j]) ||
-                    fabs(P.shift - G.L * (w[j] - floor(w[j]))) > 1e-15 || cfpo_policy_walk(&G, k + 3) != w[j]) {
-                    if (bad++ < 5) fprintf(stderr, "group %d: walk %.17g rot %d shift %g\n", j, w[j], P.rot, P.shift / G.L);
+                for (int a = 0; a < 2; a++) {
+                    w[a][j] = cfpo_policy_walk(&G, k, a);
+                    const int rot = a ? P.rot_y : P.rot_x;
+                    const double sh = a ? P.shift_y : P.shift_x;
+                    if (!(w[a][j] >= 0 && w[a][j] < 3) || rot != (int)floor(w[a][j]) ||
+                        fabs(sh - G.L * (w[a][j] - floor(w[a][j]))) > 1e-15 || cfpo_policy_walk(&G, last, a) != w[a][j]) {
+                        if (bad++ < 5) fprintf(stderr, "move %d axis %d: walk %.17g rot %d shift %g\n", j, a, w[a][j], rot, sh / G.L);
+                    }
+                    if (j > 0) {
+                        double d = fmod(w[a][j] - w[a][j - 1] + 3, 3);
+                        if (fabs(d - 3.0 / 7) > 1e-12) bad++;
+                    }
                 }
-                if (j > 0) {
-                    double d = fmod(w[j] - w[j - 1] + 3, 3);
-                    if (fabs(d - 3.0 / 7) > 1e-12) bad++;
-                }
+                if (fabs(w[0][j] - w[1][j]) < 1e-9) bad++;
                 int seen = 0;
                 for (int c = 0; c < 9; c++) seen |= 1 << cfpo_policy_colour(&P, 3, c);
-                if (seen != 0x1ff || cfpo_policy_colour(&P, 3, 0) != 4 * P.rot) bad++;
+                if (seen != 0x1ff || cfpo_policy_colour(&P, 3, 0) != 3 * P.rot_y + P.rot_x) bad++;
             }
-            for (int m = 1; m <= 4; m++)
-                for (int j0 = 0; j0 + 7 <= 64; j0 += 5) {
-                    double re = 0, im = 0;
-                    for (int j = j0; j < j0 + 7; j++) {
-                        re += cos(2 * M_PI * m * w[j] / 3);
-                        im += sin(2 * M_PI * m * w[j] / 3);
+            for (int a = 0; a < 2; a++)
+                for (int m = 1; m <= 4; m++)
+                    for (int j0 = 0; j0 + 7 <= 64; j0 += 5) {
+                        double re = 0, im = 0;
+                        for (int j = j0; j < j0 + 7; j++) {
+                            re += cos(2 * M_PI * m * w[a][j] / 3);
+                            im += sin(2 * M_PI * m * w[a][j] / 3);
+                        }
+                        const double turn = cos(2 * M_PI * m * (w[a][j0 + 1] - w[a][j0]) / 3);
+                        if (hypot(re, im) > 1e-9 || (m >= 3 && !(turn < -0.85))) {
+                            if (bad++ < 10) fprintf(stderr, "axis %d m %d moves %d..%d: sum %g, turn cos %g\n", a, m, j0, j0 + 6, hypot(re, im), turn);
+                        }
                     }
-                    const double turn = cos(2 * M_PI * m * (w[j0 + 1] - w[j0]) / 3);
-                    if (hypot(re, im) > 1e-9 || (m >= 3 && !(turn < -0.85))) {
-                        if (bad++ < 10) fprintf(stderr, "m %d groups %d..%d: sum %g, turn cos %g\n", m, j0, j0 + 6, hypot(re, im), turn);
-                    }
-                }
         }
-    CHECK(bad == 0, "grid walk: %d violations over %d groups", bad, groups);
+    CHECK(bad == 0, "grid walk: %d violations over %d moves", bad, moves);
     const cfpo_grid P = grid(4096, CFPO_VARIANT_PAPER, 1);
-    CHECK(cfpo_policy_walk(&P, 5) == 0 && cfpo_policy_at(&P, 5, 0, 1).rot == 0, "paper variant: a walk or a turned sweep");
+    const cfpo_policy Q = cfpo_policy_at(&P, 5, 0, 1);
+    CHECK(cfpo_policy_walk(&P, 5, 0) == 0 && cfpo_policy_walk(&P, 5, 1) == 0 && Q.rot_x == 0 && Q.rot_y == 0,
+          "paper variant: a walk or a turned sweep");
 }
 
 static void test_margin(void)
@@ -261,8 +325,8 @@ static void test_other_variants(void)
         if (cfpo_policy_starts_near(variants[v])) bad++;
         for (int k = 0; k <= 100; k++) {
             const cfpo_policy P = cfpo_policy_at(&G, k, 0, 0.3 + 0.01 * k);
-            if (P.margin != G.margin || P.shift != 0 || P.cut || P.near || P.relax ||
-                cfpo_policy_shift(&G, k) != 0)
+            if (P.margin != G.margin || P.shift_x != 0 || P.shift_y != 0 || P.cut || P.near || P.relax ||
+                cfpo_policy_shift(&G, k, 0) != 0 || cfpo_policy_shift(&G, k, 1) != 0)
                 bad++;
         }
     }
@@ -295,6 +359,7 @@ static void test_pure(void)
 
 int main(void)
 {
+    test_shift_hyperuniform();
     test_schedule_table();
     test_shift();
     test_walk();

@@ -19,15 +19,15 @@
 static int gather_shifted(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre)
 {
     const int64_t cx = E->x0 + lx, cy = E->y0 + ly;
-    const double L = E->G.L, sh = E->G.shift;
-    const double ox = (double)cx * L + sh, oy = (double)cy * L + sh;
+    const double L = E->G.L, shx = E->G.shift_x, shy = E->G.shift_y;
+    const double ox = (double)cx * L + shx, oy = (double)cy * L + shy;
     int m = 0;
     /* The last cell wraps, so unwrap point by point (to the copy nearest
      * the neighbour cell's centre). */
     for (int dy = -1; dy <= 1; dy++)
         for (int dx = -1; dx <= 1; dx++) {
             if (dx == 0 && dy == 0) *centre = m;
-            const double mx = ((double)(cx + dx) + 0.5) * L + sh, my = ((double)(cy + dy) + 0.5) * L + sh;
+            const double mx = ((double)(cx + dx) + 0.5) * L + shx, my = ((double)(cy + dy) + 0.5) * L + shy;
             const int64_t e = locate(E, lx + dx, ly + dy);
             const double *X, *Y;
             uint32_t a, b;
@@ -45,8 +45,8 @@ static int gather_shifted(const cfpo_engine *E, int64_t lx, int64_t ly, double *
 __attribute__((optimize("no-tree-vectorize"))) /* runs of 3-4 points: a vector loop's set-up costs more */
 static int gather_plain(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre)
 {
-    const double L = E->G.L, sh = E->G.shift;
-    const double ox = (double)(E->x0 + lx) * L + sh, oy = (double)(E->y0 + ly) * L + sh;
+    const double L = E->G.L;
+    const double ox = (double)(E->x0 + lx) * L + E->G.shift_x, oy = (double)(E->y0 + ly) * L + E->G.shift_y;
     const int64_t c = ly * E->w + lx;
     const uint32_t *st = E->start;
     const double *X = E->px, *Y = E->py;
@@ -70,7 +70,7 @@ static int gather_plain(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox
 static int eng_gather_block(const cfpo_engine *E, int64_t lx, int64_t ly, double *ox_, double *oy_, int *centre)
 {
     if (eng_plain_block(E, lx, ly)) return gather_plain(E, lx, ly, ox_, oy_, centre);
-    if (E->G.shift != 0) return gather_shifted(E, lx, ly, ox_, oy_, centre);
+    if (E->G.shift_x != 0 || E->G.shift_y != 0) return gather_shifted(E, lx, ly, ox_, oy_, centre);
     const int64_t g = E->G.g, cx = E->x0 + lx, cy = E->y0 + ly;
     const double ox = (double)cx * E->G.L, oy = (double)cy * E->G.L;
     int m = 0;
@@ -100,14 +100,14 @@ static int eng_gather_block(const cfpo_engine *E, int64_t lx, int64_t ly, double
 static unsigned store_move(cfpo_engine *E, uint32_t k, int64_t cx, int64_t cy, double nx, double ny, double ddx,
                            double ddy)
 {
-    const double ox = (double)cx * E->G.L + E->G.shift, oy = (double)cy * E->G.L + E->G.shift;
+    const double ox = (double)cx * E->G.L + E->G.shift_x, oy = (double)cy * E->G.L + E->G.shift_y;
     const double gx = cfpo_wrap01(nx + ox), gy = cfpo_wrap01(ny + oy);
     E->px[k] = gx;
     E->py[k] = gy;
     E->dq[2 * k] += (float)ddx;
     E->dq[2 * k + 1] += (float)ddy;
-    const int dx = wrap_offset(cfpo_grid_coord(&E->G, gx) - cx, E->G.g);
-    const int dy = wrap_offset(cfpo_grid_coord(&E->G, gy) - cy, E->G.g);
+    const int dx = wrap_offset(cfpo_grid_cx(&E->G, gx) - cx, E->G.g);
+    const int dy = wrap_offset(cfpo_grid_cy(&E->G, gy) - cy, E->G.g);
     return 1u << ((dy + 1) * 3 + (dx + 1));
 }
 
@@ -145,7 +145,7 @@ static int64_t solve_cell(cfpo_engine *E, int64_t lx, int64_t ly, double *buf, i
     const cfpo_policy *P = &E->pol;
     int64_t moves = 0;
     unsigned mask = 0;
-    const double ox = (double)(E->x0 + lx) * E->G.L + E->G.shift, oy = (double)(E->y0 + ly) * E->G.L + E->G.shift;
+    const double ox = (double)(E->x0 + lx) * E->G.L + E->G.shift_x, oy = (double)(E->y0 + ly) * E->G.L + E->G.shift_y;
     /* Held points (id < cfg.fixed) are neighbours only; ids ascend inside
      * a cell, so they are the cell's first slots. */
     uint32_t k0 = 0;
@@ -214,8 +214,8 @@ static void cpu_regrid(cfpo_engine *E, const eng_colour *C)
         const int64_t c = ly * E->w + lx, cx = E->x0 + lx, cy = E->y0 + ly;
         unsigned mask = 0;
         for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
-            const int dx = wrap_offset(cfpo_grid_coord(&E->G, E->px[k]) - cx, g);
-            const int dy = wrap_offset(cfpo_grid_coord(&E->G, E->py[k]) - cy, g);
+            const int dx = wrap_offset(cfpo_grid_cx(&E->G, E->px[k]) - cx, g);
+            const int dy = wrap_offset(cfpo_grid_cy(&E->G, E->py[k]) - cy, g);
             mask |= 1u << ((dy + 1) * 3 + (dx + 1));
         }
         E->mask[c] = (uint16_t)((E->mask[c] & NEED_BIT) | mask);

@@ -181,7 +181,7 @@ static inline void cell_slice(const cfpo_engine *E, int64_t e, const double **X,
 
 static inline int64_t own_cell_of(const cfpo_engine *E, double x, double y)
 {
-    int64_t lx = cfpo_grid_coord(&E->G, x) - E->x0, ly = cfpo_grid_coord(&E->G, y) - E->y0;
+    int64_t lx = cfpo_grid_cx(&E->G, x) - E->x0, ly = cfpo_grid_cy(&E->G, y) - E->y0;
     if (lx < 0 || lx >= E->w || ly < 0 || ly >= E->h) return -1;
     return ly * E->w + lx;
 }
@@ -202,10 +202,10 @@ static inline int wrap_offset(int64_t d, int64_t g)
  * plain differences (|difference| < 3 L <= 0.5). */
 static inline int eng_plain_block(const cfpo_engine *E, int64_t lx, int64_t ly)
 {
-    const int64_t last = E->G.g - (E->G.shift != 0 ? 3 : 2);
+    const int64_t lastx = E->G.g - (E->G.shift_x != 0 ? 3 : 2), lasty = E->G.g - (E->G.shift_y != 0 ? 3 : 2);
     const int64_t cx = E->x0 + lx, cy = E->y0 + ly;
-    return E->G.g >= 8 && lx >= 1 && lx < E->w - 1 && ly >= 1 && ly < E->h - 1 && cx >= 1 && cx <= last &&
-           cy >= 1 && cy <= last;
+    return E->G.g >= 8 && lx >= 1 && lx < E->w - 1 && ly >= 1 && ly < E->h - 1 && cx >= 1 && cx <= lastx &&
+           cy >= 1 && cy <= lasty;
 }
 
 /* Is cell e's mask bit for the neighbour at offset (dx, dy) set? */
@@ -218,17 +218,18 @@ static inline int neighbour_of_rank(const cfpo_engine *E, int r)
     return -1;
 }
 
-/* v's offset from the low edge of global cell column (or row) c, for v
- * in that cell: in [0, L) up to rounding, whatever the grid's shift. */
-static inline double cell_offset(const cfpo_engine *E, double v, int64_t c)
+/* v's offset from the low edge of global cell column (or row) c on the
+ * axis of offset shift, for v in that cell: in [0, L) up to rounding,
+ * whatever the grid's shift. */
+static inline double cell_offset(const cfpo_engine *E, double v, int64_t c, double shift)
 {
-    double d = v - ((double)c * E->G.L + E->G.shift);
+    double d = v - ((double)c * E->G.L + shift);
     return d < -0.5 ? d + 1.0 : d;
 }
 
 static inline int in_cell(const cfpo_engine *E, double x, double y, int64_t lx, int64_t ly)
 {
-    return cfpo_grid_coord(&E->G, x) - E->x0 == lx && cfpo_grid_coord(&E->G, y) - E->y0 == ly;
+    return cfpo_grid_cx(&E->G, x) - E->x0 == lx && cfpo_grid_cy(&E->G, y) - E->y0 == ly;
 }
 
 /* Own cells of one colour: tile column lx = bx, bx + p, ... */

@@ -125,7 +125,8 @@ static int load_points(cfpo_engine *E, char *err, size_t errlen)
     }
     E->iter0 = (int)info.iteration;
     E->cur = E->iter0;
-    E->G.shift = cfpo_policy_shift(&E->G, E->iter0);
+    E->G.shift_x = cfpo_policy_shift(&E->G, E->iter0, 0);
+    E->G.shift_y = cfpo_policy_shift(&E->G, E->iter0, 1);
     E->resumed_converged = info.converged;
     E->near = info.near;
     return eng_load_checkpoint(E, err, errlen);

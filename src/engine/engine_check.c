@@ -40,8 +40,8 @@ typedef struct {
 static int cmp_cell_id(const void *a, const void *b, const cfpo_grid *G)
 {
     const pt_rec *p = a, *q = b;
-    int64_t cp = cfpo_grid_coord(G, p->y) * G->g + cfpo_grid_coord(G, p->x);
-    int64_t cq = cfpo_grid_coord(G, q->y) * G->g + cfpo_grid_coord(G, q->x);
+    int64_t cp = cfpo_grid_cy(G, p->y) * G->g + cfpo_grid_cx(G, p->x);
+    int64_t cq = cfpo_grid_cy(G, q->y) * G->g + cfpo_grid_cx(G, q->x);
     if (cp != cq) return cp < cq ? -1 : 1;
     return p->id < q->id ? -1 : p->id > q->id;
 }
@@ -69,7 +69,7 @@ void eng_check_halo(cfpo_engine *E)
     if (!first) eng_check_fail(E, "out of memory");
     size_t j = 0;
     for (int64_t c = 0; c <= g * g; c++) {
-        while (j < na && cfpo_grid_coord(&E->G, A[j].y) * g + cfpo_grid_coord(&E->G, A[j].x) < c) j++;
+        while (j < na && cfpo_grid_cy(&E->G, A[j].y) * g + cfpo_grid_cx(&E->G, A[j].x) < c) j++;
         first[c] = (int64_t)j;
     }
     for (int64_t i = 0; i < E->nring; i++) {

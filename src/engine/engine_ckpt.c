@@ -31,22 +31,22 @@ int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err
  * and measured. A cell then holds at most ckpt_cell_bound(L, d0) points. */
 static int start_cell_bound(cfpo_engine *E, int64_t *bound, double *d0, char *err, size_t errlen)
 {
-    const double shift = E->G.shift;
-    E->G.shift = 0;
+    const double shx = E->G.shift_x, shy = E->G.shift_y;
+    E->G.shift_x = E->G.shift_y = 0;
     int rc = eng_make_initial(E, err, errlen);
     if (!comm_all(rc == 0)) {
-        E->G.shift = shift;
+        E->G.shift_x = shx, E->G.shift_y = shy;
         if (rc == 0) snprintf(err, errlen, "another rank failed to make the start");
         return -1;
     }
     if (!comm_all(eng_refresh_halo(E) == 0)) {
-        E->G.shift = shift;
+        E->G.shift_x = shx, E->G.shift_y = shy;
         snprintf(err, errlen, "out of memory");
         return -1;
     }
     double dmin, davg;
     cfpo_engine_deltas(E, &dmin, &davg);
-    E->G.shift = shift;
+    E->G.shift_x = shx, E->G.shift_y = shy;
     memset(E->bdirty, 1, (size_t)(E->nbx * E->nby)); /* the cache held the start's blocks */
     E->dmin_now = 1;
     *d0 = dmin * E->G.delta * (1 - 1e-9); /* rounding can only lower it */
@@ -120,7 +120,7 @@ static int read_piece(cfpo_engine *E, comm_file *f, uint64_t hb, scatter *s, int
             *badpos = i;
             return -1;
         }
-        const int q = cfpo_tiling_owner(&E->T, cfpo_grid_coord(&E->G, x), cfpo_grid_coord(&E->G, y));
+        const int q = cfpo_tiling_owner(&E->T, cfpo_grid_cx(&E->G, x), cfpo_grid_cy(&E->G, y));
         if (scatter_add(s, q, x, y, i) != 0) return -1;
     }
     return 0;

@@ -302,7 +302,7 @@ int eng_pack_migrants(cfpo_engine *E, const eng_colour *C)
             const unsigned mk = E->mask[c];
             if (!(mk & ~CENTRE_BIT & 0x1ffu)) continue;
             for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
-                const int64_t gx = cfpo_grid_coord(&E->G, E->px[k]), gy = cfpo_grid_coord(&E->G, E->py[k]);
+                const int64_t gx = cfpo_grid_cx(&E->G, E->px[k]), gy = cfpo_grid_cy(&E->G, E->py[k]);
                 const int64_t dlx = lx + wrap_offset(gx - (E->x0 + lx), g), dly = ly + wrap_offset(gy - (E->y0 + ly), g);
                 if (locate(E, dlx, dly) >= 0) continue;
                 const int q = neighbour_of_rank(E, cfpo_tiling_owner(&E->T, gx, gy));

@@ -91,14 +91,15 @@ int64_t cfpo_engine_phase(cfpo_engine *E, int colour, int64_t *solved)
     return moves;
 }
 
-/* Moves the grid under the points to offset `shift` (both axes): colour by
+/* Moves the grid under the points to the offsets (shift_x, shift_y): colour by
  * colour, the points of each cell go to the cell that holds them now
  * (the same or a neighbour, as |change| < L), through the same steps as a
  * phase's moves. Then every cell is solved again and every statistics
  * block recomputed (each cell's frame and constraint square moved). */
-static void move_grid(cfpo_engine *E, double shift)
+static void move_grid(cfpo_engine *E, double shift_x, double shift_y)
 {
-    E->G.shift = shift;
+    E->G.shift_x = shift_x;
+    E->G.shift_y = shift_y;
     E->shifting = 1;
     for (int colour = 0; colour < E->G.period * E->G.period; colour++) {
         const eng_colour C = eng_colour_of(E, colour);
@@ -123,7 +124,8 @@ void cfpo_engine_begin(cfpo_engine *E)
     E->cur++;
     E->pol = cfpo_policy_at(&E->G, E->cur, E->near, E->dmin_now);
     E->G.margin = E->pol.margin;
-    if (E->pol.shift != E->G.shift) move_grid(E, E->pol.shift);
+    if (E->pol.shift_x != E->G.shift_x || E->pol.shift_y != E->G.shift_y)
+        move_grid(E, E->pol.shift_x, E->pol.shift_y);
     if (E->pol.all)
         for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
     if (E->pol.transport) {

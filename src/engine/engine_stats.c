@@ -34,7 +34,7 @@ typedef struct {
 static double nn2_block(const cfpo_engine *E, int64_t lx, int64_t ly, uint32_t k, int *sure)
 {
     const double L = E->G.L, x = E->px[k], y = E->py[k];
-    const double ex = cell_offset(E, x, E->x0 + lx), ey = cell_offset(E, y, E->y0 + ly);
+    const double ex = cell_offset(E, x, E->x0 + lx, E->G.shift_x), ey = cell_offset(E, y, E->y0 + ly, E->G.shift_y);
     double edge = min2(min2(ex, L - ex), min2(ey, L - ey));
     if (edge < 0) edge = 0;
     double best = INFINITY;
@@ -83,7 +83,7 @@ static double box_min(const cfpo_engine *E, const nn_query *q, int64_t B)
             }
         return best;
     }
-    const int64_t qx = cfpo_grid_coord(&E->G, q->x), qy = cfpo_grid_coord(&E->G, q->y);
+    const int64_t qx = cfpo_grid_cx(&E->G, q->x), qy = cfpo_grid_cy(&E->G, q->y);
     for (int64_t dy = -B; dy <= B; dy++) {
         int64_t ly = (qy + dy + g) % g - E->y0;
         if (ly < 0 || ly >= E->h) continue;
@@ -160,8 +160,8 @@ static inline __attribute__((always_inline)) int block_pass(cfpo_engine *E, int6
 static int settled(const cfpo_engine *E, const nn_query *q, double res, int64_t B)
 {
     const double L = E->G.L;
-    const int64_t cx = cfpo_grid_coord(&E->G, q->x), cy = cfpo_grid_coord(&E->G, q->y);
-    const double ex = cell_offset(E, q->x, cx), ey = cell_offset(E, q->y, cy);
+    const int64_t cx = cfpo_grid_cx(&E->G, q->x), cy = cfpo_grid_cy(&E->G, q->y);
+    const double ex = cell_offset(E, q->x, cx, E->G.shift_x), ey = cell_offset(E, q->y, cy, E->G.shift_y);
     const double edge = fmax(0, fmin(fmin(ex, L - ex), fmin(ey, L - ey)));
     const double reach = (double)B * L + edge;
     return res <= reach * reach || 2 * B + 1 >= E->G.g;

@@ -47,7 +47,7 @@ int cfpo_grid_init(cfpo_grid *G, int64_t n, int variant, uint64_t seed, char *er
     G->margin = variant == CFPO_VARIANT_SIMPLIFIED ? 0.0 : G->L - delta;
     G->seed = seed;
     G->extra = (uint64_t)(n - g * g);
-    G->shift = 0;
+    G->shift_x = G->shift_y = 0;
     return 0;
 }
 
@@ -61,12 +61,13 @@ uint64_t cfpo_grid_cell_count(const cfpo_grid *G, uint64_t c)
     return base + (cfpo_permute(c, cells, cfpo_mix64(G->seed ^ PERM_SALT)) < rem ? 1 : 0);
 }
 
+/* A coordinate in cell column (row) i of the unshifted grid. */
 static double coord_in_cell(const cfpo_grid *G, int64_t i, double u)
 {
     double v = ((double)i + u) * G->L;
     /* Rounding may put v on a neighbour's side of the boundary: step back. */
-    while (cfpo_grid_coord(G, v) > i) v = nextafter(v, 0.0);
-    while (cfpo_grid_coord(G, v) < i) v = nextafter(v, 1.0);
+    while (cfpo_grid_axis(G, v, 0) > i) v = nextafter(v, 0.0);
+    while (cfpo_grid_axis(G, v, 0) < i) v = nextafter(v, 1.0);
     return v;
 }
 

@@ -27,9 +27,10 @@ typedef struct {
     double margin;  /* how far S reaches past the cell: L - Delta(n), or 0 */
     uint64_t seed;
     uint64_t extra; /* n - g^2: cells with a second point */
-    double shift;   /* the grid's offset on both axes, in [0, L): cell cx spans
-                       [cx L + shift, (cx + 1) L + shift) (mod 1); 0 except
-                       in the adaptive variant, which moves it every iteration */
+    double shift_x; /* the grid's offsets, each in [0, L): cell (cx, cy) spans */
+    double shift_y; /* [cx L + shift_x, (cx + 1) L + shift_x) x [cy L + shift_y,
+                       (cy + 1) L + shift_y) (mod 1); 0 except in the
+                       adaptive-like variants, which move the grid */
 } cfpo_grid;
 
 /* Chooses g: a multiple of the period with g^2 close to 0.8 n and
@@ -41,15 +42,20 @@ int cfpo_grid_init(cfpo_grid *G, int64_t n, int variant, uint64_t seed, char *er
 /* Smallest n the variant accepts. */
 int64_t cfpo_grid_min_n(int variant);
 
-static inline int64_t cfpo_grid_coord(const cfpo_grid *G, double v)
+/* The cell column (row) of coordinate v on an axis of offset shift. */
+static inline int64_t cfpo_grid_axis(const cfpo_grid *G, double v, double shift)
 {
-    if (G->shift != 0) {
-        v -= G->shift;
+    if (shift != 0) {
+        v -= shift;
         if (v < 0) v += 1.0;
     }
     int64_t c = (int64_t)(v * (double)G->g);
     return c >= G->g ? G->g - 1 : (c < 0 ? 0 : c);
 }
+
+/* The cell column of x and the cell row of y. */
+static inline int64_t cfpo_grid_cx(const cfpo_grid *G, double x) { return cfpo_grid_axis(G, x, G->shift_x); }
+static inline int64_t cfpo_grid_cy(const cfpo_grid *G, double y) { return cfpo_grid_axis(G, y, G->shift_y); }
 
 static inline int cfpo_grid_colour(const cfpo_grid *G, int64_t cx, int64_t cy)
 {

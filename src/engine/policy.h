@@ -24,18 +24,23 @@
  *   20 on    1                         1.8, else 1.4
  * The near solve runs from the first iteration until a near sweep
  * converges, LocalCFPO after it (its cells column matters only before).
- * The grid moves before iterations 1, 5, 9, ... (4j + 1) and stays for
- * the next three: group j's offset is sigma_j = 3 L frac(u + j / 7), u
- * from the seed, in [0, 3 L), a walk of 3/7 of a cell a group around the
- * colours' period 3 L; the grid is shifted by sigma_j mod L and the sweep
- * starts with colour (r, r), r = floor(sigma_j / L) (which is the grid
- * shifted by sigma_j itself). Each group prints the grid and its colours
- * on the set (a density wave at the frequencies m g / 3, m = 1..4, of
- * phase 2 pi m sigma_j / (3 L)), and the print outlives the group; with
- * random offsets the prints add up like a random walk (a spike 50x its
- * ring at a million points), with this walk each group's print at the
- * cells' and the colours' strongest frequencies (m = 3, 4: phase steps of
- * 154 and 206 degrees) mostly cancels the last one's (docs/method.md). The margin of every
+ * The grid moves before each of iterations 1-8 and then before 9, 13,
+ * 17, ..., staying for the three iterations after each of those; move j
+ * (from 0) puts each axis at its own offset on a walk, sigma_j = 3 L
+ * frac(u + j / 7) with u from the seed, one u for x and an independent one
+ * for y: 3/7 of a cell a move around the colours' period 3 L. The grid is
+ * shifted by sigma_j mod L on that axis and the sweep starts with colour
+ * (r_y, r_x), r = floor(sigma_j / L) (which is the grid shifted by
+ * (sigma_x, sigma_y) itself). Each sweep under one grid prints the grid
+ * and its colours on the set (a density wave at the frequencies m g / 3,
+ * m = 1..4, of phase 2 pi m sigma_j / (3 L) on its axis), and the print
+ * outlives the sweep: with one grid for four sweeps from the start, a
+ * spike 30-60x its ring at a million points; with the walk each move's
+ * print at the cells' and the colours' strongest frequencies (m = 3, 4:
+ * phase steps of 154 and 206 degrees) mostly cancels the last one's, and
+ * moving the grid before every one of the first eight sweeps, while the
+ * set is loose enough to take the print, keeps each print from growing
+ * (docs/method.md, item 3). The margin of every
  * iteration is L - max(delta(X) (1 + 1e-9), 0.7 Delta(n)), at least 0;
  * each point's square is cut to a margin of min(margin, L - t),
  * t = r0 + tol L, and a point with t >= 1.5 L stays where it is.
@@ -95,10 +100,11 @@ typedef struct {
     double L;       /* the cell side, for the per-point rules */
     double margin;  /* how far S reaches past the cell: the grid's fixed
                        margin (paper, simplified) or the adaptive one */
-    double shift;   /* the grid's offset on both axes in this iteration */
-    int rot;        /* the sweep solves colours (r + a, r + b) mod period in
-                       the order (a, b) = (0, 0), (0, 1), ... (0 but in the
-                       adaptive-like variants) */
+    double shift_x; /* the grid's offsets in this iteration */
+    double shift_y;
+    int rot_x;      /* the sweep solves colours (rot_y + a, rot_x + b) mod */
+    int rot_y;      /* period in the order (a, b) = (0, 0), (0, 1), ... (0 but
+                       in the adaptive-like variants) */
     int cut;        /* 1: each point's square is cut to keep it t from the
                        points beyond its block (adaptive) */
     double freeze;  /* with cut: a point whose t reaches this stays (1.5 L) */
@@ -123,17 +129,17 @@ int cfpo_policy_stage_from(const cfpo_grid *G);
  * before the first measurement). A pure function of its arguments. */
 cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin);
 
-/* The grid's offset in iteration k (0 before the first, and always 0 but
- * in the adaptive-like variants): sigma_j mod L for the group j of four
- * iterations 4j + 1 .. 4j + 4 (above). */
-double cfpo_policy_shift(const cfpo_grid *G, int k);
-/* sigma_j / L of iteration k's group, in [0, period): the walk (0 where
- * cfpo_policy_shift is 0). */
-double cfpo_policy_walk(const cfpo_grid *G, int k);
+/* The grid's offset on axis 0 (x) or 1 (y) in iteration k (0 before the
+ * first, and always 0 but in the adaptive-like variants): sigma_j mod L of
+ * that axis for the grid's move j in force in iteration k (above). */
+double cfpo_policy_shift(const cfpo_grid *G, int k, int axis);
+/* sigma_j / L of axis 0 (x) or 1 (y) in iteration k, in [0, period): the
+ * walk (0 where cfpo_policy_shift is 0). */
+double cfpo_policy_walk(const cfpo_grid *G, int k, int axis);
 /* The colour the sweep of a policy solves j-th (j in [0, period^2)). */
 static inline int cfpo_policy_colour(const cfpo_policy *P, int period, int j)
 {
-    return ((j / period + P->rot) % period) * period + (j % period + P->rot) % period;
+    return ((j / period + P->rot_y) % period) * period + (j % period + P->rot_x) % period;
 }
 
 /* Whether a run of this variant starts in the near phase (adaptive). */

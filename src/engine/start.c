@@ -173,9 +173,9 @@ int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads,
                 double x = cfpo_wrap01(((double)i + cfpo_rand01(seed, 2 * sc + 1, 2 * k)) / (double)p.h);
                 double y = cfpo_wrap01(((double)j + cfpo_rand01(seed, 2 * sc + 1, 2 * k + 1)) / (double)p.h);
                 warp(md, nm, &x, &y);
-                const int64_t cy = cfpo_grid_coord(G, y);
+                const int64_t cy = cfpo_grid_cy(G, y);
                 if (cy < y0 || cy >= y1) continue;
-                pts[m].cell = cy * G->g + cfpo_grid_coord(G, x);
+                pts[m].cell = cy * G->g + cfpo_grid_cx(G, x);
                 pts[m].key = sc * per + k;
                 pts[m].x = x;
                 pts[m].y = y;
