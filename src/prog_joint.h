@@ -35,6 +35,11 @@
 typedef struct {
     int sweeps;           /* passes over every point; the phase also ends after a pass that moved nothing */
     int candidates;       /* trial positions per point and sweep (0: 12) */
+    double avg;           /* > 0: the score of a move is the pair measure plus avg times the mover's
+                             mean, over the groups that hold it, of its nearest distance in the group
+                             over the group's G_L (each capped); guards the prefixes' delta_avg; 0: off */
+    int solve;            /* > 0: then up to this many steps of the local solve from the best trial
+                             (the ascent of the smallest pair measure over the neighbours); 0: off */
     double target_prefix; /* t_L for every level but the last (0: 0.78) */
     double target_full;   /* t_L for the last level (0: 0.90) */
     double hold;          /* > 0: a pair of level L shorter than hold Delta(m_L) may not shrink
@@ -44,6 +49,7 @@ typedef struct {
                              the class's and the union's), a pair across classes level K (weight
                              target_full Delta(n), floor the union's); K + 1 groups are measured */
     uint64_t seed;
+    int threads;          /* OpenMP threads of the moves (0: all); the bytes do not depend on it */
     /* Called with sweep 0 (the start) and after every sweep: the points
      * moved, each prefix's delta_min and delta_avg in its own Delta(m_k);
      * may be NULL. */
