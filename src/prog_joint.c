@@ -28,10 +28,16 @@ static double wrap1(double v)
 /* The groups' measures, and (raw, may be NULL) each group's smallest
  * distance itself, the floors' exact values. Groups: the prefixes
  * [0, sizes[k]); with classes, class k [sizes[k - 1], sizes[k]) and then
- * the union [0, sizes[K - 1]) (K + 1 groups). */
-static int measure(const double *xy, const int64_t *sizes, int K, int classes, double *dmin, double *davg,
+ * the union [0, sizes[K - 1]) (K + 1 groups). The nearest distances on
+ * nth threads, summed in id order (the same bits for any nth). */
+static int measure(const double *xy, const int64_t *sizes, int K, int classes, int nth, double *dmin, double *davg,
                    double *raw, char *err, size_t errlen)
 {
+    double *nd = malloc((size_t)(sizes[K - 1] > 0 ? sizes[K - 1] : 1) * sizeof *nd);
+    if (!nd) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
     for (int k = 0; k < K + (classes ? 1 : 0); k++) {
         const int64_t lo0 = classes && k > 0 && k < K ? sizes[k - 1] : 0;
         const int64_t m = (k < K ? sizes[k] : sizes[K - 1]) - lo0;
@@ -39,14 +45,16 @@ static int measure(const double *xy, const int64_t *sizes, int K, int classes, d
         prog_buckets B = {0};
         if (grid_init(&B, xy, m) != 0) {
             prog_buckets_free(&B);
+            free(nd);
             snprintf(err, errlen, "out of memory");
             return -1;
         }
+#pragma omp parallel for schedule(static) num_threads(nth)
+        for (int64_t i = 0; i < m; i++) nd[i] = sqrt(prog_buckets_nearest2(&B, xy[2 * i], xy[2 * i + 1], i, -1.0));
         double lo = INFINITY, sum = 0;
         for (int64_t i = 0; i < m; i++) {
-            const double d = sqrt(prog_buckets_nearest2(&B, xy[2 * i], xy[2 * i + 1], i, -1.0));
-            if (d < lo) lo = d;
-            sum += d;
+            if (nd[i] < lo) lo = nd[i];
+            sum += nd[i];
         }
         prog_buckets_free(&B);
         const double D = cfpo_delta_bound((double)m);
@@ -55,13 +63,14 @@ static int measure(const double *xy, const int64_t *sizes, int K, int classes, d
         if (raw) raw[k] = lo;
         xy -= 2 * lo0;
     }
+    free(nd);
     return 0;
 }
 
 int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmin, double *davg, char *err,
                       size_t errlen)
 {
-    return measure(xy, sizes, K, 0, dmin, davg, NULL, err, errlen);
+    return measure(xy, sizes, K, 0, 1, dmin, davg, NULL, err, errlen);
 }
 
 /* ---- the moves */
@@ -75,6 +84,7 @@ typedef struct {
     double H[65];        /* hold distances: a pair shorter than H_L may not shrink */
     double Fmax[65];     /* the same for F */
     double cap;          /* the measure counted up to this (a mover at or past it has nothing to gain) */
+    double tau;          /* > 0: the pair measure is the soft minimum with this temperature (prog_joint.h soft) */
     double lam;          /* weight of the mover's mean nearest distance over its groups (prog_joint.h avg) */
 } joint;
 
@@ -93,7 +103,7 @@ typedef struct {
  * reach). */
 static double measure_at(const joint *J, int64_t i, double x, double y, int64_t *bind)
 {
-    double mL[66];
+    double mL[66], S = 0;
     if (J->lam > 0)
         for (int L = 0; L <= J->K; L++) mL[L] = INFINITY;
     const prog_buckets *B = &J->B;
@@ -116,6 +126,8 @@ static double measure_at(const joint *J, int64_t i, double x, double y, int64_t 
                 if (d < J->H[L] && d < sqrt(prog_torus_d2(B->xy[2 * i], B->xy[2 * i + 1], B->xy[2 * k], B->xy[2 * k + 1])))
                     return -1; /* a pair below its hold distance may not shrink */
                 const double q = d / J->G[L];
+                if (J->tau > 0 && q < J->cap) /* S = sum of exp(-(q_j - best) / tau) */
+                    S = q < best ? S * exp((q - best) / J->tau) + 1.0 : S + exp((best - q) / J->tau);
                 if (q < best) best = q, *bind = k;
                 if (J->lam > 0) {
                     if (d < mL[L]) mL[L] = d;
@@ -124,6 +136,7 @@ static double measure_at(const joint *J, int64_t i, double x, double y, int64_t 
             }
         }
     }
+    if (J->tau > 0 && S > 1.0) best -= J->tau * log(S); /* the soft minimum, at most the minimum */
     if (J->lam <= 0) return best;
     double sum = 0;
     int cnt = 0;
@@ -257,6 +270,45 @@ static void set_floors(joint *J, int K, const double *raw)
     }
 }
 
+/* The best circumcentre (offset from the mover, within reach of it) of
+ * three of the nn nearest gathered neighbours by local_at, into (*px,
+ * *py); its measure, or -1 when none keeps the floors. The circumcentres
+ * are the vertices of the neighbours' Voronoi diagram near the mover: the
+ * farthest-point move's candidates (unweighted; the weights and floors are
+ * then applied by local_at). */
+static double best_circumcentre(const joint *J, nbuf *w, int nn, double reach, double *px, double *py)
+{
+    /* the nn nearest to the front (selection; nn is small) */
+    if (nn > w->n) nn = (int)w->n;
+    for (int a = 0; a < nn; a++) {
+        int64_t m = a;
+        double dm = w->e[4 * a] * w->e[4 * a] + w->e[4 * a + 1] * w->e[4 * a + 1];
+        for (int64_t j = a + 1; j < w->n; j++) {
+            const double d = w->e[4 * j] * w->e[4 * j] + w->e[4 * j + 1] * w->e[4 * j + 1];
+            if (d < dm) dm = d, m = j;
+        }
+        for (int c = 0; c < 4 && m != a; c++) {
+            const double t = w->e[4 * a + c];
+            w->e[4 * a + c] = w->e[4 * m + c];
+            w->e[4 * m + c] = t;
+        }
+    }
+    double best = -1;
+    for (int a = 0; a < nn; a++)
+        for (int b = a + 1; b < nn; b++)
+            for (int c = b + 1; c < nn; c++) {
+                const double ax = w->e[4 * a], ay = w->e[4 * a + 1], bx = w->e[4 * b] - ax, by = w->e[4 * b + 1] - ay;
+                const double cx = w->e[4 * c] - ax, cy = w->e[4 * c + 1] - ay, D = 2.0 * (bx * cy - by * cx);
+                if (fabs(D) < 1e-300) continue;
+                const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+                const double ux = ax + (cy * b2 - by * c2) / D, uy = ay + (bx * c2 - cx * b2) / D;
+                if (ux * ux + uy * uy > reach * reach) continue;
+                const double q = local_at(w, J->cap, ux, uy, 0, NULL, NULL);
+                if (q > best) best = q, *px = ux, *py = uy;
+            }
+    return best;
+}
+
 /* One move of point i in sweep s (prog_joint.h): the trials, then the
  * local solve; 1 when it moved, 0 when not, -1 when out of memory. Reads
  * the points within the level's reach of i's trial positions, writes i
@@ -293,14 +345,20 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
         const double q = measure_at(J, i, cx, cy, &bk);
         if (q > bq) bq = q, bx = cx, by = cy;
     }
-    if (jo->solve > 0) { /* the local solve from the best trial, checked against the grid */
+    if (jo->solve > 0 || jo->circum > 0) { /* the local solve from the best trial, checked against the grid */
         const int l = J->lev[i];
         const double r = fmax(J->Fmax[l], J->cap * J->Gmax[l]) + scale;
         if (gather(J, w, i, x0, y0, r) != 0) return -1;
         double px = bx - x0, py = by - y0;
         px -= round(px);
         py -= round(py);
-        const double ql = local_solve(J, w, &px, &py, 0.2 * scale, jo->solve);
+        if (jo->circum > 0) {
+            double cx = 0, cy = 0;
+            const double qc = best_circumcentre(J, w, jo->circum, scale, &cx, &cy);
+            if (qc > local_at(w, J->cap, px, py, 0, NULL, NULL)) px = cx, py = cy;
+        }
+        const double ql = jo->solve > 0 ? local_solve(J, w, &px, &py, 0.2 * scale, jo->solve)
+                                        : local_at(w, J->cap, px, py, 0, NULL, NULL);
         if (ql >= 0 && px * px + py * py <= scale * scale) {
             const double cx = wrap1(x0 + px), cy = wrap1(y0 + py);
             int64_t bk;
@@ -361,11 +419,12 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
     }
     J.cap = 1.25;
     J.lam = jo->avg;
+    J.tau = jo->soft;
     const int NG = K + (J.classes ? 1 : 0);
     double raw[65];
-    int rc = measure(xy, sizes, K, J.classes, dmin, davg, raw, err, errlen);
-    if (rc == 0 && jo->sweep_done) jo->sweep_done(0, 0, dmin, davg, NG, jo->user);
     const int nth = jo->threads > 0 ? jo->threads : omp_get_max_threads();
+    int rc = measure(xy, sizes, K, J.classes, nth, dmin, davg, raw, err, errlen);
+    if (rc == 0 && jo->sweep_done) jo->sweep_done(0, 0, dmin, davg, NG, jo->user);
     nbuf *nb = calloc((size_t)nth, sizeof *nb);
     int64_t *order = malloc((size_t)n * sizeof *order), *cell = malloc((size_t)n * sizeof *cell);
     if (!nb || !order || !cell) rc = -1;
@@ -419,7 +478,7 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
             snprintf(err, errlen, "out of memory");
             break;
         }
-        rc = measure(xy, sizes, K, J.classes, dmin, davg, raw, err, errlen);
+        rc = measure(xy, sizes, K, J.classes, nth, dmin, davg, raw, err, errlen);
         if (rc == 0 && jo->sweep_done) jo->sweep_done(s, moved, dmin, davg, NG, jo->user);
         if (moved == 0) break;
     }

@@ -38,6 +38,11 @@ typedef struct {
     double avg;           /* > 0: the score of a move is the pair measure plus avg times the mover's
                              mean, over the groups that hold it, of its nearest distance in the group
                              over the group's G_L (each capped); guards the prefixes' delta_avg; 0: off */
+    double soft;          /* > 0: the pair measure of a move is the soft minimum -soft log sum exp(-q_j / soft)
+                             over the mover's pairs below the cap (counts the near-binding pairs too,
+                             unjams); 0: the minimum */
+    int circum;           /* > 0: also the circumcentres of the triples of the mover's this many nearest
+                             neighbours (the farthest-point candidates), the best kept before the solve */
     int solve;            /* > 0: then up to this many steps of the local solve from the best trial
                              (the ascent of the smallest pair measure over the neighbours); 0: off */
     double target_prefix; /* t_L for every level but the last (0: 0.78) */
