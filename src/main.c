@@ -88,6 +88,7 @@ static void usage(void)
            "      --joint-avg W         weight of the mover's mean nearest distance over its prefixes (default 0)\n"
            "      --joint-soft T        the move's measure is the soft minimum at temperature T (default 0: the minimum)\n"
            "      --joint-circum N      also try the circumcentres of triples of the N nearest neighbours (default 0)\n"
+           "      --joint-pairs P       a point that cannot move alone tries P moves with its binding partner (default 0)\n"
            "      --joint-prefix T, --joint-full T  the joint move's targets (0.78, 0.90)\n"
            "      --joint-hold H   a pair shorter than H Delta(prefix) may not shrink (0: off)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
@@ -327,6 +328,7 @@ static void parse(int argc, char **argv, cmdline *c)
         {"joint-avg", required_argument, 0, PROG_OPT_JOINT_AVG},
         {"joint-soft", required_argument, 0, PROG_OPT_JOINT_SOFT},
         {"joint-circum", required_argument, 0, PROG_OPT_JOINT_CIRCUM},
+        {"joint-pairs", required_argument, 0, PROG_OPT_JOINT_PAIRS},
         {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;

@@ -309,6 +309,57 @@ static double best_circumcentre(const joint *J, nbuf *w, int nn, double reach, d
     return best;
 }
 
+/* Point k to (x, y) in xy and the move grid. */
+static void place(joint *J, double *xy, int64_t k, double x, double y)
+{
+    prog_buckets_unlink(&J->B, k);
+    xy[2 * k] = x;
+    xy[2 * k + 1] = y;
+    prog_buckets_link(&J->B, k);
+}
+
+/* The pair move of point i and its binding partner j (level at least i's,
+ * so within i's reach): pairs trials, i straight away from j and j from i
+ * by the same step (steps 0.2, 0.1, 0.04, 0.01 of their distance, a little
+ * jitter), each checked with the other at its trial place; the best that
+ * raises the smaller of the two measures above base is made. 1 when made. */
+static int pair_move(joint *J, double *xy, int64_t i, int64_t j, double base, int s, const cfpo_prog_joint_options *jo)
+{
+    static const double steps[4] = {0.2, 0.1, 0.04, 0.01};
+    const double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
+    double ux = xi - xj, uy = yi - yj;
+    ux -= round(ux);
+    uy -= round(uy);
+    const double d = sqrt(ux * ux + uy * uy);
+    if (d <= 0) return 0;
+    ux /= d;
+    uy /= d;
+    double best = base, b[4] = {0};
+    const uint64_t stream = ((uint64_t)s << 40) ^ (uint64_t)i ^ ((uint64_t)1 << 39);
+    for (int c = 0; c < jo->pairs; c++) {
+        const double st = steps[c % 4] * d;
+        const double ja = 0.3 * (2.0 * cfpo_rand01(jo->seed, stream, (uint64_t)c) - 1.0);
+        const double jb = 0.3 * (2.0 * cfpo_rand01(jo->seed, stream, (uint64_t)c + 32) - 1.0);
+        const double ax = wrap1(xi + st * (ux - ja * uy)), ay = wrap1(yi + st * (uy + ja * ux));
+        const double bx = wrap1(xj - st * (ux - jb * uy)), by = wrap1(yj - st * (uy + jb * ux));
+        int64_t bk;
+        place(J, xy, j, bx, by);
+        const double qi = measure_at(J, i, ax, ay, &bk);
+        double qj = -1;
+        if (qi > best) {
+            place(J, xy, i, ax, ay);
+            qj = measure_at(J, j, bx, by, &bk);
+            place(J, xy, i, xi, yi);
+        }
+        place(J, xy, j, xj, yj);
+        if (qi > best && qj > best) best = fmin(qi, qj), b[0] = ax, b[1] = ay, b[2] = bx, b[3] = by;
+    }
+    if (best <= base) return 0;
+    place(J, xy, i, b[0], b[1]);
+    place(J, xy, j, b[2], b[3]);
+    return 1;
+}
+
 /* One move of point i in sweep s (prog_joint.h): the trials, then the
  * local solve; 1 when it moved, 0 when not, -1 when out of memory. Reads
  * the points within the level's reach of i's trial positions, writes i
@@ -366,7 +417,12 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
             if (q > bq) bq = q, bx = cx, by = cy;
         }
     }
-    if (bq <= q0) return 0;
+    if (bq <= q0) {
+        if (jo->pairs <= 0 || J->lev[bind] < J->lev[i] || jo->hold > 0) return 0;
+        int64_t bk;
+        const double qj = measure_at(J, bind, xy[2 * bind], xy[2 * bind + 1], &bk);
+        return qj < 0 ? 0 : pair_move(J, xy, i, bind, fmin(q0, qj), s, jo);
+    }
     prog_buckets_unlink(&J->B, i);
     xy[2 * i] = bx;
     xy[2 * i + 1] = by;
@@ -437,7 +493,7 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
              * see each other or each other's buckets (prog_joint.h). */
             const int64_t lo = l ? sizes[l - 1] : 0, hi = sizes[l];
             const double r = fmax(J.Fmax[l], J.cap * J.Gmax[l]);
-            const double c = 1.5 * r + 2.0 * J.B.cs;
+            const double c = (jo->pairs > 0 ? 2.5 : 1.5) * r + 2.0 * J.B.cs; /* pair moves reach further */
             int64_t g = 3 * (int64_t)floor(1.0 / (3.0 * c));
             if (g < 3) g = 1;
             int64_t *start = calloc((size_t)(g * g + 1), sizeof *start);

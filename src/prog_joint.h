@@ -43,6 +43,8 @@ typedef struct {
                              unjams); 0: the minimum */
     int circum;           /* > 0: also the circumcentres of the triples of the mover's this many nearest
                              neighbours (the farthest-point candidates), the best kept before the solve */
+    int pairs;            /* > 0: a point whose own moves all fail tries this many pair moves with its
+                             binding partner (when that is of its level or finer; not with hold) */
     int solve;            /* > 0: then up to this many steps of the local solve from the best trial
                              (the ascent of the smallest pair measure over the neighbours); 0: off */
     double target_prefix; /* t_L for every level but the last (0: 0.78) */

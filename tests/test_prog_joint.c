@@ -9,7 +9,7 @@
  *    any prefix falls below the smaller of its start value and H Delta(m);
  *    the points do move and the full set rises; the same bytes twice;
  *    also with the local solve, the delta_avg term of the score, the soft
- *    minimum and the circumcentre candidates;
+ *    minimum, the circumcentre candidates and the pair moves (setting 7);
  *  - the same bytes for 1, 2 and 3 threads (the coloured cells, 4,000
  *    points, the local solve and the delta_avg term on);
  *  - the monotonicity check can fail: a set with one point moved onto its
@@ -106,14 +106,15 @@ int main(void)
     static const double set[7][7] = {{0.78, 0.90, 0, 0, 0, 0, 0},    {0.5, 0.7, 0, 0, 0, 0, 0},
                                      {0.78, 0.90, 0.86, 0, 0, 0, 0}, {1.0, 1.2, 0.5, 0, 0, 0, 0},
                                      {0.78, 0.90, 0, 8, 0, 0, 0},    {0.78, 0.90, 0, 4, 1.0, 0, 0},
-                                     {0.78, 0.90, 0, 0, 0, 0.03, 8}};
-    for (int c = 0; c < 7; c++) {
+                                     {0.78, 0.90, 0, 0, 0, 0.03, 8}, {0.78, 0.90, 0, 0, 0, 0, 0}};
+    for (int c = 0; c < 8; c++) {
         uniform(xy0, n, 10 + (uint64_t)c);
         memcpy(xy, xy0, 2 * n * sizeof *xy);
         watch w = {.xy = xy, .sizes = sizes, .K = K};
         cfpo_prog_joint_options jo = {.sweeps = 6, .target_prefix = set[c][0], .target_full = set[c][1],
                                       .hold = set[c][2], .solve = (int)set[c][3], .avg = set[c][4],
-                                      .soft = set[c][5], .circum = (int)set[c][6], .seed = 5,
+                                      .soft = set[c][5], .circum = (int)set[c][6],
+                                      .pairs = c == 7 ? 8 : 0, .seed = 5,
                                       .sweep_done = on_sweep, .user = &w};
         double dm[5], da[5], start[5], sa[5];
         brute(xy0, sizes, K, start, sa);
@@ -147,7 +148,7 @@ int main(void)
         uniform(ref, nb, 21);
         memcpy(alt, ref, 2 * nb * sizeof *alt);
         cfpo_prog_joint_options jo = {
-            .sweeps = 3, .solve = 4, .avg = 0.5, .soft = 0.03, .circum = 6, .seed = 9, .threads = 1};
+            .sweeps = 3, .solve = 4, .avg = 0.5, .soft = 0.03, .circum = 6, .pairs = 4, .seed = 9, .threads = 1};
         CHECK(cfpo_prog_joint(ref, big, 5, &jo, dm, da, err, sizeof err) == 0, "joint (1 thread) failed: %s", err);
         double *init = malloc(2 * nb * sizeof *init);
         uniform(init, nb, 21);
