@@ -103,7 +103,7 @@ int main(void)
     }
     /* the joint move: no prefix's delta_min falls, for several settings */
     /* target_prefix, target_full, hold, solve steps, avg weight, soft temperature, circumcentre neighbours */
-    static const double set[7][7] = {{0.78, 0.90, 0, 0, 0, 0, 0},    {0.5, 0.7, 0, 0, 0, 0, 0},
+    static const double set[8][7] = {{0.78, 0.90, 0, 0, 0, 0, 0},    {0.5, 0.7, 0, 0, 0, 0, 0},
                                      {0.78, 0.90, 0.86, 0, 0, 0, 0}, {1.0, 1.2, 0.5, 0, 0, 0, 0},
                                      {0.78, 0.90, 0, 8, 0, 0, 0},    {0.78, 0.90, 0, 4, 1.0, 0, 0},
                                      {0.78, 0.90, 0, 0, 0, 0.03, 8}, {0.78, 0.90, 0, 0, 0, 0, 0}};
