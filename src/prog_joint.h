@@ -14,8 +14,11 @@
  * The objective of a move is the pair measure with targets: the mover's
  * smallest d_ij / G_L, G_L = t_L Delta(m_L), t_L = target_prefix for every
  * level but the last and target_full for the last (the full set). Each
- * sweep visits the points in id order (serial, so the bytes never depend
- * on the thread count); point i tries `candidates` positions near it (half
+ * sweep visits the levels in order, each level's points by the cells of a
+ * 9-coloured grid (cells of one colour in parallel, each cell's points in
+ * id order; cells of one colour are too far apart for their moves to
+ * meet, so the bytes never depend on the thread count); point i tries
+ * `candidates` positions near it (half
  * straight away from the pair that binds it, half in a disk; steps in
  * fractions of its nearest neighbour's distance; counter-based draws from
  * seed, sweep and i) and takes the best that keeps every floor and raises
@@ -23,6 +26,8 @@
  * hold Delta(m_L) may not shrink either: each point's nearest distance in
  * each of its prefixes m_k then never falls below the smaller of its old
  * value and hold Delta(m_k), which guards the prefixes' delta_avg.
+ * Options (off by default) add circumcentre candidates, a local ascent, a
+ * soft-minimum score, a delta_avg term and pair moves (the fields below).
  * Owns: the pair floors and weights, the bucket grid of the moves, the
  * prefix measures of each sweep.
  * May include: geom.h, rng.h (layers 0-1). */
