@@ -483,12 +483,15 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
     if (rc == 0 && jo->sweep_done) jo->sweep_done(0, 0, dmin, davg, NG, jo->user);
     nbuf *nb = calloc((size_t)nth, sizeof *nb);
     int64_t *order = malloc((size_t)n * sizeof *order), *cell = malloc((size_t)n * sizeof *cell);
-    if (!nb || !order || !cell) rc = -1;
+    if (rc == 0 && (!nb || !order || !cell)) {
+        snprintf(err, errlen, "out of memory");
+        rc = -1;
+    }
     for (int s = 1; rc == 0 && s <= jo->sweeps; s++) {
         set_floors(&J, K, raw);
         int64_t moved = 0;
         for (int l = 0; l < K && rc == 0; l++) {
-            /* Level l's movers by the cells of a 3-coloured grid whose
+            /* Level l's movers by the cells of a 9-coloured grid whose
              * cells of one colour are too far apart for their movers to
              * see each other or each other's buckets (prog_joint.h). */
             const int64_t lo = l ? sizes[l - 1] : 0, hi = sizes[l];
@@ -538,7 +541,6 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
         if (rc == 0 && jo->sweep_done) jo->sweep_done(s, moved, dmin, davg, NG, jo->user);
         if (moved == 0) break;
     }
-    if (rc != 0 && !err[0]) snprintf(err, errlen, "out of memory");
     for (int t = 0; nb && t < nth; t++) free(nb[t].e);
     free(nb);
     free(order);

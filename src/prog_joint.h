@@ -79,7 +79,8 @@ int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmi
  * prefixes' final measures into dmin, davg (K each; with classes K + 1:
  * the classes in their own units, then the union). The ids never change
  * level. 0, or -1 with one line in err (xy unchanged but for moves that
- * were made; out of memory is the only failure, checked before any move). */
+ * were made; out of memory is the only failure: before any move, or with
+ * solve or circum in a sweep, when a thread's neighbour list grows). */
 int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joint_options *jo, double *dmin,
                     double *davg, char *err, size_t errlen);
 
