@@ -84,6 +84,11 @@ static void usage(void)
            "                       delta_min falls (docs/method.md)\n"
            "      --joint-last S   the last level's sweeps (default: --joint's)\n"
            "      --joint-candidates C  trial positions per point and sweep (default 12)\n"
+           "      --joint-solve S       then up to S steps of the local solve per point (default 0: off)\n"
+           "      --joint-avg W         weight of the mover's mean nearest distance over its prefixes (default 0)\n"
+           "      --joint-soft T        the move's measure is the soft minimum at temperature T (default 0: the minimum)\n"
+           "      --joint-circum N      also try the circumcentres of triples of the N nearest neighbours (default 0)\n"
+           "      --joint-pairs P       a point that cannot move alone tries P moves with its binding partner (default 0)\n"
            "      --joint-prefix T, --joint-full T  the joint move's targets (0.78, 0.90)\n"
            "      --joint-hold H   a pair shorter than H Delta(prefix) may not shrink (0: off)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
@@ -319,6 +324,11 @@ static void parse(int argc, char **argv, cmdline *c)
         {"joint-hold", required_argument, 0, PROG_OPT_JOINT_HOLD},
         {"joint-last", required_argument, 0, PROG_OPT_JOINT_LAST},
         {"joint-candidates", required_argument, 0, PROG_OPT_JOINT_CANDIDATES},
+        {"joint-solve", required_argument, 0, PROG_OPT_JOINT_SOLVE},
+        {"joint-avg", required_argument, 0, PROG_OPT_JOINT_AVG},
+        {"joint-soft", required_argument, 0, PROG_OPT_JOINT_SOFT},
+        {"joint-circum", required_argument, 0, PROG_OPT_JOINT_CIRCUM},
+        {"joint-pairs", required_argument, 0, PROG_OPT_JOINT_PAIRS},
         {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;

@@ -59,6 +59,34 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
         pc->p.joint.candidates = (int)v;
         pc->joint_given = 1;
         return 1;
+    case PROG_OPT_JOINT_SOLVE:
+        if (cli_parse_i64(arg, 0, 1000, &v) != 0)
+            cli_usage_error(prog, "--joint-solve: '%s' is not a whole number in 0..1000", arg);
+        pc->p.joint.solve = (int)v;
+        pc->joint_given = 1;
+        return 1;
+    case PROG_OPT_JOINT_AVG:
+        if (cli_parse_double(arg, 0, 10, &pc->p.joint.avg) != 0)
+            cli_usage_error(prog, "--joint-avg: '%s' is not a number in [0, 10]", arg);
+        pc->joint_given = 1;
+        return 1;
+    case PROG_OPT_JOINT_SOFT:
+        if (cli_parse_double(arg, 0, 1, &pc->p.joint.soft) != 0)
+            cli_usage_error(prog, "--joint-soft: '%s' is not a number in [0, 1]", arg);
+        pc->joint_given = 1;
+        return 1;
+    case PROG_OPT_JOINT_CIRCUM:
+        if (cli_parse_i64(arg, 0, 24, &v) != 0)
+            cli_usage_error(prog, "--joint-circum: '%s' is not a whole number in 0..24", arg);
+        pc->p.joint.circum = (int)v;
+        pc->joint_given = 1;
+        return 1;
+    case PROG_OPT_JOINT_PAIRS:
+        if (cli_parse_i64(arg, 0, 1000, &v) != 0)
+            cli_usage_error(prog, "--joint-pairs: '%s' is not a whole number in 0..1000", arg);
+        pc->p.joint.pairs = (int)v;
+        pc->joint_given = 1;
+        return 1;
     case PROG_OPT_JOINT_HOLD:
         if (cli_parse_double(arg, 0, 1.2, &pc->p.joint.hold) != 0)
             cli_usage_error(prog, "--joint-hold: '%s' is not a number in [0, 1.2]", arg);

@@ -9,6 +9,8 @@
 #include "prog_buckets.h"
 #include "rng.h"
 
+#include <omp.h>
+
 /* Buckets of side about Delta(m) holding points 0 .. m - 1 of xy. */
 static int grid_init(prog_buckets *B, const double *xy, int64_t m)
 {
@@ -26,10 +28,16 @@ static double wrap1(double v)
 /* The groups' measures, and (raw, may be NULL) each group's smallest
  * distance itself, the floors' exact values. Groups: the prefixes
  * [0, sizes[k]); with classes, class k [sizes[k - 1], sizes[k]) and then
- * the union [0, sizes[K - 1]) (K + 1 groups). */
-static int measure(const double *xy, const int64_t *sizes, int K, int classes, double *dmin, double *davg,
+ * the union [0, sizes[K - 1]) (K + 1 groups). The nearest distances on
+ * nth threads, summed in id order (the same bits for any nth). */
+static int measure(const double *xy, const int64_t *sizes, int K, int classes, int nth, double *dmin, double *davg,
                    double *raw, char *err, size_t errlen)
 {
+    double *nd = malloc((size_t)(sizes[K - 1] > 0 ? sizes[K - 1] : 1) * sizeof *nd);
+    if (!nd) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
     for (int k = 0; k < K + (classes ? 1 : 0); k++) {
         const int64_t lo0 = classes && k > 0 && k < K ? sizes[k - 1] : 0;
         const int64_t m = (k < K ? sizes[k] : sizes[K - 1]) - lo0;
@@ -37,14 +45,16 @@ static int measure(const double *xy, const int64_t *sizes, int K, int classes, d
         prog_buckets B = {0};
         if (grid_init(&B, xy, m) != 0) {
             prog_buckets_free(&B);
+            free(nd);
             snprintf(err, errlen, "out of memory");
             return -1;
         }
+#pragma omp parallel for schedule(static) num_threads(nth)
+        for (int64_t i = 0; i < m; i++) nd[i] = sqrt(prog_buckets_nearest2(&B, xy[2 * i], xy[2 * i + 1], i, -1.0));
         double lo = INFINITY, sum = 0;
         for (int64_t i = 0; i < m; i++) {
-            const double d = sqrt(prog_buckets_nearest2(&B, xy[2 * i], xy[2 * i + 1], i, -1.0));
-            if (d < lo) lo = d;
-            sum += d;
+            if (nd[i] < lo) lo = nd[i];
+            sum += nd[i];
         }
         prog_buckets_free(&B);
         const double D = cfpo_delta_bound((double)m);
@@ -53,13 +63,14 @@ static int measure(const double *xy, const int64_t *sizes, int K, int classes, d
         if (raw) raw[k] = lo;
         xy -= 2 * lo0;
     }
+    free(nd);
     return 0;
 }
 
 int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmin, double *davg, char *err,
                       size_t errlen)
 {
-    return measure(xy, sizes, K, 0, dmin, davg, NULL, err, errlen);
+    return measure(xy, sizes, K, 0, 1, dmin, davg, NULL, err, errlen);
 }
 
 /* ---- the moves */
@@ -73,13 +84,28 @@ typedef struct {
     double H[65];        /* hold distances: a pair shorter than H_L may not shrink */
     double Fmax[65];     /* the same for F */
     double cap;          /* the measure counted up to this (a mover at or past it has nothing to gain) */
+    double tau;          /* > 0: the pair measure is the soft minimum with this temperature (prog_joint.h soft) */
+    double lam;          /* weight of the mover's mean nearest distance over its groups (prog_joint.h avg) */
 } joint;
 
-/* The pair measure of point i placed at (x, y): its smallest d_ij / G_L
- * over the other points (capped at J->cap), or -1 when some pair falls
- * below its floor. *bind: the binding partner (-1 if none within reach). */
+/* One thread's neighbours for the local solve: offset x, y from the
+ * mover, 1 / G_L, F_L (4 doubles each). */
+typedef struct {
+    double *e;
+    int64_t n, cap;
+} nbuf;
+
+/* The score of point i placed at (x, y): its pair measure, the smallest
+ * d_ij / G_L over the other points (capped at J->cap), plus J->lam times
+ * the mean over the groups that hold i of its nearest distance in the
+ * group over the group's G (each capped at J->cap); or -1 when some pair
+ * falls below its floor. *bind: the binding partner (-1 if none within
+ * reach). */
 static double measure_at(const joint *J, int64_t i, double x, double y, int64_t *bind)
 {
+    double mL[66], S = 0;
+    if (J->lam > 0)
+        for (int L = 0; L <= J->K; L++) mL[L] = INFINITY;
     const prog_buckets *B = &J->B;
     const int l = J->lev[i];
     const double r = fmax(J->Fmax[l], J->cap * J->Gmax[l]);
@@ -100,11 +126,125 @@ static double measure_at(const joint *J, int64_t i, double x, double y, int64_t 
                 if (d < J->H[L] && d < sqrt(prog_torus_d2(B->xy[2 * i], B->xy[2 * i + 1], B->xy[2 * k], B->xy[2 * k + 1])))
                     return -1; /* a pair below its hold distance may not shrink */
                 const double q = d / J->G[L];
+                if (J->tau > 0 && q < J->cap) /* S = sum of exp(-(q_j - best) / tau) */
+                    S = q < best ? S * exp((q - best) / J->tau) + 1.0 : S + exp((best - q) / J->tau);
                 if (q < best) best = q, *bind = k;
+                if (J->lam > 0) {
+                    if (d < mL[L]) mL[L] = d;
+                    if (J->classes && d < mL[J->K]) mL[J->K] = d; /* the union holds every pair */
+                }
             }
         }
     }
+    if (J->tau > 0 && S > 1.0) best -= J->tau * log(S); /* the soft minimum, at most the minimum */
+    if (J->lam <= 0) return best;
+    double sum = 0;
+    int cnt = 0;
+    if (J->classes) {
+        sum = fmin(mL[l] / J->G[l], J->cap) + fmin(mL[J->K] / J->G[J->K], J->cap);
+        cnt = 2;
+    } else {
+        double nn = INFINITY; /* i's nearest distance in prefix L: pairs of level <= L */
+        for (int L = l; L < J->K; L++) {
+            if (mL[L] < nn) nn = mL[L];
+            sum += fmin(nn / J->G[L], J->cap);
+            cnt++;
+        }
+    }
+    return best + J->lam * sum / cnt;
+}
+
+/* The neighbours of point i within r of its place (x0, y0) into J->nb:
+ * each as its offset from (x0, y0) on the torus, 1 / G_L and F_L. 0, or
+ * -1 when out of memory. */
+static int gather(const joint *J, nbuf *w, int64_t i, double x0, double y0, double r)
+{
+    const prog_buckets *B = &J->B;
+    const int l = J->lev[i];
+    const int64_t gs = B->gs, b = prog_buckets_of(B, x0, y0), bx = b % gs, by = b / gs;
+    const int64_t reach = (int64_t)ceil(r / B->cs);
+    const int64_t span = 2 * reach + 1 >= gs ? gs : 2 * reach + 1, lo = span == gs ? 0 : reach;
+    w->n = 0;
+    for (int64_t oy = 0; oy < span; oy++) {
+        const int64_t cy = ((by - lo + oy) % gs + gs) % gs;
+        for (int64_t ox = 0; ox < span; ox++) {
+            const int64_t cx = ((bx - lo + ox) % gs + gs) % gs;
+            for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
+                if (k == i) continue;
+                double dx = B->xy[2 * k] - x0, dy = B->xy[2 * k + 1] - y0;
+                dx -= round(dx);
+                dy -= round(dy);
+                if (dx * dx + dy * dy > r * r) continue;
+                if (w->n == w->cap) {
+                    const int64_t c = w->cap ? 2 * w->cap : 256;
+                    double *t = realloc(w->e, (size_t)c * 4 * sizeof *t);
+                    if (!t) return -1;
+                    w->e = t;
+                    w->cap = c;
+                }
+                const int L = J->classes ? (J->lev[k] == l ? l : J->K) : J->lev[k] > l ? J->lev[k] : l;
+                double *e = w->e + 4 * w->n++;
+                e[0] = dx;
+                e[1] = dy;
+                e[2] = 1.0 / J->G[L];
+                e[3] = J->F[L];
+            }
+        }
+    }
+    return 0;
+}
+
+/* The pair measure over the gathered neighbours at offset (px, py) (-1
+ * below a floor), and its ascent direction (gx, gy): the sum of the unit
+ * vectors away from every neighbour whose measure is within slack of the
+ * smallest (the near-binding set; an epsilon-subgradient of the minimum). */
+static double local_at(const nbuf *w, double cap, double px, double py, double slack, double *gx, double *gy)
+{
+    double best = cap;
+    for (int64_t j = 0; j < w->n; j++) {
+        const double *e = w->e + 4 * j;
+        const double dx = px - e[0], dy = py - e[1], d = sqrt(dx * dx + dy * dy);
+        if (d < e[3]) return -1;
+        const double q = d * e[2];
+        if (q < best) best = q;
+    }
+    if (!gx) return best;
+    double sx = 0, sy = 0;
+    for (int64_t j = 0; j < w->n; j++) {
+        const double *e = w->e + 4 * j;
+        const double dx = px - e[0], dy = py - e[1], d = sqrt(dx * dx + dy * dy);
+        if (d * e[2] <= best + slack * e[2] && d > 0) sx += dx / d, sy += dy / d;
+    }
+    *gx = sx;
+    *gy = sy;
     return best;
+}
+
+/* The local solve of point i from offset (px, py) (measure q): up to
+ * iters steps along the ascent direction of local_at, the step growing
+ * after a gain and halving after a loss, starting at step0; the best
+ * offset into (px, py). Returns its measure (over the gathered
+ * neighbours only: the caller checks it against the grid). */
+static double local_solve(const joint *J, const nbuf *w, double *px, double *py, double step0, int iters)
+{
+    double t = step0, gx, gy;
+    double q = local_at(w, J->cap, *px, *py, t, &gx, &gy);
+    for (int it = 0; it < iters && t > 1e-4 * step0; it++) {
+        const double g = sqrt(gx * gx + gy * gy);
+        if (g < 1e-9) break; /* balanced: a local maximum of the smallest measure */
+        const double cx = *px + t * gx / g, cy = *py + t * gy / g;
+        const double qc = local_at(w, J->cap, cx, cy, t, NULL, NULL);
+        if (qc > q) {
+            *px = cx, *py = cy;
+            t *= 1.5;
+            if (t > step0) t = step0;
+            q = local_at(w, J->cap, cx, cy, t, &gx, &gy);
+        } else {
+            t *= 0.5;
+            q = local_at(w, J->cap, *px, *py, t, &gx, &gy);
+        }
+    }
+    return q;
 }
 
 /* The floors from the groups' smallest distances raw[k] (dmin_k
@@ -128,6 +268,166 @@ static void set_floors(joint *J, int K, const double *raw)
         J->Fmax[l] = 0;
         for (int L = l; L < K; L++) J->Fmax[l] = fmax(J->Fmax[l], J->F[L]);
     }
+}
+
+/* The best circumcentre (offset from the mover, within reach of it) of
+ * three of the nn nearest gathered neighbours by local_at, into (*px,
+ * *py); its measure, or -1 when none keeps the floors. The circumcentres
+ * are the vertices of the neighbours' Voronoi diagram near the mover: the
+ * farthest-point move's candidates (unweighted; the weights and floors are
+ * then applied by local_at). */
+static double best_circumcentre(const joint *J, nbuf *w, int nn, double reach, double *px, double *py)
+{
+    /* the nn nearest to the front (selection; nn is small) */
+    if (nn > w->n) nn = (int)w->n;
+    for (int a = 0; a < nn; a++) {
+        int64_t m = a;
+        double dm = w->e[4 * a] * w->e[4 * a] + w->e[4 * a + 1] * w->e[4 * a + 1];
+        for (int64_t j = a + 1; j < w->n; j++) {
+            const double d = w->e[4 * j] * w->e[4 * j] + w->e[4 * j + 1] * w->e[4 * j + 1];
+            if (d < dm) dm = d, m = j;
+        }
+        for (int c = 0; c < 4 && m != a; c++) {
+            const double t = w->e[4 * a + c];
+            w->e[4 * a + c] = w->e[4 * m + c];
+            w->e[4 * m + c] = t;
+        }
+    }
+    double best = -1;
+    for (int a = 0; a < nn; a++)
+        for (int b = a + 1; b < nn; b++)
+            for (int c = b + 1; c < nn; c++) {
+                const double ax = w->e[4 * a], ay = w->e[4 * a + 1], bx = w->e[4 * b] - ax, by = w->e[4 * b + 1] - ay;
+                const double cx = w->e[4 * c] - ax, cy = w->e[4 * c + 1] - ay, D = 2.0 * (bx * cy - by * cx);
+                if (fabs(D) < 1e-300) continue;
+                const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+                const double ux = ax + (cy * b2 - by * c2) / D, uy = ay + (bx * c2 - cx * b2) / D;
+                if (ux * ux + uy * uy > reach * reach) continue;
+                const double q = local_at(w, J->cap, ux, uy, 0, NULL, NULL);
+                if (q > best) best = q, *px = ux, *py = uy;
+            }
+    return best;
+}
+
+/* Point k to (x, y) in xy and the move grid. */
+static void place(joint *J, double *xy, int64_t k, double x, double y)
+{
+    prog_buckets_unlink(&J->B, k);
+    xy[2 * k] = x;
+    xy[2 * k + 1] = y;
+    prog_buckets_link(&J->B, k);
+}
+
+/* The pair move of point i and its binding partner j (level at least i's,
+ * so within i's reach): pairs trials, i straight away from j and j from i
+ * by the same step (steps 0.2, 0.1, 0.04, 0.01 of their distance, a little
+ * jitter), each checked with the other at its trial place; the best that
+ * raises the smaller of the two measures above base is made. 1 when made. */
+static int pair_move(joint *J, double *xy, int64_t i, int64_t j, double base, int s, const cfpo_prog_joint_options *jo)
+{
+    static const double steps[4] = {0.2, 0.1, 0.04, 0.01};
+    const double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
+    double ux = xi - xj, uy = yi - yj;
+    ux -= round(ux);
+    uy -= round(uy);
+    const double d = sqrt(ux * ux + uy * uy);
+    if (d <= 0) return 0;
+    ux /= d;
+    uy /= d;
+    double best = base, b[4] = {0};
+    const uint64_t stream = ((uint64_t)s << 40) ^ (uint64_t)i ^ ((uint64_t)1 << 39);
+    for (int c = 0; c < jo->pairs; c++) {
+        const double st = steps[c % 4] * d;
+        const double ja = 0.3 * (2.0 * cfpo_rand01(jo->seed, stream, (uint64_t)c) - 1.0);
+        const double jb = 0.3 * (2.0 * cfpo_rand01(jo->seed, stream, (uint64_t)c + 32) - 1.0);
+        const double ax = wrap1(xi + st * (ux - ja * uy)), ay = wrap1(yi + st * (uy + ja * ux));
+        const double bx = wrap1(xj - st * (ux - jb * uy)), by = wrap1(yj - st * (uy + jb * ux));
+        int64_t bk;
+        place(J, xy, j, bx, by);
+        const double qi = measure_at(J, i, ax, ay, &bk);
+        double qj = -1;
+        if (qi > best) {
+            place(J, xy, i, ax, ay);
+            qj = measure_at(J, j, bx, by, &bk);
+            place(J, xy, i, xi, yi);
+        }
+        place(J, xy, j, xj, yj);
+        if (qi > best && qj > best) best = fmin(qi, qj), b[0] = ax, b[1] = ay, b[2] = bx, b[3] = by;
+    }
+    if (best <= base) return 0;
+    place(J, xy, i, b[0], b[1]);
+    place(J, xy, j, b[2], b[3]);
+    return 1;
+}
+
+/* One move of point i in sweep s (prog_joint.h): the trials, then the
+ * local solve; 1 when it moved, 0 when not, -1 when out of memory. Reads
+ * the points within the level's reach of i's trial positions, writes i
+ * alone (and its bucket). */
+static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfpo_prog_joint_options *jo, int cand)
+{
+    static const double steps[4] = {0.4, 0.2, 0.08, 0.02}; /* of the nearest neighbour's distance */
+    const double x0 = xy[2 * i], y0 = xy[2 * i + 1];
+    int64_t bind;
+    const double q0 = measure_at(J, i, x0, y0, &bind);
+    if (q0 < 0 || q0 >= J->cap * (1.0 + J->lam) || bind < 0) return 0; /* (a point at a floor's edge by rounding stays) */
+    const double dx = x0 - xy[2 * bind], dy = y0 - xy[2 * bind + 1];
+    const double ux = dx - round(dx), uy = dy - round(dy); /* away from the binding partner */
+    const double dn = sqrt(ux * ux + uy * uy);
+    const double scale = sqrt(prog_torus_d2(x0, y0, xy[2 * bind], xy[2 * bind + 1]));
+    double bq = q0, bx = x0, by = y0;
+    const uint64_t stream = ((uint64_t)s << 40) ^ (uint64_t)i;
+    for (int c = 0; c < cand; c++) {
+        const double st = steps[c % 4] * scale;
+        double cx, cy;
+        if (c < cand / 2 && dn > 0) { /* straight away, with a little sideways jitter */
+            const double j = 0.3 * (2.0 * cfpo_rand01(jo->seed, stream, (uint64_t)c) - 1.0);
+            cx = x0 + st * (ux / dn - j * uy / dn);
+            cy = y0 + st * (uy / dn + j * ux / dn);
+        } else { /* uniform in the disk of radius st */
+            const double a = 2.0 * M_PI * cfpo_rand01(jo->seed, stream, 2 * (uint64_t)c + 64);
+            const double r = st * sqrt(cfpo_rand01(jo->seed, stream, 2 * (uint64_t)c + 65));
+            cx = x0 + r * cos(a);
+            cy = y0 + r * sin(a);
+        }
+        cx = wrap1(cx);
+        cy = wrap1(cy);
+        int64_t bk;
+        const double q = measure_at(J, i, cx, cy, &bk);
+        if (q > bq) bq = q, bx = cx, by = cy;
+    }
+    if (jo->solve > 0 || jo->circum > 0) { /* the local solve from the best trial, checked against the grid */
+        const int l = J->lev[i];
+        const double r = fmax(J->Fmax[l], J->cap * J->Gmax[l]) + scale;
+        if (gather(J, w, i, x0, y0, r) != 0) return -1;
+        double px = bx - x0, py = by - y0;
+        px -= round(px);
+        py -= round(py);
+        if (jo->circum > 0) {
+            double cx = 0, cy = 0;
+            const double qc = best_circumcentre(J, w, jo->circum, scale, &cx, &cy);
+            if (qc > local_at(w, J->cap, px, py, 0, NULL, NULL)) px = cx, py = cy;
+        }
+        const double ql = jo->solve > 0 ? local_solve(J, w, &px, &py, 0.2 * scale, jo->solve)
+                                        : local_at(w, J->cap, px, py, 0, NULL, NULL);
+        if (ql >= 0 && px * px + py * py <= scale * scale) {
+            const double cx = wrap1(x0 + px), cy = wrap1(y0 + py);
+            int64_t bk;
+            const double q = measure_at(J, i, cx, cy, &bk);
+            if (q > bq) bq = q, bx = cx, by = cy;
+        }
+    }
+    if (bq <= q0) {
+        if (jo->pairs <= 0 || J->lev[bind] < J->lev[i] || jo->hold > 0) return 0;
+        int64_t bk;
+        const double qj = measure_at(J, bind, xy[2 * bind], xy[2 * bind + 1], &bk);
+        return qj < 0 ? 0 : pair_move(J, xy, i, bind, fmin(q0, qj), s, jo);
+    }
+    prog_buckets_unlink(&J->B, i);
+    xy[2 * i] = bx;
+    xy[2 * i + 1] = by;
+    prog_buckets_link(&J->B, i);
+    return 1;
 }
 
 int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joint_options *jo, double *dmin,
@@ -174,56 +474,77 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
         for (int L = 0; L < K; L++) J.H[L] = jo->hold * cfpo_delta_bound((double)sizes[L]);
     }
     J.cap = 1.25;
+    J.lam = jo->avg;
+    J.tau = jo->soft;
     const int NG = K + (J.classes ? 1 : 0);
     double raw[65];
-    int rc = measure(xy, sizes, K, J.classes, dmin, davg, raw, err, errlen);
+    const int nth = jo->threads > 0 ? jo->threads : omp_get_max_threads();
+    int rc = measure(xy, sizes, K, J.classes, nth, dmin, davg, raw, err, errlen);
     if (rc == 0 && jo->sweep_done) jo->sweep_done(0, 0, dmin, davg, NG, jo->user);
-    static const double steps[4] = {0.4, 0.2, 0.08, 0.02}; /* of the nearest neighbour's distance */
+    nbuf *nb = calloc((size_t)nth, sizeof *nb);
+    int64_t *order = malloc((size_t)n * sizeof *order), *cell = malloc((size_t)n * sizeof *cell);
+    if (rc == 0 && (!nb || !order || !cell)) {
+        snprintf(err, errlen, "out of memory");
+        rc = -1;
+    }
     for (int s = 1; rc == 0 && s <= jo->sweeps; s++) {
         set_floors(&J, K, raw);
         int64_t moved = 0;
-        for (int64_t i = 0; i < n; i++) {
-            const double x0 = xy[2 * i], y0 = xy[2 * i + 1];
-            int64_t bind;
-            const double q0 = measure_at(&J, i, x0, y0, &bind);
-            if (q0 < 0 || q0 >= J.cap || bind < 0) continue; /* (a point at a floor's edge by rounding stays) */
-            const double dx = x0 - xy[2 * bind], dy = y0 - xy[2 * bind + 1];
-            const double ux = dx - round(dx), uy = dy - round(dy); /* away from the binding partner */
-            const double dn = sqrt(ux * ux + uy * uy);
-            const double scale = sqrt(prog_torus_d2(x0, y0, xy[2 * bind], xy[2 * bind + 1]));
-            double bq = q0, bx = x0, by = y0;
-            const uint64_t stream = ((uint64_t)s << 40) ^ (uint64_t)i;
-            for (int c = 0; c < cand; c++) {
-                const double st = steps[c % 4] * scale;
-                double cx, cy;
-                if (c < cand / 2 && dn > 0) { /* straight away, with a little sideways jitter */
-                    const double j = 0.3 * (2.0 * cfpo_rand01(jo->seed, stream, (uint64_t)c) - 1.0);
-                    cx = x0 + st * (ux / dn - j * uy / dn);
-                    cy = y0 + st * (uy / dn + j * ux / dn);
-                } else { /* uniform in the disk of radius st */
-                    const double a = 2.0 * M_PI * cfpo_rand01(jo->seed, stream, 2 * (uint64_t)c + 64);
-                    const double r = st * sqrt(cfpo_rand01(jo->seed, stream, 2 * (uint64_t)c + 65));
-                    cx = x0 + r * cos(a);
-                    cy = y0 + r * sin(a);
+        for (int l = 0; l < K && rc == 0; l++) {
+            /* Level l's movers by the cells of a 9-coloured grid whose
+             * cells of one colour are too far apart for their movers to
+             * see each other or each other's buckets (prog_joint.h). */
+            const int64_t lo = l ? sizes[l - 1] : 0, hi = sizes[l];
+            const double r = fmax(J.Fmax[l], J.cap * J.Gmax[l]);
+            const double c = (jo->pairs > 0 ? 2.5 : 1.5) * r + 2.0 * J.B.cs; /* pair moves reach further */
+            int64_t g = 3 * (int64_t)floor(1.0 / (3.0 * c));
+            if (g < 3) g = 1;
+            int64_t *start = calloc((size_t)(g * g + 1), sizeof *start);
+            if (!start) {
+                rc = -1;
+                break;
+            }
+            for (int64_t i = lo; i < hi; i++) {
+                int64_t cx = (int64_t)(xy[2 * i] * (double)g), cy = (int64_t)(xy[2 * i + 1] * (double)g);
+                cx = cx >= g ? g - 1 : cx;
+                cy = cy >= g ? g - 1 : cy;
+                cell[i] = cy * g + cx;
+                start[cell[i] + 1]++;
+            }
+            for (int64_t b = 0; b < g * g; b++) start[b + 1] += start[b];
+            for (int64_t i = lo; i < hi; i++) order[lo + start[cell[i]]++] = i; /* id order within a cell */
+            for (int64_t b = g * g; b > 0; b--) start[b] = start[b - 1];
+            start[0] = 0;
+            const int ncol = g == 1 ? 1 : 9;
+            for (int col = 0; col < ncol && rc == 0; col++) {
+                const int64_t per = g / 3 > 0 && g > 1 ? g / 3 : 1, ncell = g == 1 ? 1 : per * per;
+                int bad = 0;
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : moved) reduction(| : bad) num_threads(nth)
+                for (int64_t t = 0; t < ncell; t++) {
+                    const int64_t b = g == 1 ? 0 : (3 * (t / per) + col / 3) * g + 3 * (t % per) + col % 3;
+                    nbuf *w = &nb[omp_get_thread_num()];
+                    for (int64_t u = start[b]; u < start[b + 1]; u++) {
+                        const int m = move_point(&J, w, xy, order[lo + u], s, jo, cand);
+                        if (m < 0) bad = 1;
+                        else moved += m;
+                    }
                 }
-                cx = wrap1(cx);
-                cy = wrap1(cy);
-                int64_t bk;
-                const double q = measure_at(&J, i, cx, cy, &bk);
-                if (q > bq) bq = q, bx = cx, by = cy;
+                if (bad) rc = -1;
             }
-            if (bq > q0) {
-                prog_buckets_unlink(&J.B, i);
-                xy[2 * i] = bx;
-                xy[2 * i + 1] = by;
-                prog_buckets_link(&J.B, i);
-                moved++;
-            }
+            free(start);
         }
-        rc = measure(xy, sizes, K, J.classes, dmin, davg, raw, err, errlen);
+        if (rc != 0) {
+            snprintf(err, errlen, "out of memory");
+            break;
+        }
+        rc = measure(xy, sizes, K, J.classes, nth, dmin, davg, raw, err, errlen);
         if (rc == 0 && jo->sweep_done) jo->sweep_done(s, moved, dmin, davg, NG, jo->user);
         if (moved == 0) break;
     }
+    for (int t = 0; nb && t < nth; t++) free(nb[t].e);
+    free(nb);
+    free(order);
+    free(cell);
     prog_buckets_free(&J.B);
     free(lev);
     return rc;

@@ -14,8 +14,11 @@
  * The objective of a move is the pair measure with targets: the mover's
  * smallest d_ij / G_L, G_L = t_L Delta(m_L), t_L = target_prefix for every
  * level but the last and target_full for the last (the full set). Each
- * sweep visits the points in id order (serial, so the bytes never depend
- * on the thread count); point i tries `candidates` positions near it (half
+ * sweep visits the levels in order, each level's points by the cells of a
+ * 9-coloured grid (cells of one colour in parallel, each cell's points in
+ * id order; cells of one colour are too far apart for their moves to
+ * meet, so the bytes never depend on the thread count); point i tries
+ * `candidates` positions near it (half
  * straight away from the pair that binds it, half in a disk; steps in
  * fractions of its nearest neighbour's distance; counter-based draws from
  * seed, sweep and i) and takes the best that keeps every floor and raises
@@ -23,6 +26,8 @@
  * hold Delta(m_L) may not shrink either: each point's nearest distance in
  * each of its prefixes m_k then never falls below the smaller of its old
  * value and hold Delta(m_k), which guards the prefixes' delta_avg.
+ * Options (off by default) add circumcentre candidates, a local ascent, a
+ * soft-minimum score, a delta_avg term and pair moves (the fields below).
  * Owns: the pair floors and weights, the bucket grid of the moves, the
  * prefix measures of each sweep.
  * May include: geom.h, rng.h (layers 0-1). */
@@ -35,6 +40,18 @@
 typedef struct {
     int sweeps;           /* passes over every point; the phase also ends after a pass that moved nothing */
     int candidates;       /* trial positions per point and sweep (0: 12) */
+    double avg;           /* > 0: the score of a move is the pair measure plus avg times the mover's
+                             mean, over the groups that hold it, of its nearest distance in the group
+                             over the group's G_L (each capped); guards the prefixes' delta_avg; 0: off */
+    double soft;          /* > 0: the pair measure of a move is the soft minimum -soft log sum exp(-q_j / soft)
+                             over the mover's pairs below the cap (counts the near-binding pairs too,
+                             unjams); 0: the minimum */
+    int circum;           /* > 0: also the circumcentres of the triples of the mover's this many nearest
+                             neighbours (the farthest-point candidates), the best kept before the solve */
+    int pairs;            /* > 0: a point whose own moves all fail tries this many pair moves with its
+                             binding partner (when that is of its level or finer; not with hold) */
+    int solve;            /* > 0: then up to this many steps of the local solve from the best trial
+                             (the ascent of the smallest pair measure over the neighbours); 0: off */
     double target_prefix; /* t_L for every level but the last (0: 0.78) */
     double target_full;   /* t_L for the last level (0: 0.90) */
     double hold;          /* > 0: a pair of level L shorter than hold Delta(m_L) may not shrink
@@ -44,6 +61,7 @@ typedef struct {
                              the class's and the union's), a pair across classes level K (weight
                              target_full Delta(n), floor the union's); K + 1 groups are measured */
     uint64_t seed;
+    int threads;          /* OpenMP threads of the moves (0: all); the bytes do not depend on it */
     /* Called with sweep 0 (the start) and after every sweep: the points
      * moved, each prefix's delta_min and delta_avg in its own Delta(m_k);
      * may be NULL. */
@@ -61,7 +79,8 @@ int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmi
  * prefixes' final measures into dmin, davg (K each; with classes K + 1:
  * the classes in their own units, then the union). The ids never change
  * level. 0, or -1 with one line in err (xy unchanged but for moves that
- * were made; out of memory is the only failure, checked before any move). */
+ * were made; out of memory is the only failure: before any move, or with
+ * solve or circum in a sweep, when a thread's neighbour list grows). */
 int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joint_options *jo, double *dmin,
                     double *davg, char *err, size_t errlen);
 

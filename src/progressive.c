@@ -150,6 +150,7 @@ static int joint_phase(double *xy, const int64_t *sizes, int k, int K, const cfp
     if (k == K - 1 && p->joint_last > 0) jo.sweeps = p->joint_last;
     jo.seed = o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT + 0x4a4f494e54ULL);
     jo.classes = p->classes > 0;
+    jo.threads = o->threads;
     if (k < K - 1 && !jo.classes) jo.target_full = jo.target_prefix;
     double dmin[CFPO_PROG_MAX_LEVELS + 1], davg[CFPO_PROG_MAX_LEVELS + 1];
     const double t0 = omp_get_wtime();

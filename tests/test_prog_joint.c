@@ -8,6 +8,10 @@
  *    without the hold distance; with hold H, no point's nearest distance in
  *    any prefix falls below the smaller of its start value and H Delta(m);
  *    the points do move and the full set rises; the same bytes twice;
+ *    also with the local solve, the delta_avg term of the score, the soft
+ *    minimum, the circumcentre candidates and the pair moves (setting 7);
+ *  - the same bytes for 1, 2 and 3 threads (the coloured cells, 4,000
+ *    points, the local solve and the delta_avg term on);
  *  - the monotonicity check can fail: a set with one point moved onto its
  *    neighbour is caught. */
 #include <math.h>
@@ -98,13 +102,20 @@ int main(void)
         CHECK(same, "cfpo_prog_measure differs from brute force");
     }
     /* the joint move: no prefix's delta_min falls, for several settings */
-    static const double set[4][3] = {{0.78, 0.90, 0}, {0.5, 0.7, 0}, {0.78, 0.90, 0.86}, {1.0, 1.2, 0.5}};
-    for (int c = 0; c < 4; c++) {
+    /* target_prefix, target_full, hold, solve steps, avg weight, soft temperature, circumcentre neighbours */
+    static const double set[8][7] = {{0.78, 0.90, 0, 0, 0, 0, 0},    {0.5, 0.7, 0, 0, 0, 0, 0},
+                                     {0.78, 0.90, 0.86, 0, 0, 0, 0}, {1.0, 1.2, 0.5, 0, 0, 0, 0},
+                                     {0.78, 0.90, 0, 8, 0, 0, 0},    {0.78, 0.90, 0, 4, 1.0, 0, 0},
+                                     {0.78, 0.90, 0, 0, 0, 0.03, 8}, {0.78, 0.90, 0, 0, 0, 0, 0}};
+    for (int c = 0; c < 8; c++) {
         uniform(xy0, n, 10 + (uint64_t)c);
         memcpy(xy, xy0, 2 * n * sizeof *xy);
         watch w = {.xy = xy, .sizes = sizes, .K = K};
         cfpo_prog_joint_options jo = {.sweeps = 6, .target_prefix = set[c][0], .target_full = set[c][1],
-                                      .hold = set[c][2], .seed = 5, .sweep_done = on_sweep, .user = &w};
+                                      .hold = set[c][2], .solve = (int)set[c][3], .avg = set[c][4],
+                                      .soft = set[c][5], .circum = (int)set[c][6],
+                                      .pairs = c == 7 ? 8 : 0, .seed = 5,
+                                      .sweep_done = on_sweep, .user = &w};
         double dm[5], da[5], start[5], sa[5];
         brute(xy0, sizes, K, start, sa);
         CHECK(cfpo_prog_joint(xy, sizes, K, &jo, dm, da, err, sizeof err) == 0, "joint failed: %s", err);
@@ -128,6 +139,29 @@ int main(void)
         jo.sweep_done = NULL;
         cfpo_prog_joint(again, sizes, K, &jo, dm, da, err, sizeof err);
         CHECK(memcmp(again, xy, 2 * n * sizeof *xy) == 0, "setting %d: not the same bytes twice", c);
+    }
+    /* the same bytes for 1, 2 and 3 threads */
+    {
+        static const int64_t big[5] = {250, 500, 1000, 2000, 4000};
+        const int64_t nb = 4000;
+        double *ref = malloc(2 * nb * sizeof *ref), *alt = malloc(2 * nb * sizeof *alt), dm[5], da[5];
+        uniform(ref, nb, 21);
+        memcpy(alt, ref, 2 * nb * sizeof *alt);
+        cfpo_prog_joint_options jo = {
+            .sweeps = 3, .solve = 4, .avg = 0.5, .soft = 0.03, .circum = 6, .pairs = 4, .seed = 9, .threads = 1};
+        CHECK(cfpo_prog_joint(ref, big, 5, &jo, dm, da, err, sizeof err) == 0, "joint (1 thread) failed: %s", err);
+        double *init = malloc(2 * nb * sizeof *init);
+        uniform(init, nb, 21);
+        CHECK(memcmp(init, ref, 2 * nb * sizeof *ref) != 0, "the 4,000-point move moved nothing");
+        for (int t = 2; t <= 3; t++) {
+            memcpy(alt, init, 2 * nb * sizeof *alt);
+            jo.threads = t;
+            CHECK(cfpo_prog_joint(alt, big, 5, &jo, dm, da, err, sizeof err) == 0, "joint (%d threads) failed: %s", t, err);
+            CHECK(memcmp(alt, ref, 2 * nb * sizeof *ref) == 0, "%d threads: not the bytes of 1 thread", t);
+        }
+        free(init);
+        free(ref);
+        free(alt);
     }
     /* the check can fail: a point put next to its neighbour lowers a prefix */
     {

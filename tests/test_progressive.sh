@@ -49,6 +49,12 @@ expect 2 "needs --progressive" -n 1024 --joint 3 -o x.npy
 expect 2 "must be below sqrt(2)" -n 1024 --progressive --joint 3 --joint-prefix 0.6 --joint-full 0.9 -o x.npy
 expect 2 "--joint-last" -n 1024 --progressive --joint-last 0 -o x.npy
 expect 2 "--joint-candidates" -n 1024 --progressive --joint 3 --joint-candidates 0 -o x.npy
+expect 2 "--joint-solve" -n 1024 --progressive --joint 3 --joint-solve -1 -o x.npy
+expect 2 "--joint-avg" -n 1024 --progressive --joint 3 --joint-avg 11 -o x.npy
+expect 2 "--joint-soft" -n 1024 --progressive --joint 3 --joint-soft x -o x.npy
+expect 2 "--joint-pairs" -n 1024 --progressive --joint 3 --joint-pairs 1001 -o x.npy
+expect 2 "--joint-circum" -n 1024 --progressive --joint 3 --joint-circum 25 -o x.npy
+expect 2 "needs --progressive" -n 1024 --joint-circum 4 -o x.npy
 
 run() { "$CFPO" -q "$@"; }
 field() { grep -o " $1=[^ ]*" | head -1 | cut -d= -f2; }
