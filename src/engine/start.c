@@ -13,11 +13,15 @@
 #define WARP_SALT 0x7f4a7c159e3779b9ULL
 #define WARP_MAX_MODES 64
 /* The warp's strength, measured at 65,536 points (docs/method.md): an rms
- * displacement of 1.5 start cells at a wavelength of 8 start cells, 16
- * modes, removes the start lattice's spike without making holes. */
+ * displacement of 1.5 start cells at a wavelength of 8 start cells removes
+ * the start lattice's spike without making holes. Its second order beats
+ * pairs of modes into long waves (k_i - k_j) that the iterations do not
+ * remove; with 64 modes each such wave holds 1/16 of the power it held
+ * with 16, and at 1,048,576 points they stay under the spectrum's noise
+ * level (docs/results/2026-11-29-start-modes.md). */
 #define WARP_AMP 1.5
 #define WARP_LEN 8.0
-#define WARP_MODES 16
+#define WARP_MODES 64
 
 typedef struct {
     int64_t h;        /* start cells per side */
