@@ -29,6 +29,25 @@ int64_t prog_buckets_of(const prog_buckets *B, double x, double y);
 void prog_buckets_link(prog_buckets *B, int64_t k);
 void prog_buckets_unlink(prog_buckets *B, int64_t k);
 
+/* The square window of buckets within reach buckets of bucket b on each
+ * axis, or the whole grid when that would wrap onto itself: returns its
+ * side, its first bucket's column and row (unwrapped) into *x0, *y0. */
+static inline int64_t prog_buckets_window(const prog_buckets *B, int64_t b, int64_t reach, int64_t *x0, int64_t *y0)
+{
+    const int64_t gs = B->gs, span = 2 * reach + 1 >= gs ? gs : 2 * reach + 1, lo = span == gs ? 0 : reach;
+    *x0 = b % gs - lo;
+    *y0 = b / gs - lo;
+    return span;
+}
+
+/* The first point of the bucket at column x, row y (wrapped onto the
+ * grid). */
+static inline int64_t prog_buckets_first(const prog_buckets *B, int64_t x, int64_t y)
+{
+    const int64_t gs = B->gs;
+    return B->head[((y % gs + gs) % gs) * gs + (x % gs + gs) % gs];
+}
+
 /* Squared distance on the unit torus. */
 double prog_torus_d2(double ax, double ay, double bx, double by);
 

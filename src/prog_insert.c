@@ -103,14 +103,12 @@ int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen
         /* the untaken points nearer to p than to the set so far: within the
          * largest such distance, sqrt(top.d), of p */
         const double r = sqrt(top.d);
-        const int64_t gs = Q.gs, reach = isinf(r) ? gs : (int64_t)ceil(r / Q.cs) + 1;
-        const int64_t b = prog_buckets_of(&Q, px, py), bx = b % gs, by = b / gs;
-        const int64_t span = 2 * reach + 1 >= gs ? gs : 2 * reach + 1;
+        const int64_t reach = isinf(r) ? Q.gs : (int64_t)ceil(r / Q.cs) + 1;
+        int64_t x0, y0;
+        const int64_t span = prog_buckets_window(&Q, prog_buckets_of(&Q, px, py), reach, &x0, &y0);
         for (int64_t oy = 0; oy < span; oy++)
             for (int64_t ox = 0; ox < span; ox++) {
-                const int64_t cx = ((bx - (span == gs ? 0 : reach) + ox) % gs + gs) % gs;
-                const int64_t cy = ((by - (span == gs ? 0 : reach) + oy) % gs + gs) % gs;
-                for (int64_t k = Q.head[cy * gs + cx]; k >= 0; k = Q.next[k]) {
+                for (int64_t k = prog_buckets_first(&Q, x0 + ox, y0 + oy); k >= 0; k = Q.next[k]) {
                     const int64_t j = k - m0;
                     if (taken[j]) continue;
                     const double d2 = prog_torus_d2(px, py, xy[2 * k], xy[2 * k + 1]);

@@ -111,14 +111,11 @@ static double measure_at(const joint *J, int64_t i, double x, double y, int64_t 
     const double r = fmax(J->Fmax[l], J->cap * J->Gmax[l]);
     double best = J->cap;
     *bind = -1;
-    const int64_t gs = B->gs, b = prog_buckets_of(B, x, y), bx = b % gs, by = b / gs;
-    int64_t reach = (int64_t)ceil(r / B->cs);
-    const int64_t span = 2 * reach + 1 >= gs ? gs : 2 * reach + 1, lo = span == gs ? 0 : reach;
+    int64_t x0, y0;
+    const int64_t span = prog_buckets_window(B, prog_buckets_of(B, x, y), (int64_t)ceil(r / B->cs), &x0, &y0);
     for (int64_t oy = 0; oy < span; oy++) {
-        const int64_t cy = ((by - lo + oy) % gs + gs) % gs;
         for (int64_t ox = 0; ox < span; ox++) {
-            const int64_t cx = ((bx - lo + ox) % gs + gs) % gs;
-            for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
+            for (int64_t k = prog_buckets_first(B, x0 + ox, y0 + oy); k >= 0; k = B->next[k]) {
                 if (k == i) continue;
                 const double d = sqrt(prog_torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]));
                 const int L = J->classes ? (J->lev[k] == l ? l : J->K) : J->lev[k] > l ? J->lev[k] : l;
@@ -161,15 +158,12 @@ static int gather(const joint *J, nbuf *w, int64_t i, double x0, double y0, doub
 {
     const prog_buckets *B = &J->B;
     const int l = J->lev[i];
-    const int64_t gs = B->gs, b = prog_buckets_of(B, x0, y0), bx = b % gs, by = b / gs;
-    const int64_t reach = (int64_t)ceil(r / B->cs);
-    const int64_t span = 2 * reach + 1 >= gs ? gs : 2 * reach + 1, lo = span == gs ? 0 : reach;
+    int64_t wx, wy;
+    const int64_t span = prog_buckets_window(B, prog_buckets_of(B, x0, y0), (int64_t)ceil(r / B->cs), &wx, &wy);
     w->n = 0;
     for (int64_t oy = 0; oy < span; oy++) {
-        const int64_t cy = ((by - lo + oy) % gs + gs) % gs;
         for (int64_t ox = 0; ox < span; ox++) {
-            const int64_t cx = ((bx - lo + ox) % gs + gs) % gs;
-            for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
+            for (int64_t k = prog_buckets_first(B, wx + ox, wy + oy); k >= 0; k = B->next[k]) {
                 if (k == i) continue;
                 double dx = B->xy[2 * k] - x0, dy = B->xy[2 * k + 1] - y0;
                 dx -= round(dx);
