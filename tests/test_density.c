@@ -23,6 +23,7 @@
 #include "dens_start.h"
 #include "density.h"
 #include "geom.h"
+#include "hilbert.h"
 #include "rng.h"
 #include "stats.h"
 #include "testutil.h"
@@ -242,6 +243,47 @@ static void measure(void)
     cfpo_density_free(&z);
 }
 
+typedef struct { uint64_t key; uint32_t pix; } keyed_pix;
+
+static int by_key(const void *a, const void *b)
+{
+    const keyed_pix *p = a, *q = b;
+    return p->key < q->key ? -1 : p->key > q->key;
+}
+
+/* The start's walk along the curve gives the order of sorting the
+ * positive pixels by cfpo_hilbert's index, on square, oblong, odd and
+ * one-row rasters with zero pixels; a walk that turned one square the
+ * wrong way, or skipped one, would differ. */
+static void hilbert_walk(void)
+{
+    const int shape[][2] = {{1, 1}, {2, 2}, {16, 16}, {300, 77}, {77, 300}, {1000, 5}, {1, 129}, {64, 63}};
+    for (size_t c = 0; c < sizeof shape / sizeof shape[0]; c++) {
+        const int w = shape[c][0], h = shape[c][1];
+        double *v = malloc((size_t)(w * h) * sizeof *v);
+        for (int k = 0; k < w * h; k++) v[k] = cfpo_rand01(11, (uint64_t)c, (uint64_t)k) < 0.2 && k ? 0 : 1 + k % 5;
+        cfpo_density d;
+        char err[256];
+        CHECK(cfpo_density_from_values(v, w, h, "walk", &d, err, sizeof err) == 0, "%s", err);
+        uint64_t s = 1;
+        while (s < (uint64_t)w || s < (uint64_t)h) s *= 2;
+        keyed_pix *ref = malloc((size_t)(w * h) * sizeof *ref);
+        uint32_t *got = malloc((size_t)(w * h) * sizeof *got);
+        int64_t m = 0;
+        for (int j = 0; j < h; j++)
+            for (int i = 0; i < w; i++)
+                if (d.rho[j * w + i] > 0) ref[m++] = (keyed_pix){cfpo_hilbert(s, (uint64_t)i, (uint64_t)j), (uint32_t)(j * w + i)};
+        qsort(ref, (size_t)m, sizeof *ref, by_key);
+        const int64_t mg = cfpo_dens_hilbert_order(&d, got);
+        int64_t bad = mg == m ? 0 : 1;
+        for (int64_t t = 0; t < m && t < mg; t++) bad += got[t] != ref[t].pix;
+        CHECK(bad == 0, "Hilbert walk on %d x %d: %lld of %lld pixels out of the sorted order (%lld found)", w, h,
+              (long long)bad, (long long)m, (long long)mg);
+        free(v); free(ref); free(got);
+        cfpo_density_free(&d);
+    }
+}
+
 int main(int argc, char **argv)
 {
     dir = argc > 1 ? argv[1] : ".";
@@ -249,5 +291,6 @@ int main(int argc, char **argv)
     npy();
     named();
     measure();
+    hilbert_walk();
     return test_report(passed_, failed_);
 }

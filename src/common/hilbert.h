@@ -1,6 +1,6 @@
 /* hilbert.h - layer 0: the index of a cell along the Hilbert curve,
- * shared by the density engine's start (src/density/dens_start.c) and
- * CCVT's start (baselines/ccvt.c). */
+ * CCVT's start (baselines/ccvt.c); the density engine's start walks the
+ * same curve (src/density/dens_start.c, tested against this). */
 #ifndef CFPO_HILBERT_H
 #define CFPO_HILBERT_H
 

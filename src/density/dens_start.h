@@ -13,6 +13,12 @@
 
 #include "density.h"
 
+/* The pixels of positive density in the order of cfpo_hilbert (hilbert.h)
+ * on the s x s grid that holds the raster (s the least power of 2 at
+ * least w and h), found by walking the curve, not by sorting: into pix (w
+ * h entries); returns their count. */
+int64_t cfpo_dens_hilbert_order(const cfpo_density *d, uint32_t *pix);
+
 /* xy: 2 n doubles. 0, or -1 when out of memory. */
 int cfpo_dens_start(const cfpo_density *d, int64_t n, uint64_t seed, double *xy);
 
