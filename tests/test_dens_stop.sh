@@ -4,9 +4,9 @@
 # converged, on every test density (cos, the ramp 1:16, Balzer's field, the
 # shipped image) and on one no other test uses (two Gaussian bumps and a
 # disc with a sharp edge, made here), within a bound of iterations: with
-# the schedule's stall rule they stop at 70, 67, 35, 128 and 80; without
+# the schedule's stall rule they stop at 54, 52, 52, 128 and 112; without
 # it (the move rule alone) cos, the ramp and Balzer's field stop as soon,
-# but the unseen density runs 178 iterations and the image 398, over
+# but the unseen density runs 208 iterations and the image 347, over
 # their bounds of 160 and 165: the test fails. delta_min never falls
 # along the way (the trace).
 set -u

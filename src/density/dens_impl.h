@@ -14,7 +14,7 @@
 
 #define KMAX 40        /* neighbours the solve looks at, nearest first */
 #define KADD 24        /* ... plus at most this many that broke a candidate (dens_cell.c) */
-#define REACH 2.5      /* ... within REACH local spacings */
+#define REACH 2.0      /* ... within REACH local spacings */
 #define CELL_SPACINGS 1.25 /* L >= CELL_SPACINGS r_max */
 #define BUCKET_FROM 64     /* blocks of fewer points are scanned whole (one bucket) */
 #define BUCKET_PER 2.0     /* points a bucket on average */
