@@ -91,8 +91,6 @@ static void usage(void)
            "      --joint-pairs P       a point that cannot move alone tries P moves with its binding partner (default 0)\n"
            "      --joint-prefix T, --joint-full T  the joint move's targets (0.78, 0.90)\n"
            "      --joint-hold H   a pair shorter than H Delta(prefix) may not shrink (0: off)\n"
-           "      --joint-all      every point tries in every sweep (default: a point whose try failed\n"
-           "                       waits until a point near it moves)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
            "                       output, built like the levels (docs/cli.md)\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
@@ -324,7 +322,6 @@ static void parse(int argc, char **argv, cmdline *c)
         {"joint-prefix", required_argument, 0, PROG_OPT_JOINT_PREFIX},
         {"joint-full", required_argument, 0, PROG_OPT_JOINT_FULL},
         {"joint-hold", required_argument, 0, PROG_OPT_JOINT_HOLD},
-        {"joint-all", no_argument, 0, PROG_OPT_JOINT_ALL},
         {"joint-last", required_argument, 0, PROG_OPT_JOINT_LAST},
         {"joint-candidates", required_argument, 0, PROG_OPT_JOINT_CANDIDATES},
         {"joint-solve", required_argument, 0, PROG_OPT_JOINT_SOLVE},

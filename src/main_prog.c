@@ -87,10 +87,6 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
         pc->p.joint.pairs = (int)v;
         pc->joint_given = 1;
         return 1;
-    case PROG_OPT_JOINT_ALL:
-        pc->p.joint.all = 1;
-        pc->joint_given = 1;
-        return 1;
     case PROG_OPT_JOINT_HOLD:
         if (cli_parse_double(arg, 0, 1.2, &pc->p.joint.hold) != 0)
             cli_usage_error(prog, "--joint-hold: '%s' is not a number in [0, 1.2]", arg);

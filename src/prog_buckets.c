@@ -8,7 +8,12 @@
 
 int prog_buckets_init(prog_buckets *B, const double *xy, int64_t m, int64_t cap)
 {
-    B->gs = (int64_t)floor(1.0 / cfpo_delta_bound((double)m));
+    return prog_buckets_init_side(B, xy, cfpo_delta_bound((double)m), cap);
+}
+
+int prog_buckets_init_side(prog_buckets *B, const double *xy, double side, int64_t cap)
+{
+    B->gs = (int64_t)floor(1.0 / side);
     if (B->gs < 1) B->gs = 1;
     B->cs = 1.0 / (double)B->gs;
     B->xy = xy;

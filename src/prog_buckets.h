@@ -20,6 +20,9 @@ typedef struct {
  * cap), none stored yet. 0, or -1 when out of memory (then
  * prog_buckets_free). */
 int prog_buckets_init(prog_buckets *B, const double *xy, int64_t m, int64_t cap);
+
+/* The same with buckets of side at least side (> 0). */
+int prog_buckets_init_side(prog_buckets *B, const double *xy, double side, int64_t cap);
 void prog_buckets_free(prog_buckets *B);
 
 /* The bucket of (x, y) in [0, 1)^2 (clamped to the grid). */

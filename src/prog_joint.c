@@ -82,7 +82,6 @@ typedef struct {
     const int *lev;     /* each point's level */
     double R[65];       /* without classes: the reach of a pair of level L, max(F_L, cap G_L, H_L) */
     uint32_t now;       /* the time of the colour phase under way (stamps, prog_pgrid.h) */
-    uint32_t *tried;    /* each point's last attempt that failed (0: none since it last moved) */
     int K, classes;
     double F[65], G[65]; /* the pair floors (distances) and weights by pair level */
     double Gmax[65];     /* max of G over the pair levels a point of level l can be in */
@@ -339,21 +338,6 @@ static double reach_of(const joint *J, int l)
     return r;
 }
 
-/* Whether point i (level l, at (x, y); without classes) may have a
- * better place than at its last failed attempt: some point moved since
- * within reach of its trial positions (tr times its reach) and their
- * pairs. */
-static int may_gain(const joint *J, int64_t i, double x, double y, double tr)
-{
-    const uint32_t t = J->tried[i];
-    if (t == 0) return 1;
-    const int l = J->lev[i];
-    const double r = tr * reach_of(J, l);
-    for (int g = l; g < J->K; g++)
-        if (prog_pgrid_changed(&J->P, g, x, y, r + J->R[g], t)) return 1;
-    return 0;
-}
-
 /* The best circumcentre (offset from the mover, within reach of it) of
  * three of the nn nearest gathered neighbours by local_at, into (*px,
  * *py); its measure, or -1 when none keeps the floors. The circumcentres
@@ -456,9 +440,6 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
 {
     static const double steps[4] = {0.4, 0.2, 0.08, 0.02}; /* of the nearest neighbour's distance */
     const double x0 = xy[2 * i], y0 = xy[2 * i + 1];
-    const int skip = J->tried && !jo->all;
-    if (skip && !may_gain(J, i, x0, y0, jo->pairs > 0 ? 2.0 : jo->solve > 0 || jo->circum > 0 ? 1.0 : 0.4)) return 0;
-    if (skip) J->tried[i] = J->now; /* (taken back below when it moves) */
     int64_t bind;
     const double q0 = measure_at(J, i, x0, y0, &bind, -INFINITY);
     if (q0 < 0 || q0 >= J->cap * (1.0 + J->lam) || bind < 0) return 0; /* (a point at a floor's edge by rounding stays) */
@@ -512,12 +493,9 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
         if (jo->pairs <= 0 || J->lev[bind] < J->lev[i] || jo->hold > 0) return 0;
         int64_t bk;
         const double qj = measure_at(J, bind, xy[2 * bind], xy[2 * bind + 1], &bk, -INFINITY);
-        if (qj < 0 || !pair_move(J, xy, i, bind, fmin(q0, qj), s, jo)) return 0;
-        if (skip) J->tried[i] = J->tried[bind] = 0;
-        return 1;
+        return qj < 0 ? 0 : pair_move(J, xy, i, bind, fmin(q0, qj), s, jo);
     }
     place(J, xy, i, bx, by);
-    if (skip) J->tried[i] = 0;
     return 1;
 }
 
@@ -621,10 +599,11 @@ static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t
             lev[i] = (int)l;
         }
     J.classes = jo->classes;
-    /* with classes one grid of every point; without, the prefixes' grids
-     * and each point's last failed attempt */
-    if (!lev || (J.classes ? grid_init(&J.B, xy, n) : prog_pgrid_init(&J.P, xy, sizes, K, lev)) != 0 ||
-        (!J.classes && !jo->all && !(J.tried = calloc((size_t)n, sizeof *J.tried)))) {
+    /* with classes one grid of every point; without, the prefixes' grids */
+    /* grid g's buckets at least the pairs' reach within it (cap G_L, H_L;
+     * the floors lie below), so a search reads 3 x 3 of them */
+    const double side = fmax(1.25 * fmax(tp, tf), fmax(jo->hold, 1.0));
+    if (!lev || (J.classes ? grid_init(&J.B, xy, n) : prog_pgrid_init(&J.P, xy, sizes, K, lev, side)) != 0) {
         free(lev);
         prog_buckets_free(&J.B);
         prog_pgrid_free(&J.P);
@@ -732,7 +711,6 @@ static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t
     free(cell);
     prog_buckets_free(&J.B);
     prog_pgrid_free(&J.P);
-    free(J.tried);
     free(lev);
     return rc;
 }

@@ -60,8 +60,6 @@ typedef struct {
                              class c has level c (weight target_prefix Delta(class size), floor
                              the class's and the union's), a pair across classes level K (weight
                              target_full Delta(n), floor the union's); K + 1 groups are measured */
-    int all;              /* 1: every point tries in every sweep; 0 (default): a point whose last try
-                             failed tries again only once some point moved near it since (without classes) */
     uint64_t seed;
     int threads;          /* OpenMP threads of the moves (0: all); the bytes do not depend on it */
     /* Called with sweep 0 (the start) and after every sweep: the points

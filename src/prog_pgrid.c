@@ -8,7 +8,7 @@
 
 #include <omp.h>
 
-int prog_pgrid_init(prog_pgrid *P, const double *xy, const int64_t *sizes, int K, const int *lev)
+int prog_pgrid_init(prog_pgrid *P, const double *xy, const int64_t *sizes, int K, const int *lev, double f)
 {
     P->K = K;
     P->sizes = sizes;
@@ -16,14 +16,15 @@ int prog_pgrid_init(prog_pgrid *P, const double *xy, const int64_t *sizes, int K
     P->measured = 0;
     for (int g = 0; g < K; g++) {
         const int64_t m = sizes[g];
-        if (prog_buckets_init(&P->G[g], xy, m, m) != 0) return -1;
+        const double side = f * cfpo_delta_bound((double)m);
+        if (prog_buckets_init_side(&P->G[g], xy, side, m) != 0) return -1;
         const int64_t nb = P->G[g].gs * P->G[g].gs;
         P->stamp[g] = calloc((size_t)nb, sizeof *P->stamp[g]);
         P->nd[g] = malloc((size_t)m * sizeof *P->nd[g]);
         if (!P->stamp[g] || !P->nd[g]) return -1;
         for (int64_t k = m - 1; k >= 0; k--) prog_buckets_link(&P->G[g], k);
         if (g == 0) continue;
-        if (prog_buckets_init(&P->V[g], xy, m, m) != 0) return -1;
+        if (prog_buckets_init_side(&P->V[g], xy, side, m) != 0) return -1;
         for (int64_t k = m - 1; k >= sizes[g - 1]; k--) prog_buckets_link(&P->V[g], k);
     }
     return 0;

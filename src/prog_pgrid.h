@@ -29,9 +29,11 @@ typedef struct {
     uint32_t measured;       /* the time of the last measure (0: none yet) */
 } prog_pgrid;
 
-/* The grids of prefixes sizes[0..K) of xy (K <= 64), every point stored.
- * 0, or -1 when out of memory (then prog_pgrid_free). */
-int prog_pgrid_init(prog_pgrid *P, const double *xy, const int64_t *sizes, int K, const int *lev);
+/* The grids of prefixes sizes[0..K) of xy (K <= 64), every point stored,
+ * grid g's buckets of side at least f Delta(m_g) (f >= 1; a search of
+ * radius up to the side reads 3 x 3 buckets). 0, or -1 when out of memory
+ * (then prog_pgrid_free). */
+int prog_pgrid_init(prog_pgrid *P, const double *xy, const int64_t *sizes, int K, const int *lev, double f);
 void prog_pgrid_free(prog_pgrid *P);
 
 /* Point k to (x, y) in xy and in the grids of its prefixes (levels

@@ -50,7 +50,7 @@ int main(void)
         xy[2 * i + 1] = cfpo_rand01(7, 1, 2 * (uint64_t)i + 1);
     }
     prog_pgrid P = {0};
-    CHECK(prog_pgrid_init(&P, xy, sizes, K, lev) == 0, "init");
+    CHECK(prog_pgrid_init(&P, xy, sizes, K, lev, 1.2) == 0, "init");
     uint32_t now = 1;
     int bad = 0;
     uint64_t c = 0;
