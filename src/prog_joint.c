@@ -499,53 +499,8 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
     return 1;
 }
 
-/* ---- the working order: each level's points in Morton order of their
- * places (neighbours near each other in memory; the searches read them in
- * buckets), the same sets of ids per level. */
-
-static uint64_t spread16(uint64_t v)
-{
-    v &= 0xffff;
-    v = (v | (v << 8)) & 0x00ff00ffULL;
-    v = (v | (v << 4)) & 0x0f0f0f0fULL;
-    v = (v | (v << 2)) & 0x33333333ULL;
-    return (v | (v << 1)) & 0x55555555ULL;
-}
-
-typedef struct {
-    uint64_t key;
-    int64_t id;
-} zitem;
-
-static int zcmp(const void *a, const void *b)
-{
-    const zitem *p = a, *q = b;
-    if (p->key != q->key) return p->key < q->key ? -1 : 1;
-    return p->id < q->id ? -1 : p->id > q->id;
-}
-
-/* perm[j]: the caller's id of working id j; each level's ids in Morton
- * order of their places (ties by id). 0, or -1 when out of memory. */
-static int working_order(const double *xy, const int64_t *sizes, int K, int64_t *perm)
-{
-    const int64_t n = sizes[K - 1];
-    zitem *z = malloc((size_t)n * sizeof *z);
-    if (!z) return -1;
-    for (int64_t i = 0; i < n; i++) {
-        const uint64_t qx = (uint64_t)(xy[2 * i] * 65536.0), qy = (uint64_t)(xy[2 * i + 1] * 65536.0);
-        z[i] = (zitem){spread16(qx) | (spread16(qy) << 1), i};
-    }
-    for (int l = 0; l < K; l++) {
-        const int64_t lo = l ? sizes[l - 1] : 0;
-        qsort(z + lo, (size_t)(sizes[l] - lo), sizeof *z, zcmp);
-    }
-    for (int64_t j = 0; j < n; j++) perm[j] = z[j].id;
-    free(z);
-    return 0;
-}
-
 /* The moves on the points of xy in the working order (a copy; perm as
- * working_order's), written back into out in the caller's order before
+ * prog_pgrid_order's), written back into out in the caller's order before
  * each call of jo->sweep_done (which may read them) and at the end. */
 static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t *sizes, int K,
                      const cfpo_prog_joint_options *jo, double *dmin, double *davg, char *err, size_t errlen);
@@ -565,7 +520,7 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
     const int64_t n = sizes[K - 1];
     int64_t *perm = calloc((size_t)n, sizeof *perm);
     double *w = malloc(2 * (size_t)n * sizeof *w);
-    if (!perm || !w || working_order(xy, sizes, K, perm) != 0) {
+    if (!perm || !w || prog_pgrid_order(xy, sizes, K, perm) != 0) {
         free(perm);
         free(w);
         snprintf(err, errlen, "out of memory");

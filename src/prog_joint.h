@@ -30,7 +30,7 @@
  * soft-minimum score, a delta_avg term and pair moves (the fields below).
  * Owns: the pair floors and weights, the bucket grid of the moves, the
  * prefix measures of each sweep.
- * May include: geom.h, rng.h (layers 0-1). */
+ * May include: geom.h, rng.h, prog_buckets.h, prog_pgrid.h (layers 0-3). */
 #ifndef CFPO_PROG_JOINT_H
 #define CFPO_PROG_JOINT_H
 

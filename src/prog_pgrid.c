@@ -103,3 +103,44 @@ int prog_pgrid_measure(prog_pgrid *P, int nth, uint32_t now, double *dmin, doubl
     P->measured = now;
     return 0;
 }
+
+/* ---- the working order */
+
+static uint64_t spread16(uint64_t v)
+{
+    v &= 0xffff;
+    v = (v | (v << 8)) & 0x00ff00ffULL;
+    v = (v | (v << 4)) & 0x0f0f0f0fULL;
+    v = (v | (v << 2)) & 0x33333333ULL;
+    return (v | (v << 1)) & 0x55555555ULL;
+}
+
+typedef struct {
+    uint64_t key;
+    int64_t id;
+} zitem;
+
+static int zcmp(const void *a, const void *b)
+{
+    const zitem *p = a, *q = b;
+    if (p->key != q->key) return p->key < q->key ? -1 : 1;
+    return p->id < q->id ? -1 : p->id > q->id;
+}
+
+int prog_pgrid_order(const double *xy, const int64_t *sizes, int K, int64_t *perm)
+{
+    const int64_t n = sizes[K - 1];
+    zitem *z = malloc((size_t)n * sizeof *z);
+    if (!z) return -1;
+    for (int64_t i = 0; i < n; i++) {
+        const uint64_t qx = (uint64_t)(xy[2 * i] * 65536.0), qy = (uint64_t)(xy[2 * i + 1] * 65536.0);
+        z[i] = (zitem){spread16(qx) | (spread16(qy) << 1), i};
+    }
+    for (int l = 0; l < K; l++) {
+        const int64_t lo = l ? sizes[l - 1] : 0;
+        qsort(z + lo, (size_t)(sizes[l] - lo), sizeof *z, zcmp);
+    }
+    for (int64_t j = 0; j < n; j++) perm[j] = z[j].id;
+    free(z);
+    return 0;
+}

@@ -7,8 +7,9 @@
  * move into or out of it, so a caller can tell whether anything moved
  * near a place since a given time. Also each prefix's nearest distances,
  * measured again only where a stamp changed since the last measure (the
- * same values as a full measure, exactly).
- * Owns: the grids, their stamps, the kept nearest distances.
+ * same values as a full measure, exactly), and the working order of the
+ * points (Morton order within each level).
+ * Owns: the grids, their stamps, the kept nearest distances, the order.
  * May include: prog_buckets.h (layer 2). */
 #ifndef CFPO_PROG_PGRID_H
 #define CFPO_PROG_PGRID_H
@@ -50,5 +51,11 @@ int prog_pgrid_changed(const prog_pgrid *P, int g, double x, double y, double r,
  * first measure every one). now: the time of this measure (the stamps
  * after it are newer). 0, or -1 when out of memory. */
 int prog_pgrid_measure(prog_pgrid *P, int nth, uint32_t now, double *dmin, double *davg, double *raw);
+
+/* A working order of xy's points: perm[j] is the id of working id j; each
+ * level's ids (sizes[l - 1] .. sizes[l] - 1) in Morton order of their
+ * places, ties by id (neighbours near each other in memory; the same set
+ * of ids per level). 0, or -1 when out of memory. */
+int prog_pgrid_order(const double *xy, const int64_t *sizes, int K, int64_t *perm);
 
 #endif
