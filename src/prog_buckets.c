@@ -8,7 +8,19 @@
 
 int prog_buckets_init(prog_buckets *B, const double *xy, int64_t m, int64_t cap)
 {
-    B->gs = (int64_t)floor(1.0 / cfpo_delta_bound((double)m));
+    return prog_buckets_init_side(B, xy, cfpo_delta_bound((double)m), cap);
+}
+
+int prog_buckets_build(prog_buckets *B, const double *xy, int64_t m)
+{
+    if (prog_buckets_init(B, xy, m, m) != 0) return -1;
+    for (int64_t k = m - 1; k >= 0; k--) prog_buckets_link(B, k);
+    return 0;
+}
+
+int prog_buckets_init_side(prog_buckets *B, const double *xy, double side, int64_t cap)
+{
+    B->gs = (int64_t)floor(1.0 / side);
     if (B->gs < 1) B->gs = 1;
     B->cs = 1.0 / (double)B->gs;
     B->xy = xy;
@@ -51,14 +63,6 @@ void prog_buckets_unlink(prog_buckets *B, int64_t k)
     *p = B->next[k];
 }
 
-double prog_torus_d2(double ax, double ay, double bx, double by)
-{
-    double dx = fabs(ax - bx), dy = fabs(ay - by);
-    if (dx > 0.5) dx = 1.0 - dx;
-    if (dy > 0.5) dy = 1.0 - dy;
-    return dx * dx + dy * dy;
-}
-
 double prog_buckets_nearest2(const prog_buckets *B, double x, double y, int64_t skip, double stop2)
 {
     const int64_t gs = B->gs, b = prog_buckets_of(B, x, y), bx = b % gs, by = b / gs;
@@ -69,7 +73,7 @@ double prog_buckets_nearest2(const prog_buckets *B, double x, double y, int64_t 
         for (int64_t oy = 0; oy < span; oy++)
             for (int64_t ox = 0; ox < span; ox++) {
                 if (span != gs && ox != 0 && ox != span - 1 && oy != 0 && oy != span - 1) continue;
-                const int64_t cx = ((bx - lo + ox) % gs + gs) % gs, cy = ((by - lo + oy) % gs + gs) % gs;
+                const int64_t cx = prog_buckets_wrap(bx - lo + ox, gs), cy = prog_buckets_wrap(by - lo + oy, gs);
                 for (int64_t k = B->head[cy * gs + cx]; k >= 0; k = B->next[k]) {
                     if (k == skip) continue;
                     const double d2 = prog_torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]);

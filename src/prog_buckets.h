@@ -20,6 +20,13 @@ typedef struct {
  * cap), none stored yet. 0, or -1 when out of memory (then
  * prog_buckets_free). */
 int prog_buckets_init(prog_buckets *B, const double *xy, int64_t m, int64_t cap);
+
+/* Buckets of side about Delta(m) holding points 0 .. m - 1 of xy, all
+ * stored. 0, or -1 when out of memory (then prog_buckets_free). */
+int prog_buckets_build(prog_buckets *B, const double *xy, int64_t m);
+
+/* The same with buckets of side at least side (> 0). */
+int prog_buckets_init_side(prog_buckets *B, const double *xy, double side, int64_t cap);
 void prog_buckets_free(prog_buckets *B);
 
 /* The bucket of (x, y) in [0, 1)^2 (clamped to the grid). */
@@ -40,16 +47,27 @@ static inline int64_t prog_buckets_window(const prog_buckets *B, int64_t b, int6
     return span;
 }
 
+/* Column or row v in (-gs, 2 gs) wrapped onto [0, gs) (no division). */
+static inline int64_t prog_buckets_wrap(int64_t v, int64_t gs) { return v < 0 ? v + gs : v >= gs ? v - gs : v; }
+
 /* The first point of the bucket at column x, row y (wrapped onto the
- * grid). */
+ * grid; each in (-gs, 2 gs), as a window's are). */
 static inline int64_t prog_buckets_first(const prog_buckets *B, int64_t x, int64_t y)
 {
     const int64_t gs = B->gs;
-    return B->head[((y % gs + gs) % gs) * gs + (x % gs + gs) % gs];
+    return B->head[prog_buckets_wrap(y, gs) * gs + prog_buckets_wrap(x, gs)];
 }
 
 /* Squared distance on the unit torus. */
-double prog_torus_d2(double ax, double ay, double bx, double by);
+static inline double prog_torus_d2(double ax, double ay, double bx, double by)
+{
+    double dx = ax - bx, dy = ay - by;
+    dx = dx < 0 ? -dx : dx;
+    dy = dy < 0 ? -dy : dy;
+    if (dx > 0.5) dx = 1.0 - dx;
+    if (dy > 0.5) dy = 1.0 - dy;
+    return dx * dx + dy * dy;
+}
 
 /* Squared distance from (x, y) to the nearest stored point other than
  * skip (-1: none), by rings of buckets outwards until no nearer point can

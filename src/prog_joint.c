@@ -7,17 +7,11 @@
 
 #include "geom.h"
 #include "prog_buckets.h"
+#include "prog_measure.h"
+#include "prog_pgrid.h"
 #include "rng.h"
 
 #include <omp.h>
-
-/* Buckets of side about Delta(m) holding points 0 .. m - 1 of xy. */
-static int grid_init(prog_buckets *B, const double *xy, int64_t m)
-{
-    if (prog_buckets_init(B, xy, m, m) != 0) return -1;
-    for (int64_t k = m - 1; k >= 0; k--) prog_buckets_link(B, k);
-    return 0;
-}
 
 static double wrap1(double v)
 {
@@ -25,63 +19,19 @@ static double wrap1(double v)
     return w < 1.0 ? w : 0.0;
 }
 
-/* The groups' measures, and (raw, may be NULL) each group's smallest
- * distance itself, the floors' exact values. Groups: the prefixes
- * [0, sizes[k]); with classes, class k [sizes[k - 1], sizes[k]) and then
- * the union [0, sizes[K - 1]) (K + 1 groups). The nearest distances on
- * nth threads, summed in id order (the same bits for any nth). */
-static int measure(const double *xy, const int64_t *sizes, int K, int classes, int nth, double *dmin, double *davg,
-                   double *raw, char *err, size_t errlen)
-{
-    double *nd = malloc((size_t)(sizes[K - 1] > 0 ? sizes[K - 1] : 1) * sizeof *nd);
-    if (!nd) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
-    }
-    for (int k = 0; k < K + (classes ? 1 : 0); k++) {
-        const int64_t lo0 = classes && k > 0 && k < K ? sizes[k - 1] : 0;
-        const int64_t m = (k < K ? sizes[k] : sizes[K - 1]) - lo0;
-        xy += 2 * lo0;
-        prog_buckets B = {0};
-        if (grid_init(&B, xy, m) != 0) {
-            prog_buckets_free(&B);
-            free(nd);
-            snprintf(err, errlen, "out of memory");
-            return -1;
-        }
-#pragma omp parallel for schedule(static) num_threads(nth)
-        for (int64_t i = 0; i < m; i++) nd[i] = sqrt(prog_buckets_nearest2(&B, xy[2 * i], xy[2 * i + 1], i, -1.0));
-        double lo = INFINITY, sum = 0;
-        for (int64_t i = 0; i < m; i++) {
-            if (nd[i] < lo) lo = nd[i];
-            sum += nd[i];
-        }
-        prog_buckets_free(&B);
-        const double D = cfpo_delta_bound((double)m);
-        dmin[k] = lo / D;
-        davg[k] = sum / (double)m / D;
-        if (raw) raw[k] = lo;
-        xy -= 2 * lo0;
-    }
-    free(nd);
-    return 0;
-}
-
-int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmin, double *davg, char *err,
-                      size_t errlen)
-{
-    return measure(xy, sizes, K, 0, 1, dmin, davg, NULL, err, errlen);
-}
-
 /* ---- the moves */
 
 typedef struct {
-    prog_buckets B;
+    prog_buckets B;     /* with classes: every point (one grid) */
+    prog_pgrid P;       /* without: the prefixes' grids (P.G[K - 1] holds every point) */
     const int *lev;     /* each point's level */
+    double R[65];       /* without classes: the reach of a pair of level L, max(F_L, cap G_L, H_L) */
+    uint32_t now;       /* the time of the colour phase under way (stamps, prog_pgrid.h) */
     int K, classes;
     double F[65], G[65]; /* the pair floors (distances) and weights by pair level */
     double Gmax[65];     /* max of G over the pair levels a point of level l can be in */
     double H[65];        /* hold distances: a pair shorter than H_L may not shrink */
+    double Hmax;         /* the largest of them */
     double Fmax[65];     /* the same for F */
     double cap;          /* the measure counted up to this (a mover at or past it has nothing to gain) */
     double tau;          /* > 0: the pair measure is the soft minimum with this temperature (prog_joint.h soft) */
@@ -95,45 +45,103 @@ typedef struct {
     int64_t n, cap;
 } nbuf;
 
+/* The running state of a score: the smallest pair measure, its partner,
+ * the soft minimum's sum, each group's nearest distance. */
+typedef struct {
+    double best, S, mL[66];
+    int64_t bind;
+} score;
+
+/* The pairs of point i (level l) at (x, y) with the points of one
+ * bucket (first point k) within r (squared: r2) of it, all of pair level
+ * `only` when only >= 0 (else found from their levels), into st: -1 when some pair falls below its
+ * floor (or shrinks below its hold distance), else 0. A point farther than
+ * r changes nothing (its measure is past the cap, its distance past the
+ * floor and the hold distance). */
+static int visit(const joint *J, const prog_buckets *B, int64_t k, int64_t i, int l, double x, double y, double r2,
+                 int only, score *st)
+{
+    for (; k >= 0; k = B->next[k]) {
+        if (k == i) continue;
+        const double d2 = prog_torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]);
+        if (d2 > r2) continue;
+        const double d = sqrt(d2);
+        const int L = only >= 0 ? only : J->classes ? (J->lev[k] == l ? l : J->K) : J->lev[k] > l ? J->lev[k] : l;
+        if (d < J->F[L]) return -1;
+        if (d < J->H[L] && d < sqrt(prog_torus_d2(B->xy[2 * i], B->xy[2 * i + 1], B->xy[2 * k], B->xy[2 * k + 1])))
+            return -1; /* a pair below its hold distance may not shrink */
+        const double q = d / J->G[L];
+        if (J->tau > 0 && q < J->cap) /* S = sum of exp(-(q_j - best) / tau) */
+            st->S = q < st->best ? st->S * exp((q - st->best) / J->tau) + 1.0 : st->S + exp((st->best - q) / J->tau);
+        if (q < st->best) st->best = q, st->bind = k;
+        if (J->lam > 0) {
+            if (d < st->mL[L]) st->mL[L] = d;
+            if (J->classes && d < st->mL[J->K]) st->mL[J->K] = d; /* the union holds every pair */
+        }
+    }
+    return 0;
+}
+
+/* The pairs of point i (level l) placed at (x, y) with the points of B
+ * within r of it (all of pair level `only` when only >= 0) into st,
+ * the buckets by rings outwards from (x, y)'s: -1 when some pair falls
+ * below its floor, 1 when the smallest measure fell to stop or below (the
+ * rest unread: the score can only fall further), else 0. */
+static int scan(const joint *J, const prog_buckets *B, int64_t i, int l, double x, double y, double r, int only,
+                double stop, score *st)
+{
+    const int64_t gs = B->gs, b = prog_buckets_of(B, x, y), bx = b % gs, by = b / gs;
+    const int64_t reach = (int64_t)ceil(r / B->cs);
+    const double r2 = r * r;
+    if (2 * reach + 1 >= gs) { /* the window wraps onto itself: every bucket once */
+        for (int64_t c = 0; c < gs * gs; c++) {
+            if (visit(J, B, B->head[c], i, l, x, y, r2, only, st) != 0) return -1;
+            if (st->best <= stop) return 1;
+        }
+        return 0;
+    }
+    for (int64_t rr = 0; rr <= reach; rr++)
+        for (int64_t oy = -rr; oy <= rr; oy++) {
+            const int64_t step = oy == -rr || oy == rr ? 1 : 2 * rr; /* the ring's edge only */
+            for (int64_t ox = -rr; ox <= rr; ox += step > 0 ? step : 1) {
+                if (visit(J, B, prog_buckets_first(B, bx + ox, by + oy), i, l, x, y, r2, only, st) != 0) return -1;
+                if (st->best <= stop) return 1;
+            }
+        }
+    return 0;
+}
+
 /* The score of point i placed at (x, y): its pair measure, the smallest
  * d_ij / G_L over the other points (capped at J->cap), plus J->lam times
  * the mean over the groups that hold i of its nearest distance in the
  * group over the group's G (each capped at J->cap); or -1 when some pair
  * falls below its floor. *bind: the binding partner (-1 if none within
- * reach). */
-static double measure_at(const joint *J, int64_t i, double x, double y, int64_t *bind)
+ * reach). Without classes the pairs of level L matter within J->R[L]:
+ * those with the points of levels up to i's in the grid of i's prefix,
+ * those with each finer level L in the grid of prefix L (a few buckets
+ * each). */
+static double measure_at(const joint *J, int64_t i, double x, double y, int64_t *bind, double stop)
 {
-    double mL[66], S = 0;
+    score st;
+    st.best = J->cap, st.S = 0, st.bind = -1;
     if (J->lam > 0)
-        for (int L = 0; L <= J->K; L++) mL[L] = INFINITY;
-    const prog_buckets *B = &J->B;
+        for (int L = 0; L <= J->K; L++) st.mL[L] = INFINITY;
+    if (J->lam > 0) stop = -INFINITY; /* (the delta_avg term may lift a score whose minimum fell) */
     const int l = J->lev[i];
-    const double r = fmax(J->Fmax[l], J->cap * J->Gmax[l]);
-    double best = J->cap;
     *bind = -1;
-    int64_t x0, y0;
-    const int64_t span = prog_buckets_window(B, prog_buckets_of(B, x, y), (int64_t)ceil(r / B->cs), &x0, &y0);
-    for (int64_t oy = 0; oy < span; oy++) {
-        for (int64_t ox = 0; ox < span; ox++) {
-            for (int64_t k = prog_buckets_first(B, x0 + ox, y0 + oy); k >= 0; k = B->next[k]) {
-                if (k == i) continue;
-                const double d = sqrt(prog_torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]));
-                const int L = J->classes ? (J->lev[k] == l ? l : J->K) : J->lev[k] > l ? J->lev[k] : l;
-                if (d < J->F[L]) return -1;
-                if (d < J->H[L] && d < sqrt(prog_torus_d2(B->xy[2 * i], B->xy[2 * i + 1], B->xy[2 * k], B->xy[2 * k + 1])))
-                    return -1; /* a pair below its hold distance may not shrink */
-                const double q = d / J->G[L];
-                if (J->tau > 0 && q < J->cap) /* S = sum of exp(-(q_j - best) / tau) */
-                    S = q < best ? S * exp((q - best) / J->tau) + 1.0 : S + exp((best - q) / J->tau);
-                if (q < best) best = q, *bind = k;
-                if (J->lam > 0) {
-                    if (d < mL[L]) mL[L] = d;
-                    if (J->classes && d < mL[J->K]) mL[J->K] = d; /* the union holds every pair */
-                }
-            }
-        }
+    int rc;
+    if (J->classes) {
+        rc = scan(J, &J->B, i, l, x, y, fmax(fmax(J->Fmax[l], J->cap * J->Gmax[l]), J->Hmax), -1, stop, &st);
+    } else {
+        rc = scan(J, &J->P.G[l], i, l, x, y, J->R[l], l, stop, &st);
+        for (int L = l + 1; L < J->K && rc == 0; L++) rc = scan(J, &J->P.V[L], i, l, x, y, J->R[L], L, stop, &st);
     }
-    if (J->tau > 0 && S > 1.0) best -= J->tau * log(S); /* the soft minimum, at most the minimum */
+    if (rc < 0) return -1;
+    if (rc > 0) return st.best; /* at or below stop: the caller's better place stands */
+    *bind = st.bind;
+    double best = st.best;
+    const double *mL = st.mL;
+    if (J->tau > 0 && st.S > 1.0) best -= J->tau * log(st.S); /* the soft minimum, at most the minimum */
     if (J->lam <= 0) return best;
     double sum = 0;
     int cnt = 0;
@@ -156,7 +164,7 @@ static double measure_at(const joint *J, int64_t i, double x, double y, int64_t 
  * -1 when out of memory. */
 static int gather(const joint *J, nbuf *w, int64_t i, double x0, double y0, double r)
 {
-    const prog_buckets *B = &J->B;
+    const prog_buckets *B = J->classes ? &J->B : &J->P.G[J->K - 1];
     const int l = J->lev[i];
     int64_t wx, wy;
     const int64_t span = prog_buckets_window(B, prog_buckets_of(B, x0, y0), (int64_t)ceil(r / B->cs), &wx, &wy);
@@ -262,6 +270,17 @@ static void set_floors(joint *J, int K, const double *raw)
         J->Fmax[l] = 0;
         for (int L = l; L < K; L++) J->Fmax[l] = fmax(J->Fmax[l], J->F[L]);
     }
+    for (int L = 0; L < K; L++) J->R[L] = fmax(fmax(J->F[L], J->cap * J->G[L]), J->H[L]);
+}
+
+/* The reach of the pairs of a point of level l: the largest R_L over the
+ * pair levels L >= l (without classes), or the grid search's radius. */
+static double reach_of(const joint *J, int l)
+{
+    if (J->classes) return fmax(J->Fmax[l], J->cap * J->Gmax[l]);
+    double r = 0;
+    for (int L = l; L < J->K; L++) r = fmax(r, J->R[L]);
+    return r;
 }
 
 /* The best circumcentre (offset from the mover, within reach of it) of
@@ -306,6 +325,10 @@ static double best_circumcentre(const joint *J, nbuf *w, int nn, double reach, d
 /* Point k to (x, y) in xy and the move grid. */
 static void place(joint *J, double *xy, int64_t k, double x, double y)
 {
+    if (!J->classes) {
+        prog_pgrid_move(&J->P, xy, k, x, y, J->now);
+        return;
+    }
     prog_buckets_unlink(&J->B, k);
     xy[2 * k] = x;
     xy[2 * k + 1] = y;
@@ -338,11 +361,11 @@ static int pair_move(joint *J, double *xy, int64_t i, int64_t j, double base, in
         const double bx = wrap1(xj - st * (ux - jb * uy)), by = wrap1(yj - st * (uy + jb * ux));
         int64_t bk;
         place(J, xy, j, bx, by);
-        const double qi = measure_at(J, i, ax, ay, &bk);
+        const double qi = measure_at(J, i, ax, ay, &bk, best);
         double qj = -1;
         if (qi > best) {
             place(J, xy, i, ax, ay);
-            qj = measure_at(J, j, bx, by, &bk);
+            qj = measure_at(J, j, bx, by, &bk, best);
             place(J, xy, i, xi, yi);
         }
         place(J, xy, j, xj, yj);
@@ -363,7 +386,7 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
     static const double steps[4] = {0.4, 0.2, 0.08, 0.02}; /* of the nearest neighbour's distance */
     const double x0 = xy[2 * i], y0 = xy[2 * i + 1];
     int64_t bind;
-    const double q0 = measure_at(J, i, x0, y0, &bind);
+    const double q0 = measure_at(J, i, x0, y0, &bind, -INFINITY);
     if (q0 < 0 || q0 >= J->cap * (1.0 + J->lam) || bind < 0) return 0; /* (a point at a floor's edge by rounding stays) */
     const double dx = x0 - xy[2 * bind], dy = y0 - xy[2 * bind + 1];
     const double ux = dx - round(dx), uy = dy - round(dy); /* away from the binding partner */
@@ -387,7 +410,7 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
         cx = wrap1(cx);
         cy = wrap1(cy);
         int64_t bk;
-        const double q = measure_at(J, i, cx, cy, &bk);
+        const double q = measure_at(J, i, cx, cy, &bk, bq);
         if (q > bq) bq = q, bx = cx, by = cy;
     }
     if (jo->solve > 0 || jo->circum > 0) { /* the local solve from the best trial, checked against the grid */
@@ -407,21 +430,29 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
         if (ql >= 0 && px * px + py * py <= scale * scale) {
             const double cx = wrap1(x0 + px), cy = wrap1(y0 + py);
             int64_t bk;
-            const double q = measure_at(J, i, cx, cy, &bk);
+            const double q = measure_at(J, i, cx, cy, &bk, bq);
             if (q > bq) bq = q, bx = cx, by = cy;
         }
     }
     if (bq <= q0) {
         if (jo->pairs <= 0 || J->lev[bind] < J->lev[i] || jo->hold > 0) return 0;
         int64_t bk;
-        const double qj = measure_at(J, bind, xy[2 * bind], xy[2 * bind + 1], &bk);
+        const double qj = measure_at(J, bind, xy[2 * bind], xy[2 * bind + 1], &bk, -INFINITY);
         return qj < 0 ? 0 : pair_move(J, xy, i, bind, fmin(q0, qj), s, jo);
     }
-    prog_buckets_unlink(&J->B, i);
-    xy[2 * i] = bx;
-    xy[2 * i + 1] = by;
-    prog_buckets_link(&J->B, i);
+    place(J, xy, i, bx, by);
     return 1;
+}
+
+/* The moves on the points of xy in the working order (a copy; perm as
+ * prog_pgrid_order's), written back into out in the caller's order before
+ * each call of jo->sweep_done (which may read them) and at the end. */
+static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t *sizes, int K,
+                     const cfpo_prog_joint_options *jo, double *dmin, double *davg, char *err, size_t errlen);
+
+static void write_back(const double *w, double *out, const int64_t *perm, int64_t n)
+{
+    for (int64_t j = 0; j < n; j++) out[2 * perm[j]] = w[2 * j], out[2 * perm[j] + 1] = w[2 * j + 1];
 }
 
 int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joint_options *jo, double *dmin,
@@ -432,24 +463,55 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
         return -1;
     }
     const int64_t n = sizes[K - 1];
+    int64_t *perm = calloc((size_t)n, sizeof *perm);
+    double *w = malloc(2 * (size_t)n * sizeof *w);
+    if (!perm || !w || prog_pgrid_order(xy, sizes, K, perm) != 0) {
+        free(perm);
+        free(w);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    for (int64_t j = 0; j < n; j++) w[2 * j] = xy[2 * perm[j]], w[2 * j + 1] = xy[2 * perm[j] + 1];
+    const int rc = joint_run(w, xy, perm, sizes, K, jo, dmin, davg, err, errlen);
+    write_back(w, xy, perm, n);
+    free(perm);
+    free(w);
+    return rc;
+}
+
+static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t *sizes, int K,
+                     const cfpo_prog_joint_options *jo, double *dmin, double *davg, char *err, size_t errlen)
+{
+
+    if (K > 64) {
+        snprintf(err, errlen, "the joint move takes at most 64 levels");
+        return -1;
+    }
+    const int64_t n = sizes[K - 1];
     const int cand = jo->candidates > 0 ? jo->candidates : 12;
     const double tp = jo->target_prefix > 0 ? jo->target_prefix : 0.78;
     const double tf = jo->target_full > 0 ? jo->target_full : 0.90;
     joint J = {0};
     int *lev = malloc((size_t)n * sizeof *lev);
-    if (!lev || grid_init(&J.B, xy, n) != 0) {
+    if (lev)
+        for (int64_t i = 0, l = 0; i < n; i++) {
+            while (i >= sizes[l]) l++;
+            lev[i] = (int)l;
+        }
+    J.classes = jo->classes;
+    /* with classes one grid of every point; without, the prefixes' grids */
+    /* grid g's buckets at least the pairs' reach within it (cap G_L, H_L;
+     * the floors lie below), so a search reads 3 x 3 of them */
+    const double side = fmax(1.25 * fmax(tp, tf), fmax(jo->hold, 1.0));
+    if (!lev || (J.classes ? prog_buckets_build(&J.B, xy, n) : prog_pgrid_init(&J.P, xy, sizes, K, lev, side)) != 0) {
         free(lev);
         prog_buckets_free(&J.B);
+        prog_pgrid_free(&J.P);
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    for (int64_t i = 0, l = 0; i < n; i++) {
-        while (i >= sizes[l]) l++;
-        lev[i] = (int)l;
-    }
     J.lev = lev;
     J.K = K;
-    J.classes = jo->classes;
     if (J.classes) { /* class c's size in its own units, the union in Delta(n) */
         for (int c = 0; c < K; c++) {
             const double Dc = cfpo_delta_bound((double)(sizes[c] - (c ? sizes[c - 1] : 0)));
@@ -467,13 +529,16 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
         }
         for (int L = 0; L < K; L++) J.H[L] = jo->hold * cfpo_delta_bound((double)sizes[L]);
     }
+    for (int L = 0; L <= K; L++) J.Hmax = fmax(J.Hmax, J.H[L]);
     J.cap = 1.25;
     J.lam = jo->avg;
     J.tau = jo->soft;
     const int NG = K + (J.classes ? 1 : 0);
     double raw[65];
     const int nth = jo->threads > 0 ? jo->threads : omp_get_max_threads();
-    int rc = measure(xy, sizes, K, J.classes, nth, dmin, davg, raw, err, errlen);
+    J.now = 1; /* (stamps of 0: no change yet) */
+    int rc = J.classes ? cfpo_prog_measure_groups(xy, sizes, K, 1, nth, dmin, davg, raw, err, errlen)
+                       : prog_pgrid_measure(&J.P, nth, J.now, dmin, davg, raw);
     if (rc == 0 && jo->sweep_done) jo->sweep_done(0, 0, dmin, davg, NG, jo->user);
     nbuf *nb = calloc((size_t)nth, sizeof *nb);
     int64_t *order = malloc((size_t)n * sizeof *order), *cell = malloc((size_t)n * sizeof *cell);
@@ -489,8 +554,8 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
              * cells of one colour are too far apart for their movers to
              * see each other or each other's buckets (prog_joint.h). */
             const int64_t lo = l ? sizes[l - 1] : 0, hi = sizes[l];
-            const double r = fmax(J.Fmax[l], J.cap * J.Gmax[l]);
-            const double c = (jo->pairs > 0 ? 2.5 : 1.5) * r + 2.0 * J.B.cs; /* pair moves reach further */
+            const double r = reach_of(&J, l), cs = J.classes ? J.B.cs : J.P.G[l].cs; /* (grid l's buckets are the largest read) */
+            const double c = (jo->pairs > 0 ? 2.5 : 1.5) * r + 2.0 * cs; /* pair moves reach further */
             int64_t g = 3 * (int64_t)floor(1.0 / (3.0 * c));
             if (g < 3) g = 1;
             int64_t *start = calloc((size_t)(g * g + 1), sizeof *start);
@@ -513,6 +578,7 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
             for (int col = 0; col < ncol && rc == 0; col++) {
                 const int64_t per = g / 3 > 0 && g > 1 ? g / 3 : 1, ncell = g == 1 ? 1 : per * per;
                 int bad = 0;
+                J.now++;
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : moved) reduction(| : bad) num_threads(nth)
                 for (int64_t t = 0; t < ncell; t++) {
                     const int64_t b = g == 1 ? 0 : (3 * (t / per) + col / 3) * g + 3 * (t % per) + col % 3;
@@ -531,8 +597,12 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
             snprintf(err, errlen, "out of memory");
             break;
         }
-        rc = measure(xy, sizes, K, J.classes, nth, dmin, davg, raw, err, errlen);
-        if (rc == 0 && jo->sweep_done) jo->sweep_done(s, moved, dmin, davg, NG, jo->user);
+        rc = J.classes ? cfpo_prog_measure_groups(xy, sizes, K, 1, nth, dmin, davg, raw, err, errlen)
+                       : prog_pgrid_measure(&J.P, nth, J.now, dmin, davg, raw);
+        if (rc == 0 && jo->sweep_done) {
+            write_back(xy, out, perm, n);
+            jo->sweep_done(s, moved, dmin, davg, NG, jo->user);
+        }
         if (moved == 0) break;
     }
     for (int t = 0; nb && t < nth; t++) free(nb[t].e);
@@ -540,6 +610,7 @@ int cfpo_prog_joint(double *xy, const int64_t *sizes, int K, const cfpo_prog_joi
     free(order);
     free(cell);
     prog_buckets_free(&J.B);
+    prog_pgrid_free(&J.P);
     free(lev);
     return rc;
 }

@@ -30,7 +30,7 @@
  * soft-minimum score, a delta_avg term and pair moves (the fields below).
  * Owns: the pair floors and weights, the bucket grid of the moves, the
  * prefix measures of each sweep.
- * May include: geom.h, rng.h (layers 0-1). */
+ * May include: geom.h, rng.h, prog_buckets.h, prog_pgrid.h (layers 0-3). */
 #ifndef CFPO_PROG_JOINT_H
 #define CFPO_PROG_JOINT_H
 
@@ -68,12 +68,6 @@ typedef struct {
     void (*sweep_done)(int sweep, int64_t moved, const double *dmin, const double *davg, int K, void *user);
     void *user;
 } cfpo_prog_joint_options;
-
-/* delta_min and delta_avg of each prefix sizes[0..K) of xy (the first
- * sizes[k] points), each in its own Delta(m_k), into dmin[k], davg[k].
- * 0, or -1 with one line in err (out of memory). */
-int cfpo_prog_measure(const double *xy, const int64_t *sizes, int K, double *dmin, double *davg, char *err,
-                      size_t errlen);
 
 /* The joint move of xy (sizes[K - 1] points, prefix order) in place; the
  * prefixes' final measures into dmin, davg (K each; with classes K + 1:

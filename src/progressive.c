@@ -9,6 +9,7 @@
 #include "grid.h"
 #include "omp_compat.h"
 #include "prog_insert.h"
+#include "prog_measure.h"
 #include "rng.h"
 #include "run_loop.h"
 #include "stoprule.h"

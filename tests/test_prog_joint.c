@@ -1,6 +1,6 @@
 /* test_prog_joint.c - the bounded joint move of a progressive set
  * (src/prog_joint.c) against brute force on the torus:
- *  - cfpo_prog_measure: every prefix's delta_min and delta_avg, each in its
+ *  - cfpo_prog_measure (src/prog_measure.c): every prefix's delta_min and delta_avg, each in its
  *    own Delta(m), equal the O(m^2) values;
  *  - cfpo_prog_joint: after every sweep (the callback, measured again by
  *    brute force from the points as they are) no prefix's delta_min is
@@ -20,6 +20,7 @@
 
 #include "geom.h"
 #include "prog_joint.h"
+#include "prog_measure.h"
 #include "rng.h"
 #include "testutil.h"
 
