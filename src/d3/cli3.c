@@ -26,6 +26,7 @@
 #include "run_loop.h"
 #include "runsignal.h"
 #include "solve3.h"
+#include "stopflat.h"
 #include "stoprule.h"
 
 static const char *prog = "cfpo3d"; /* set by cfpo3_cli_main */
@@ -37,6 +38,8 @@ typedef struct {
     FILE *trace;
     double t0;
     int started; /* the loop's first call is the set before any iteration */
+    cfpo_flat_rule *flat; /* --flat (may be off) */
+    int flat_hit;         /* the flatness rule asked to stop */
 } run_ctx;
 
 static int on_iteration(const cfpo_iter_stats *st, void *user)
@@ -44,6 +47,7 @@ static int on_iteration(const cfpo_iter_stats *st, void *user)
     run_ctx *x = user;
     if (!x->started) { /* the set before the first iteration: no line, no row */
         x->started = 1;
+        cfpo_flat_push(x->flat, st->delta_min, st->delta_avg); /* the window's first value */
         return 0;
     }
     cli_progress_line(x->pr, 0, "iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  solved %lld  %.2fs/iter  elapsed %.1fs",
@@ -52,7 +56,8 @@ static int on_iteration(const cfpo_iter_stats *st, void *user)
     if (x->trace)
         fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f %d\n", st->iteration, st->delta_min, st->delta_avg,
                 (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds, st->near);
-    return 0;
+    if (cfpo_flat_push(x->flat, st->delta_min, st->delta_avg)) x->flat_hit = 1;
+    return x->flat_hit;
 }
 #define MAX_OUT 8
 
@@ -71,6 +76,9 @@ static void usage(void)
            "      --target-min D   stop once delta_min >= D\n"
            "      --target-avg D   stop once delta_avg >= D (with --target-min: both)\n"
            "      --time-limit S   stop at the first iteration boundary past S seconds\n"
+           "      --flat W         stop once delta_min and delta_avg each rose by less than\n"
+           "                       --flat-gain G over the last W iterations (default: off)\n"
+           "      --flat-gain G    (default 1e-5)\n"
            "      --init FILE      start from this n x 3 set (.npy, text, CSV, raw) instead of the jittered grid\n"
            "      --checkpoint F   write a checkpoint to F every --checkpoint-every K iterations and at the end\n"
            "      --checkpoint-every K  (default 10)\n"
@@ -99,6 +107,8 @@ typedef struct {
     int nout;
     const char *init, *ckpt, *resume, *trace;
     cfpo_stop_rules stop;
+    int flat;         /* --flat W (0: off) */
+    double flat_gain; /* --flat-gain G */
 } cmdline;
 
 /* Options of the 2-D command that have no meaning on the 3-torus: refused
@@ -118,7 +128,8 @@ static int parse(cmdline *c, int argc, char **argv)
         {"checkpoint", required_argument, 0, 'P'}, {"checkpoint-every", required_argument, 0, 'E'},
         {"resume", required_argument, 0, 'R'}, {"no-relax", no_argument, 0, 1010},
         {"no-shift", no_argument, 0, 1011}, {"no-skip", no_argument, 0, 1012},
-        {"no-near", no_argument, 0, 1013},
+        {"no-near", no_argument, 0, 1013}, {"flat", required_argument, 0, 1004},
+        {"flat-gain", required_argument, 0, 1005},
         {"dry-run", no_argument, 0, 'D'}, {"trace", required_argument, 0, 'r'}, {"quiet", no_argument, 0, 'q'},
         {"help", no_argument, 0, 'h'}, {"version", no_argument, 0, 'V'}, {"variant", required_argument, 0, 1020},
         {"density", required_argument, 0, 2000}, {"tiles", required_argument, 0, 2001},
@@ -129,6 +140,7 @@ static int parse(cmdline *c, int argc, char **argv)
     c->max_iter = CFPO_DEFAULT_MAX_ITER;
     c->every = -1;
     c->box = 1.0;
+    c->flat_gain = 1e-5;
     opterr = 0;
     int ch;
     int64_t v;
@@ -161,6 +173,15 @@ static int parse(cmdline *c, int argc, char **argv)
         case 1001: cli_stop_option(prog, "target-min", optarg, &c->stop); break;
         case 1002: cli_stop_option(prog, "target-avg", optarg, &c->stop); break;
         case 1003: cli_stop_option(prog, "time-limit", optarg, &c->stop); break;
+        case 1004:
+            if (cli_parse_i64(optarg, 1, CFPO_FLAT_MAXW, &v) != 0)
+                cli_usage_error(prog, "--flat must be 1..%d iterations, not '%s'", CFPO_FLAT_MAXW, optarg);
+            c->flat = (int)v;
+            break;
+        case 1005:
+            if (cli_parse_double(optarg, 0.0, 1.0, &c->flat_gain) != 0 || !(c->flat_gain > 0.0))
+                cli_usage_error(prog, "--flat-gain must be in (0, 1], not '%s'", optarg);
+            break;
         case 'I': c->init = optarg; break;
         case 'P': c->ckpt = optarg; break;
         case 'E':
@@ -368,7 +389,9 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     cli_progress pr;
     cli_progress_init(&pr, c.quiet || !root);
     /* the one run loop (src/engine/run_loop.h) over the engine's table */
-    run_ctx ctx = {.pr = &pr, .trace = tracing ? tr.f : NULL, .t0 = t0};
+    cfpo_flat_rule flat;
+    if (cfpo_flat_init(&flat, c.flat, c.flat_gain) != 0) cli_fail(prog, "out of memory");
+    run_ctx ctx = {.pr = &pr, .trace = tracing ? tr.f : NULL, .t0 = t0, .flat = &flat};
     cfpo_options lo;
     memset(&lo, 0, sizeof lo);
     lo.max_iter = c.max_iter;
@@ -382,6 +405,8 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     const int rc = cfpo_run_loop(&R, c.ckpt, c.ckpt ? c.every : 0, &res, err, sizeof err);
     runsignal_restore();
     cli_progress_end(&pr);
+    cfpo_flat_free(&flat);
+    if (rc == 0 && res.stop == CFPO_STOP_CALLER && ctx.flat_hit) res.stop = CFPO_STOP_FLAT;
     if (rc != 0) {
         if (tracing) cli_atomic_abort(&tr);
         cli_fail(prog, "%s", err);
