@@ -418,7 +418,7 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     cfpo_result res;
     cfpo3_engine *best = NULL;
     double best_min = 0.0, best_avg = 0.0;
-    int best_round = 0, total_iter = 0;
+    int best_round = 0, total_iter = 0, rounds_done = 0;
     double *buf = NULL;
     for (int round = 0;; round++) {
         cfpo_flat_rule flat;
@@ -448,7 +448,8 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
             cfpo3_free(e);
         }
         e = best;
-        if (round == c.shake) break;
+        rounds_done = round;
+        if (round == c.shake || res.stop == CFPO_STOP_TIME) break; /* (the time limit is the whole run's) */
         /* the next round: the best set shaken, a fresh engine */
         if (!buf) buf = malloc(sizeof(double) * 3 * (size_t)n);
         if (comm_all(buf != NULL) == 0 || (comm_size() > 1 ? cfpo3_gather(best, buf) != 0 : 0))
@@ -495,7 +496,7 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     printf("BOX3D side=%.17g delta_min_box=%.9g packing_fraction=%.6f\n", c.box, d * c.box,
            M_PI / 6.0 * (double)n * d * d * d);
     if (comm_size() > 1) printf("%s", rline);
-    if (c.shake > 0) printf("SHAKE3D rounds=%d amp=%g best_round=%d\n", c.shake, c.shake_amp, best_round);
+    if (c.shake > 0) printf("SHAKE3D rounds=%d amp=%g best_round=%d\n", rounds_done, c.shake_amp, best_round);
     if (getenv("CFPO3D_WORK")) /* the solver's work over every rank, for measuring */
         printf("WORK3D cells=%lld tests=%lld cuts=%lld\n", (long long)wsum[0], (long long)wsum[1],
                (long long)wsum[2]);
