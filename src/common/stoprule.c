@@ -55,6 +55,7 @@ const char *cfpo_stop_name(int why)
     case CFPO_STOP_MAX_ITER: return "max-iter";
     case CFPO_STOP_CALLER: return "caller";
     case CFPO_STOP_SIGNAL: return "signal";
+    case CFPO_STOP_FLAT: return "flat";
     default: return "-";
     }
 }

@@ -19,7 +19,8 @@ enum {
     CFPO_STOP_TIME,       /* the first iteration boundary past the time limit */
     CFPO_STOP_MAX_ITER,   /* the iteration cap */
     CFPO_STOP_CALLER,     /* the progress callback asked to stop */
-    CFPO_STOP_SIGNAL      /* SIGTERM or SIGUSR1, a checkpoint written (run_loop.h) */
+    CFPO_STOP_SIGNAL,     /* SIGTERM or SIGUSR1, a checkpoint written (run_loop.h) */
+    CFPO_STOP_FLAT        /* the flatness rule held (stopflat.h; the 3-D command) */
 };
 
 void cfpo_stop_rules_init(cfpo_stop_rules *r);
@@ -57,8 +58,8 @@ int cfpo_stop_check(const cfpo_stop_rules *r, const cfpo_iter_stats *s, double e
  * set or one does not hold. */
 int cfpo_stop_targets_met(const cfpo_stop_rules *r, double dmin, double davg);
 
-/* "converged", "target", "time", "max-iter", "caller", "signal" ("-" for
- * none). */
+/* "converged", "target", "time", "max-iter", "caller", "signal", "flat"
+ * ("-" for none). */
 const char *cfpo_stop_name(int why);
 
 #endif

@@ -25,7 +25,9 @@
 #include "points3.h"
 #include "run_loop.h"
 #include "runsignal.h"
+#include "shake3.h"
 #include "solve3.h"
+#include "stopflat.h"
 #include "stoprule.h"
 
 static const char *prog = "cfpo3d"; /* set by cfpo3_cli_main */
@@ -37,6 +39,8 @@ typedef struct {
     FILE *trace;
     double t0;
     int started; /* the loop's first call is the set before any iteration */
+    cfpo_flat_rule *flat; /* --flat (may be off) */
+    int flat_hit;         /* the flatness rule asked to stop */
 } run_ctx;
 
 static int on_iteration(const cfpo_iter_stats *st, void *user)
@@ -44,6 +48,7 @@ static int on_iteration(const cfpo_iter_stats *st, void *user)
     run_ctx *x = user;
     if (!x->started) { /* the set before the first iteration: no line, no row */
         x->started = 1;
+        cfpo_flat_push(x->flat, st->delta_min, st->delta_avg); /* the window's first value */
         return 0;
     }
     cli_progress_line(x->pr, 0, "iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  solved %lld  %.2fs/iter  elapsed %.1fs",
@@ -52,7 +57,8 @@ static int on_iteration(const cfpo_iter_stats *st, void *user)
     if (x->trace)
         fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f %d\n", st->iteration, st->delta_min, st->delta_avg,
                 (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds, st->near);
-    return 0;
+    if (cfpo_flat_push(x->flat, st->delta_min, st->delta_avg)) x->flat_hit = 1;
+    return x->flat_hit;
 }
 #define MAX_OUT 8
 
@@ -71,6 +77,12 @@ static void usage(void)
            "      --target-min D   stop once delta_min >= D\n"
            "      --target-avg D   stop once delta_avg >= D (with --target-min: both)\n"
            "      --time-limit S   stop at the first iteration boundary past S seconds\n"
+           "      --flat W         stop once delta_min and delta_avg each rose by less than\n"
+           "                       --flat-gain G over the last W iterations (default: off)\n"
+           "      --flat-gain G    (default 1e-5)\n"
+           "      --shake K        after the run, K rounds: shake the best set so far by up to\n"
+           "                       --shake-amp A (default 0.15) Delta3 per axis and run again\n"
+           "                       (each round under the same stop rules); the best set is written\n"
            "      --init FILE      start from this n x 3 set (.npy, text, CSV, raw) instead of the jittered grid\n"
            "      --checkpoint F   write a checkpoint to F every --checkpoint-every K iterations and at the end\n"
            "      --checkpoint-every K  (default 10)\n"
@@ -99,6 +111,10 @@ typedef struct {
     int nout;
     const char *init, *ckpt, *resume, *trace;
     cfpo_stop_rules stop;
+    int flat;         /* --flat W (0: off) */
+    double flat_gain; /* --flat-gain G */
+    int shake;        /* --shake K: rounds after the first (0: none) */
+    double shake_amp; /* --shake-amp A */
 } cmdline;
 
 /* Options of the 2-D command that have no meaning on the 3-torus: refused
@@ -118,7 +134,9 @@ static int parse(cmdline *c, int argc, char **argv)
         {"checkpoint", required_argument, 0, 'P'}, {"checkpoint-every", required_argument, 0, 'E'},
         {"resume", required_argument, 0, 'R'}, {"no-relax", no_argument, 0, 1010},
         {"no-shift", no_argument, 0, 1011}, {"no-skip", no_argument, 0, 1012},
-        {"no-near", no_argument, 0, 1013},
+        {"no-near", no_argument, 0, 1013}, {"flat", required_argument, 0, 1004},
+        {"flat-gain", required_argument, 0, 1005}, {"shake", required_argument, 0, 1006},
+        {"shake-amp", required_argument, 0, 1007},
         {"dry-run", no_argument, 0, 'D'}, {"trace", required_argument, 0, 'r'}, {"quiet", no_argument, 0, 'q'},
         {"help", no_argument, 0, 'h'}, {"version", no_argument, 0, 'V'}, {"variant", required_argument, 0, 1020},
         {"density", required_argument, 0, 2000}, {"tiles", required_argument, 0, 2001},
@@ -129,6 +147,8 @@ static int parse(cmdline *c, int argc, char **argv)
     c->max_iter = CFPO_DEFAULT_MAX_ITER;
     c->every = -1;
     c->box = 1.0;
+    c->flat_gain = 1e-5;
+    c->shake_amp = 0.15;
     opterr = 0;
     int ch;
     int64_t v;
@@ -161,6 +181,24 @@ static int parse(cmdline *c, int argc, char **argv)
         case 1001: cli_stop_option(prog, "target-min", optarg, &c->stop); break;
         case 1002: cli_stop_option(prog, "target-avg", optarg, &c->stop); break;
         case 1003: cli_stop_option(prog, "time-limit", optarg, &c->stop); break;
+        case 1004:
+            if (cli_parse_i64(optarg, 1, CFPO_FLAT_MAXW, &v) != 0)
+                cli_usage_error(prog, "--flat must be 1..%d iterations, not '%s'", CFPO_FLAT_MAXW, optarg);
+            c->flat = (int)v;
+            break;
+        case 1005:
+            if (cli_parse_double(optarg, 0.0, 1.0, &c->flat_gain) != 0 || !(c->flat_gain > 0.0))
+                cli_usage_error(prog, "--flat-gain must be in (0, 1], not '%s'", optarg);
+            break;
+        case 1006:
+            if (cli_parse_i64(optarg, 0, 1000, &v) != 0)
+                cli_usage_error(prog, "--shake must be 0..1000 rounds, not '%s'", optarg);
+            c->shake = (int)v;
+            break;
+        case 1007:
+            if (cli_parse_double(optarg, 0.0, 1.0, &c->shake_amp) != 0 || !(c->shake_amp > 0.0))
+                cli_usage_error(prog, "--shake-amp must be in (0, 1], not '%s'", optarg);
+            break;
         case 'I': c->init = optarg; break;
         case 'P': c->ckpt = optarg; break;
         case 'E':
@@ -197,6 +235,8 @@ static int parse(cmdline *c, int argc, char **argv)
     if (!c->n_given && !c->init && !c->resume) cli_usage_error(prog, "-n is required");
     if (c->every > 0 && !c->ckpt) cli_usage_error(prog, "--checkpoint-every needs --checkpoint");
     if (c->every < 0) c->every = 10;
+    if (c->shake > 0 && (c->ckpt || c->resume))
+        cli_usage_error(prog, "--shake does not combine with --checkpoint or --resume");
     if (c->n_given && c->n < cfpo3_grid_min_n())
         cli_usage_error(prog, "n = %lld is too small: at least %lld points are needed in 3-D",
                         (long long)c->n, (long long)cfpo3_grid_min_n());
@@ -367,25 +407,61 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     const int tracing = c.trace && root;
     cli_progress pr;
     cli_progress_init(&pr, c.quiet || !root);
-    /* the one run loop (src/engine/run_loop.h) over the engine's table */
-    run_ctx ctx = {.pr = &pr, .trace = tracing ? tr.f : NULL, .t0 = t0};
+    /* the one run loop (src/engine/run_loop.h) over the engine's table;
+     * with --shake, again after each shake of the best set so far */
     cfpo_options lo;
     memset(&lo, 0, sizeof lo);
     lo.max_iter = c.max_iter;
     lo.stop = c.stop;
     lo.progress = on_iteration;
-    lo.user = &ctx;
     cfpo_run_engine R;
-    cfpo3_as_run(e, &lo, t0, &R);
-    if (c.ckpt) runsignal_install(); /* SIGTERM / SIGUSR1: a checkpoint, then exit 3 */
     cfpo_result res;
-    const int rc = cfpo_run_loop(&R, c.ckpt, c.ckpt ? c.every : 0, &res, err, sizeof err);
-    runsignal_restore();
-    cli_progress_end(&pr);
-    if (rc != 0) {
-        if (tracing) cli_atomic_abort(&tr);
-        cli_fail(prog, "%s", err);
+    cfpo3_engine *best = NULL;
+    double best_min = 0.0, best_avg = 0.0;
+    int best_round = 0, total_iter = 0, rounds_done = 0;
+    double *buf = NULL;
+    for (int round = 0;; round++) {
+        cfpo_flat_rule flat;
+        if (cfpo_flat_init(&flat, c.flat, c.flat_gain) != 0) cli_fail(prog, "out of memory");
+        run_ctx ctx = {.pr = &pr, .trace = tracing ? tr.f : NULL, .t0 = t0, .flat = &flat};
+        lo.user = &ctx;
+        cfpo3_as_run(e, &lo, t0, &R);
+        if (c.ckpt) runsignal_install(); /* SIGTERM / SIGUSR1: a checkpoint, then exit 3 */
+        const int rc = cfpo_run_loop(&R, c.ckpt, c.ckpt ? c.every : 0, &res, err, sizeof err);
+        runsignal_restore();
+        cfpo_flat_free(&flat);
+        if (rc == 0 && res.stop == CFPO_STOP_CALLER && ctx.flat_hit) res.stop = CFPO_STOP_FLAT;
+        if (rc != 0) {
+            cli_progress_end(&pr);
+            if (tracing) cli_atomic_abort(&tr);
+            cli_fail(prog, "%s", err);
+        }
+        if (c.shake == 0) break;
+        /* keep the best set: the larger delta_min, then delta_avg */
+        total_iter += cfpo3_iterations(e);
+        double dmin, davg;
+        cfpo3_measure(e, &dmin, &davg);
+        if (!best || dmin > best_min || (dmin == best_min && davg > best_avg)) {
+            if (best) cfpo3_free(best);
+            best = e, best_min = dmin, best_avg = davg, best_round = round;
+        } else {
+            cfpo3_free(e);
+        }
+        e = best;
+        rounds_done = round;
+        if (round == c.shake || res.stop == CFPO_STOP_TIME) break; /* (the time limit is the whole run's) */
+        /* the next round: the best set shaken, a fresh engine */
+        if (!buf) buf = malloc(sizeof(double) * 3 * (size_t)n);
+        if (comm_all(buf != NULL) == 0 || (comm_size() > 1 ? cfpo3_gather(best, buf) != 0 : 0))
+            cli_fail(prog, "out of memory for --shake");
+        if (comm_size() == 1) memcpy(buf, cfpo3_points(best), sizeof(double) * 3 * (size_t)n);
+        cfpo3_shake(buf, n, c.o.seed, round + 1, c.shake_amp);
+        e = cfpo3_create_given(buf, n, cfpo3_options_of(best), err, sizeof err);
+        if (!e) cli_fail(prog, "--shake: %s", err);
     }
+    free(buf);
+    if (c.shake > 0) cfpo3_as_run(e, &lo, t0, &R); /* the kept engine's, for the RANKS line */
+    cli_progress_end(&pr);
     const int stop = res.stop, converged = res.converged;
     if (stop == CFPO_STOP_SIGNAL) {
         if (tracing) cli_atomic_abort(&tr);
@@ -411,7 +487,8 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     cfpo3_measure(e, &dmin, &davg);
     const cfpo3_options *o = cfpo3_options_of(e);
     cli_summary s = {"cfpo3d", /* the 3-D engine, under either command */ o->relax ? "adaptive" : "adaptive-norelax", n, o->seed,
-                     o->threads > 0 ? o->threads : omp_get_max_threads(), comm_size(), cfpo3_iterations(e),
+                     o->threads > 0 ? o->threads : omp_get_max_threads(), comm_size(),
+                     c.shake > 0 ? total_iter : cfpo3_iterations(e),
                      cli_now() - t0, dmin, davg, stop == CFPO_STOP_CONVERGED ? 1 : converged ? 1 : 0,
                      cli_peak_rss(), cfpo_stop_name(stop)};
     cli_print_summary(stdout, &s);
@@ -419,6 +496,7 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     printf("BOX3D side=%.17g delta_min_box=%.9g packing_fraction=%.6f\n", c.box, d * c.box,
            M_PI / 6.0 * (double)n * d * d * d);
     if (comm_size() > 1) printf("%s", rline);
+    if (c.shake > 0) printf("SHAKE3D rounds=%d amp=%g best_round=%d\n", rounds_done, c.shake_amp, best_round);
     if (getenv("CFPO3D_WORK")) /* the solver's work over every rank, for measuring */
         printf("WORK3D cells=%lld tests=%lld cuts=%lld\n", (long long)wsum[0], (long long)wsum[1],
                (long long)wsum[2]);

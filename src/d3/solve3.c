@@ -243,35 +243,48 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
     double bestd = floor2 > 0.0 ? floor2 : -1.0;
     int found = 0;
     cfpo3_poly box;
+    /* the sites by axis (so that the per-site loops vectorise) and, for
+     * the cell being clipped, every site's bisector: normal, offset,
+     * squared length and the box's smallest n.c */
+    double ys[3][CFPO3_MAXM];
+    double an[3][CFPO3_MAXM], aoff[CFPO3_MAXM], add[CFPO3_MAXM], alow[CFPO3_MAXM];
     /* the bisectors that can reach the box, in site order: normal,
      * offset (+inf once used), squared length */
     double pn[3][CFPO3_MAXM], poff[CFPO3_MAXM], pdd[CFPO3_MAXM];
+    double score[CFPO3_MAXM];
+    for (int j = 0; j < m; j++) ys[0][j] = y[3 * j], ys[1][j] = y[3 * j + 1], ys[2][j] = y[3 * j + 2];
     cfpo3_poly_box(&box, lo, hi);
     for (int i = 0; i < cells; i++) {
         const double *yi = y + 3 * i;
         double far = far_cached(&box, yi, 1, NULL);
         if (far <= bestd) continue;
         const double far4 = 4.0 * far;
-        /* One pass over the other sites: the kill test (one bisector puts
-         * the whole box on y_j's side: the cell misses S), and the planes
-         * whose bisector can reach the box. */
+        const double yi0 = yi[0], yi1 = yi[1], yi2 = yi[2];
+        const double lo0 = lo[0], lo1 = lo[1], lo2 = lo[2], hi0 = hi[0], hi1 = hi[1], hi2 = hi[2];
+        /* every site's bisector at once (element-wise: the same bits in
+         * any vector width) */
+        for (int j = 0; j < m; j++) {
+            const double n0 = ys[0][j] - yi0, n1 = ys[1][j] - yi1, n2 = ys[2][j] - yi2;
+            const double dd = n0 * n0 + n1 * n1 + n2 * n2;
+            an[0][j] = n0, an[1][j] = n1, an[2][j] = n2;
+            add[j] = dd;
+            aoff[j] = n0 * yi0 + n1 * yi1 + n2 * yi2 + 0.5 * dd;
+            alow[j] = n0 * (n0 > 0.0 ? lo0 : hi0) + n1 * (n1 > 0.0 ? lo1 : hi1) + n2 * (n2 > 0.0 ? lo2 : hi2);
+        }
+        /* The kill test (one bisector puts the whole box on y_j's side:
+         * the cell misses S), and the planes whose bisector can reach the
+         * box. A bisector with |y_j - y_i| >= 2 far lies beyond the box's
+         * farthest corner from y_i, so it can neither cut nor kill. */
         int killed = 0, ns = 0;
         for (int j = 0; j < m; j++) {
-            if (j == i) continue;
-            const double *yj = y + 3 * j;
-            const double n0 = yj[0] - yi[0], n1 = yj[1] - yi[1], n2 = yj[2] - yi[2];
-            const double dd = n0 * n0 + n1 * n1 + n2 * n2;
-            const double off = n0 * yi[0] + n1 * yi[1] + n2 * yi[2] + 0.5 * dd;
-            /* the box's smallest n.c */
-            const double low = n0 * (n0 > 0.0 ? lo[0] : hi[0]) + n1 * (n1 > 0.0 ? lo[1] : hi[1]) +
-                               n2 * (n2 > 0.0 ? lo[2] : hi[2]);
-            if (low - off > 1e-12 * (dd + fabs(off))) {
+            if (j == i || !(add[j] < far4)) continue;
+            const double dd = add[j], off = aoff[j];
+            if (alow[j] - off > 1e-12 * (dd + fabs(off))) {
                 killed = 1;
                 break;
             }
-            if (dd >= far4) continue;
             const int sl = ns++;
-            pn[0][sl] = n0, pn[1][sl] = n1, pn[2][sl] = n2;
+            pn[0][sl] = an[0][j], pn[1][sl] = an[1][j], pn[2][sl] = an[2][j];
             poff[sl] = off;
             pdd[sl] = dd;
         }
@@ -296,13 +309,21 @@ double cfpo3_near_solve(const double *y, int m, int cells, const double lo[3], c
             /* among the planes not used yet, the one v lies deepest beyond
              * (the largest (n.v - off)^2 / |n|^2, the first in site order
              * among equals); a used plane's offset is +inf */
-            int k = -1;
-            double kb = -1.0;
+            /* each plane's depth score (element-wise, so the same bits
+             * in any vector width), then the first plane of the largest */
             for (int sl = 0; sl < ns; sl++) {
-                if (!(pdd[sl] < f4)) continue;
                 const double dv = pn[0][sl] * vx + pn[1][sl] * vy + pn[2][sl] * vz - poff[sl];
-                if (dv > 0.0 && dv * dv > kb * pdd[sl]) kb = dv * dv / pdd[sl], k = sl;
+                score[sl] = (dv > 0.0 && pdd[sl] < f4) ? dv * dv / pdd[sl] : -1.0;
             }
+            double kb = -0.5;
+            for (int sl = 0; sl < ns; sl++) kb = score[sl] > kb ? score[sl] : kb;
+            int k = -1;
+            if (kb > -0.5)
+                for (int sl = 0; sl < ns; sl++)
+                    if (score[sl] == kb) {
+                        k = sl;
+                        break;
+                    }
             if (count) count->tests++;
             if (k < 0) break; /* no plane cuts v off: v is the cell's farthest point */
             const double koff = poff[k];

@@ -35,6 +35,15 @@ for pt in "2 1" "3 1" "4 1" "2 2" "27 1"; do
   fi
 done
 
+# --shake: the gathered, shaken set and the fresh engine of each round
+# give one process's bytes on 2 ranks
+"$CFPO" -q --dim 3 -n $N --max-iter 3 --shake 1 -t 1 -o sref.npy >/dev/null || bad "--shake reference failed"
+if run 2 --dim 3 -n $N --max-iter 3 --shake 1 -t 1 -o sout.npy >run.out 2>run.err; then
+  cmp -s sout.npy sref.npy && ok || bad "--shake: 2 ranks differ from one process"
+else
+  bad "--shake on 2 ranks failed: $(head -3 run.err)"
+fi
+
 # --init from a set with a void (1,000 points in half the box, 100 in the
 # other half): nearest neighbours beyond a block, so the measure falls back
 # to the whole set on every rank
