@@ -10,10 +10,14 @@
  *    above the grid's largest value plus the grid's resolution bound (the
  *    solve cannot beat the true maximum); how far below it falls is
  *    printed (the straight lines stand in for Apollonius circles);
+ *  - the near phase's solve (the polygons of the 2 nearest only), uniform
+ *    density: at least the enumeration's largest value over the grid
+ *    points whose nearest neighbour is one of those two (the union of
+ *    their Voronoi cells in the box), and never above the full solve's;
  *  - the routes: for random sets of up to 40 neighbours, the plain route
  *    and the AVX-512 route (where the CPU has it) give the same bits, with
  *    the density's global bound of q and with the tight bound of the box
- *    (dens_qbound.h), at several floors. */
+ *    (dens_qbound.h), at several floors, searching 10 polygons or 2. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -62,13 +66,13 @@ static void trials(const char *spec, int exact, int count)
         for (int j = 0; j < k; j++) yr[j] = cfpo_dens_local_q(&d, ox, oy, yx[j], yy[j]);
         cfpo_square S = {-s, -s, s, s};
         double cx, cy, f;
-        if (!cfpo_dens_solve(yx, yy, yr, k, S, &d, sqrt(d.rho_max), ox, oy, -1, &cx, &cy, &f, scratch)) continue;
+        if (!cfpo_dens_solve(yx, yy, yr, k, DENS_CELLS, S, &d, sqrt(d.rho_max), ox, oy, -1, &cx, &cy, &f, scratch)) continue;
         n++;
         /* a floor below the best gives the same vertex; at or above it, none */
         const double floors[4] = {0, 0.5 * f, f * (1 - 1e-9), f};
         for (int q = 0; q < 4; q++) {
             double fx, fy, ff;
-            const int got = cfpo_dens_solve(yx, yy, yr, k, S, &d, sqrt(d.rho_max), ox, oy, floors[q], &fx, &fy, &ff, scratch);
+            const int got = cfpo_dens_solve(yx, yy, yr, k, DENS_CELLS, S, &d, sqrt(d.rho_max), ox, oy, floors[q], &fx, &fy, &ff, scratch);
             if (q < 3 ? !(got && fx == cx && fy == cy && ff == f) : got) bad_floor++;
         }
         const double fv = cfpo_dens_value(yx, yy, yr, k, cfpo_dens_local_q(&d, ox, oy, cx, cy), cx, cy);
@@ -108,6 +112,62 @@ static void trials(const char *spec, int exact, int count)
     cfpo_density_free(&d);
 }
 
+/* The near phase's solve against enumeration (see the header). */
+static void near_trials(int count)
+{
+    cfpo_density d;
+    char err[256];
+    if (cfpo_density_load("cos:a=0,res=16", &d, err, sizeof err) != 0) { CHECK(0, "flat: %s", err); return; }
+    unsigned long long seed = 4242;
+    const double s = 0.05;
+    double yx[10], yy[10], yr[10], dd[10], scratch[200];
+    int n = 0, below = 0, above_full = 0, strict = 0;
+    for (int t = 0; t < count; t++) {
+        const double ox = urand(&seed), oy = urand(&seed);
+        const int k = 3 + (int)(urand(&seed) * 8);
+        for (int j = 0; j < k; j++) {
+            const double x = (2 * urand(&seed) - 1) * 2 * s, y = (2 * urand(&seed) - 1) * 2 * s;
+            int at = j;
+            const double dj = x * x + y * y;
+            while (at > 0 && dd[at - 1] > dj) {
+                dd[at] = dd[at - 1]; yx[at] = yx[at - 1]; yy[at] = yy[at - 1];
+                at--;
+            }
+            dd[at] = dj; yx[at] = x; yy[at] = y;
+        }
+        for (int j = 0; j < k; j++) yr[j] = cfpo_dens_local_q(&d, ox, oy, yx[j], yy[j]);
+        const cfpo_square S = {-s, -s, s, s};
+        double cx, cy, f, fx, fy, ff;
+        const int got = cfpo_dens_solve(yx, yy, yr, k, 2, S, &d, sqrt(d.rho_max), ox, oy, -1, &cx, &cy, &f, scratch);
+        const int gfull = cfpo_dens_solve(yx, yy, yr, k, DENS_CELLS, S, &d, sqrt(d.rho_max), ox, oy, -1, &fx, &fy, &ff, scratch);
+        double best = -1;
+        for (int iy = 0; iy <= G; iy++)
+            for (int ix = 0; ix <= G; ix++) {
+                const double px = S.x0 + (S.x1 - S.x0) * ix / G, py = S.y0 + (S.y1 - S.y0) * iy / G;
+                int nearest = 0;
+                double dn = INFINITY;
+                for (int j = 0; j < k; j++) {
+                    const double e = (px - yx[j]) * (px - yx[j]) + (py - yy[j]) * (py - yy[j]);
+                    if (e < dn) { dn = e; nearest = j; }
+                }
+                if (nearest > 1) continue;
+                const double v = cfpo_dens_value(yx, yy, yr, k, cfpo_dens_local_q(&d, ox, oy, px, py), px, py);
+                if (v > best) best = v;
+            }
+        if (best < 0) continue; /* the two cells miss the box */
+        n++;
+        if (!got || !(f >= best * (1 - 1e-12))) below++;
+        if (got && gfull && f > ff) above_full++;
+        if (got && gfull && f < ff * (1 - 1e-9)) strict++;
+    }
+    CHECK(n > count / 2, "near: only %d of %d trials had a grid point in the two cells", n, count);
+    CHECK(below == 0, "near: %d of %d solves below the enumeration's largest value over the two nearest's cells", below, n);
+    CHECK(above_full == 0, "near: %d solves above the full solve's value", above_full);
+    CHECK(strict > 0, "near: the two polygons never missed the full solve's winner in %d trials (the cut is not exercised)", n);
+    printf("near (2 polygons), flat: %d solves, %d below the full solve\n", n, strict);
+    cfpo_density_free(&d);
+}
+
 /* The routes and the bounds against each other (see the header). */
 static void routes(const char *spec, int count)
 {
@@ -141,14 +201,15 @@ static void routes(const char *spec, int count)
         const double qlo = cfpo_dens_qbound_box(&qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
         const double qhi[2] = {sqrt(d.rho_max), qlo};
         tight += qlo < qhi[0];
+        const int m = (t & 1) ? (k < 2 ? k : 2) : (k < DENS_CELLS ? k : DENS_CELLS);
         double ref_x = 0, ref_y = 0, ref_f = 0, floor_f = -1;
         for (int q = 0; q < 3; q++) {
             int ref = -1;
             for (int b = 0; b < 2; b++)
                 for (int r = 0; r < 1 + simd; r++) {
                     double cx = 0.5 * (S.x0 + S.x1), cy = 0.5 * (S.y0 + S.y1), f;
-                    const int got = r ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
-                                      : cfpo_dens_solve_plain(yx, yy, yr, w, k, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch);
+                    const int got = r ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
+                                      : cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch);
                     if (ref < 0) {
                         ref = got;
                         ref_x = cx; ref_y = cy; ref_f = f;
@@ -173,6 +234,7 @@ int main(void)
     trials("cos:a=0.9,res=64", 0, 300);
     trials("ramp:contrast=16,res=64", 0, 300);
     trials("balzer:res=64", 0, 300);
+    near_trials(300);
     routes("cos:a=0.9,res=256", 400);
     routes("ramp:contrast=16,res=256", 400);
     routes("balzer:res=256", 400);

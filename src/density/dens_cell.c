@@ -166,9 +166,15 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         b->oom = 1;
         return 0;
     }
-    double qlo = INFINITY;
-    for (int j = 0; j < m; j++)
+    double qlo = INFINITY, qbl = 0; /* the block's smallest and largest q */
+    for (int j = 0; j < m; j++) {
         if (b->br[j] < qlo) qlo = b->br[j];
+        if (b->br[j] > qbl) qbl = b->br[j];
+    }
+    /* the near phase's solve only where q is nearly flat over the block
+     * (policy.h): across a steep change the nearest two polygons miss the
+     * spots a point should reach */
+    const int cells0 = qbl <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT ? E->cells : DENS_CELLS;
     const double h = bk->h, gain = E->o.tol * E->D;
     const scan_limits lim = {wrap, qlo, h, lo, L};
     int64_t moves = 0;
@@ -234,10 +240,13 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (S.x1 > hi) S.x1 = hi;
         if (S.y1 > hi) S.y1 = hi;
         double cxp, cyp, fc;
+        int cells = cells0; /* the near phase's polygons first; all of them when those give no move */
         const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
     solve:
-        if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX))
+        if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, cells, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX)) {
+            if (cells < DENS_CELLS) { cells = DENS_CELLS; goto solve; }
             continue;
+        }
         /* a move must gain more than tol local spacings in the measure
          * (sqrt(f) / Delta), as the uniform path's must gain tol L; the
          * over-relaxed spot a + w (c - a) first (policy.h), where it
@@ -257,7 +266,10 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
             }
         }
         if (cc < 0) {
-            if (!(sqrt(fc) > sqrt(oldf) + gain && fc > thr)) continue;
+            if (!(sqrt(fc) > sqrt(oldf) + gain && fc > thr)) {
+                if (cells < DENS_CELLS) { cells = DENS_CELLS; goto solve; }
+                continue;
+            }
             rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
             if (!(rc > 0)) continue;
             if (!spot_ok(E, b, bk, p, &lim, thr, oldf, ox, oy, cxp, cyp, rc, cy * g + cx, &cc, &x, &y, &viol)) {

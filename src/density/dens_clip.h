@@ -157,12 +157,12 @@ static inline double dens_corners(cfpo_square S, double ax, double ay, double c[
 
 /* The plain and AVX-512 routes (call the latter only where
  * cfpo_solver_avx512_usable() says 1): cfpo_dens_solve's arguments, k > 0,
- * w[j] = sqrt(yr[j]) given; scratch holds 8 (k + 8) doubles, w among them
+ * w[j] = sqrt(yr[j]) given, the polygons of the first m <= k neighbours; scratch holds 8 (k + 8) doubles, w among them
  * at 4 (k + 8). */
-int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k,
+int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
                           cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                           double *cx, double *cy, double *f, double *scratch);
-int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k,
+int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
                            cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                            double *cx, double *cy, double *f, double *scratch);
 

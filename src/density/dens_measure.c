@@ -24,8 +24,9 @@
 static inline double wrapd(double d) { return d - rint(d); }
 
 int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, size_t k,
-                       double D, double *mm)
+                       double D, double *mm, int nthreads)
 {
+    const int nt = nthreads > 0 ? nthreads : omp_get_max_threads();
     cfpo_dens_qbound own;
     if (!qlow) {
         if (cfpo_dens_qbound_build_min(&own, d) != 0) return -1;
@@ -53,7 +54,7 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
     for (int64_t c = 0; c < g * g; c++) fill[c] = start[c];
     for (size_t i = 0; i < n; i++) idx[fill[cell[i]]++] = i;
     const double lo = sqrt(d->rho_min);
-#pragma omp parallel for schedule(dynamic, 1024)
+#pragma omp parallel for num_threads(nt) schedule(dynamic, 1024)
     for (size_t i = 0; i < k; i++) {
         const double x = xy[2 * i], y = xy[2 * i + 1], ri = rho[i];
         if (!(ri > 0)) { mm[i] = 0; continue; }
@@ -100,14 +101,14 @@ done:
 
 int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg)
 {
-    return cfpo_dens_nn_q(d, NULL, xy, n, m, delta_min, delta_avg);
+    return cfpo_dens_nn_q(d, NULL, xy, n, m, delta_min, delta_avg, 0);
 }
 
 int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, double *m,
-                   double *delta_min, double *delta_avg)
+                   double *delta_min, double *delta_avg, int nthreads)
 {
     double *mm = m ? m : malloc(n * sizeof *mm);
-    if (!mm || cfpo_dens_nn_first(d, qlow, xy, n, n, cfpo_delta_bound((double)n), mm) != 0) {
+    if (!mm || cfpo_dens_nn_first(d, qlow, xy, n, n, cfpo_delta_bound((double)n), mm, nthreads) != 0) {
         if (!m) free(mm);
         return -1;
     }

@@ -23,18 +23,20 @@
  * does not depend on the number of threads. */
 int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg);
 /* The same with qlow, d's pyramid of minima (cfpo_dens_qbound_build_min),
- * built once by a caller that measures many times (NULL: built here). */
+ * built once by a caller that measures many times (NULL: built here), on
+ * nthreads threads (0: OpenMP's default; an engine passes its own count,
+ * so that -t 1 measures on one thread). */
 int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, double *m,
-                   double *delta_min, double *delta_avg);
+                   double *delta_min, double *delta_avg, int nthreads);
 
 /* Pieces of it, for a rank that holds part of the set (dens_engine.c):
  * the smallest measure of each of the first k of the n points xy against
  * all n (Delta = D, that of the whole set) into m, with qlow the pyramid
- * of minima of d (cfpo_dens_qbound_build_min; NULL: built here); 0, or
- * -1 when out of memory. Then delta_min and delta_avg of the n measures m, summed in
- * their order. */
+ * of minima of d (cfpo_dens_qbound_build_min; NULL: built here), on
+ * nthreads threads (0: OpenMP's default); 0, or -1 when out of memory.
+ * Then delta_min and delta_avg of the n measures m, summed in their order. */
 int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, size_t k,
-                       double D, double *m);
+                       double D, double *m, int nthreads);
 void cfpo_dens_nn_sum(const double *m, size_t n, double *delta_min, double *delta_avg);
 
 #endif

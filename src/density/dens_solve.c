@@ -34,7 +34,7 @@ static int use_avx512(void)
     return u;
 }
 
-int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, cfpo_square S,
+int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, int cells, cfpo_square S,
                     const cfpo_density *d, double qhi, double ox, double oy, double floor_f, double *cx, double *cy,
                     double *f, double *scratch)
 {
@@ -47,6 +47,7 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
     }
     double *w = scratch + 4 * ((size_t)k + 8); /* rho_j^(1/4), once */
     for (int j = 0; j < k; j++) w[j] = sqrt(yr[j]);
-    return use_avx512() ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch)
-                        : cfpo_dens_solve_plain(yx, yy, yr, w, k, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+    const int m = cells < k ? cells : k;
+    return use_avx512() ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch)
+                        : cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
 }

@@ -8,8 +8,8 @@
  * straight line through the point that divides y_i y_j in the ratio
  * q_j^(1/2) : q_i^(1/2), perpendicular to y_i y_j (exact when rho_i =
  * rho_j, where it is today's bisector), clips S by those lines into one
- * polygon for each of the 10 nearest neighbours (given nearest first) as
- * LocalCFPO does, and evaluates f exactly at every vertex (q(c) from the
+ * polygon for each of the `cells` nearest neighbours (given nearest first:
+ * DENS_CELLS = 10 as LocalCFPO does, or the near phase's 2, policy.h), and evaluates f exactly at every vertex (q(c) from the
  * pixel, the min over all neighbours). The best vertex is
  * a candidate only: the engine accepts it when f rises against every point
  * that can matter (dens_engine.c), which is what the guarantee rests on.
@@ -27,7 +27,8 @@
 static inline size_t cfpo_dens_scratch(int k) { return 8 * ((size_t)k + 8) + 16; }
 
 /* Neighbours (yx, yy) with q = sqrt(rho) in yr (k of them, in a local frame whose
- * origin is (ox, oy) on the torus), the box S (local frame). Returns the
+ * origin is (ox, oy) on the torus), nearest first, the box S (local frame);
+ * the polygons of the first min(cells, k) neighbours are searched. Returns the
  * best vertex's f into *f and its position into (cx, cy) when it is above
  * floor_f, or 0 when no vertex on a non-zero pixel is (then *f = -1). The
  * engine passes the moving point's own value (a candidate must beat it):
@@ -37,7 +38,7 @@ static inline size_t cfpo_dens_scratch(int k) { return 8 * ((size_t)k + 8) + 16;
  * comparisons). qhi bounds q over every pixel a spot of S can read
  * (dens_qbound.h; sqrt(rho_max) always does): the prunings use it, and
  * any valid bound gives the same result. */
-int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, cfpo_square S,
+int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, int cells, cfpo_square S,
                     const cfpo_density *d, double qhi, double ox, double oy, double floor_f, double *cx, double *cy,
                     double *f, double *scratch);
 

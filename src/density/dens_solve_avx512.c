@@ -36,7 +36,7 @@ T512 static double geo8(double px, double py, const double *yx, const double *yy
     return geo;
 }
 
-T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k,
+T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
                                 cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy,
                                 double floor_f, double *cx, double *cy, double *f, double *scratch)
 {
@@ -46,7 +46,7 @@ T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double
     const __m512d SY = _mm512_set_pd(0, 0, 0, 0, S.y1, S.y1, S.y0, S.y0);
     double best = floor_f, spx[24], spy[24];
     int found = 0;
-    for (int i = 0; i < (k < DENS_CELLS ? k : DENS_CELLS); i++) {
+    for (int i = 0; i < m; i++) {
         const double ax = yx[i], ay = yy[i], wi = w[i];
         double corner[4][2];
         double far2 = dens_corners(S, ax, ay, corner);
@@ -94,11 +94,11 @@ T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double
 
 #else
 
-int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k,
+int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
                            cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                            double *cx, double *cy, double *f, double *scratch)
 {
-    return cfpo_dens_solve_plain(yx, yy, yr, w, k, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+    return cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
 }
 
 #endif

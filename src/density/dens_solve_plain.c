@@ -4,7 +4,7 @@
 
 #include "dens_clip.h"
 
-int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k,
+int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
                           cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                           double *cx, double *cy, double *f, double *scratch)
 {
@@ -13,7 +13,7 @@ int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, 
     double best = floor_f; /* only a vertex above it counts: polygons and
                               evaluations that cannot beat it stop early */
     int found = 0;
-    for (int i = 0; i < (k < DENS_CELLS ? k : DENS_CELLS); i++) {
+    for (int i = 0; i < m; i++) {
         const double ax = yx[i], ay = yy[i], wi = w[i];
         double corner[4][2];
         double far2 = dens_corners(S, ax, ay, corner);
