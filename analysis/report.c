@@ -338,13 +338,13 @@ int an_print_imprint(FILE *f, const an_report *r)
 {
     const an_rings *g = r->rings;
     const double level = an_spike_noise_level(r->K);
-    if (!(g->spike_ratio > level) || g->spike_ring <= 0) return 0;
+    if (!(g->pattern_ratio > level) || g->pattern_ring <= 0) return 0;
     const an_lattice *L = r->lattice;
-    const int on_grid = L && L->count && L->kx == g->spike_kx && L->ky == g->spike_ky;
-    fprintf(f, "imprint: the largest P(k) is %.1f times its ring's mean at k (%d, %d), above the noise level %.1f "
-               "of these %lld frequencies: the set carries a periodic pattern there%s\n",
-            g->spike_ratio, g->spike_kx, g->spike_ky, level, (long long)(2 * (int64_t)r->K + 1) * (2 * r->K + 1),
-            on_grid ? ", a frequency of the grid (lattice_ratio)" : "");
+    const int on_grid = L && L->count && L->kx == g->pattern_kx && L->ky == g->pattern_ky;
+    fprintf(f, "imprint: P(k) at k (%d, %d) is %.1f times its ring's mean and %.1f times its neighbours', above the noise "
+               "levels %.1f and %.1f of these %lld frequencies: the set carries a periodic pattern there%s\n",
+            g->pattern_kx, g->pattern_ky, g->pattern_ratio, g->pattern_local, level, an_pattern_level(level),
+            (long long)(2 * (int64_t)r->K + 1) * (2 * r->K + 1), on_grid ? ", a frequency of the grid (lattice_ratio)" : "");
     fflush(f);
     return 1;
 }

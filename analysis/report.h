@@ -55,8 +55,10 @@ int an_write_json(const char *path, const an_report *r, char *err, size_t errlen
 int an_write_plot(const char *path, const an_report *r, char *err, size_t errlen);
 void an_print_summary(FILE *f, const an_report *r);
 /* One plain line when the spike ratio of the (averaged) spectrum is above
- * the noise level an_spike_noise_level(K): where it sits, and whether that
- * is a frequency of cfpo's grid (the lattice ratio's). Nothing otherwise.
+ * the noise level an_spike_noise_level(K) at a k that also stands above
+ * its neighbourhood (the rings' pattern, rings.h): where it sits, and
+ * whether that is a frequency of cfpo's grid (the lattice ratio's).
+ * Nothing otherwise.
  * Returns 1 when it printed the line. */
 int an_print_imprint(FILE *f, const an_report *r);
 

@@ -86,6 +86,55 @@ static void spike(const double *P, int K, an_rings *r)
         }
 }
 
+/* The mean of P over the box of half side AN_PATTERN_BOX around k (k
+ * itself left out), the frequencies inside [-K, K]^2. */
+static double local_mean(const double *P, int K, int kx, int ky)
+{
+    double s = 0;
+    int c = 0;
+    for (int dy = -AN_PATTERN_BOX; dy <= AN_PATTERN_BOX; dy++)
+        for (int dx = -AN_PATTERN_BOX; dx <= AN_PATTERN_BOX; dx++) {
+            const int x = kx + dx, y = ky + dy;
+            if ((dx == 0 && dy == 0) || x < -K || x > K || y < -K || y > K) continue;
+            s += P[an_pidx(K, x, y)];
+            c++;
+        }
+    return c ? s / c : NAN;
+}
+
+double an_pattern_level(double level)
+{
+    const double m = (2 * AN_PATTERN_BOX + 1) * (2 * AN_PATTERN_BOX + 1) - 1;
+    return m * (exp(level / m) - 1);
+}
+
+/* The pattern (rings.h): the k of ring ratio above the noise level, in
+ * (ky, kx) order, whose P also passes an_pattern_level over its
+ * neighbourhood; the largest ring ratio among them. */
+static void pattern(const double *P, int K, an_rings *r)
+{
+    r->pattern_ratio = r->pattern_local = NAN;
+    r->pattern_ring = 0;
+    if (!(r->spike_ratio > 0)) return;
+    const double level = an_spike_noise_level(K), local = an_pattern_level(level);
+    if (!(r->spike_ratio > level)) return;
+    for (int ky = 0; ky <= K; ky++)
+        for (int kx = -K; kx <= K; kx++) {
+            if (!in_half(kx, ky)) continue;
+            int i = an_ring_of((int64_t)kx * kx + (int64_t)ky * ky);
+            if (i > K || r->count[i] < AN_SPIKE_MIN_COUNT || !(r->mean[i] > 0)) continue;
+            const double p = P[an_pidx(K, kx, ky)], q = p / r->mean[i];
+            if (!(q > level) || q <= r->pattern_ratio) continue;
+            const double l = p / local_mean(P, K, kx, ky);
+            if (!(l > local)) continue;
+            r->pattern_ratio = q;
+            r->pattern_local = l;
+            r->pattern_kx = kx;
+            r->pattern_ky = ky;
+            r->pattern_ring = i;
+        }
+}
+
 int an_lattice_grid(int64_t asked, size_t n)
 {
     if (asked >= 0) return (int)asked;
@@ -149,6 +198,7 @@ int an_rings_compute(const double *P, int K, an_rings *r)
     anisotropy(P, K, r, dev);
     free(dev);
     spike(P, K, r);
+    pattern(P, K, r);
     r->aniso_db[0] = NAN;
     r->peak_ring = 1;
     for (int i = 1; i <= K; i++)

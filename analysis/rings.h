@@ -35,6 +35,17 @@ typedef struct {
      * has mean 0. */
     double spike_ratio, spike_P, spike_mean;
     int spike_kx, spike_ky, spike_ring;
+    /* The pattern: the largest P(k) / ring mean above the noise level
+     * an_spike_noise_level(K) among the k whose P also stands that far
+     * above the mean of its neighbourhood, the (2 AN_PATTERN_BOX + 1)^2 - 1
+     * frequencies around it (an_pattern_level): a periodic pattern is a
+     * peak above every side; a ring whose P steps within it (the edge of
+     * a band, where P changes by 100x between neighbouring radii) has
+     * frequencies far above the ring's mean but not above their outer
+     * neighbours. pattern_ratio NAN (pattern_ring 0) when no k passes
+     * both; pattern_local is P(k) over that neighbourhood's mean. */
+    double pattern_ratio, pattern_local;
+    int pattern_kx, pattern_ky, pattern_ring;
     /* The highest ring mean. */
     double peak_mean;
     int peak_ring;
@@ -65,6 +76,14 @@ int an_lattice_grid(int64_t asked, size_t n);
  * 1.3 (Gumbel); it passes the level with probability about 1 - exp(-e^-4)
  * = 1.8%. A spike above it is a pattern, not noise. */
 double an_spike_noise_level(int K);
+/* The neighbourhood of the pattern test: the box of half side
+ * AN_PATTERN_BOX around k (48 frequencies), and the level P(k) must reach
+ * over their mean: the t at which such a ratio of noise (Exp(1) over the
+ * mean of 48 Exp(1)) passes with the same probability as the ring ratio
+ * passes `level`: (1 + t / 48)^-48 = e^-level, t = 48 (e^(level / 48) - 1)
+ * (24.7 for the level 19.9 of K = 2048). */
+#define AN_PATTERN_BOX 3
+double an_pattern_level(double level);
 int an_lattice_period(int g);
 
 /* Ring index of a frequency with |k|^2 = r2. */

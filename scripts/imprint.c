@@ -7,11 +7,15 @@
  * white noise gives ratios with an exponential spread (P / mean ~ Exp(1)).
  *
  * Build: cc -O2 -fopenmp -o imprint scripts/imprint.c -lm
- * Use:   imprint FILE.npy G [3]   (3: also the colours' period
+ * Use:   imprint FILE.npy G [3|4]   (3: also the colours' period
  *        (0, g/3), (0, 2g/3) and the x ones, and the cells' diagonals
- *        (g, g), (-g, g) over the ring of |k| = g sqrt 2; G: cfpo's cells
- *        a side, its SUMMARY's cells_per_side)
- * Prints one line: n g and, per vector, P, ring mean and their ratio. */
+ *        (g, g), (-g, g) over the ring of |k| = g sqrt 2; 4: every
+ *        vector (mx, my) g / 3 with |mx|, |my| <= 4 of the half plane,
+ *        40 of them, the grid's and its colours' whole print up to the
+ *        fourth harmonic; G: cfpo's cells a side, its SUMMARY's
+ *        cells_per_side)
+ * Prints one line: n g and, per vector, P, ring mean and their ratio
+ * (mode 4: the largest ratio first, then every vector's, largest first). */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -83,6 +87,43 @@ static double ring_mean(const double *p, size_t n, int r)
     return m ? s / m : NAN;
 }
 
+/* Mode 4: P over its ring's mean at every (mx, my) g / 3, |mx|, |my| <= 4,
+ * my > 0 or (my = 0, mx > 0); each ring computed once per radius. */
+static int all_vectors(double *p, size_t n, int g)
+{
+    int vx[40], vy[40], nv = 0, rad[40];
+    double ratio[40];
+    for (int my = 0; my <= 4; my++)
+        for (int mx = -4; mx <= 4; mx++) {
+            if (my == 0 && mx <= 0) continue;
+            vx[nv] = (int)lround(mx * g / 3.0), vy[nv] = (int)lround(my * g / 3.0);
+            rad[nv] = (int)lround(sqrt((double)vx[nv] * vx[nv] + (double)vy[nv] * vy[nv]));
+            nv++;
+        }
+    double rm[40];
+    for (int v = 0; v < nv; v++) {
+        rm[v] = -1;
+        for (int q = 0; q < v; q++)
+            if (rad[q] == rad[v]) rm[v] = rm[q];
+        if (rm[v] < 0) rm[v] = ring_mean(p, n, rad[v]);
+        ratio[v] = power(p, n, vx[v], vy[v]) / rm[v];
+    }
+    int ord[40];
+    for (int v = 0; v < nv; v++) ord[v] = v;
+    for (int a = 1; a < nv; a++)
+        for (int b = a; b > 0 && ratio[ord[b]] > ratio[ord[b - 1]]; b--) {
+            const int t = ord[b];
+            ord[b] = ord[b - 1], ord[b - 1] = t;
+        }
+    printf("n=%zu g=%d largest=%.1f at (%d,%d)g/3 all:", n, g, ratio[ord[0]], (int)lround(3.0 * vx[ord[0]] / g),
+           (int)lround(3.0 * vy[ord[0]] / g));
+    for (int v = 0; v < nv; v++)
+        printf(" (%d,%d)=%.1f", (int)lround(3.0 * vx[ord[v]] / g), (int)lround(3.0 * vy[ord[v]] / g), ratio[ord[v]]);
+    printf("\n");
+    free(p);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 3) {
@@ -95,7 +136,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "imprint: cannot read %s (a float64 or float32 .npy of shape (n, 2))\n", argv[1]);
         return 1;
     }
-    const int g = atoi(argv[2]), g4 = (int)lround(4.0 * g / 3.0);
+    const int g = atoi(argv[2]);
+    if (argc > 3 && atoi(argv[3]) == 4) return all_vectors(p, n, g);
+    const int g4 = (int)lround(4.0 * g / 3.0);
     const int vec[4][2] = {{0, g}, {g, 0}, {0, g4}, {g4, 0}};
     const char *name[4] = {"0,g", "g,0", "0,4g/3", "4g/3,0"};
     const double mg = ring_mean(p, n, g), m4 = ring_mean(p, n, g4);

@@ -7,7 +7,12 @@
  * definitions; a spike planted on a ring too small to count is ignored, the
  * same spike on the first ring that counts is found. The lattice ratio
  * (P at a grid's axis frequencies over the ring's mean) finds the lattice
- * when given its size and stays in the noise's band otherwise. */
+ * when given its size and stays in the noise's band otherwise. The
+ * pattern (the imprint line's test: above the ring's mean and above the
+ * neighbourhood's) is none for white noise and is the lattice's vector
+ * for the lattice; on a spectrum that steps within a ring (P 120x higher
+ * beyond a radius, the edge of a band) the spike ratio passes the noise
+ * level but no pattern is found, and a peak planted outside the band is. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -66,6 +71,8 @@ static void white_noise(void)
               (int)seed, r.spike_ratio);
         CHECK(r.spike_ring >= 3 && r.count[r.spike_ring] >= AN_SPIKE_MIN_COUNT, "white noise: spike on ring %d",
               r.spike_ring);
+        CHECK(r.pattern_ring == 0 && isnan(r.pattern_ratio), "white noise seed %d: a pattern %g at (%d, %d)", (int)seed,
+              r.pattern_ratio, r.pattern_kx, r.pattern_ky);
         /* 12 exponential values over their ring means: above 12 with
          * probability about 12 e^-12 = 7e-5 */
         const an_lattice L = lattice_of(xy, n, K, 57, 3);
@@ -94,6 +101,10 @@ static void jittered_lattice(void)
         printf("jittered %d x %d lattice (+-0.05 spacing), K = %d: spike ratio %.1f at (%d, %d)\n", m, m, K,
                r.spike_ratio, r.spike_kx, r.spike_ky);
         CHECK(r.spike_ratio > 150, "lattice: spike ratio %g", r.spike_ratio);
+        CHECK(r.pattern_ring > 0 && r.pattern_ratio == r.spike_ratio && r.pattern_kx == r.spike_kx &&
+                  r.pattern_ky == r.spike_ky && r.pattern_local > an_pattern_level(an_spike_noise_level(K)),
+              "lattice: pattern %g (%g over its neighbours) at (%d, %d), spike at (%d, %d)", r.pattern_ratio,
+              r.pattern_local, r.pattern_kx, r.pattern_ky, r.spike_kx, r.spike_ky);
         CHECK(r.spike_kx % m == 0 && r.spike_ky % m == 0 && (r.spike_kx || r.spike_ky),
               "lattice: spike at (%d, %d), not on the reciprocal lattice", r.spike_kx, r.spike_ky);
         /* The lattice ratio for its own grid finds it on an axis; for a
@@ -209,8 +220,52 @@ static void small_rings(void)
     an_rings_free(&r);
 }
 
+/* A spectrum that steps within a ring: P = 1e-4 Exp(1) for |k| <= R and
+ * 0.012 Exp(1) beyond (the hyperuniform variant's transport band at
+ * 262,144 points: R = 102.4, ring 102 a tenth outside; docs/results/
+ * 2026-11-29-imprint.md). Its few frequencies beyond R stand 9x above the
+ * ring's mean before any noise, so the spike ratio passes the level; none
+ * stands above its neighbourhood, half of which is beyond R too. A peak
+ * of 60 times the outer level planted at (0, 300) is the pattern. */
+static void band_edge(void)
+{
+    const int K = 384;
+    const double R2 = 102.4 * 102.4, level = an_spike_noise_level(K);
+    const size_t N = an_side(K) * an_side(K);
+    double *P = malloc(N * sizeof *P);
+    for (int planted = 0; planted < 2; planted++) {
+        uint64_t st = 2026;
+        for (int ky = 0; ky <= K; ky++)
+            for (int kx = -K; kx <= K; kx++) {
+                if (ky == 0 && kx <= 0) continue;
+                const double e = -log(1 - ts_u(&st)), r2 = (double)kx * kx + (double)ky * ky;
+                P[an_pidx(K, kx, ky)] = P[an_pidx(K, -kx, -ky)] = (r2 <= R2 ? 1e-4 : 0.012) * e;
+            }
+        P[an_pidx(K, 0, 0)] = 0;
+        if (planted) P[an_pidx(K, 0, 300)] = P[an_pidx(K, 0, -300)] = 60 * 0.012;
+        an_rings r;
+        if (an_rings_compute(P, K, &r) != 0) exit(1);
+        printf("band edge%s: spike ratio %.1f at (%d, %d) (level %.1f), pattern %.1f at (%d, %d)\n",
+               planted ? ", a peak at (0, 300)" : "", r.spike_ratio, r.spike_kx, r.spike_ky, level, r.pattern_ratio,
+               r.pattern_kx, r.pattern_ky);
+        const int edge = an_ring_of((int64_t)r.spike_kx * r.spike_kx + (int64_t)r.spike_ky * r.spike_ky) == 102;
+        if (!planted)
+            CHECK(r.spike_ratio > level && edge && r.pattern_ring == 0,
+                  "band edge: spike %g at (%d, %d), pattern %g at (%d, %d); want a spike above %g on ring 102 and no "
+                  "pattern",
+                  r.spike_ratio, r.spike_kx, r.spike_ky, r.pattern_ratio, r.pattern_kx, r.pattern_ky, level);
+        else
+            CHECK(r.pattern_ring > 0 && r.pattern_kx == 0 && r.pattern_ky == 300,
+                  "band edge with a peak: pattern %g at (%d, %d), want (0, 300)", r.pattern_ratio, r.pattern_kx,
+                  r.pattern_ky);
+        an_rings_free(&r);
+    }
+    free(P);
+}
+
 int main(void)
 {
+    band_edge();
     small_rings();
     against_brute_force();
     white_noise();

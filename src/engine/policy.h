@@ -40,7 +40,12 @@
  * phase steps of 154 and 206 degrees) mostly cancels the last one's, and
  * moving the grid before every one of the first eight sweeps, while the
  * set is loose enough to take the print, keeps each print from growing
- * (docs/method.md, item 3). The margin of every
+ * (docs/method.md, item 3). The two walks keep the same step, which
+ * leaves a print along (-1, 1) unturned (P(-g, g) 5-14 times its ring at
+ * a million points, 52 at four million): no constant pair of steps turns
+ * every (mx, my) g / 3, |mx|, |my| <= 4, by more than 14 degrees a move,
+ * and the walks apart that were measured turned the diagonals but left
+ * more at (0, g), (g, 0) or (0, 4g/3) (docs/tried.md). The margin of every
  * iteration is L - max(delta(X) (1 + 1e-9), 0.7 Delta(n)), at least 0;
  * each point's square is cut to a margin of min(margin, L - t),
  * t = r0 + tol L, and a point with t >= 1.5 L stays where it is.
