@@ -97,6 +97,12 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
         pc->p.polish = (int)v;
         pc->polish_given = 1;
         return 1;
+    case PROG_OPT_LEVEL_ITER:
+        if (cli_parse_i64(arg, 0, 1000000000, &v) != 0)
+            cli_usage_error(prog, "--level-iter: '%s' is not a whole number in 0..1e9", arg);
+        pc->p.level_iter = v > 0 ? (int)v : -1; /* (0: no cap) */
+        pc->level_iter_given = 1;
+        return 1;
     case PROG_OPT_POLISH_FLOOR:
         if (cli_parse_double(arg, 0.05, 1.2, &pc->p.polish_floor) != 0)
             cli_usage_error(prog, "--polish-floor: '%s' is not a number in [0.05, 1.2]", arg);
@@ -118,10 +124,11 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
 
 void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
 {
-    if (!pc->on && (pc->base_given || pc->level_min_given || pc->relax_given || pc->joint_given || pc->polish_given))
+    if (!pc->on && (pc->base_given || pc->level_min_given || pc->relax_given || pc->joint_given || pc->polish_given ||
+                    pc->level_iter_given))
         cli_usage_error(prog, "%s needs --progressive or --classes K",
                         pc->base_given ? "--base" : pc->relax_given ? "--relax" : pc->joint_given ? "--joint"
-                        : pc->polish_given ? "--polish" : "--level-min");
+                        : pc->polish_given ? "--polish" : pc->level_iter_given ? "--level-iter" : "--level-min");
     if (!pc->on) return;
     if (pc->polish_given && pc->p.classes > 0) cli_usage_error(prog, "--polish does not go with --classes");
     const double tp = pc->p.joint.target_prefix > 0 ? pc->p.joint.target_prefix : 0.78;

@@ -188,6 +188,10 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         return -1;
     }
     const int cand = p->candidates > 0 ? p->candidates : 16;
+    const int cap = p->level_iter > 0 ? p->level_iter
+                    : p->level_iter < 0 || p->classes > 0 || p->joint.sweeps > 0 || p->joint_last > 0
+                        ? 0
+                        : CFPO_PROG_DEFAULT_LEVEL_ITER;
     int k0 = 0; /* the level to start at: a resumed checkpoint's */
     if (p->resume && (k0 = resumed_level(p->resume, sizes, K, err, errlen)) < 0) {
         free(xy);
@@ -197,6 +201,7 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         const int64_t m = sizes[k], prev = k > 0 ? sizes[k - 1] : 0;
         cfpo_options lo = *o;
         lo.seed = k == 0 ? o->seed : o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT);
+        if (cap > 0 && lo.max_iter > cap) lo.max_iter = cap; /* (progressive.h level_iter) */
         if (k < K - 1) { /* the last level keeps the caller's stop rules */
             memset(&lo.stop, 0, sizeof lo.stop);
             lo.stop.target_min = p->level_min;

@@ -29,6 +29,7 @@
 
 #define CFPO_PROG_DEFAULT_BASE 64
 #define CFPO_PROG_MAX_LEVELS 64
+#define CFPO_PROG_DEFAULT_LEVEL_ITER 24 /* each level's iteration cap by default (no joint phase, no classes) */
 
 typedef struct {
     int64_t m;          /* the prefix's size */
@@ -44,6 +45,10 @@ typedef struct {
     int classes;      /* K > 0: K equal groups (class c = ids [c n/K, (c+1) n/K)) instead of doublings */
     double level_min; /* > 0: every level but the last stops once its prefix's delta_min reaches this */
     int candidates;   /* best-candidate draws per new point (0: 16) */
+    int level_iter;   /* each level's iteration cap (the last's too; with the caller's max_iter): > 0 this;
+                         0 the default: CFPO_PROG_DEFAULT_LEVEL_ITER without a joint phase and without
+                         classes (a level's prefix is within about 0.001 of its end by then), none
+                         otherwise; < 0 none (each level to convergence) */
     int relax;        /* > 0: after each level k >= 1, this many iterations with level k - 1
                          moving too (prefix m_(k-2) held); the earlier prefixes are measured
                          again at the end */

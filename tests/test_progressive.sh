@@ -56,6 +56,8 @@ expect 2 "--joint-pairs" -n 1024 --progressive --joint 3 --joint-pairs 1001 -o x
 expect 2 "--joint-circum" -n 1024 --progressive --joint 3 --joint-circum 25 -o x.npy
 expect 2 "needs --progressive" -n 1024 --joint-circum 4 -o x.npy
 expect 2 "needs --progressive" -n 1024 --polish 3 -o x.npy
+expect 2 "needs --progressive" -n 1024 --level-iter 5 -o x.npy
+expect 2 "--level-iter" -n 1024 --progressive --level-iter -2 -o x.npy
 expect 2 "--polish does not go with --classes" -n 1024 --classes 4 --polish 3 -o x.npy
 expect 2 "--polish-floor" -n 1024 --progressive --polish 3 --polish-floor 1.5 -o x.npy
 expect 2 "--polish:" -n 1024 --progressive --polish -1 -o x.npy
@@ -216,6 +218,17 @@ wait $P; rc=$?
 [ "$rc" -eq 0 ] && echo "note: the --joint run ended before the signal; resuming from its last level's checkpoint"
 run -n 8192 -s 2 -t 1 --progressive --joint 3 --resume jck.bin -o jres.npy >jres.sum || bad "--joint --resume"
 cmp -s jref.npy jres.npy && ok || bad "--joint --resume: not the uninterrupted bytes"
+
+# ---- the level cap: 24 iterations by default, --level-iter N, 0: each level to convergence
+run -n 2048 -s 4 -t 1 --progressive --level-iter 0 -o li0.npy >li0.sum || bad "--level-iter 0"
+run -n 2048 -s 4 -t 1 --progressive --level-iter 24 -o li24.npy >li24.sum || bad "--level-iter 24"
+cmp -s li24.npy p1.npy && ok || bad "the default is not --level-iter 24"
+python3 - <<'PY' && ok || bad "--level-iter: a level ran past its cap, or the uncapped levels did not run longer"
+import sys
+it = lambda f: [int(l.split()[3].split("=")[1]) for l in open(f) if l.startswith("LEVEL")]
+a, b = it("li0.sum"), it("li24.sum")
+if max(b) > 24 or max(a) <= 24: sys.exit("%s %s" % (a, b))
+PY
 
 # ---- the polish: threads, each prefix at or above min(its start, the floor), the full set never falls, resume
 for t in 1 2 3; do
