@@ -93,7 +93,8 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
         pc->joint_given = 1;
         return 1;
     case PROG_OPT_POLISH:
-        if (cli_parse_i64(arg, 0, 1000000, &v) != 0) cli_usage_error(prog, "--polish: '%s' is not a whole number in 0..1e6", arg);
+        if (cli_parse_i64(arg, 0, 1000000, &v) != 0)
+            cli_usage_error(prog, "--polish: '%s' is not a whole number in 0..1e6", arg);
         pc->p.polish = (int)v;
         pc->polish_given = 1;
         return 1;
@@ -124,6 +125,7 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
 
 void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
 {
+    if (!pc->on && pc->polish_given) cli_usage_error(prog, "--polish needs --progressive");
     if (!pc->on && (pc->base_given || pc->level_min_given || pc->relax_given || pc->joint_given || pc->polish_given ||
                     pc->level_iter_given))
         cli_usage_error(prog, "%s needs --progressive or --classes K",

@@ -216,7 +216,8 @@ int main(void)
         CHECK(gave, "polish: no prefix gave up delta_min (the floor was not used)");
         static const int64_t big[5] = {250, 500, 1000, 2000, 4000};
         const int64_t nb = 4000;
-        double *ref = malloc(2 * nb * sizeof *ref), *alt = malloc(2 * nb * sizeof *alt), *init = malloc(2 * nb * sizeof *init);
+        double *ref = malloc(2 * nb * sizeof *ref), *alt = malloc(2 * nb * sizeof *alt);
+        double *init = malloc(2 * nb * sizeof *init);
         uniform(init, nb, 23);
         cfpo_prog_joint_options po = {.sweeps = 3, .floor = 0.5, .seed = 4, .threads = 1};
         memcpy(ref, init, 2 * nb * sizeof *ref);
@@ -225,7 +226,8 @@ int main(void)
         for (int t = 2; t <= 3; t++) {
             memcpy(alt, init, 2 * nb * sizeof *alt);
             po.threads = t;
-            CHECK(cfpo_prog_joint(alt, big, 5, &po, dm, da, err, sizeof err) == 0, "polish (%d threads) failed: %s", t, err);
+            CHECK(cfpo_prog_joint(alt, big, 5, &po, dm, da, err, sizeof err) == 0, "polish (%d threads) failed: %s", t,
+                  err);
             CHECK(memcmp(alt, ref, 2 * nb * sizeof *ref) == 0, "polish, %d threads: not the bytes of 1 thread", t);
         }
         free(init);
