@@ -91,6 +91,11 @@ static void usage(void)
            "      --joint-pairs P       a point that cannot move alone tries P moves with its binding partner (default 0)\n"
            "      --joint-prefix T, --joint-full T  the joint move's targets (0.78, 0.90)\n"
            "      --joint-hold H   a pair shorter than H Delta(prefix) may not shrink (0: off)\n"
+           "      --level-iter N   each level's iteration cap (0: none; default 24 without\n"
+           "                       --joint and --classes, else none)\n"
+           "      --polish S       then S sweeps polishing the full set, each smaller prefix kept\n"
+           "                       at or above min(its delta_min, --polish-floor)\n"
+           "      --polish-floor F the polish's floor in each prefix's own units (default 0.78)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
            "                       output, built like the levels (docs/cli.md)\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
@@ -329,6 +334,9 @@ static void parse(int argc, char **argv, cmdline *c)
         {"joint-soft", required_argument, 0, PROG_OPT_JOINT_SOFT},
         {"joint-circum", required_argument, 0, PROG_OPT_JOINT_CIRCUM},
         {"joint-pairs", required_argument, 0, PROG_OPT_JOINT_PAIRS},
+        {"polish", required_argument, 0, PROG_OPT_POLISH},
+        {"level-iter", required_argument, 0, PROG_OPT_LEVEL_ITER},
+        {"polish-floor", required_argument, 0, PROG_OPT_POLISH_FLOOR},
         {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;

@@ -92,6 +92,23 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
             cli_usage_error(prog, "--joint-hold: '%s' is not a number in [0, 1.2]", arg);
         pc->joint_given = 1;
         return 1;
+    case PROG_OPT_POLISH:
+        if (cli_parse_i64(arg, 0, 1000000, &v) != 0)
+            cli_usage_error(prog, "--polish: '%s' is not a whole number in 0..1e6", arg);
+        pc->p.polish = (int)v;
+        pc->polish_given = 1;
+        return 1;
+    case PROG_OPT_LEVEL_ITER:
+        if (cli_parse_i64(arg, 0, 1000000000, &v) != 0)
+            cli_usage_error(prog, "--level-iter: '%s' is not a whole number in 0..1e9", arg);
+        pc->p.level_iter = v > 0 ? (int)v : -1; /* (0: no cap) */
+        pc->level_iter_given = 1;
+        return 1;
+    case PROG_OPT_POLISH_FLOOR:
+        if (cli_parse_double(arg, 0.05, 1.2, &pc->p.polish_floor) != 0)
+            cli_usage_error(prog, "--polish-floor: '%s' is not a number in [0.05, 1.2]", arg);
+        pc->polish_given = 1;
+        return 1;
     case PROG_OPT_JOINT_PREFIX:
     case PROG_OPT_JOINT_FULL: {
         double t;
@@ -108,10 +125,14 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
 
 void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
 {
-    if (!pc->on && (pc->base_given || pc->level_min_given || pc->relax_given || pc->joint_given))
+    if (!pc->on && pc->polish_given) cli_usage_error(prog, "--polish needs --progressive");
+    if (!pc->on && (pc->base_given || pc->level_min_given || pc->relax_given || pc->joint_given || pc->polish_given ||
+                    pc->level_iter_given))
         cli_usage_error(prog, "%s needs --progressive or --classes K",
-                        pc->base_given ? "--base" : pc->relax_given ? "--relax" : pc->joint_given ? "--joint" : "--level-min");
+                        pc->base_given ? "--base" : pc->relax_given ? "--relax" : pc->joint_given ? "--joint"
+                        : pc->polish_given ? "--polish" : pc->level_iter_given ? "--level-iter" : "--level-min");
     if (!pc->on) return;
+    if (pc->polish_given && pc->p.classes > 0) cli_usage_error(prog, "--polish does not go with --classes");
     const double tp = pc->p.joint.target_prefix > 0 ? pc->p.joint.target_prefix : 0.78;
     const double tf = pc->p.joint.target_full > 0 ? pc->p.joint.target_full : 0.90;
     if (tf >= sqrt(2.0) * tp) /* the pair weights must fall with the level (prog_joint.h) */
@@ -132,7 +153,8 @@ typedef struct {
     int64_t m;
     const cfpo_prog_level *done; /* the finished levels */
     int ndone;
-    FILE *joint;          /* the JOINT lines, printed after the LEVEL lines */
+    FILE *joint;          /* the JOINT (and POLISH) lines, printed after the LEVEL lines */
+    const char *tag;      /* "JOINT", or "POLISH" during the polish */
     int classes;          /* --classes: the JOINT lines' groups are the classes and their union */
     double worst_min;     /* over the finished levels */
     int64_t worst_m;
@@ -181,8 +203,8 @@ static void on_sweep(int sweep, int64_t moved, const double *dmin, const double 
         if (dmin[k] < dmin[w]) w = k;
     const int64_t wm = c->classes ? w : c->done[w].m;
     if (c->joint) {
-        fprintf(c->joint, "JOINT level=%d prefix=%lld sweep=%d moved=%lld %s=%lld worst_delta_min=%.9f delta_min=",
-                K - 1, (long long)c->done[K - 1].m, sweep, (long long)moved,
+        fprintf(c->joint, "%s level=%d prefix=%lld sweep=%d moved=%lld %s=%lld worst_delta_min=%.9f delta_min=",
+                c->tag, K - 1, (long long)c->done[K - 1].m, sweep, (long long)moved,
                 c->classes ? "worst_class" : "worst_prefix_min", (long long)wm, dmin[w]);
         for (int k = 0; k < NG; k++) fprintf(c->joint, "%s%.9f", k ? "," : "", dmin[k]);
         fprintf(c->joint, " delta_avg=");
@@ -202,8 +224,17 @@ static void on_sweep(int sweep, int64_t moved, const double *dmin, const double 
         else
             fprintf(c->trace, "\t%lld\t%.9f\n", (long long)wm, dmin[w]);
     }
-    cli_progress_line(&c->prog, 0, "joint move of levels 0-%d  sweep %d  worst group %lld: %.4f  full set %.4f / %.4f  moved %lld  "
-                      "elapsed %.1fs", K - 1, sweep, (long long)wm, dmin[w], dmin[NG - 1], davg[NG - 1], (long long)moved, el);
+    cli_progress_line(&c->prog, 0, "%s of levels 0-%d  sweep %d  worst group %lld: %.4f  full set %.4f / %.4f  moved %lld  "
+                      "elapsed %.1fs", c->tag[0] == 'P' ? "polish" : "joint move", K - 1, sweep, (long long)wm,
+                      dmin[w], dmin[NG - 1], davg[NG - 1], (long long)moved, el);
+}
+
+/* One sweep of the polish: a POLISH line (as on_sweep's). */
+static void on_polish(int sweep, int64_t moved, const double *dmin, const double *davg, int NG, void *user)
+{
+    prog_ctx *c = user;
+    c->tag = "POLISH";
+    on_sweep(sweep, moved, dmin, davg, NG, user);
 }
 
 /* The trace's rows into a memory stream, its file written whole at the end. */
@@ -226,7 +257,7 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     cfpo_runfiles *files = cfpo_runfiles_open(out, NULL, checkpoint, n, err, sizeof err);
     if (!files) cli_fail(prog, "%s", err);
     cfpo_prog_level levels[CFPO_PROG_MAX_LEVELS];
-    prog_ctx ctx = {.done = levels, .worst_min = INFINITY, .worst_m = -1};
+    prog_ctx ctx = {.done = levels, .worst_min = INFINITY, .worst_m = -1, .tag = "JOINT"};
     char *tbuf = NULL;
     size_t tlen = 0;
     if (trace) {
@@ -241,10 +272,11 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     o->user = &ctx;
     char *jbuf = NULL;
     size_t jlen = 0;
-    if (pc->p.joint.sweeps > 0 || pc->p.joint_last > 0) {
+    if (pc->p.joint.sweeps > 0 || pc->p.joint_last > 0 || pc->p.polish > 0) {
         ctx.joint = open_memstream(&jbuf, &jlen);
         if (!ctx.joint) cli_fail(prog, "out of memory for the JOINT lines");
         pc->p.joint.sweep_done = on_sweep;
+        pc->p.polish_sweep = on_polish;
         ctx.classes = pc->p.classes > 0;
         pc->p.joint.user = &ctx;
     }

@@ -78,9 +78,9 @@ double prog_buckets_nearest2(const prog_buckets *B, double x, double y, int64_t 
                     if (k == skip) continue;
                     const double d2 = prog_torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]);
                     if (d2 < best) best = d2;
+                    if (best <= stop2) return best; /* (the caller's place wins: no need for the nearest) */
                 }
             }
-        if (best <= stop2) return best;
         if (span == gs) break; /* every bucket seen */
         const double reach = (double)r * B->cs; /* every point beyond ring r is farther */
         if (best <= reach * reach) break;

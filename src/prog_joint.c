@@ -33,6 +33,8 @@ typedef struct {
     double H[65];        /* hold distances: a pair shorter than H_L may not shrink */
     double Hmax;         /* the largest of them */
     double Fmax[65];     /* the same for F */
+    double Dm[65];       /* Delta(m_L) of each prefix */
+    double floor;        /* > 0: the polish's floor (prog_joint.h floor) */
     double cap;          /* the measure counted up to this (a mover at or past it has nothing to gain) */
     double tau;          /* > 0: the pair measure is the soft minimum with this temperature (prog_joint.h soft) */
     double lam;          /* weight of the mover's mean nearest distance over its groups (prog_joint.h avg) */
@@ -261,8 +263,8 @@ static void set_floors(joint *J, int K, const double *raw)
         return;
     }
     double f = 0;
-    for (int L = K - 1; L >= 0; L--) {
-        const double v = raw[L];
+    for (int L = K - 1; L >= 0; L--) { /* (the polish: a prefix below the full set may fall to its floor) */
+        const double v = J->floor > 0 && L < K - 1 ? fmin(raw[L], J->floor * J->Dm[L]) : raw[L];
         if (v > f) f = v;
         J->F[L] = f;
     }
@@ -522,7 +524,10 @@ static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t
         J.H[K] = jo->hold * cfpo_delta_bound((double)n);
         for (int c = 0; c < K; c++) J.Gmax[c] = fmax(J.G[c], J.G[K]);
     } else {
-        for (int L = 0; L < K; L++) J.G[L] = (L == K - 1 ? tf : tp) * cfpo_delta_bound((double)sizes[L]);
+        J.floor = jo->floor;
+        for (int L = 0; L < K; L++) J.Dm[L] = cfpo_delta_bound((double)sizes[L]);
+        for (int L = 0; L < K; L++) /* (the polish: the full set's weight for every pair) */
+            J.G[L] = jo->floor > 0 ? tf * J.Dm[K - 1] : (L == K - 1 ? tf : tp) * J.Dm[L];
         for (int l = 0; l < K; l++) {
             J.Gmax[l] = 0;
             for (int L = l; L < K; L++) J.Gmax[l] = fmax(J.Gmax[l], J.G[L]);

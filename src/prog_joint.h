@@ -22,7 +22,9 @@
  * straight away from the pair that binds it, half in a disk; steps in
  * fractions of its nearest neighbour's distance; counter-based draws from
  * seed, sweep and i) and takes the best that keeps every floor and raises
- * its own measure. With hold > 0, a pair of level L shorter than
+ * its own measure. With floor > 0 (the polish) the prefixes below the full
+ * set may give up delta_min down to that floor, and the score is the full
+ * set's alone (the field below). With hold > 0, a pair of level L shorter than
  * hold Delta(m_L) may not shrink either: each point's nearest distance in
  * each of its prefixes m_k then never falls below the smaller of its old
  * value and hold Delta(m_k), which guards the prefixes' delta_avg.
@@ -56,6 +58,12 @@ typedef struct {
     double target_full;   /* t_L for the last level (0: 0.90) */
     double hold;          /* > 0: a pair of level L shorter than hold Delta(m_L) may not shrink
                              (guards each prefix's delta_avg); 0: off */
+    double floor;         /* > 0 (not with classes): the polish of the full set. Every pair's weight
+                             is the full set's, target_full Delta(n) (the mover's nearest distance in
+                             the full set is the score), and each prefix k below the full set may
+                             fall to floor Delta(m_k) but not below (nor below its value when that
+                             is lower already): its pair floor is min(dmin_k, floor) Delta(m_k);
+                             the full set's delta_min never falls. 0: off */
     int classes;          /* 1: the levels are classes (progressive.h's --classes): a pair within
                              class c has level c (weight target_prefix Delta(class size), floor
                              the class's and the union's), a pair across classes level K (weight

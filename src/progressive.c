@@ -143,13 +143,21 @@ static int hold(int64_t n, const double *xy, const cfpo_options *o, cfpo_run_eng
  * K - 1), each level's points in greedy order again after it (the dyadic
  * prefixes are the same sets), levels 0 .. k measured again as prefixes
  * (and res at the last level). With classes the move's groups are the
- * classes 0 .. k and their union (prog_joint.h). */
+ * classes 0 .. k and their union (prog_joint.h). polish: the full set's
+ * polish instead (k = K - 1, progressive.h polish). */
 static int joint_phase(double *xy, const int64_t *sizes, int k, int K, const cfpo_options *o,
-                       const cfpo_prog_options *p, cfpo_prog_level *levels, cfpo_result *res, char *err, size_t errlen)
+                       const cfpo_prog_options *p, int polish, cfpo_prog_level *levels, cfpo_result *res, char *err,
+                       size_t errlen)
 {
     cfpo_prog_joint_options jo = p->joint;
     if (k == K - 1 && p->joint_last > 0) jo.sweeps = p->joint_last;
     jo.seed = o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT + 0x4a4f494e54ULL);
+    if (polish) { /* the full set's polish (progressive.h polish) */
+        jo.sweeps = p->polish;
+        jo.floor = p->polish_floor > 0 ? p->polish_floor : 0.78;
+        jo.seed = o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT + 0x504f4c495348ULL);
+        if (p->polish_sweep) jo.sweep_done = p->polish_sweep;
+    }
     jo.classes = p->classes > 0;
     jo.threads = o->threads;
     if (k < K - 1 && !jo.classes) jo.target_full = jo.target_prefix;
@@ -180,6 +188,10 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         return -1;
     }
     const int cand = p->candidates > 0 ? p->candidates : 16;
+    const int cap = p->level_iter > 0 ? p->level_iter
+                    : p->level_iter < 0 || p->classes > 0 || p->joint.sweeps > 0 || p->joint_last > 0
+                        ? 0
+                        : CFPO_PROG_DEFAULT_LEVEL_ITER;
     int k0 = 0; /* the level to start at: a resumed checkpoint's */
     if (p->resume && (k0 = resumed_level(p->resume, sizes, K, err, errlen)) < 0) {
         free(xy);
@@ -189,6 +201,7 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         const int64_t m = sizes[k], prev = k > 0 ? sizes[k - 1] : 0;
         cfpo_options lo = *o;
         lo.seed = k == 0 ? o->seed : o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT);
+        if (cap > 0 && lo.max_iter > cap) lo.max_iter = cap; /* (progressive.h level_iter) */
         if (k < K - 1) { /* the last level keeps the caller's stop rules */
             memset(&lo.stop, 0, sizeof lo.stop);
             lo.stop.target_min = p->level_min;
@@ -229,9 +242,11 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         if (cfpo_prog_order(xy, prev, m, err, errlen) != 0) break;
         const int joint = k > 0 &&
                           (k == K - 1 && p->joint_last > 0 ? p->joint_last : p->joint.sweeps) > 0;
-        if (joint && joint_phase(xy, sizes, k, K, o, p, levels, res, err, errlen) != 0) break;
+        if (joint && joint_phase(xy, sizes, k, K, o, p, 0, levels, res, err, errlen) != 0) break;
+        const int polish = k == K - 1 && p->polish > 0 && p->classes <= 0;
+        if (polish && joint_phase(xy, sizes, k, K, o, p, 1, levels, res, err, errlen) != 0) break;
         if (k == K - 1) {
-            if (joint) {
+            if (joint || polish) {
                 *nlevels = K;
                 const int rc = hold(n, xy, o, R, err, errlen);
                 free(xy);

@@ -14,7 +14,9 @@
  * With joint.sweeps > 0 (progressive levels only) the bounded joint move
  * of prog_joint.h follows the last level: every point may move while no
  * dyadic prefix's delta_min falls; then each level's points are put in
- * greedy order again and every level measured again.
+ * greedy order again and every level measured again. With polish > 0 the
+ * full set is polished last by the same move with the full set's score,
+ * the smaller prefixes held at or above a floor (prog_joint.h floor).
  * May include: engine.h, run_loop.h, prog_insert.h, prog_joint.h (layers 0-4). */
 #ifndef CFPO_PROGRESSIVE_H
 #define CFPO_PROGRESSIVE_H
@@ -27,6 +29,7 @@
 
 #define CFPO_PROG_DEFAULT_BASE 64
 #define CFPO_PROG_MAX_LEVELS 64
+#define CFPO_PROG_DEFAULT_LEVEL_ITER 24 /* each level's iteration cap by default (no joint phase, no classes) */
 
 typedef struct {
     int64_t m;          /* the prefix's size */
@@ -42,12 +45,24 @@ typedef struct {
     int classes;      /* K > 0: K equal groups (class c = ids [c n/K, (c+1) n/K)) instead of doublings */
     double level_min; /* > 0: every level but the last stops once its prefix's delta_min reaches this */
     int candidates;   /* best-candidate draws per new point (0: 16) */
+    int level_iter;   /* each level's iteration cap (the last's too; with the caller's max_iter): > 0 this;
+                         0 the default: CFPO_PROG_DEFAULT_LEVEL_ITER without a joint phase and without
+                         classes (a level's prefix is within about 0.001 of its end by then), none
+                         otherwise; < 0 none (each level to convergence) */
     int relax;        /* > 0: after each level k >= 1, this many iterations with level k - 1
                          moving too (prefix m_(k-2) held); the earlier prefixes are measured
                          again at the end */
     cfpo_prog_joint_options joint; /* sweeps > 0: the bounded joint move after every level from
                                       level 1 on (its seed is set from the run's) */
     int joint_last;                /* > 0: the last level's sweeps instead of joint.sweeps */
+    int polish;                    /* > 0 (not with classes): after the last level (and its joint move),
+                                      this many sweeps of the joint move as the full set's polish
+                                      (prog_joint.h floor): the full set's delta_min never falls, each
+                                      smaller prefix stays at or above min(its value, polish_floor) */
+    double polish_floor;           /* the polish's floor in each prefix's own units (0: 0.78) */
+    /* Called for each sweep of the polish instead of joint.sweep_done
+     * (with joint.user); may be NULL (then joint.sweep_done). */
+    void (*polish_sweep)(int sweep, int64_t moved, const double *dmin, const double *davg, int K, void *user);
     const char *checkpoint; /* the level under way's engine checkpoint (ckpt.h) here ... */
     int checkpoint_every;   /* ... every this many of its iterations and at its end */
     const char *resume;     /* go on from such a checkpoint (its size says its level) */

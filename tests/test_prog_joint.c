@@ -12,6 +12,11 @@
  *    minimum, the circumcentre candidates and the pair moves (setting 7);
  *  - the same bytes for 1, 2 and 3 threads (the coloured cells, 4,000
  *    points, the local solve and the delta_avg term on);
+ *  - the polish (floor > 0): after every sweep, by brute force, each
+ *    prefix below the full set is at or above the smaller of its value at
+ *    the polish's start and the floor, and the full set's delta_min never
+ *    falls; some prefix does fall below its start (the floor is not the
+ *    joint move's) and the full set rises; the same bytes for 1-3 threads;
  *  - the monotonicity check can fail: a set with one point moved onto its
  *    neighbour is caught. */
 #include <math.h>
@@ -79,6 +84,30 @@ static void on_sweep(int sweep, int64_t moved, const double *dmin, const double 
     }
     w->sweeps = sweep;
     w->moved += moved;
+}
+
+/* The polish's watch: the full set as on_sweep's (it never falls), each
+ * smaller prefix against min(its start, the floor). */
+typedef struct {
+    watch w;
+    const double *start;
+    double floor;
+    int below;
+} pw_watch;
+
+static void on_polish_sweep(int sweep, int64_t moved, const double *dmin, const double *davg, int K, void *user)
+{
+    pw_watch *p = user;
+    double bm[8], ba[8];
+    brute(p->w.xy, p->w.sizes, K, bm, ba);
+    for (int k = 0; k < K; k++) {
+        if (fabs(bm[k] - dmin[k]) > 1e-12 || fabs(ba[k] - davg[k]) > 1e-12) p->w.mismatch++;
+        if (k < K - 1 && bm[k] < fmin(p->start[k], p->floor) * (1 - 1e-12)) p->below++;
+    }
+    if (sweep > 0 && bm[K - 1] < p->w.last[K - 1]) p->w.fell++;
+    p->w.last[K - 1] = bm[K - 1];
+    p->w.sweeps = sweep;
+    p->w.moved += moved;
 }
 
 static void uniform(double *xy, int64_t n, uint64_t seed)
@@ -159,6 +188,47 @@ int main(void)
             jo.threads = t;
             CHECK(cfpo_prog_joint(alt, big, 5, &jo, dm, da, err, sizeof err) == 0, "joint (%d threads) failed: %s", t, err);
             CHECK(memcmp(alt, ref, 2 * nb * sizeof *ref) == 0, "%d threads: not the bytes of 1 thread", t);
+        }
+        free(init);
+        free(ref);
+        free(alt);
+    }
+    /* the polish: the prefixes below the full set may fall to the floor, no further */
+    {
+        uniform(xy0, n, 40);
+        cfpo_prog_joint_options pre = {.sweeps = 30, .seed = 6};
+        double dm[5], da[5], start[5], sa[5];
+        CHECK(cfpo_prog_joint(xy0, sizes, K, &pre, dm, da, err, sizeof err) == 0, "joint failed: %s", err);
+        brute(xy0, sizes, K, start, sa);
+        double fl = INFINITY; /* a floor below some prefix, so that it may fall */
+        for (int k = 0; k < K - 1; k++) fl = fmin(fl, start[k]);
+        fl += 0.02;
+        memcpy(xy, xy0, 2 * n * sizeof *xy);
+        pw_watch pw = {.w = {.xy = xy, .sizes = sizes, .K = K}, .start = start, .floor = fl};
+        cfpo_prog_joint_options jo = {.sweeps = 10, .floor = fl, .seed = 8, .sweep_done = on_polish_sweep, .user = &pw};
+        CHECK(cfpo_prog_joint(xy, sizes, K, &jo, dm, da, err, sizeof err) == 0, "polish failed: %s", err);
+        CHECK(pw.w.mismatch == 0, "polish: the sweep's measures differ from brute force");
+        CHECK(pw.below == 0, "polish: a prefix fell below min(its start, the floor %.3f)", fl);
+        CHECK(pw.w.fell == 0, "polish: the full set's delta_min fell during a sweep");
+        CHECK(dm[K - 1] > start[K - 1], "polish: the full set did not rise (%.4f -> %.4f)", start[K - 1], dm[K - 1]);
+        int gave = 0;
+        for (int k = 0; k < K - 1; k++) gave |= dm[k] < start[k];
+        CHECK(gave, "polish: no prefix gave up delta_min (the floor was not used)");
+        static const int64_t big[5] = {250, 500, 1000, 2000, 4000};
+        const int64_t nb = 4000;
+        double *ref = malloc(2 * nb * sizeof *ref), *alt = malloc(2 * nb * sizeof *alt);
+        double *init = malloc(2 * nb * sizeof *init);
+        uniform(init, nb, 23);
+        cfpo_prog_joint_options po = {.sweeps = 3, .floor = 0.5, .seed = 4, .threads = 1};
+        memcpy(ref, init, 2 * nb * sizeof *ref);
+        CHECK(cfpo_prog_joint(ref, big, 5, &po, dm, da, err, sizeof err) == 0, "polish (1 thread) failed: %s", err);
+        CHECK(memcmp(init, ref, 2 * nb * sizeof *ref) != 0, "the 4,000-point polish moved nothing");
+        for (int t = 2; t <= 3; t++) {
+            memcpy(alt, init, 2 * nb * sizeof *alt);
+            po.threads = t;
+            CHECK(cfpo_prog_joint(alt, big, 5, &po, dm, da, err, sizeof err) == 0, "polish (%d threads) failed: %s", t,
+                  err);
+            CHECK(memcmp(alt, ref, 2 * nb * sizeof *ref) == 0, "polish, %d threads: not the bytes of 1 thread", t);
         }
         free(init);
         free(ref);

@@ -55,6 +55,12 @@ expect 2 "--joint-soft" -n 1024 --progressive --joint 3 --joint-soft x -o x.npy
 expect 2 "--joint-pairs" -n 1024 --progressive --joint 3 --joint-pairs 1001 -o x.npy
 expect 2 "--joint-circum" -n 1024 --progressive --joint 3 --joint-circum 25 -o x.npy
 expect 2 "needs --progressive" -n 1024 --joint-circum 4 -o x.npy
+expect 2 "needs --progressive" -n 1024 --polish 3 -o x.npy
+expect 2 "needs --progressive" -n 1024 --level-iter 5 -o x.npy
+expect 2 "--level-iter" -n 1024 --progressive --level-iter -2 -o x.npy
+expect 2 "--polish does not go with --classes" -n 1024 --classes 4 --polish 3 -o x.npy
+expect 2 "--polish-floor" -n 1024 --progressive --polish 3 --polish-floor 1.5 -o x.npy
+expect 2 "--polish:" -n 1024 --progressive --polish -1 -o x.npy
 
 run() { "$CFPO" -q "$@"; }
 field() { grep -o " $1=[^ ]*" | head -1 | cut -d= -f2; }
@@ -212,6 +218,45 @@ wait $P; rc=$?
 [ "$rc" -eq 0 ] && echo "note: the --joint run ended before the signal; resuming from its last level's checkpoint"
 run -n 8192 -s 2 -t 1 --progressive --joint 3 --resume jck.bin -o jres.npy >jres.sum || bad "--joint --resume"
 cmp -s jref.npy jres.npy && ok || bad "--joint --resume: not the uninterrupted bytes"
+
+# ---- the level cap: 24 iterations by default, --level-iter N, 0: each level to convergence
+run -n 2048 -s 4 -t 1 --progressive --level-iter 0 -o li0.npy >li0.sum || bad "--level-iter 0"
+run -n 2048 -s 4 -t 1 --progressive --level-iter 24 -o li24.npy >li24.sum || bad "--level-iter 24"
+cmp -s li24.npy p1.npy && ok || bad "the default is not --level-iter 24"
+python3 - <<'PY' && ok || bad "--level-iter: a level ran past its cap, or the uncapped levels did not run longer"
+import sys
+it = lambda f: [int(l.split()[3].split("=")[1]) for l in open(f) if l.startswith("LEVEL")]
+a, b = it("li0.sum"), it("li24.sum")
+if max(b) > 24 or max(a) <= 24: sys.exit("%s %s" % (a, b))
+PY
+
+# ---- the polish: threads, each prefix at or above min(its start, the floor), the full set never falls, resume
+for t in 1 2 3; do
+  run -n 2048 -s 4 -t $t --progressive --joint 4 --level-min 0.8 --polish 6 --polish-floor 0.74 -o q$t.npy >q$t.sum \
+    || bad "--polish run, $t threads"
+done
+cmp -s q1.npy q2.npy && cmp -s q1.npy q3.npy && ok || bad "--polish: bytes differ across 1-3 threads"
+"$AN" -q --prefixes --prefix-base 64 -t 1 q1.npy >/dev/null 2>&1 || bad "cfpo-analyze of the --polish run"
+python3 - <<'PY' && ok || bad "--polish: a prefix fell below its floor, the full set fell, or LEVEL != file"
+import sys
+kv = lambda l: dict(x.split("=", 1) for x in l.split()[1:])
+P = [kv(l) for l in open("q1.sum") if l.startswith("POLISH")]
+assert len(P) >= 2 and P[0]["sweep"] == "0", len(P)
+start = [float(x) for x in P[0]["delta_min"].split(",")]
+for p in P:
+    d = [float(x) for x in p["delta_min"].split(",")]
+    if any(v < min(a, 0.74) - 1e-9 for v, a in zip(d[:-1], start[:-1])): sys.exit("a prefix below its floor")
+    if d[-1] < start[-1] - 1e-12: sys.exit("the full set fell")
+    start[-1] = d[-1]
+lv = {int(kv(l)["prefix"]): float(kv(l)["delta_min"]) for l in open("q1.sum") if l.startswith("LEVEL")}
+an = {int(w[0]): float(w[2]) for w in (l.split() for l in open("q1.analysis/prefixes.txt") if not l.startswith("#")) if w[1] == "dyadic"}
+if any(abs(lv[m] - an[m]) > 2e-6 for m in lv): sys.exit("LEVEL != file")
+PY
+run -n 2048 -s 4 -t 2 --progressive --joint 4 --level-min 0.8 --polish 6 --polish-floor 0.74 --checkpoint qck.bin \
+  -o qc.npy >qc.sum || bad "--polish with --checkpoint"
+run -n 2048 -s 4 -t 1 --progressive --joint 4 --level-min 0.8 --polish 6 --polish-floor 0.74 --resume qck.bin \
+  -o qr.npy >qr.sum || bad "--polish --resume"
+cmp -s q1.npy qc.npy && cmp -s q1.npy qr.npy && ok || bad "--polish: --checkpoint or --resume changed the bytes"
 
 echo "test_progressive: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
