@@ -94,13 +94,14 @@ static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double 
         for (int ix = 0; ix < nx_; ix++) {
             const int c = ry * B + (fx + ix < B ? fx + ix : fx + ix - B);
             for (int j = head[c]; j >= 0; j = next[j]) {
-                if (j == p) continue;
                 double ex = px_[j] - ax, ey = py_[j] - ay;
                 if (wrap) { ex -= rint(ex); ey -= rint(ey); }
                 const double d2 = (ex * ex + ey * ey) * pr_[j];
-                if (!(d2 < T)) continue;
+                /* written always, kept when in reach: no branch to
+                 * mispredict (the block's room holds one more) */
                 ck[cnt] = d2;
-                cj[cnt++] = (double)j;
+                cj[cnt] = (double)j;
+                cnt += (d2 < T) & (j != p);
             }
         }
     }
