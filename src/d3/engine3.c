@@ -84,6 +84,7 @@ void cfpo3_free(cfpo3_engine *e)
     free(e->pos), free(e->prev), free(e->cellof), free(e->cids), free(e->cstart);
     free(e->changed), free(e->solvedat), free(e->needm), free(e->fill);
     cfpo3_dist_free(e);
+    free(e->tail_in);
     free(e);
 }
 

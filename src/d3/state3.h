@@ -66,6 +66,12 @@ struct cfpo3_engine {
     double t_compute, t_halo, t_migrate; /* seconds on this rank */
     double b_halo, b_migrate;            /* bytes this rank sent */
     int64_t phases;
+    /* checkpoints: the caller's block after the points (engine3.h,
+     * cfpo3_set_checkpoint_tail) and the block a read checkpoint carried */
+    cfpo3_tail_fn tail_fn;
+    void *tail_user;
+    unsigned char *tail_in;
+    size_t tail_in_len;
 };
 
 /* u of coordinate x under shift s: wrapped into [0,1). */
