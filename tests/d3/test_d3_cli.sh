@@ -160,6 +160,8 @@ rm -f dck.bin
 d1=$(awk '/^SUMMARY/ { for (i = 1; i <= NF; i++) if ($i ~ /^delta_min=/) { split($i, a, "="); print a[2] } }' s1.log)
 d2=$(awk '{ for (i = 1; i <= NF; i++) if ($i ~ /^delta_min=/) { split($i, a, "="); print a[2] } }' an.log)
 [ "$d1" = "$d2" ] && ok || bad "analyze delta_min $d2, run $d1"
+# the spike check on the default schedule's set (a clean set: passes)
+"$AN" --spike def.npy >sp.log && grep -q " spike=.* spike_noise=.* spike_pass=yes$" sp.log && ok || bad "spike: $(cat sp.log)"
 CFPO="$AN"
 expect 2 "one input file" 
 expect 1 "cannot open" missing.npy
