@@ -439,7 +439,7 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     }
     const double dmin = sr.dmin, davg = sr.davg;
     const cfpo3_options *o = cfpo3_options_of(e);
-    cli_summary s = {"cfpo3d", /* the 3-D engine, under either command */ o->relax ? "adaptive" : "adaptive-norelax", n, o->seed,
+    cli_summary s = {"cfpo3d", /* the 3-D engine, under either command */ o->relax ? "adaptive" : "adaptive-norelax", n, sr.seed,
                      o->threads > 0 ? o->threads : omp_get_max_threads(), comm_size(),
                      sr.iterations, cli_now() - t0, dmin, davg, sr.converged,
                      cli_peak_rss(), cfpo_stop_name(stop)};

@@ -16,7 +16,9 @@
  *   72  near               u32   0 or 1: the rounds start in the near phase (the
  *                                option; the header's flag is the round's phase)
  *   76  reserved           u32   0
- *   80  the window: W + 1 delta_min then W + 1 delta_avg (f64; none when W = 0)
+ *   80  seed               u64   the run's (round r > 0 runs its engine under
+ *                                cfpo3_sched_round_seed(seed, r))
+ *   88  the window: W + 1 delta_min then W + 1 delta_avg (f64; none when W = 0)
  *   then, when round > 0, the best set: n points of 24 bytes in [0,1). */
 #include "sched3.h"
 
@@ -25,6 +27,7 @@
 #include <string.h>
 
 #include "comm.h"
+#include "rng.h"
 #include "engine3_ops.h"
 #include "run_loop.h"
 #include "runsignal.h"
@@ -32,8 +35,14 @@
 #include "stopflat.h"
 
 #define MAGIC "CFPO3SCH"
-#define FIXED 80
+#define FIXED 88
 #define COUNT_MAX 1000000000ULL
+#define ROUND_STREAM 0x524f554e44330000ULL /* "ROUND3" */
+
+uint64_t cfpo3_sched_round_seed(uint64_t seed, int round)
+{
+    return round == 0 ? seed : cfpo_rand64(seed, ROUND_STREAM, (uint64_t)round);
+}
 
 void cfpo3_sched_default(cfpo3_sched_opts *so)
 {
@@ -52,6 +61,7 @@ typedef struct {
     cfpo_flat_rule flat;
     int ended;      /* 0, 1 converged, 2 flat (this round) */
     int near;       /* the near-phase option of every round's start */
+    uint64_t seed;  /* the run's (round 0's engine's) */
     int started;    /* the run loop's first call (the set before any iteration) came */
     int skip_first; /* a resumed round: its window holds the current set already */
     int caller;     /* on_iter asked to stop */
@@ -109,6 +119,7 @@ static int tail(void *user, unsigned char **buf, size_t *len)
     put32(b + 64, (uint32_t)S->flat.count);
     put32(b + 68, (uint32_t)S->ended);
     put32(b + 72, (uint32_t)S->near);
+    put64(b + 80, S->seed);
     size_t at = FIXED;
     if (S->so.flat > 0) {
         const size_t w1 = (size_t)S->so.flat + 1;
@@ -169,6 +180,7 @@ static int load(sched *S, const unsigned char *b, size_t len, char *err, size_t 
     S->best_avg = getd(b + 56);
     S->ended = (int)get32(b + 68);
     S->near = (int)get32(b + 72);
+    S->seed = get64(b + 80);
     if (cfpo_flat_init(&S->flat, S->so.flat, S->so.flat_gain) != 0) goto oom;
     S->flat.count = (int)get32(b + 64);
     size_t at = FIXED;
@@ -235,6 +247,7 @@ int cfpo3_sched_run(cfpo3_engine *e, const cfpo3_sched_args *a, cfpo3_sched_resu
     } else {
         S.so = a->so;
         S.near = cfpo3_options_of(e)->near; /* a fresh engine's option */
+        S.seed = cfpo3_options_of(e)->seed;
         if (cfpo_flat_init(&S.flat, S.so.flat, S.so.flat_gain) != 0) return fail(&S, err, errlen, "out of memory");
     }
     const int active = S.so.rounds > 0 || S.so.flat > 0; /* else the plain run: no block */
@@ -296,13 +309,14 @@ int cfpo3_sched_run(cfpo3_engine *e, const cfpo3_sched_args *a, cfpo3_sched_resu
          * one freed first, so that one engine is held at a time) */
         cfpo3_options o = *cfpo3_options_of(e); /* (near: a resumed engine's is its phase) */
         o.near = S.near;
+        o.seed = cfpo3_sched_round_seed(S.seed, S.round + 1); /* its own grid shifts and colour orders */
         double *buf = malloc(24 * (size_t)n);
         if (comm_all(buf != NULL) == 0) {
             free(buf);
             return fail(&S, err, errlen, "out of memory for the shake");
         }
         memcpy(buf, S.best, 24 * (size_t)n);
-        cfpo3_shake(buf, n, o.seed, S.round + 1, S.so.amp);
+        cfpo3_shake(buf, n, S.seed, S.round + 1, S.so.amp);
         cfpo3_free(e);
         r->e = NULL;
         char why[400];
@@ -328,5 +342,6 @@ int cfpo3_sched_run(cfpo3_engine *e, const cfpo3_sched_args *a, cfpo3_sched_resu
     r->rounds_done = S.round;
     r->best_round = S.best_round;
     r->so = S.so;
+    r->seed = S.seed;
     return 0;
 }

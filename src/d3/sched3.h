@@ -4,7 +4,8 @@
  * Owns: rounds of the one run loop (run_loop.h) over the 3-D engine:
  * round 0 from the start set, then K rounds, each from the best set so far
  * (the larger delta_min, then delta_avg) shaken by up to A Delta3 a
- * coordinate (shake3.h) in a fresh engine. A round ends when the engine
+ * coordinate (shake3.h) in a fresh engine seeded for the round (so its
+ * grid shifts and colour orders are not round 0's again). A round ends when the engine
  * converges or the flatness rule holds (stopflat.h, window W, gain G,
  * over that round's iterations); the user's rules (targets, time limit,
  * the iteration cap over all rounds, a signal) end the whole schedule.
@@ -66,6 +67,7 @@ typedef struct {
     int rounds_done, best_round;
     int signal_iter;   /* stop == CFPO_STOP_SIGNAL: the round's iteration */
     cfpo3_sched_opts so; /* what ran (the block's on resume) */
+    uint64_t seed;       /* the run's seed (round 0's) */
 } cfpo3_sched_result;
 
 /* Collective. Runs the schedule from e (owned from here on; fresh, or read
@@ -74,6 +76,10 @@ typedef struct {
  * bad block, memory); on -1 r->e is still the caller's to free. */
 int cfpo3_sched_run(cfpo3_engine *e, const cfpo3_sched_args *a, cfpo3_sched_result *r, char *err,
                     size_t errlen);
+
+/* The seed of round r's engine: the run's seed for round 0, a hash of it
+ * and r after. */
+uint64_t cfpo3_sched_round_seed(uint64_t seed, int round);
 
 /* The schedule's block of a checkpoint checked on its own (tests,
  * fuzzing): 0, or -1 with why in err. n: the checkpoint's points. */
