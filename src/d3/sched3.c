@@ -217,9 +217,10 @@ static int on_progress(const cfpo_iter_stats *st, void *user)
     return hit || S->caller;
 }
 
-static int fail(sched *S, char *err, size_t errlen, const char *msg)
+static int fail(sched *S, cfpo3_sched_result *r, char *err, size_t errlen, const char *msg)
 {
     if (msg) snprintf(err, errlen, "%s", msg);
+    if (r->e) cfpo3_set_checkpoint_tail(r->e, NULL, NULL); /* (S dies here) */
     cfpo_flat_free(&S->flat);
     free(S->best);
     return -1;
@@ -241,14 +242,14 @@ int cfpo3_sched_run(cfpo3_engine *e, const cfpo3_sched_args *a, cfpo3_sched_resu
         char why[200];
         if (load(&S, tb, tl, why, sizeof why) != 0) {
             snprintf(err, errlen, "the checkpoint's schedule: %s", why);
-            return fail(&S, err, errlen, NULL);
+            return fail(&S, r, err, errlen, NULL);
         }
         S.skip_first = 1;
     } else {
         S.so = a->so;
         S.near = cfpo3_options_of(e)->near; /* a fresh engine's option */
         S.seed = cfpo3_options_of(e)->seed;
-        if (cfpo_flat_init(&S.flat, S.so.flat, S.so.flat_gain) != 0) return fail(&S, err, errlen, "out of memory");
+        if (cfpo_flat_init(&S.flat, S.so.flat, S.so.flat_gain) != 0) return fail(&S, r, err, errlen, "out of memory");
     }
     const int active = S.so.rounds > 0 || S.so.flat > 0; /* else the plain run: no block */
     const int64_t n = S.n;
@@ -271,7 +272,7 @@ int cfpo3_sched_run(cfpo3_engine *e, const cfpo3_sched_args *a, cfpo3_sched_resu
             if (a->ckpt) runsignal_install(); /* SIGTERM / SIGUSR1: a checkpoint, then exit 3 */
             const int rc = cfpo_run_loop(&R, a->ckpt, a->ckpt ? a->every : 0, &res, err, errlen);
             runsignal_restore();
-            if (rc != 0) return fail(&S, err, errlen, NULL);
+            if (rc != 0) return fail(&S, r, err, errlen, NULL);
             stop = res.stop == CFPO_STOP_CALLER && !S.caller ? CFPO_STOP_FLAT : res.stop;
             conv = res.converged;
         }
@@ -291,9 +292,9 @@ int cfpo3_sched_run(cfpo3_engine *e, const cfpo3_sched_args *a, cfpo3_sched_resu
             S.best_min = dmin, S.best_avg = davg;
         } else if (S.round == 0 || dmin > S.best_min || (dmin == S.best_min && davg > S.best_avg)) {
             if (!S.best) S.best = malloc(24 * (size_t)n);
-            if (comm_all(S.best != NULL) == 0) return fail(&S, err, errlen, "out of memory for the best set");
+            if (comm_all(S.best != NULL) == 0) return fail(&S, r, err, errlen, "out of memory for the best set");
             if (comm_size() > 1) {
-                if (cfpo3_gather(e, S.best) != 0) return fail(&S, err, errlen, "out of memory gathering the best set");
+                if (cfpo3_gather(e, S.best) != 0) return fail(&S, r, err, errlen, "out of memory gathering the best set");
             } else {
                 memcpy(S.best, cfpo3_points(e), 24 * (size_t)n);
             }
@@ -313,7 +314,7 @@ int cfpo3_sched_run(cfpo3_engine *e, const cfpo3_sched_args *a, cfpo3_sched_resu
         double *buf = malloc(24 * (size_t)n);
         if (comm_all(buf != NULL) == 0) {
             free(buf);
-            return fail(&S, err, errlen, "out of memory for the shake");
+            return fail(&S, r, err, errlen, "out of memory for the shake");
         }
         memcpy(buf, S.best, 24 * (size_t)n);
         cfpo3_shake(buf, n, S.seed, S.round + 1, S.so.amp);
@@ -326,7 +327,7 @@ int cfpo3_sched_run(cfpo3_engine *e, const cfpo3_sched_args *a, cfpo3_sched_resu
         if (comm_all(mine) == 0) {
             cfpo3_free(e);
             snprintf(err, errlen, "the shaken set of round %d: %s", S.round + 1, mine ? "failed on another rank" : why);
-            return fail(&S, err, errlen, NULL);
+            return fail(&S, r, err, errlen, NULL);
         }
         r->e = e;
         S.round++;
