@@ -158,8 +158,10 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
     engine of `cfpo --dim 3` on the unit 3-torus (docs/method.md, "Three
     dimensions"): points (n, 3), n at least 39, delta_min and delta_avg over
     Delta3(n) = (sqrt(2)/n)^(1/3), init an (n, 3) array, tol default 1e-4
-    (positive), variant only "adaptive", no density; the bytes of
-    `cfpo --dim 3 -n N --seed S ... -o x.npy`.
+    (positive), variant only "adaptive", no density; the command's default
+    schedule (rounds ended by a flat window of 20 iterations, 3 shakes, the
+    best set returned; max_iter counts every round, a target ends it); the
+    bytes of `cfpo --dim 3 -n N --seed S ... -o x.npy`.
 
     The points are the same bytes as `cfpo -n N --seed S ... -o x.npy`
     writes (with density, as `cfpo --density SPEC ...`, the array saved as

@@ -1,8 +1,10 @@
 /* core_sample3.c - cfpo._core.run3: one run of the 3-D engine (src/d3/)
  * the way `cfpo --dim 3` runs it (src/d3/cli3.c: the same defaults, start,
- * checks and points in id order), behind the one engine interface
- * (engine3_ops.h) and through the one run loop, with the per-iteration
- * callback in Python's hands (core_on_iteration, core_sample.c). */
+ * schedule, checks and points in id order), behind the one engine
+ * interface (engine3_ops.h) and through the command's schedule of rounds
+ * (sched3.h), with the per-iteration callback in Python's hands
+ * (core_on_iteration, core_sample.c; called once before the run and after
+ * every iteration of every round). */
 #include "core.h"
 
 #include <stdlib.h>
@@ -11,7 +13,7 @@
 #include "cli.h"
 #include "engine3.h"
 #include "engine3_ops.h"
-#include "run_loop.h"
+#include "sched3.h"
 #include "stoprule.h"
 
 /* The (n, 3) start of init= (already checked by the Python layer), or
@@ -34,6 +36,14 @@ static PyArrayObject *start_of(PyObject *init, long long *n)
     }
     *n = m;
     return a;
+}
+
+/* The schedule's callback: Python's, but for the set before a later
+ * round's first iteration (a round starts from the shaken set). */
+static int on_iter(const cfpo_iter_stats *st, int round, int first, void *user)
+{
+    if (first && round > 0) return 0;
+    return core_on_iteration(st, user);
 }
 
 PyObject *core_run3(PyObject *self, PyObject *args)
@@ -64,31 +74,36 @@ PyObject *core_run3(PyObject *self, PyObject *args)
     o3.seed = seed;
     o3.threads = threads > 0 ? threads : 0;
     if (tol >= 0) o3.tol = tol;
-    cfpo_options lo;
-    memset(&lo, 0, sizeof lo);
-    lo.max_iter = max_iter >= 0 ? max_iter : CFPO_DEFAULT_MAX_ITER;
-    cfpo_stop_rules_init(&lo.stop);
-    lo.stop.target_min = tmin;
-    lo.stop.target_avg = tavg;
-    lo.stop.time_limit = tlimit;
+    cfpo3_sched_args sa;
+    memset(&sa, 0, sizeof sa);
+    cfpo3_sched_default(&sa.so);
+    sa.max_iter = max_iter >= 0 ? max_iter : CFPO_DEFAULT_MAX_ITER;
+    cfpo_stop_rules_init(&sa.stop);
+    sa.stop.target_min = tmin;
+    sa.stop.target_avg = tavg;
+    sa.stop.time_limit = tlimit;
     core_run_ctx c = {.callback = callback, .want_trace = want_trace, .trace = {.cols = CFPO_TRACE_COLUMNS}};
-    lo.progress = core_on_iteration;
-    lo.user = &c;
+    sa.on_iter = on_iter;
+    sa.user = &c;
     char err[1024] = "";
-    cfpo_result res;
+    cfpo_result res = {0};
     int rc = -1;
     double *xyz = NULL;
     c.t0 = cli_now();
+    sa.t0 = c.t0;
     c.ts = PyEval_SaveThread();
     cfpo3_engine *e = start ? cfpo3_create_given((const double *)PyArray_DATA(start), n, &o3, err, sizeof err)
                             : cfpo3_create(n, &o3, err, sizeof err);
+    const int created = e != NULL;
     if (e) {
-        cfpo_run_engine R;
-        cfpo3_as_run(e, &lo, c.t0, &R);
-        rc = cfpo_run_loop(&R, NULL, 0, &res, err, sizeof err);
+        cfpo3_sched_result sr;
+        rc = cfpo3_sched_run(e, &sa, &sr, err, sizeof err);
         if (rc == 0 && !c.failed && (xyz = malloc(sizeof(double) * 3 * (size_t)n)))
-            memcpy(xyz, cfpo3_points(e), sizeof(double) * 3 * (size_t)n);
-        cfpo3_free(e);
+            memcpy(xyz, sr.best ? sr.best : cfpo3_points(sr.e), sizeof(double) * 3 * (size_t)n);
+        res = (cfpo_result){.iterations = sr.iterations, .converged = sr.converged, .stop = sr.stop,
+                            .delta_min = sr.dmin, .delta_avg = sr.davg};
+        if (rc == 0) free(sr.best);
+        cfpo3_free(sr.e);
     }
     const double seconds = cli_now() - c.t0;
     PyEval_RestoreThread(c.ts);
@@ -99,5 +114,5 @@ PyObject *core_run3(PyObject *self, PyObject *args)
         const npy_intp dims[2] = {(npy_intp)n, 3};
         points = core_adopt(xyz, 2, dims);
     }
-    return core_run_result(&c, rc, e != NULL, err, points, &res, seconds);
+    return core_run_result(&c, rc, created, err, points, &res, seconds);
 }

@@ -29,7 +29,14 @@ int cfpo_flat_push(cfpo_flat_rule *r, double dmin, double davg)
     r->dmin[at] = dmin;
     r->davg[at] = davg;
     r->count++;
+    return cfpo_flat_holds(r);
+}
+
+int cfpo_flat_holds(const cfpo_flat_rule *r)
+{
+    if (r->window == 0) return 0;
+    const int w1 = r->window + 1;
     if (r->count < w1) return 0;
-    const int old = r->count % w1; /* the entry W iterations back */
-    return dmin - r->dmin[old] < r->gain && davg - r->davg[old] < r->gain;
+    const int last = (r->count - 1) % w1, old = r->count % w1; /* the entry W iterations back */
+    return r->dmin[last] - r->dmin[old] < r->gain && r->davg[last] - r->davg[old] < r->gain;
 }

@@ -28,5 +28,7 @@ void cfpo_flat_free(cfpo_flat_rule *r);
 
 /* Records one iteration's statistics; 1 when the rule holds after it. */
 int cfpo_flat_push(cfpo_flat_rule *r, double dmin, double davg);
+/* 1 when the rule holds after the last push (what that push answered). */
+int cfpo_flat_holds(const cfpo_flat_rule *r);
 
 #endif

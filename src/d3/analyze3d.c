@@ -34,7 +34,11 @@ static void usage(void)
            "  --bond C          bond threshold of the normalised q6 product (default 0.7)\n"
            "  --bonds B         bonds that make a point crystal-like (default 8)\n"
            "  --spectrum FILE   the power spectrum averaged over shells |k| = s (TSV: shell,\n"
-           "                    power, frequencies); adds p0= and peak= (the highest shell)\n"
+           "                    power, frequencies); adds p0= and peak= (the highest shell) and\n"
+           "                    the per-mode spike check: spike= (the largest P(k) over its shell's\n"
+           "                    mean), spike_k=, spike_shell=, spike_noise= (ln((2K+1)^3/2) + 4) and\n"
+           "                    spike_pass= (yes: spike <= spike_noise)\n"
+           "  --spike           the spectrum's figures and the spike check without the TSV file\n"
            "  --kmax K          frequencies in [-K, K]^3 (default ceil(2 n^(1/3)), 8..64; at most %d)\n"
            "  --exact           the spectrum by direct summation (O(n K^3)) instead of the NUFFT\n"
            "  --pcf FILE        the pair correlation g(r), r / Delta3(n) in bins of 0.02 up to\n"
@@ -46,11 +50,13 @@ static void usage(void)
            "                    from the rest? adds fpd_pass= fpd_points= fpd_max_violation= fpd_seconds=\n"
            "  -h, --help\n\n"
            "prints: ANALYZE3D n= delta_min= delta_avg= packing_fraction= q6_global= q6_local= crystal_like= crystal_fraction=\n"
-           "        neighbours= bond= bonds= w6= w6_local= [p0= peak= peak_shell= kmax=] [pcf_peak= pcf_peak_r=]\n"
+           "        neighbours= bond= bonds= w6= w6_local= [p0= peak= peak_shell= kmax= spike= spike_k=\n"
+           "        spike_shell= spike_noise= spike_pass=] [pcf_peak= pcf_peak_r=]\n"
            "        [vor_faces= vor_faces_sd= vor_volume_var=] [fpd_pass= fpd_points= fpd_max_violation= fpd_seconds=]\n", CFPO3_SPEC_KMAX);
 }
 
-/* The shell-averaged spectrum into path; " p0=... peak=..." into extra. */
+/* The shell-averaged spectrum into path (when not NULL); " p0=... peak=...
+ * spike=..." into extra. */
 static int spectrum(const double *p, size_t n, int K, int exact, const char *path, char *extra, size_t xl,
                     char *err, size_t errlen)
 {
@@ -71,12 +77,17 @@ static int spectrum(const double *p, size_t n, int K, int exact, const char *pat
     long c0;
     const double p0 = cfpo3_power_p0(P, K, n, &c0);
     const int peak = cfpo3_power_peak(sh, K);
-    cli_atomic f;
-    if (cli_atomic_open(&f, path, err, errlen) != 0) goto done;
-    fprintf(f.f, "shell\tpower\tfrequencies\n");
-    for (int s = 1; s <= K; s++) fprintf(f.f, "%d\t%.6g\t%ld\n", s, sh[s], cnt[s]);
-    if (cli_atomic_commit(&f, err, errlen) != 0) goto done;
-    snprintf(extra, xl, " p0=%.6g peak=%.6g peak_shell=%d kmax=%d", p0, sh[peak], peak, K);
+    cfpo3_spike sp;
+    cfpo3_power_spike(P, K, sh, cnt, &sp);
+    if (path) {
+        cli_atomic f;
+        if (cli_atomic_open(&f, path, err, errlen) != 0) goto done;
+        fprintf(f.f, "shell\tpower\tfrequencies\n");
+        for (int s = 1; s <= K; s++) fprintf(f.f, "%d\t%.6g\t%ld\n", s, sh[s], cnt[s]);
+        if (cli_atomic_commit(&f, err, errlen) != 0) goto done;
+    }
+    snprintf(extra, xl, " p0=%.6g peak=%.6g peak_shell=%d kmax=%d spike=%.4g spike_k=%d,%d,%d spike_shell=%d spike_noise=%.2f spike_pass=%s",
+             p0, sh[peak], peak, K, sp.ratio, sp.kx, sp.ky, sp.kz, sp.shell, sp.noise, sp.pass ? "yes" : "no");
     rc = 0;
 done:
     free(P), free(sh), free(cnt);
@@ -142,6 +153,7 @@ int main(int argc, char **argv)
                                        {"spectrum", required_argument, 0, 'S'},
                                        {"kmax", required_argument, 0, 'K'},
                                        {"exact", no_argument, 0, 'E'},
+                                       {"spike", no_argument, 0, 'X'},
                                        {"pcf", required_argument, 0, 'P'},
                                        {"voronoi", no_argument, 0, 'Y'},
                                        {"certify", no_argument, 0, 'C'},
@@ -151,7 +163,7 @@ int main(int argc, char **argv)
     double bond = 0.7;
     const char *spec_out = NULL, *pcf_out = NULL;
     int64_t kmax = 0;
-    int exact = 0, voronoi = 0, certify = 0;
+    int exact = 0, voronoi = 0, certify = 0, spike = 0;
     opterr = 0;
     int ch;
     while ((ch = getopt_long(argc, argv, ":h", lo, NULL)) != -1) {
@@ -168,6 +180,7 @@ int main(int argc, char **argv)
         case 'S': spec_out = optarg; break;
         case 'P': pcf_out = optarg; break;
         case 'E': exact = 1; break;
+        case 'X': spike = 1; break;
         case 'Y':
 #ifndef CFPO3_HAVE_VORONOI
             cli_usage_error(prog, "--voronoi needs a build with CGAL (CFPO_CGAL)");
@@ -204,7 +217,7 @@ int main(int argc, char **argv)
     const double d = dmin * cfpo3_delta_bound((double)n);
     char extra[512];
     snprintf(extra, sizeof extra, " w6=%.6f w6_local=%.6f", w.w6, w.w6_local);
-    if (spec_out && spectrum(p, n, (int)kmax, exact, spec_out, extra + strlen(extra), sizeof extra - strlen(extra), err, sizeof err) != 0)
+    if ((spec_out || spike) && spectrum(p, n, (int)kmax, exact, spec_out, extra + strlen(extra), sizeof extra - strlen(extra), err, sizeof err) != 0)
         cli_fail(prog, "%s", err);
     if (pcf_out && pcf(p, n, pcf_out, extra + strlen(extra), sizeof extra - strlen(extra), err, sizeof err) != 0)
         cli_fail(prog, "%s", err);

@@ -1,8 +1,9 @@
 /* cli3.c - the 3-D front end shared by `cfpo --dim 3` (src/main.c) and
  * the cfpo3d command (main3d.c): CFPO on the unit 3-torus (docs/cli.md,
  * "Three dimensions"). Parses the options, opens the 3-D engine behind the
- * one engine interface (engine3_ops.h) and runs it through the one run
- * loop (stop rules, progress line, checkpoints), then writes the point
+ * one engine interface (engine3_ops.h) and runs it through the schedule
+ * of rounds (sched3.h: the one run loop, the flatness rule, shakes; stop
+ * rules, progress line, checkpoints), then writes the point
  * files (points3.h) and the SUMMARY and BOX3D lines. Under mpirun every
  * rank runs this; the engine cuts the grid into bricks (engine3_dist.h),
  * rank 0 alone prints, traces and writes the files (of the set gathered
@@ -24,41 +25,32 @@
 #include "omp_compat.h"
 #include "points3.h"
 #include "run_loop.h"
-#include "runsignal.h"
-#include "shake3.h"
+#include "sched3.h"
 #include "solve3.h"
 #include "stopflat.h"
 #include "stoprule.h"
 
 static const char *prog = "cfpo3d"; /* set by cfpo3_cli_main */
 
-/* The progress line and the trace, after every iteration (the run loop's
- * callback). */
+/* The progress line and the trace, after every iteration (the
+ * schedule's callback). */
 typedef struct {
     cli_progress *pr;
     FILE *trace;
     double t0;
-    int started; /* the loop's first call is the set before any iteration */
-    cfpo_flat_rule *flat; /* --flat (may be off) */
-    int flat_hit;         /* the flatness rule asked to stop */
 } run_ctx;
 
-static int on_iteration(const cfpo_iter_stats *st, void *user)
+static int on_iteration(const cfpo_iter_stats *st, int round, int first, void *user)
 {
     run_ctx *x = user;
-    if (!x->started) { /* the set before the first iteration: no line, no row */
-        x->started = 1;
-        cfpo_flat_push(x->flat, st->delta_min, st->delta_avg); /* the window's first value */
-        return 0;
-    }
-    cli_progress_line(x->pr, 0, "iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  solved %lld  %.2fs/iter  elapsed %.1fs",
-                      st->iteration, st->delta_min, st->delta_avg, (long long)st->moved, (long long)st->solved,
+    if (first) return 0; /* the set before a round's first iteration: no line, no row */
+    cli_progress_line(x->pr, 0, "round %d  iter %d  delta_min %.4f  delta_avg %.4f  moved %lld  solved %lld  %.2fs/iter  elapsed %.1fs",
+                      round, st->iteration, st->delta_min, st->delta_avg, (long long)st->moved, (long long)st->solved,
                       st->seconds, cli_now() - x->t0);
     if (x->trace)
-        fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f %d\n", st->iteration, st->delta_min, st->delta_avg,
-                (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds, st->near);
-    if (cfpo_flat_push(x->flat, st->delta_min, st->delta_avg)) x->flat_hit = 1;
-    return x->flat_hit;
+        fprintf(x->trace, "%d %.6f %.6f %lld %lld %.6g %.4f %d %d\n", st->iteration, st->delta_min, st->delta_avg,
+                (long long)st->moved, (long long)st->solved, st->max_disp, st->seconds, st->near, round);
+    return 0;
 }
 #define MAX_OUT 8
 
@@ -77,33 +69,34 @@ static void usage(void)
            "      --target-min D   stop once delta_min >= D\n"
            "      --target-avg D   stop once delta_avg >= D (with --target-min: both)\n"
            "      --time-limit S   stop at the first iteration boundary past S seconds\n"
-           "      --flat W         stop once delta_min and delta_avg each rose by less than\n"
-           "                       --flat-gain G over the last W iterations (default: off)\n"
-           "      --flat-gain G    (default 1e-5)\n"
-           "      --shake K        after the run, K rounds: shake the best set so far by up to\n"
-           "                       --shake-amp A (default 0.15) Delta3 per axis and run again\n"
-           "                       (each round under the same stop rules); the best set is written\n"
+           "      --flat W         a round ends once delta_min and delta_avg each rose by less than\n"
+           "                       --flat-gain G over its last W iterations (default %d; 0: off)\n"
+           "      --flat-gain G    (default %g)\n"
+           "      --shake K        after round 0, K rounds: the best set so far shaken by up to\n"
+           "                       --shake-amp A (default %g) Delta3 per axis and run again; the\n"
+           "                       best set is written (default %d; 0: one round)\n"
            "      --init FILE      start from this n x 3 set (.npy, text, CSV, raw) instead of the jittered grid\n"
            "      --checkpoint F   write a checkpoint to F every --checkpoint-every K iterations and at the end\n"
            "      --checkpoint-every K  (default 10)\n"
-           "      --resume F       continue from checkpoint F (n, seed, tol and the policy come from it)\n"
+           "      --resume F       continue from checkpoint F (n, seed, tol, the policy and the schedule\n"
+           "                       come from it)\n"
            "      --no-relax       move to the solver's spot (no over-relaxation)\n"
            "      --no-shift       keep the grid fixed\n"
            "      --no-skip        solve every cell every iteration (same output, slower)\n"
            "      --no-near        the exact solve from the first iteration (no near phase)\n"
            "      --trace FILE     one line an iteration: iteration delta_min delta_avg moved solved max_disp seconds\n"
-           "                       near (1: the near solve)\n"
+           "                       near (1: the near solve) round\n"
            "      --dry-run        print the grid and memory and exit\n"
            "  -q, --quiet          no progress line\n"
            "Under mpirun the grid is cut into one brick per rank (bricks of at least 3 cells a side);\n"
            "the output and checkpoints are the same bytes for any rank and thread count.\n"
            "  -h, --help, -V, --version\n",
-           prog, strcmp(prog, "cfpo") == 0 ? " --dim 3" : "", (long long)cfpo3_grid_min_n(), MAX_OUT, CFPO_DEFAULT_MAX_ITER, CFPO3_DEFAULT_TOL);
+           prog, strcmp(prog, "cfpo") == 0 ? " --dim 3" : "", (long long)cfpo3_grid_min_n(), MAX_OUT, CFPO_DEFAULT_MAX_ITER, CFPO3_DEFAULT_TOL, CFPO3_SCHED_FLAT, CFPO3_SCHED_GAIN, CFPO3_SCHED_AMP, CFPO3_SCHED_ROUNDS);
 }
 
 typedef struct {
     int64_t n;
-    int n_given, seed_given, tol_given, policy_given;
+    int n_given, seed_given, tol_given, policy_given, sched_given;
     cfpo3_options o;
     int max_iter, every, quiet, dry;
     double box;
@@ -111,10 +104,7 @@ typedef struct {
     int nout;
     const char *init, *ckpt, *resume, *trace;
     cfpo_stop_rules stop;
-    int flat;         /* --flat W (0: off) */
-    double flat_gain; /* --flat-gain G */
-    int shake;        /* --shake K: rounds after the first (0: none) */
-    double shake_amp; /* --shake-amp A */
+    cfpo3_sched_opts so; /* --shake, --shake-amp, --flat, --flat-gain */
 } cmdline;
 
 /* Options of the 2-D command that have no meaning on the 3-torus: refused
@@ -147,8 +137,7 @@ static int parse(cmdline *c, int argc, char **argv)
     c->max_iter = CFPO_DEFAULT_MAX_ITER;
     c->every = -1;
     c->box = 1.0;
-    c->flat_gain = 1e-5;
-    c->shake_amp = 0.15;
+    cfpo3_sched_default(&c->so);
     opterr = 0;
     int ch;
     int64_t v;
@@ -182,22 +171,26 @@ static int parse(cmdline *c, int argc, char **argv)
         case 1002: cli_stop_option(prog, "target-avg", optarg, &c->stop); break;
         case 1003: cli_stop_option(prog, "time-limit", optarg, &c->stop); break;
         case 1004:
-            if (cli_parse_i64(optarg, 1, CFPO_FLAT_MAXW, &v) != 0)
-                cli_usage_error(prog, "--flat must be 1..%d iterations, not '%s'", CFPO_FLAT_MAXW, optarg);
-            c->flat = (int)v;
+            if (cli_parse_i64(optarg, 0, CFPO_FLAT_MAXW, &v) != 0)
+                cli_usage_error(prog, "--flat must be 0..%d iterations, not '%s'", CFPO_FLAT_MAXW, optarg);
+            c->so.flat = (int)v;
+            c->sched_given = 1;
             break;
         case 1005:
-            if (cli_parse_double(optarg, 0.0, 1.0, &c->flat_gain) != 0 || !(c->flat_gain > 0.0))
+            if (cli_parse_double(optarg, 0.0, 1.0, &c->so.flat_gain) != 0 || !(c->so.flat_gain > 0.0))
                 cli_usage_error(prog, "--flat-gain must be in (0, 1], not '%s'", optarg);
+            c->sched_given = 1;
             break;
         case 1006:
-            if (cli_parse_i64(optarg, 0, 1000, &v) != 0)
-                cli_usage_error(prog, "--shake must be 0..1000 rounds, not '%s'", optarg);
-            c->shake = (int)v;
+            if (cli_parse_i64(optarg, 0, CFPO3_SCHED_ROUNDS_MAX, &v) != 0)
+                cli_usage_error(prog, "--shake must be 0..%d rounds, not '%s'", CFPO3_SCHED_ROUNDS_MAX, optarg);
+            c->so.rounds = (int)v;
+            c->sched_given = 1;
             break;
         case 1007:
-            if (cli_parse_double(optarg, 0.0, 1.0, &c->shake_amp) != 0 || !(c->shake_amp > 0.0))
+            if (cli_parse_double(optarg, 0.0, 1.0, &c->so.amp) != 0 || !(c->so.amp > 0.0))
                 cli_usage_error(prog, "--shake-amp must be in (0, 1], not '%s'", optarg);
+            c->sched_given = 1;
             break;
         case 'I': c->init = optarg; break;
         case 'P': c->ckpt = optarg; break;
@@ -230,13 +223,11 @@ static int parse(cmdline *c, int argc, char **argv)
     }
     if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
     if (c->init && c->resume) cli_usage_error(prog, "--init and --resume exclude each other");
-    if (c->resume && (c->seed_given || c->tol_given || c->policy_given))
-        cli_usage_error(prog, "--resume takes the seed, tolerance and policy from the checkpoint");
+    if (c->resume && (c->seed_given || c->tol_given || c->policy_given || c->sched_given))
+        cli_usage_error(prog, "--resume takes the seed, tolerance, policy and schedule from the checkpoint");
     if (!c->n_given && !c->init && !c->resume) cli_usage_error(prog, "-n is required");
     if (c->every > 0 && !c->ckpt) cli_usage_error(prog, "--checkpoint-every needs --checkpoint");
     if (c->every < 0) c->every = 10;
-    if (c->shake > 0 && (c->ckpt || c->resume))
-        cli_usage_error(prog, "--shake does not combine with --checkpoint or --resume");
     if (c->n_given && c->n < cfpo3_grid_min_n())
         cli_usage_error(prog, "n = %lld is too small: at least %lld points are needed in 3-D",
                         (long long)c->n, (long long)cfpo3_grid_min_n());
@@ -272,14 +263,15 @@ static void agree_or_fail(int64_t bad, char *err, size_t errlen)
     cli_fail(prog, "%s", err);
 }
 
-/* Writes the output files: the set gathered in id order, rank 0 writes.
- * 0, or -1 with err (the same on every rank). */
-static int write_outputs(const cmdline *c, cfpo3_engine *e, char *err, size_t errlen)
+/* Writes the output files: set (3n by id, every rank) or, when NULL, e's
+ * set gathered in id order; rank 0 writes. 0, or -1 with err (the same on
+ * every rank). */
+static int write_outputs(const cmdline *c, cfpo3_engine *e, const double *set, char *err, size_t errlen)
 {
     const int64_t n = cfpo3_n(e);
     double *all = NULL;
-    const double *pts = cfpo3_points(e);
-    if (comm_size() > 1) {
+    const double *pts = set ? set : cfpo3_points(e);
+    if (!set && comm_size() > 1) {
         all = malloc(sizeof(double) * 3 * (size_t)n);
         if (comm_all(all != NULL) == 0 || cfpo3_gather(e, all) != 0) {
             free(all);
@@ -402,77 +394,39 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
     if (c.trace) { /* rank 0's */
         bad = root && cli_atomic_open(&tr, c.trace, err, sizeof err) != 0;
         agree_or_fail(bad, err, sizeof err);
-        if (root) fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds near\n");
+        if (root) fprintf(tr.f, "# iteration delta_min delta_avg moved solved max_disp seconds near round\n");
     }
     const int tracing = c.trace && root;
     cli_progress pr;
     cli_progress_init(&pr, c.quiet || !root);
-    /* the one run loop (src/engine/run_loop.h) over the engine's table;
-     * with --shake, again after each shake of the best set so far */
-    cfpo_options lo;
-    memset(&lo, 0, sizeof lo);
-    lo.max_iter = c.max_iter;
-    lo.stop = c.stop;
-    lo.progress = on_iteration;
-    cfpo_run_engine R;
-    cfpo_result res;
-    cfpo3_engine *best = NULL;
-    double best_min = 0.0, best_avg = 0.0;
-    int best_round = 0, total_iter = 0, rounds_done = 0;
-    double *buf = NULL;
-    for (int round = 0;; round++) {
-        cfpo_flat_rule flat;
-        if (cfpo_flat_init(&flat, c.flat, c.flat_gain) != 0) cli_fail(prog, "out of memory");
-        run_ctx ctx = {.pr = &pr, .trace = tracing ? tr.f : NULL, .t0 = t0, .flat = &flat};
-        lo.user = &ctx;
-        cfpo3_as_run(e, &lo, t0, &R);
-        if (c.ckpt) runsignal_install(); /* SIGTERM / SIGUSR1: a checkpoint, then exit 3 */
-        const int rc = cfpo_run_loop(&R, c.ckpt, c.ckpt ? c.every : 0, &res, err, sizeof err);
-        runsignal_restore();
-        cfpo_flat_free(&flat);
-        if (rc == 0 && res.stop == CFPO_STOP_CALLER && ctx.flat_hit) res.stop = CFPO_STOP_FLAT;
-        if (rc != 0) {
-            cli_progress_end(&pr);
-            if (tracing) cli_atomic_abort(&tr);
-            cli_fail(prog, "%s", err);
-        }
-        if (c.shake == 0) break;
-        /* keep the best set: the larger delta_min, then delta_avg */
-        total_iter += cfpo3_iterations(e);
-        double dmin, davg;
-        cfpo3_measure(e, &dmin, &davg);
-        if (!best || dmin > best_min || (dmin == best_min && davg > best_avg)) {
-            if (best) cfpo3_free(best);
-            best = e, best_min = dmin, best_avg = davg, best_round = round;
-        } else {
-            cfpo3_free(e);
-        }
-        e = best;
-        rounds_done = round;
-        if (round == c.shake || res.stop == CFPO_STOP_TIME) break; /* (the time limit is the whole run's) */
-        /* the next round: the best set shaken, a fresh engine */
-        if (!buf) buf = malloc(sizeof(double) * 3 * (size_t)n);
-        if (comm_all(buf != NULL) == 0 || (comm_size() > 1 ? cfpo3_gather(best, buf) != 0 : 0))
-            cli_fail(prog, "out of memory for --shake");
-        if (comm_size() == 1) memcpy(buf, cfpo3_points(best), sizeof(double) * 3 * (size_t)n);
-        cfpo3_shake(buf, n, c.o.seed, round + 1, c.shake_amp);
-        e = cfpo3_create_given(buf, n, cfpo3_options_of(best), err, sizeof err);
-        if (!e) cli_fail(prog, "--shake: %s", err);
+    /* the schedule (sched3.h): rounds of the one run loop, shakes between */
+    run_ctx ctx = {.pr = &pr, .trace = tracing ? tr.f : NULL, .t0 = t0};
+    cfpo3_sched_args sa = {.so = c.so, .max_iter = c.max_iter, .stop = c.stop, .t0 = t0, .ckpt = c.ckpt,
+                           .every = c.every, .on_iter = on_iteration, .user = &ctx};
+    cfpo3_sched_result sr;
+    if (cfpo3_sched_run(e, &sa, &sr, err, sizeof err) != 0) {
+        cli_progress_end(&pr);
+        if (tracing) cli_atomic_abort(&tr);
+        cli_fail(prog, "%s", err);
     }
-    free(buf);
-    if (c.shake > 0) cfpo3_as_run(e, &lo, t0, &R); /* the kept engine's, for the RANKS line */
+    e = sr.e;
     cli_progress_end(&pr);
-    const int stop = res.stop, converged = res.converged;
+    const int stop = sr.stop;
     if (stop == CFPO_STOP_SIGNAL) {
         if (tracing) cli_atomic_abort(&tr);
     } else {
-        if (write_outputs(&c, e, err, sizeof err) != 0) {
+        if (write_outputs(&c, e, sr.best, err, sizeof err) != 0) {
             if (tracing) cli_atomic_abort(&tr);
             cli_fail(prog, "%s", err);
         }
         bad = tracing && cli_atomic_commit(&tr, err, sizeof err) != 0;
         agree_or_fail(bad, err, sizeof err);
     }
+    free(sr.best);
+    cfpo_options lo;
+    memset(&lo, 0, sizeof lo);
+    cfpo_run_engine R;
+    cfpo3_as_run(e, &lo, t0, &R); /* the last round's engine, for the RANKS line */
     long work[3];
     cfpo3_work(e, &work[0], &work[1], &work[2]);
     int64_t wsum[3] = {work[0], work[1], work[2]};
@@ -483,26 +437,26 @@ int cfpo3_cli_main(const char *name, int argc, char **argv)
         cfpo3_free(e);
         return stop == CFPO_STOP_SIGNAL ? 3 : 0;
     }
-    double dmin, davg;
-    cfpo3_measure(e, &dmin, &davg);
+    const double dmin = sr.dmin, davg = sr.davg;
     const cfpo3_options *o = cfpo3_options_of(e);
-    cli_summary s = {"cfpo3d", /* the 3-D engine, under either command */ o->relax ? "adaptive" : "adaptive-norelax", n, o->seed,
+    cli_summary s = {"cfpo3d", /* the 3-D engine, under either command */ o->relax ? "adaptive" : "adaptive-norelax", n, sr.seed,
                      o->threads > 0 ? o->threads : omp_get_max_threads(), comm_size(),
-                     c.shake > 0 ? total_iter : cfpo3_iterations(e),
-                     cli_now() - t0, dmin, davg, stop == CFPO_STOP_CONVERGED ? 1 : converged ? 1 : 0,
+                     sr.iterations, cli_now() - t0, dmin, davg, sr.converged,
                      cli_peak_rss(), cfpo_stop_name(stop)};
     cli_print_summary(stdout, &s);
     const double d = dmin * cfpo3_delta_bound((double)n);
     printf("BOX3D side=%.17g delta_min_box=%.9g packing_fraction=%.6f\n", c.box, d * c.box,
            M_PI / 6.0 * (double)n * d * d * d);
     if (comm_size() > 1) printf("%s", rline);
-    if (c.shake > 0) printf("SHAKE3D rounds=%d amp=%g best_round=%d\n", rounds_done, c.shake_amp, best_round);
+    if (sr.so.rounds > 0)
+        printf("SHAKE3D rounds=%d amp=%g best_round=%d flat=%d flat_gain=%g\n", sr.rounds_done, sr.so.amp,
+               sr.best_round, sr.so.flat, sr.so.flat_gain);
     if (getenv("CFPO3D_WORK")) /* the solver's work over every rank, for measuring */
         printf("WORK3D cells=%lld tests=%lld cuts=%lld\n", (long long)wsum[0], (long long)wsum[1],
                (long long)wsum[2]);
     if (stop == CFPO_STOP_SIGNAL)
         fprintf(stderr, "%s: stopped by a signal at iteration %d; checkpoint %s written, no output; continue "
-                "with --resume %s\n", prog, res.iterations, c.ckpt, c.ckpt);
+                "with --resume %s\n", prog, sr.signal_iter, c.ckpt, c.ckpt);
     cfpo3_free(e);
     return stop == CFPO_STOP_SIGNAL ? 3 : 0;
 }

@@ -11,6 +11,7 @@
 #include "solve3.h"
 
 #define SHIFT_STREAM 0x5a17f7e3c3d0b1a9ULL
+#define COLOUR_STREAM 0x3c01a2b5e7f90d4bULL
 
 void cfpo3_options_default(cfpo3_options *o)
 {
@@ -84,6 +85,7 @@ void cfpo3_free(cfpo3_engine *e)
     free(e->pos), free(e->prev), free(e->cellof), free(e->cids), free(e->cstart);
     free(e->changed), free(e->solvedat), free(e->needm), free(e->fill);
     cfpo3_dist_free(e);
+    free(e->tail_in);
     free(e);
 }
 
@@ -95,6 +97,25 @@ void cfpo3_shift_for(const cfpo3_engine *e, int k, double s[3])
     }
     const int at = 1 + 4 * ((k - 1) / 4); /* shifted before 1, 5, 9, ... */
     for (int a = 0; a < 3; a++) s[a] = cfpo_rand01(e->o.seed, SHIFT_STREAM, 3 * (uint64_t)at + (uint64_t)a) * e->G.L;
+}
+
+void cfpo3_colours_for(const cfpo3_engine *e, int k, int order[27], int off[3])
+{
+    for (int c = 0; c < 27; c++) order[c] = c;
+    off[0] = off[1] = off[2] = 0;
+    if (!e->o.shift || k < 1) return;
+    const int at = 1 + 4 * ((k - 1) / 4); /* the offset changes with the shift */
+    for (int a = 0; a < 3; a++) {
+        const int o = (int)(3.0 * cfpo_rand01(e->o.seed, COLOUR_STREAM, 3 * (uint64_t)at + (uint64_t)a));
+        off[a] = o < 3 ? o : 2;
+    }
+    for (int c = 26; c > 0; c--) { /* Fisher-Yates, keyed by (seed, k) */
+        int j = (int)((double)(c + 1) * cfpo_rand01(e->o.seed, COLOUR_STREAM ^ 1, 27 * (uint64_t)k + (uint64_t)c));
+        if (j > c) j = c;
+        const int t = order[c];
+        order[c] = order[j];
+        order[j] = t;
+    }
 }
 
 void cfpo3_rebucket(cfpo3_engine *e)

@@ -93,7 +93,14 @@ double cfpo3_bytes_per_point(int64_t n);
 /* Checkpoints (engine3_ckpt.c): a versioned binary file with a CRC-32,
  * written whole or not at all. The resumed run gives the same bytes as an
  * uninterrupted one. read: the options other than threads come from the
- * file; NULL with one line in err. */
+ * file; NULL with one line in err. A caller may add a block of its own
+ * after the points (the command's schedule, sched3.h): fn fills *buf
+ * (malloc'd, freed by the writer) and *len on every rank (0 or -1), and
+ * the block of a read checkpoint is kept with the engine (NULL, 0 when
+ * it carried none). */
+typedef int (*cfpo3_tail_fn)(void *user, unsigned char **buf, size_t *len);
+void cfpo3_set_checkpoint_tail(cfpo3_engine *e, cfpo3_tail_fn fn, void *user);
+const unsigned char *cfpo3_checkpoint_tail(const cfpo3_engine *e, size_t *len);
 int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, size_t errlen);
 cfpo3_engine *cfpo3_checkpoint_read(const char *path, int threads, char *err, size_t errlen);
 /* The checksum a checkpoint's bytes (header and points, len < 4 GiB)

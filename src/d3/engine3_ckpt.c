@@ -1,9 +1,9 @@
 /* engine3_ckpt.c - the 3-D engine's checkpoint file (engine3.h).
  *
- * Version 2, little-endian, 64-byte header (version 1, before the near
- * phase, is refused):
+ * Version 2 (no caller's block) or 3 (with one), little-endian, 64-byte
+ * header (version 1, before the near phase, is refused):
  *    0  magic "CFPO3DCK"   8 bytes
- *    8  version = 2        u32
+ *    8  version = 2 or 3   u32
  *   12  header bytes = 64  u32
  *   16  n                  u64   points (id order after the header)
  *   24  seed               u64
@@ -11,11 +11,12 @@
  *   40  tol                f64   in (0, CFPO_TOL_MAX]
  *   48  flags              u32   bit 0 relax, bit 1 shift, bit 2 skip, bit 3 in the
  *                                near phase; no other bit
- *   52  reserved           u32   0
- *   56  reserved           u32   0
+ *   52  tail bytes         u64   version 2: 0; version 3: the caller's block
+ *                                after the points, 1 .. 2^40 bytes
  *   60  crc32              u32   zlib's crc32 of the header (this field as
- *                                0) followed by the points
- * then n points of 24 bytes (x, y, z as float64, each in [0,1)).
+ *                                0) followed by the points and the block
+ * then n points of 24 bytes (x, y, z as float64, each in [0,1)), then the
+ * block (the command's schedule, sched3.c; opaque here).
  * The rest of the state is a function of these: the grid's shift (of the
  * seed and the iteration), delta(X) (of the points); the skip stamps start
  * empty, which solves every cell once and changes nothing (a skipped cell
@@ -42,6 +43,7 @@
 #define HDR 64
 #define ITER_MAX 1000000000ULL
 #define N_MAX (1LL << 40)
+#define TAIL_MAX (1ULL << 40)
 
 static void put32(unsigned char *b, uint32_t v) { memcpy(b, &v, 4); }
 static void put64(unsigned char *b, uint64_t v) { memcpy(b, &v, 8); }
@@ -58,42 +60,61 @@ static uint64_t get64(const unsigned char *b)
     return v;
 }
 
-static uint32_t crc_of(const unsigned char *h, const double *pos, int64_t n)
+static uLong crc_more(uLong c, const unsigned char *p, size_t left)
 {
-    unsigned char hz[HDR];
-    memcpy(hz, h, HDR);
-    put32(hz + 60, 0);
-    uLong c = crc32(0L, Z_NULL, 0);
-    c = crc32(c, hz, HDR);
-    const unsigned char *p = (const unsigned char *)pos;
-    size_t left = sizeof(double) * 3 * (size_t)n;
     while (left > 0) { /* crc32 takes a uInt length */
         const uInt part = left > (1u << 30) ? (1u << 30) : (uInt)left;
         c = crc32(c, p, part);
         p += part;
         left -= part;
     }
-    return (uint32_t)c;
+    return c;
+}
+
+static uint32_t crc_of(const unsigned char *h, const double *pos, int64_t n, const unsigned char *tail,
+                       size_t tail_len)
+{
+    unsigned char hz[HDR];
+    memcpy(hz, h, HDR);
+    put32(hz + 60, 0);
+    uLong c = crc32(0L, Z_NULL, 0);
+    c = crc32(c, hz, HDR);
+    c = crc_more(c, (const unsigned char *)pos, sizeof(double) * 3 * (size_t)n);
+    return (uint32_t)crc_more(c, tail, tail_len);
 }
 
 uint32_t cfpo3_checkpoint_crc(const unsigned char *buf, size_t len)
 {
-    if (len < HDR || (len - HDR) % 24 != 0) return 0;
+    if (len < HDR) return 0;
     unsigned char hz[HDR];
     memcpy(hz, buf, HDR);
     put32(hz + 60, 0);
     uLong c = crc32(0L, Z_NULL, 0);
     c = crc32(c, hz, HDR);
-    return (uint32_t)crc32(c, buf + HDR, (uInt)(len - HDR));
+    return (uint32_t)crc_more(c, buf + HDR, len - HDR);
 }
 
-/* Writes the file from pos (3n doubles by id): one process. */
-static int write_file(const cfpo3_engine *e, const double *pos, const char *path, char *err, size_t errlen)
+void cfpo3_set_checkpoint_tail(cfpo3_engine *e, cfpo3_tail_fn fn, void *user)
+{
+    e->tail_fn = fn;
+    e->tail_user = user;
+}
+
+const unsigned char *cfpo3_checkpoint_tail(const cfpo3_engine *e, size_t *len)
+{
+    *len = e->tail_in_len;
+    return e->tail_in;
+}
+
+/* Writes the file from pos (3n doubles by id) and the caller's block:
+ * one process. */
+static int write_file(const cfpo3_engine *e, const double *pos, const unsigned char *tail, size_t tail_len,
+                      const char *path, char *err, size_t errlen)
 {
     unsigned char h[HDR];
     memset(h, 0, sizeof h);
     memcpy(h, MAGIC, 8);
-    put32(h + 8, 2);
+    put32(h + 8, tail_len > 0 ? 3 : 2);
     put32(h + 12, HDR);
     put64(h + 16, (uint64_t)e->n);
     put64(h + 24, e->o.seed);
@@ -101,13 +122,15 @@ static int write_file(const cfpo3_engine *e, const double *pos, const char *path
     memcpy(h + 40, &e->o.tol, 8);
     put32(h + 48, (uint32_t)((e->o.relax ? 1 : 0) | (e->o.shift ? 2 : 0) | (e->o.skip ? 4 : 0) |
                           (e->near ? 8 : 0)));
-    put32(h + 60, crc_of(h, pos, e->n));
+    put64(h + 52, (uint64_t)tail_len);
+    put32(h + 60, crc_of(h, pos, e->n, tail, tail_len));
     safefile f;
     if (safefile_open(&f, path, "wb", err, errlen) != 0) return -1;
     tmpguard_file(f.tmp);
     char *tmp = strdup(f.tmp);
     int ok = fwrite(h, 1, HDR, f.f) == HDR &&
-             fwrite(pos, sizeof(double), 3 * (size_t)e->n, f.f) == 3 * (size_t)e->n;
+             fwrite(pos, sizeof(double), 3 * (size_t)e->n, f.f) == 3 * (size_t)e->n &&
+             (tail_len == 0 || fwrite(tail, 1, tail_len, f.f) == tail_len);
     int rc;
     if (!ok) {
         snprintf(err, errlen, "%s: write failed", path);
@@ -123,17 +146,30 @@ static int write_file(const cfpo3_engine *e, const double *pos, const char *path
 
 int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, size_t errlen)
 {
-    if (!e->dist) return write_file(e, e->pos, path, err, errlen);
+    unsigned char *tail = NULL;
+    size_t tail_len = 0;
+    if (e->tail_fn && comm_all(e->tail_fn(e->tail_user, &tail, &tail_len) == 0) == 0) {
+        free(tail);
+        snprintf(err, errlen, "%s: out of memory for the checkpoint", path);
+        return -1;
+    }
+    if (!e->dist) {
+        const int rc = write_file(e, e->pos, tail, tail_len, path, err, errlen);
+        free(tail);
+        return rc;
+    }
     /* several ranks: the set gathered, rank 0 writes, every rank learns how it went */
     double *all = malloc(sizeof(double) * 3 * (size_t)e->n);
     if (comm_all(all != NULL) == 0 || cfpo3_dist_gather(e, all) != 0) {
         free(all);
+        free(tail);
         snprintf(err, errlen, "%s: out of memory gathering the points", path);
         return -1;
     }
     int64_t rc = 0;
-    if (comm_rank() == 0) rc = write_file(e, all, path, err, errlen);
+    if (comm_rank() == 0) rc = write_file(e, all, tail, tail_len, path, err, errlen);
     free(all);
+    free(tail);
     comm_bcast(&rc, sizeof rc, 0);
     if (rc != 0) comm_bcast(err, errlen, 0);
     return rc == 0 ? 0 : -1;
@@ -146,7 +182,8 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
         snprintf(err, errlen, "%s: not a 3-D checkpoint (bad magic or too short)", name);
         return NULL;
     }
-    if (get32(buf + 8) != 2 || get32(buf + 12) != HDR) {
+    const uint32_t version = get32(buf + 8);
+    if ((version != 2 && version != 3) || get32(buf + 12) != HDR) {
         snprintf(err, errlen, "%s: unsupported 3-D checkpoint version %u", name, get32(buf + 8));
         return NULL;
     }
@@ -154,7 +191,12 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
     const uint32_t flags = get32(buf + 48);
     double tol;
     memcpy(&tol, buf + 40, 8);
-    if (n > (uint64_t)N_MAX || (uint64_t)(len - HDR) / 24 != n || (len - HDR) % 24 != 0) {
+    const uint64_t tail_len = get64(buf + 52);
+    if (version == 2 ? tail_len != 0 : (tail_len == 0 || tail_len > TAIL_MAX)) {
+        snprintf(err, errlen, "%s: bad block length for version %u", name, version);
+        return NULL;
+    }
+    if (n > (uint64_t)N_MAX || (uint64_t)(len - HDR) < tail_len || (uint64_t)(len - HDR) - tail_len != 24 * n) {
         snprintf(err, errlen, "%s: size does not match its point count", name);
         return NULL;
     }
@@ -166,7 +208,7 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
         snprintf(err, errlen, "%s: tolerance out of range", name);
         return NULL;
     }
-    if ((flags & ~15u) != 0 || get32(buf + 52) != 0 || get32(buf + 56) != 0) {
+    if ((flags & ~15u) != 0) {
         snprintf(err, errlen, "%s: bad flags or reserved fields", name);
         return NULL;
     }
@@ -176,7 +218,8 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
         return NULL;
     }
     memcpy(pos, buf + HDR, sizeof(double) * 3 * (size_t)n);
-    if (crc_of(buf, pos, (int64_t)n) != get32(buf + 60)) {
+    const unsigned char *tail = buf + HDR + 24 * n;
+    if (crc_of(buf, pos, (int64_t)n, tail, (size_t)tail_len) != get32(buf + 60)) {
         snprintf(err, errlen, "%s: checksum mismatch (the file is corrupt)", name);
         free(pos);
         return NULL;
@@ -212,6 +255,16 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
         }
     memcpy(e->pos, pos, sizeof(double) * 3 * (size_t)n);
     free(pos);
+    if (tail_len > 0) {
+        e->tail_in = malloc((size_t)tail_len);
+        if (!e->tail_in) {
+            snprintf(err, errlen, "%s: out of memory", name);
+            cfpo3_free(e);
+            return NULL;
+        }
+        memcpy(e->tail_in, tail, (size_t)tail_len);
+        e->tail_in_len = (size_t)tail_len;
+    }
     e->iter = (int)it;
     cfpo3_shift_for(e, e->iter, e->shift);
     cfpo3_assign(e);

@@ -295,12 +295,15 @@ int cfpo3_step(cfpo3_engine *e, cfpo_iter_stats *st)
     int lo[3], hi[3];
     for (int ax = 0; ax < 3; ax++) lo[ax] = B->lo[ax][B->me[ax]], hi[ax] = B->lo[ax][B->me[ax] + 1];
     const int nth = e->o.threads > 0 ? e->o.threads : omp_get_max_threads();
-    for (int colour = 0; colour < 27; colour++) {
+    int order[27], off[3];
+    cfpo3_colours_for(e, k, order, off);
+    for (int ci = 0; ci < 27; ci++) {
+        const int colour = order[ci];
         const int col[3] = {colour % 3, (colour / 3) % 3, colour / 9};
-        /* the brick's cells of this colour: first[ax] + 3 t, t < cnt[ax] */
+        /* the brick's cells of this colour ((c + off) % 3 == col): first[ax] + 3 t, t < cnt[ax] */
         int first[3], cnt[3];
         for (int ax = 0; ax < 3; ax++) {
-            first[ax] = lo[ax] + ((col[ax] - lo[ax]) % 3 + 3) % 3;
+            first[ax] = lo[ax] + ((col[ax] - off[ax] - lo[ax]) % 3 + 6) % 3;
             cnt[ax] = first[ax] < hi[ax] ? (hi[ax] - first[ax] + 2) / 3 : 0;
         }
         const int nx = cnt[0], ny = cnt[1], per = cnt[0] * cnt[1] * cnt[2];

@@ -167,3 +167,30 @@ double cfpo3_power_p0(const double *P, int K, size_t n, long *cnt)
             }
     return *cnt ? sum / (double)*cnt : NAN;
 }
+
+double cfpo3_spike_noise_level(int K)
+{
+    const double S = 2.0 * K + 1;
+    return log(S * S * S / 2) + 4;
+}
+
+void cfpo3_power_spike(const double *P, int K, const double *shell, const long *count, cfpo3_spike *out)
+{
+    const size_t S = side(K);
+    out->ratio = out->P = out->mean = NAN;
+    out->kx = out->ky = out->kz = out->shell = 0;
+    out->noise = cfpo3_spike_noise_level(K);
+    for (int kz = 0; kz <= K; kz++)
+        for (int ky = kz > 0 ? -K : 0; ky <= K; ky++)
+            for (int kx = (kz > 0 || ky > 0) ? -K : 1; kx <= K; kx++) {
+                const long s = lround(sqrt((double)(kx * kx + ky * ky + kz * kz)));
+                if (s < 1 || s > K || count[s] < CFPO3_SPIKE_MIN_COUNT || !(shell[s] > 0)) continue;
+                const double p = P[((size_t)(kz + K) * S + (size_t)(ky + K)) * S + (size_t)(kx + K)];
+                const double q = p / shell[s];
+                if (!(q <= out->ratio)) { /* also the first (NAN) */
+                    out->ratio = q, out->P = p, out->mean = shell[s];
+                    out->kx = kx, out->ky = ky, out->kz = kz, out->shell = (int)s;
+                }
+            }
+    out->pass = !(out->ratio > out->noise);
+}

@@ -32,4 +32,24 @@ double cfpo3_power_p0(const double *P, int K, size_t n, long *cnt);
 /* The highest of shells 1..K (the first on ties; K >= 1). */
 int cfpo3_power_peak(const double *shell, int K);
 
+/* The per-mode spike check (the 3-D form of the 2-D analysis' spike
+ * ratio, analysis/rings.h): the largest P(k) over its shell's mean, over
+ * k in the half space (kz > 0, or kz = 0 and ky > 0, or kz = ky = 0 and
+ * kx > 0; P(-k) = P(k)) on shells 1..K of at least CFPO3_SPIKE_MIN_COUNT
+ * frequencies whose mean is positive (ties: the first in (kz, ky, kx)
+ * order). For a set without structure P(k) / mean is about Exp(1) and
+ * independent across the half space's (2K+1)^3 / 2 modes, so its maximum
+ * is about ln((2K+1)^3 / 2); the noise level is that plus 4 (the 2-D
+ * check's ln(M/2) + 4 with M = (2K+1)^3 modes), and a set passes when its
+ * ratio is at most the level. shell: cfpo3_power_shells' means and counts. */
+#define CFPO3_SPIKE_MIN_COUNT 16
+typedef struct {
+    double ratio, P, mean; /* NAN when no shell qualifies */
+    int kx, ky, kz, shell;
+    double noise;          /* ln((2K+1)^3 / 2) + 4 */
+    int pass;              /* ratio <= noise (1 when no shell qualifies) */
+} cfpo3_spike;
+double cfpo3_spike_noise_level(int K);
+void cfpo3_power_spike(const double *P, int K, const double *shell, const long *count, cfpo3_spike *out);
+
 #endif

@@ -66,6 +66,12 @@ struct cfpo3_engine {
     double t_compute, t_halo, t_migrate; /* seconds on this rank */
     double b_halo, b_migrate;            /* bytes this rank sent */
     int64_t phases;
+    /* checkpoints: the caller's block after the points (engine3.h,
+     * cfpo3_set_checkpoint_tail) and the block a read checkpoint carried */
+    cfpo3_tail_fn tail_fn;
+    void *tail_user;
+    unsigned char *tail_in;
+    size_t tail_in_len;
 };
 
 /* u of coordinate x under shift s: wrapped into [0,1). */
@@ -82,6 +88,16 @@ static inline int cfpo3_cell1(double u, int g)
 }
 /* The shift of the grid in force during iteration k (1-based). */
 void cfpo3_shift_for(const cfpo3_engine *e, int k, double s[3]);
+/* The colour phases of iteration k: their order (a permutation of the 27
+ * colours, drawn anew each iteration) and the colours' offset along each
+ * axis (0..2, drawn with each grid shift): cell (i, j, l) has colour
+ * ((i + off0) % 3, (j + off1) % 3, (l + off2) % 3). With the shift in
+ * [0, L) alone a colour class keeps its place on the torus, and the fixed
+ * order (z slowest) printed the period 3L into the set: peaks at the axis
+ * frequencies 4g/3, near the spectrum's first peak
+ * (docs/results/2026-11-29-3d-default.md). The identity and no offset
+ * when the grid is fixed (--no-shift). */
+void cfpo3_colours_for(const cfpo3_engine *e, int k, int order[27], int off[3]);
 /* Puts every point in its cell (after a shift or moves across cells). */
 void cfpo3_rebucket(cfpo3_engine *e);
 /* Recomputes cellof from pos and the shift, then rebuckets. */

@@ -14,7 +14,7 @@ bad() { echo "FAIL: $*"; fail=1; }
 AN="$B/cfpo3d-analyze"
 "$B/cfpo3d-wse" -n 1500 -s 4 -q -o "$T/w.npy" >/dev/null || bad "wse"
 out=$("$AN" --spectrum "$T/s.tsv" --pcf "$T/g.tsv" --kmax 14 "$T/w.npy") || bad "analyze exits non-zero"
-echo "$out" | grep -q " p0=.* peak_shell=.* kmax=14 pcf_peak=" || bad "fields: $out"
+echo "$out" | grep -q " p0=.* peak_shell=.* kmax=14 spike=.* spike_noise=.* spike_pass=[a-z]* pcf_peak=" || bad "fields: $out"
 [ "$(tail -n +2 "$T/s.tsv" | wc -l)" -eq 14 ] || bad "14 shells"
 [ "$(tail -n +2 "$T/g.tsv" | wc -l)" -eq 150 ] || bad "150 g(r) bins"
 ex=$("$AN" --spectrum "$T/s2.tsv" --kmax 14 --exact "$T/w.npy")

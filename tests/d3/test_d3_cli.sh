@@ -29,12 +29,13 @@ expect 2 "required" -o a.npy
 expect 2 "exclude" -n 100 --init x.npy --resume y.bin
 expect 2 "checkpoint-every needs" -n 100 --checkpoint-every 3
 expect 2 "target" -n 100 --target-min 0 -o a.npy
-expect 2 "flat must be" -n 100 --flat 0 -o a.npy
+expect 2 "flat must be" -n 100 --flat -1 -o a.npy
 expect 2 "flat-gain" -n 100 --flat 5 --flat-gain 0 -o a.npy
 expect 2 "flat-gain" -n 100 --flat 5 --flat-gain nan -o a.npy
 expect 2 "shake must be" -n 100 --shake -1 -o a.npy
 expect 2 "shake-amp" -n 100 --shake 1 --shake-amp 0 -o a.npy
-expect 2 "does not combine" -n 100 --shake 1 --checkpoint c.bin -o a.npy
+expect 2 "schedule from the checkpoint" --resume c.bin --shake 1 -o a.npy
+expect 2 "schedule from the checkpoint" --resume c.bin --flat 5 -o a.npy
 # runtime failures (1)
 expect 1 "cannot open" --init missing.npy -o a.npy
 printf '0.1 0.2\n' >bad.txt
@@ -114,28 +115,53 @@ rm -f clus.txt
 # the flatness rule: with a gain no iteration reaches it stops after
 # exactly W iterations (the bytes of --max-iter W); with a gain every early
 # iteration passes it runs to the cap
-"$CFPO" -q -n 324 -t 1 --flat 4 --flat-gain 1 -o fl.npy >fl.log && grep -q "iterations=4 .*stop=flat" fl.log &&
+"$CFPO" -q -n 324 -t 1 --flat 4 --flat-gain 1 --shake 0 -o fl.npy >fl.log && grep -q "iterations=4 .*stop=flat" fl.log &&
   "$CFPO" -q -n 324 -t 1 --max-iter 4 -o fl4.npy >/dev/null && cmp -s fl.npy fl4.npy && ok || bad "--flat: $(cat fl.log)"
-"$CFPO" -q -n 324 -t 1 --flat 2 --flat-gain 1e-9 --max-iter 5 >fl2.log && grep -q "iterations=5 .*stop=max-iter" fl2.log &&
+"$CFPO" -q -n 324 -t 1 --flat 2 --flat-gain 1e-9 --shake 0 --max-iter 5 >fl2.log && grep -q "iterations=5 .*stop=max-iter" fl2.log &&
   ok || bad "--flat, small gain: $(cat fl2.log)"
 
 # --shake: the same bytes for 1 and 2 threads; the best set is kept, so
 # delta_min is at least the unshaken run's (its first round), and the
-# SHAKE3D line names the round written
-for t in 1 2; do "$CFPO" -q -n 324 -t $t --max-iter 6 --shake 2 -o sh$t.npy >sh$t.log || bad "--shake, $t threads"; done
+# SHAKE3D line names the round written (rounds of exactly 3 iterations:
+# --flat 3 with a gain no iteration reaches)
+for t in 1 2; do "$CFPO" -q -n 324 -t $t --flat 3 --flat-gain 1 --shake 2 -o sh$t.npy >sh$t.log || bad "--shake, $t threads"; done
 cmp -s sh1.npy sh2.npy && ok || bad "--shake: threads 1 and 2 give different bytes"
-"$CFPO" -q -n 324 -t 1 --max-iter 6 -o sh0.npy >sh0.log
+"$CFPO" -q -n 324 -t 1 --max-iter 3 --shake 0 -o sh0.npy >sh0.log
 d0=$(awk '/^SUMMARY/ { for (i = 1; i <= NF; i++) if ($i ~ /^delta_min=/) { split($i, a, "="); print a[2] } }' sh0.log)
 ds=$(awk '/^SUMMARY/ { for (i = 1; i <= NF; i++) if ($i ~ /^delta_min=/) { split($i, a, "="); print a[2] } }' sh1.log)
-grep -q "^SHAKE3D rounds=2 amp=0.15 best_round=[0-2]$" sh1.log && grep -q "iterations=18 " sh1.log &&
+grep -q "^SHAKE3D rounds=2 amp=0.15 best_round=[0-2] flat=3 flat_gain=1$" sh1.log && grep -q "iterations=9 .*converged=yes" sh1.log &&
   awk -v a="$ds" -v b="$d0" 'BEGIN { exit !(a >= b) }' && ok || bad "--shake: $(cat sh1.log) against $d0"
 if grep -q "best_round=0" sh1.log; then cmp -s sh1.npy sh0.npy && ok || bad "--shake: round 0 kept but not the unshaken bytes"; fi
+# --max-iter counts every round: the schedule stops inside round 1
+"$CFPO" -q -n 324 -t 1 --flat 3 --flat-gain 1 --shake 2 --max-iter 5 >shm.log &&
+  grep -q "iterations=5 .*converged=no .*stop=max-iter" shm.log && grep -q "^SHAKE3D rounds=1 " shm.log && ok ||
+  bad "--shake with --max-iter 5: $(cat shm.log)"
+
+# the default schedule (flat window 20, 3 shakes) run whole, and resumed
+# from checkpoints inside a round, at the last iteration of round 0 and
+# of round 1 (where the round ended), and just after: every resume (on 2
+# threads) gives the uninterrupted bytes; the trace's last column is the
+# round
+"$CFPO" -q -n 324 -t 1 --trace def.tsv -o def.npy >def.log || bad "default run"
+grep -q "converged=yes" def.log && grep -q "^SHAKE3D rounds=3 amp=0.15 best_round=[0-3] flat=20 flat_gain=1e-05$" def.log &&
+  ok || bad "default run: $(cat def.log)"
+r0=$(awk '!/^#/ && $9 == 0' def.tsv | wc -l)
+r1=$(awk '!/^#/ && $9 <= 1' def.tsv | wc -l)
+for k in 7 $r0 $((r0 + 1)) $((r0 + 9)) $r1 $((r1 + 2)); do
+  rm -f dck.bin
+  "$CFPO" -q -n 324 -t 1 --max-iter $k --checkpoint dck.bin --checkpoint-every 4 >/dev/null || bad "checkpointed default run to $k"
+  "$CFPO" -q --resume dck.bin -t 2 -o dres.npy >/dev/null && cmp -s dres.npy def.npy && ok ||
+    bad "the default schedule resumed after $k iterations (rounds end at $r0, $r1) differs"
+done
+rm -f dck.bin
 
 # the analysis of a run's output
 "$AN" t1.npy >an.log && grep -q "^ANALYZE3D n=324 delta_min=.* q6_global=.* crystal_like=" an.log && ok || bad "analyze"
 d1=$(awk '/^SUMMARY/ { for (i = 1; i <= NF; i++) if ($i ~ /^delta_min=/) { split($i, a, "="); print a[2] } }' s1.log)
 d2=$(awk '{ for (i = 1; i <= NF; i++) if ($i ~ /^delta_min=/) { split($i, a, "="); print a[2] } }' an.log)
 [ "$d1" = "$d2" ] && ok || bad "analyze delta_min $d2, run $d1"
+# the spike check on the default schedule's set (a clean set: passes)
+"$AN" --spike def.npy >sp.log && grep -q " spike=.* spike_noise=.* spike_pass=yes$" sp.log && ok || bad "spike: $(cat sp.log)"
 CFPO="$AN"
 expect 2 "one input file" 
 expect 1 "cannot open" missing.npy

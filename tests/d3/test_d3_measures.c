@@ -2,7 +2,10 @@
  * spectrum against the direct sum (random sets; a simple cubic lattice,
  * whose P is n on the reciprocal lattice and 0 elsewhere), P(0) = n and
  * P(-k) = P(k), the shells and P0 against sums written out here, and g(r)
- * against all pairs on both paths (cells, and one cell for a large r). */
+ * against all pairs on both paths (cells, and one cell for a large r);
+ * the per-mode spike check against a search written out here, passed by
+ * white noise and a jittered set, failed by a jittered lattice and by
+ * white noise imprinted with one cosine (the mode named). */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -103,6 +106,81 @@ static void check_pcf(const char *name, const double *p, size_t n, double rmax)
 }
 
 /* a lattice of side^3 conventional cells: kind 0 FCC, 1 BCC, 2 SC */
+/* The spike check of p (the NUFFT, K) against a plain search over the
+ * half space; returns the check's answer. */
+static cfpo3_spike spike_of(const char *name, const double *p, size_t n, int K)
+{
+    const size_t S = 2 * (size_t)K + 1;
+    double *P = malloc(S * S * S * sizeof *P), *sh = malloc(((size_t)K + 1) * sizeof *sh);
+    long *cnt = malloc(((size_t)K + 1) * sizeof *cnt);
+    char err[200];
+    cfpo3_spike r;
+    CHECK(cfpo3_power_nufft(p, n, K, P, err, sizeof err) == 0, "%s: spectrum", name);
+    cfpo3_power_shells(P, K, sh, cnt);
+    cfpo3_power_spike(P, K, sh, cnt, &r);
+    double best = -1;
+    int bk[3] = {0, 0, 0};
+    for (int z = -K; z <= K; z++)
+        for (int y = -K; y <= K; y++)
+            for (int x = -K; x <= K; x++) {
+                const int half = z > 0 || (z == 0 && (y > 0 || (y == 0 && x > 0)));
+                const double q2 = (double)(x * x + y * y + z * z);
+                const long sh_i = lround(sqrt(q2));
+                if (!half || sh_i < 1 || sh_i > K || cnt[sh_i] < CFPO3_SPIKE_MIN_COUNT) continue;
+                const double q = P[at(K, x, y, z)] / sh[sh_i];
+                if (q > best) best = q, bk[0] = x, bk[1] = y, bk[2] = z;
+            }
+    CHECK(fabs(r.ratio - best) < 1e-12 * best && r.kx == bk[0] && r.ky == bk[1] && r.kz == bk[2],
+          "%s: spike %.6g at (%d %d %d), the search %.6g at (%d %d %d)", name, r.ratio, r.kx, r.ky, r.kz, best, bk[0],
+          bk[1], bk[2]);
+    CHECK(fabs(r.noise - (log(pow(2.0 * K + 1, 3) / 2) + 4)) < 1e-12 && r.pass == (r.ratio <= r.noise),
+          "%s: the noise level", name);
+    free(P), free(sh), free(cnt);
+    return r;
+}
+
+static void check_spikes(void)
+{
+    const size_t n = 4096;
+    const int K = 24, h = 16;
+    double *p = malloc(3 * n * sizeof *p);
+    random_set(p, n, 11);
+    cfpo3_spike r = spike_of("white", p, n, K);
+    CHECK(r.pass && r.ratio > 5, "white noise: spike %.3g against the level %.3g", r.ratio, r.noise);
+    /* jittered: one uniform point in each cell of the 16^3 grid */
+    for (size_t i = 0; i < n; i++) {
+        const size_t c[3] = {i % h, i / h % h, i / (h * h)};
+        for (int a = 0; a < 3; a++) p[3 * i + a] = ((double)c[a] + cfpo_rand01(12, 0x4a49, 3 * i + a)) / h;
+    }
+    r = spike_of("jittered", p, n, K);
+    CHECK(r.pass, "jittered: spike %.3g against the level %.3g", r.ratio, r.noise);
+    /* the same grid's centres moved by at most 0.2 of a cell: the lattice */
+    for (size_t i = 0; i < n; i++) {
+        const size_t c[3] = {i % h, i / h % h, i / (h * h)};
+        for (int a = 0; a < 3; a++)
+            p[3 * i + a] = ((double)c[a] + 0.5 + 0.2 * (cfpo_rand01(13, 0x4a49, 3 * i + a) - 0.5)) / h;
+    }
+    r = spike_of("lattice", p, n, K);
+    CHECK(!r.pass && r.shell == h && abs(r.kx) + abs(r.ky) + abs(r.kz) == h,
+          "lattice: spike %.3g at (%d %d %d), level %.3g", r.ratio, r.kx, r.ky, r.kz, r.noise);
+    /* white noise of density 1 + 0.3 cos(2 pi k0.x), k0 = (3, -5, 7), by
+     * rejection */
+    const int k0[3] = {3, -5, 7};
+    uint64_t draw = 0;
+    for (size_t i = 0; i < n;) {
+        double x[3];
+        for (int a = 0; a < 3; a++) x[a] = cfpo_rand01(14, 0x494d, draw++);
+        const double dens = 1 + 0.3 * cos(2 * M_PI * (k0[0] * x[0] + k0[1] * x[1] + k0[2] * x[2]));
+        if (1.3 * cfpo_rand01(14, 0x494e, draw++) > dens) continue;
+        for (int a = 0; a < 3; a++) p[3 * i + a] = x[a];
+        i++;
+    }
+    r = spike_of("imprinted", p, n, K);
+    CHECK(!r.pass && r.kx == k0[0] && r.ky == k0[1] && r.kz == k0[2],
+          "imprinted: spike %.3g at (%d %d %d), level %.3g", r.ratio, r.kx, r.ky, r.kz, r.noise);
+    free(p);
+}
+
 static size_t lattice(double *p, int kind, int side)
 {
     static const double fcc[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
@@ -191,6 +269,7 @@ int main(void)
         orth = fmax(orth, fabs(s - 1.0 / 13));
     }
     CHECK(orth < 1e-12, "3j orthogonality off by %.3g", orth);
+    check_spikes();
     free(p);
     return test_report(passed_, failed_);
 }

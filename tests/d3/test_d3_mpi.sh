@@ -8,7 +8,8 @@
 # and 4 ranks give the uninterrupted bytes; SIGUSR1 to mpirun: exit 3, a
 # checkpoint, no output, and a resume on 3 ranks gives the uninterrupted
 # bytes; more ranks than the grid's bricks allow: one line, exit 2, no
-# file; cfpo3d under mpirun too; --dry-run prints the memory a rank.
+# file; cfpo3d under mpirun too; --dry-run prints the memory a rank; the
+# schedule of shaken rounds on 2 ranks, its checkpoint and a resume on 3.
 set -u
 HERE=$(cd "$(dirname "$0")/.." && pwd)
 . "$HERE/mpi_common.sh" "$1" "$2" cfpo-d3mpi
@@ -35,14 +36,23 @@ for pt in "2 1" "3 1" "4 1" "2 2" "27 1"; do
   fi
 done
 
-# --shake: the gathered, shaken set and the fresh engine of each round
-# give one process's bytes on 2 ranks
-"$CFPO" -q --dim 3 -n $N --max-iter 3 --shake 1 -t 1 -o sref.npy >/dev/null || bad "--shake reference failed"
-if run 2 --dim 3 -n $N --max-iter 3 --shake 1 -t 1 -o sout.npy >run.out 2>run.err; then
+# the schedule (rounds of exactly 2 iterations: --flat 2 with a gain no
+# iteration reaches; 2 shakes): the gathered best set, the shaken set and
+# the fresh engine of each round give one process's bytes on 2 ranks; a
+# checkpoint inside round 1 (iteration 3) written on 2 ranks is one
+# process's, and its resume on 3 ranks gives the uninterrupted bytes
+SH="--flat 2 --flat-gain 1 --shake 2"
+"$CFPO" -q --dim 3 -n $N $SH -t 1 -o sref.npy >/dev/null || bad "--shake reference failed"
+if run 2 --dim 3 -n $N $SH -t 1 -o sout.npy >run.out 2>run.err; then
   cmp -s sout.npy sref.npy && ok || bad "--shake: 2 ranks differ from one process"
 else
   bad "--shake on 2 ranks failed: $(head -3 run.err)"
 fi
+run 2 --dim 3 -n $N $SH --max-iter 3 -t 1 --checkpoint sck.bin >/dev/null 2>sck.err || bad "schedule checkpoint on 2 ranks: $(head -2 sck.err)"
+"$CFPO" -q --dim 3 -n $N $SH --max-iter 3 -t 1 --checkpoint sck1.bin >/dev/null
+cmp -s sck.bin sck1.bin && ok || bad "the schedule's checkpoint on 2 ranks differs from one process's"
+run 3 --dim 3 -t 1 --resume sck.bin -o sres.npy >/dev/null 2>sres.err
+cmp -s sres.npy sref.npy && ok || bad "the schedule resumed on 3 ranks: not the uninterrupted bytes ($(head -2 sres.err))"
 
 # --init from a set with a void (1,000 points in half the box, 100 in the
 # other half): nearest neighbours beyond a block, so the measure falls back
