@@ -79,8 +79,9 @@ done
 # SIGUSR1 to mpirun (forwarded to the ranks): every rank stops at the same
 # iteration boundary, one checkpoint, exit 3, no output. A tolerance no
 # move falls below keeps the run going until the signal (the default run
-# of N points can converge within the wait)
-"$MPIRUN" --oversubscribe -np 2 "$CFPO" -q --dim 3 -n $N -t 1 --tol 1e-12 --checkpoint sig.ck --checkpoint-every 1000 \
+# of N points can converge within the wait; so can the default schedule's
+# flat rule, which --flat 0 --shake 0 turns off)
+"$MPIRUN" --oversubscribe -np 2 "$CFPO" -q --dim 3 -n $N -t 1 --tol 1e-12 --flat 0 --shake 0 --checkpoint sig.ck --checkpoint-every 1000 \
   -o sig.npy >sig.out 2>sig.err &
 pid=$!
 sleep 3
@@ -92,7 +93,7 @@ it=$(sed -n 's/.*stopped by a signal at iteration \([0-9]*\);.*/\1/p' sig.err | 
   bad "SIGUSR1 under mpirun: exit $rc, iteration '$it', checkpoint $(ls sig.ck 2>&1): $(grep cfpo: sig.err | head -2)"
 if [ -n "$it" ]; then
   run 3 --dim 3 -t 1 --resume sig.ck --max-iter $((it + 1)) -o sigr.npy >/dev/null 2>&1
-  "$CFPO" -q --dim 3 -t 2 -n $N --tol 1e-12 --max-iter $((it + 1)) -o sigu.npy >/dev/null
+  "$CFPO" -q --dim 3 -t 2 -n $N --tol 1e-12 --flat 0 --shake 0 --max-iter $((it + 1)) -o sigu.npy >/dev/null
   cmp -s sigr.npy sigu.npy && ok || bad "resume of the signalled run on 3 ranks: not the uninterrupted bytes"
 fi
 
