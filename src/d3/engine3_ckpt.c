@@ -30,6 +30,7 @@
 #include <string.h>
 #include <zlib.h>
 
+#include "bytes_le.h"
 #include "engine3_dist.h"
 #include "state3.h"
 #include "safefile.h"
@@ -45,20 +46,6 @@
 #define N_MAX (1LL << 40)
 #define TAIL_MAX (1ULL << 40)
 
-static void put32(unsigned char *b, uint32_t v) { memcpy(b, &v, 4); }
-static void put64(unsigned char *b, uint64_t v) { memcpy(b, &v, 8); }
-static uint32_t get32(const unsigned char *b)
-{
-    uint32_t v;
-    memcpy(&v, b, 4);
-    return v;
-}
-static uint64_t get64(const unsigned char *b)
-{
-    uint64_t v;
-    memcpy(&v, b, 8);
-    return v;
-}
 
 static uLong crc_more(uLong c, const unsigned char *p, size_t left)
 {
@@ -76,7 +63,7 @@ static uint32_t crc_of(const unsigned char *h, const double *pos, int64_t n, con
 {
     unsigned char hz[HDR];
     memcpy(hz, h, HDR);
-    put32(hz + 60, 0);
+    le_put32(hz + 60, 0);
     uLong c = crc32(0L, Z_NULL, 0);
     c = crc32(c, hz, HDR);
     c = crc_more(c, (const unsigned char *)pos, sizeof(double) * 3 * (size_t)n);
@@ -88,7 +75,7 @@ uint32_t cfpo3_checkpoint_crc(const unsigned char *buf, size_t len)
     if (len < HDR) return 0;
     unsigned char hz[HDR];
     memcpy(hz, buf, HDR);
-    put32(hz + 60, 0);
+    le_put32(hz + 60, 0);
     uLong c = crc32(0L, Z_NULL, 0);
     c = crc32(c, hz, HDR);
     return (uint32_t)crc_more(c, buf + HDR, len - HDR);
@@ -114,16 +101,16 @@ static int write_file(const cfpo3_engine *e, const double *pos, const unsigned c
     unsigned char h[HDR];
     memset(h, 0, sizeof h);
     memcpy(h, MAGIC, 8);
-    put32(h + 8, tail_len > 0 ? 3 : 2);
-    put32(h + 12, HDR);
-    put64(h + 16, (uint64_t)e->n);
-    put64(h + 24, e->o.seed);
-    put64(h + 32, (uint64_t)e->iter);
+    le_put32(h + 8, tail_len > 0 ? 3 : 2);
+    le_put32(h + 12, HDR);
+    le_put64(h + 16, (uint64_t)e->n);
+    le_put64(h + 24, e->o.seed);
+    le_put64(h + 32, (uint64_t)e->iter);
     memcpy(h + 40, &e->o.tol, 8);
-    put32(h + 48, (uint32_t)((e->o.relax ? 1 : 0) | (e->o.shift ? 2 : 0) | (e->o.skip ? 4 : 0) |
+    le_put32(h + 48, (uint32_t)((e->o.relax ? 1 : 0) | (e->o.shift ? 2 : 0) | (e->o.skip ? 4 : 0) |
                           (e->near ? 8 : 0)));
-    put64(h + 52, (uint64_t)tail_len);
-    put32(h + 60, crc_of(h, pos, e->n, tail, tail_len));
+    le_put64(h + 52, (uint64_t)tail_len);
+    le_put32(h + 60, crc_of(h, pos, e->n, tail, tail_len));
     safefile f;
     if (safefile_open(&f, path, "wb", err, errlen) != 0) return -1;
     tmpguard_file(f.tmp);
@@ -182,16 +169,16 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
         snprintf(err, errlen, "%s: not a 3-D checkpoint (bad magic or too short)", name);
         return NULL;
     }
-    const uint32_t version = get32(buf + 8);
-    if ((version != 2 && version != 3) || get32(buf + 12) != HDR) {
-        snprintf(err, errlen, "%s: unsupported 3-D checkpoint version %u", name, get32(buf + 8));
+    const uint32_t version = le_get32(buf + 8);
+    if ((version != 2 && version != 3) || le_get32(buf + 12) != HDR) {
+        snprintf(err, errlen, "%s: unsupported 3-D checkpoint version %u", name, le_get32(buf + 8));
         return NULL;
     }
-    const uint64_t n = get64(buf + 16), it = get64(buf + 32);
-    const uint32_t flags = get32(buf + 48);
+    const uint64_t n = le_get64(buf + 16), it = le_get64(buf + 32);
+    const uint32_t flags = le_get32(buf + 48);
     double tol;
     memcpy(&tol, buf + 40, 8);
-    const uint64_t tail_len = get64(buf + 52);
+    const uint64_t tail_len = le_get64(buf + 52);
     if (version == 2 ? tail_len != 0 : (tail_len == 0 || tail_len > TAIL_MAX)) {
         snprintf(err, errlen, "%s: bad block length for version %u", name, version);
         return NULL;
@@ -219,14 +206,14 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
     }
     memcpy(pos, buf + HDR, sizeof(double) * 3 * (size_t)n);
     const unsigned char *tail = buf + HDR + 24 * n;
-    if (crc_of(buf, pos, (int64_t)n, tail, (size_t)tail_len) != get32(buf + 60)) {
+    if (crc_of(buf, pos, (int64_t)n, tail, (size_t)tail_len) != le_get32(buf + 60)) {
         snprintf(err, errlen, "%s: checksum mismatch (the file is corrupt)", name);
         free(pos);
         return NULL;
     }
     cfpo3_options o;
     cfpo3_options_default(&o);
-    o.seed = get64(buf + 24);
+    o.seed = le_get64(buf + 24);
     o.tol = tol;
     o.relax = (flags & 1) != 0;
     o.shift = (flags & 2) != 0;

@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bytes_le.h"
 #include "comm.h"
 #include "rng.h"
 #include "engine3_ops.h"
@@ -69,27 +70,6 @@ typedef struct {
     void *user;
 } sched;
 
-static void put32(unsigned char *b, uint32_t v) { memcpy(b, &v, 4); }
-static void put64(unsigned char *b, uint64_t v) { memcpy(b, &v, 8); }
-static void putd(unsigned char *b, double v) { memcpy(b, &v, 8); }
-static uint32_t get32(const unsigned char *b)
-{
-    uint32_t v;
-    memcpy(&v, b, 4);
-    return v;
-}
-static uint64_t get64(const unsigned char *b)
-{
-    uint64_t v;
-    memcpy(&v, b, 8);
-    return v;
-}
-static double getd(const unsigned char *b)
-{
-    double v;
-    memcpy(&v, b, 8);
-    return v;
-}
 
 static size_t block_len(int flat, int round, int64_t n)
 {
@@ -107,19 +87,19 @@ static int tail(void *user, unsigned char **buf, size_t *len)
     unsigned char *b = calloc(L, 1);
     if (!b) return -1;
     memcpy(b, MAGIC, 8);
-    put32(b + 8, (uint32_t)S->round);
-    put32(b + 12, (uint32_t)S->so.rounds);
-    putd(b + 16, S->so.amp);
-    put32(b + 24, (uint32_t)S->so.flat);
-    put32(b + 28, (uint32_t)S->best_round);
-    putd(b + 32, S->so.flat_gain);
-    put64(b + 40, (uint64_t)S->iters_before);
-    putd(b + 48, S->best_min);
-    putd(b + 56, S->best_avg);
-    put32(b + 64, (uint32_t)S->flat.count);
-    put32(b + 68, (uint32_t)S->ended);
-    put32(b + 72, (uint32_t)S->near);
-    put64(b + 80, S->seed);
+    le_put32(b + 8, (uint32_t)S->round);
+    le_put32(b + 12, (uint32_t)S->so.rounds);
+    le_putd(b + 16, S->so.amp);
+    le_put32(b + 24, (uint32_t)S->so.flat);
+    le_put32(b + 28, (uint32_t)S->best_round);
+    le_putd(b + 32, S->so.flat_gain);
+    le_put64(b + 40, (uint64_t)S->iters_before);
+    le_putd(b + 48, S->best_min);
+    le_putd(b + 56, S->best_avg);
+    le_put32(b + 64, (uint32_t)S->flat.count);
+    le_put32(b + 68, (uint32_t)S->ended);
+    le_put32(b + 72, (uint32_t)S->near);
+    le_put64(b + 80, S->seed);
     size_t at = FIXED;
     if (S->so.flat > 0) {
         const size_t w1 = (size_t)S->so.flat + 1;
@@ -139,24 +119,24 @@ int cfpo3_sched_block_check(const unsigned char *b, size_t len, int64_t n, char 
     if (len < FIXED || memcmp(b, MAGIC, 8) != 0) {
         why = "no schedule block";
     } else {
-        const uint32_t round = get32(b + 8), rounds = get32(b + 12), flat = get32(b + 24), br = get32(b + 28);
-        const uint32_t count = get32(b + 64), ended = get32(b + 68);
-        const double amp = getd(b + 16), gain = getd(b + 32);
+        const uint32_t round = le_get32(b + 8), rounds = le_get32(b + 12), flat = le_get32(b + 24), br = le_get32(b + 28);
+        const uint32_t count = le_get32(b + 64), ended = le_get32(b + 68);
+        const double amp = le_getd(b + 16), gain = le_getd(b + 32);
         if (rounds > CFPO3_SCHED_ROUNDS_MAX || round > rounds || br > round || !(amp > 0 && amp <= 1) ||
-            flat > CFPO_FLAT_MAXW || !(gain > 0 && gain <= 1) || get64(b + 40) > COUNT_MAX || count > COUNT_MAX ||
-            ended > 2 || (rounds == 0 && flat == 0) || get32(b + 72) > 1 || get32(b + 76) != 0)
+            flat > CFPO_FLAT_MAXW || !(gain > 0 && gain <= 1) || le_get64(b + 40) > COUNT_MAX || count > COUNT_MAX ||
+            ended > 2 || (rounds == 0 && flat == 0) || le_get32(b + 72) > 1 || le_get32(b + 76) != 0)
             why = "a schedule field out of range";
-        else if (!isfinite(getd(b + 48)) || !isfinite(getd(b + 56)))
+        else if (!isfinite(le_getd(b + 48)) || !isfinite(le_getd(b + 56)))
             why = "a schedule field out of range";
         else if (len != block_len((int)flat, (int)round, n))
             why = "the schedule block's size does not match";
         else {
             const unsigned char *p = b + FIXED;
             for (size_t i = 0; i < (flat > 0 ? 2 * ((size_t)flat + 1) : 0) && !why; i++)
-                if (!isfinite(getd(p + 8 * i))) why = "a schedule field out of range";
+                if (!isfinite(le_getd(p + 8 * i))) why = "a schedule field out of range";
             p += flat > 0 ? 16 * ((size_t)flat + 1) : 0;
             for (size_t i = 0; round > 0 && i < 3 * (size_t)n && !why; i++) {
-                const double x = getd(p + 8 * i);
+                const double x = le_getd(p + 8 * i);
                 if (!(x >= 0.0 && x < 1.0)) why = "a best-set coordinate outside [0,1)";
             }
         }
@@ -169,20 +149,20 @@ int cfpo3_sched_block_check(const unsigned char *b, size_t len, int64_t n, char 
 static int load(sched *S, const unsigned char *b, size_t len, char *err, size_t errlen)
 {
     if (cfpo3_sched_block_check(b, len, S->n, err, errlen) != 0) return -1;
-    S->round = (int)get32(b + 8);
-    S->so.rounds = (int)get32(b + 12);
-    S->so.amp = getd(b + 16);
-    S->so.flat = (int)get32(b + 24);
-    S->best_round = (int)get32(b + 28);
-    S->so.flat_gain = getd(b + 32);
-    S->iters_before = (int)get64(b + 40);
-    S->best_min = getd(b + 48);
-    S->best_avg = getd(b + 56);
-    S->ended = (int)get32(b + 68);
-    S->near = (int)get32(b + 72);
-    S->seed = get64(b + 80);
+    S->round = (int)le_get32(b + 8);
+    S->so.rounds = (int)le_get32(b + 12);
+    S->so.amp = le_getd(b + 16);
+    S->so.flat = (int)le_get32(b + 24);
+    S->best_round = (int)le_get32(b + 28);
+    S->so.flat_gain = le_getd(b + 32);
+    S->iters_before = (int)le_get64(b + 40);
+    S->best_min = le_getd(b + 48);
+    S->best_avg = le_getd(b + 56);
+    S->ended = (int)le_get32(b + 68);
+    S->near = (int)le_get32(b + 72);
+    S->seed = le_get64(b + 80);
     if (cfpo_flat_init(&S->flat, S->so.flat, S->so.flat_gain) != 0) goto oom;
-    S->flat.count = (int)get32(b + 64);
+    S->flat.count = (int)le_get32(b + 64);
     size_t at = FIXED;
     if (S->so.flat > 0) {
         const size_t w1 = (size_t)S->so.flat + 1;

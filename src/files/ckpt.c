@@ -6,6 +6,7 @@
 #include <string.h>
 #include <zlib.h>
 
+#include "bytes_le.h"
 #include "cfpo_types.h"
 #include "grid.h"
 #include "policy.h"
@@ -13,20 +14,6 @@
 #define MAGIC_V2 "CFPOCKPT"
 #define MAGIC_V1 "CFPOCKP1"
 
-static void put32(unsigned char *b, uint32_t v) { for (int i = 0; i < 4; i++) b[i] = (unsigned char)(v >> (8 * i)); }
-static void put64(unsigned char *b, uint64_t v) { for (int i = 0; i < 8; i++) b[i] = (unsigned char)(v >> (8 * i)); }
-static uint32_t get32(const unsigned char *b)
-{
-    uint32_t v = 0;
-    for (int i = 3; i >= 0; i--) v = v << 8 | b[i];
-    return v;
-}
-static uint64_t get64(const unsigned char *b)
-{
-    uint64_t v = 0;
-    for (int i = 7; i >= 0; i--) v = v << 8 | b[i];
-    return v;
-}
 
 static int known_variant(uint64_t v)
 {
@@ -51,16 +38,16 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
     }
     uint64_t variant, converged, n;
     if (memcmp(h, MAGIC_V2, 8) == 0) {
-        c->version = (int)get32(h + 8);
-        if (get32(h + 8) != 2 && get32(h + 8) != 3 && get32(h + 8) != CKPT_VERSION) {
+        c->version = (int)le_get32(h + 8);
+        if (le_get32(h + 8) != 2 && le_get32(h + 8) != 3 && le_get32(h + 8) != CKPT_VERSION) {
             snprintf(err, errlen, "%s: checkpoint version %lu is not one this cfpo reads (1 to 4)", path,
-                     (unsigned long)get32(h + 8));
+                     (unsigned long)le_get32(h + 8));
             return -1;
         }
         c->bytes = c->version == CKPT_VERSION ? CKPT_HEADER : CKPT_HEADER_V3;
-        if (get32(h + 12) != (uint32_t)c->bytes) {
+        if (le_get32(h + 12) != (uint32_t)c->bytes) {
             snprintf(err, errlen, "%s: corrupt checkpoint: header size field %lu, expected %d", path,
-                     (unsigned long)get32(h + 12), c->bytes);
+                     (unsigned long)le_get32(h + 12), c->bytes);
             return -1;
         }
         if (size < (uint64_t)c->bytes) {
@@ -69,8 +56,8 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
             return -1;
         }
         if (c->version == CKPT_VERSION) {
-            c->hash = get64(h + 64);
-            const uint64_t rb = get64(h + 72);
+            c->hash = le_get64(h + 64);
+            const uint64_t rb = le_get64(h + 72);
             memcpy(&c->davg_ref, &rb, 8);
             if (!(c->davg_ref >= 0 && c->davg_ref < 2) || (c->hash == 0 && c->davg_ref != 0)) {
                 snprintf(err, errlen, "%s: corrupt checkpoint: field davg_ref = %g is not in [0, 2)%s", path,
@@ -78,14 +65,14 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
                 return -1;
             }
         }
-        n = get64(h + 16);
-        c->seed = get64(h + 24);
-        variant = get32(h + 32);
-        converged = get32(h + 36);
-        uint64_t tb = get64(h + 40);
+        n = le_get64(h + 16);
+        c->seed = le_get64(h + 24);
+        variant = le_get32(h + 32);
+        converged = le_get32(h + 36);
+        uint64_t tb = le_get64(h + 40);
         memcpy(&c->tol, &tb, 8);
-        c->iteration = (int64_t)(get64(h + 48) > CKPT_ITER_MAX ? -1 : (int64_t)get64(h + 48));
-        const uint32_t near = get32(h + 56);
+        c->iteration = (int64_t)(le_get64(h + 48) > CKPT_ITER_MAX ? -1 : (int64_t)le_get64(h + 48));
+        const uint32_t near = le_get32(h + 56);
         if (c->version == 2 && near != 0) {
             snprintf(err, errlen, "%s: corrupt version-2 checkpoint: reserved field is not zero", path);
             return -1;
@@ -96,17 +83,17 @@ int ckpt_decode(const char *path, const unsigned char *h, uint64_t size, ckpt_he
             return -1;
         }
         c->near = (int)near;
-        c->crc = get32(h + 60);
+        c->crc = le_get32(h + 60);
     } else if (memcmp(h, MAGIC_V1, 8) == 0) {
         c->version = 1;
-        n = get64(h + 8);
-        c->seed = get64(h + 16);
-        variant = get64(h + 24);
-        uint64_t tb = get64(h + 32);
+        n = le_get64(h + 8);
+        c->seed = le_get64(h + 16);
+        variant = le_get64(h + 24);
+        uint64_t tb = le_get64(h + 32);
         memcpy(&c->tol, &tb, 8);
-        c->iteration = (int64_t)(get64(h + 40) > CKPT_ITER_MAX ? -1 : (int64_t)get64(h + 40));
-        converged = get64(h + 48);
-        if (get64(h + 56) != 0) {
+        c->iteration = (int64_t)(le_get64(h + 40) > CKPT_ITER_MAX ? -1 : (int64_t)le_get64(h + 40));
+        converged = le_get64(h + 48);
+        if (le_get64(h + 56) != 0) {
             snprintf(err, errlen, "%s: corrupt version-1 checkpoint: reserved field is not zero", path);
             return -1;
         }
@@ -166,29 +153,29 @@ void ckpt_encode(const ckpt_header *c, unsigned char *h)
 {
     memset(h, 0, CKPT_HEADER);
     memcpy(h, MAGIC_V2, 8);
-    put32(h + 8, CKPT_VERSION);
-    put32(h + 12, CKPT_HEADER);
-    put64(h + 16, (uint64_t)c->n);
-    put64(h + 24, c->seed);
-    put32(h + 32, (uint32_t)c->variant);
-    put32(h + 36, (uint32_t)c->converged);
+    le_put32(h + 8, CKPT_VERSION);
+    le_put32(h + 12, CKPT_HEADER);
+    le_put64(h + 16, (uint64_t)c->n);
+    le_put64(h + 24, c->seed);
+    le_put32(h + 32, (uint32_t)c->variant);
+    le_put32(h + 36, (uint32_t)c->converged);
     uint64_t tb;
     memcpy(&tb, &c->tol, 8);
-    put64(h + 40, tb);
-    put64(h + 48, (uint64_t)c->iteration);
-    put32(h + 56, (uint32_t)c->near);
-    put32(h + 60, c->crc);
-    put64(h + 64, c->hash);
+    le_put64(h + 40, tb);
+    le_put64(h + 48, (uint64_t)c->iteration);
+    le_put32(h + 56, (uint32_t)c->near);
+    le_put32(h + 60, c->crc);
+    le_put64(h + 64, c->hash);
     uint64_t rb;
     memcpy(&rb, &c->davg_ref, 8);
-    put64(h + 72, rb);
+    le_put64(h + 72, rb);
 }
 
 uint32_t ckpt_crc_header(const unsigned char *h, int bytes)
 {
     unsigned char z[CKPT_HEADER];
     memcpy(z, h, (size_t)bytes);
-    put32(z + 60, 0);
+    le_put32(z + 60, 0);
     return (uint32_t)crc32(crc32(0L, Z_NULL, 0), z, (uInt)bytes);
 }
 
@@ -226,7 +213,7 @@ int ckpt_check_buffer(const char *path, const unsigned char *buf, size_t len, ck
     for (int64_t i = 0; i < c->n; i++) {
         double v[2];
         for (int k = 0; k < 2; k++) {
-            uint64_t u = get64(buf + hb + 16 * i + 8 * k);
+            uint64_t u = le_get64(buf + hb + 16 * i + 8 * k);
             memcpy(&v[k], &u, 8);
         }
         if (!(v[0] >= 0 && v[0] < 1 && v[1] >= 0 && v[1] < 1)) {
