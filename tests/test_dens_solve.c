@@ -39,6 +39,23 @@ static double urand(unsigned long long *s)
 
 #define G 300 /* enumeration grid a side */
 
+/* k sites drawn uniformly in the square of half side r around the
+ * origin, sorted nearest first (to the origin) into (yx, yy); dd: k
+ * doubles of room. */
+static void sites_nearest_first(unsigned long long *seed, int k, double r, double *yx, double *yy, double *dd)
+{
+    for (int j = 0; j < k; j++) {
+        const double x = (2 * urand(seed) - 1) * r, y = (2 * urand(seed) - 1) * r;
+        int at = j;
+        const double dj = x * x + y * y;
+        while (at > 0 && dd[at - 1] > dj) {
+            dd[at] = dd[at - 1]; yx[at] = yx[at - 1]; yy[at] = yy[at - 1];
+            at--;
+        }
+        dd[at] = dj; yx[at] = x; yy[at] = y;
+    }
+}
+
 static void trials(const char *spec, int exact, int count)
 {
     cfpo_density d;
@@ -53,16 +70,7 @@ static void trials(const char *spec, int exact, int count)
         const double ox = urand(&seed), oy = urand(&seed);
         const int k = 1 + (int)(urand(&seed) * 10);
         double dd[10];
-        for (int j = 0; j < k; j++) {
-            double x = (2 * urand(&seed) - 1) * 2 * s, y = (2 * urand(&seed) - 1) * 2 * s;
-            int at = j; /* nearest first (to the box's centre) */
-            const double dj = x * x + y * y;
-            while (at > 0 && dd[at - 1] > dj) {
-                dd[at] = dd[at - 1]; yx[at] = yx[at - 1]; yy[at] = yy[at - 1];
-                at--;
-            }
-            dd[at] = dj; yx[at] = x; yy[at] = y;
-        }
+        sites_nearest_first(&seed, k, 2 * s, yx, yy, dd);
         for (int j = 0; j < k; j++) yr[j] = cfpo_dens_local_q(&d, ox, oy, yx[j], yy[j]);
         cfpo_square S = {-s, -s, s, s};
         double cx, cy, f;
@@ -125,16 +133,7 @@ static void near_trials(int count)
     for (int t = 0; t < count; t++) {
         const double ox = urand(&seed), oy = urand(&seed);
         const int k = 3 + (int)(urand(&seed) * 8);
-        for (int j = 0; j < k; j++) {
-            const double x = (2 * urand(&seed) - 1) * 2 * s, y = (2 * urand(&seed) - 1) * 2 * s;
-            int at = j;
-            const double dj = x * x + y * y;
-            while (at > 0 && dd[at - 1] > dj) {
-                dd[at] = dd[at - 1]; yx[at] = yx[at - 1]; yy[at] = yy[at - 1];
-                at--;
-            }
-            dd[at] = dj; yx[at] = x; yy[at] = y;
-        }
+        sites_nearest_first(&seed, k, 2 * s, yx, yy, dd);
         for (int j = 0; j < k; j++) yr[j] = cfpo_dens_local_q(&d, ox, oy, yx[j], yy[j]);
         const cfpo_square S = {-s, -s, s, s};
         double cx, cy, f, fx, fy, ff;
@@ -183,16 +182,7 @@ static void routes(const char *spec, int count)
     for (int t = 0; t < count; t++) {
         const double ox = urand(&seed), oy = urand(&seed), s = 0.01 + 0.04 * urand(&seed);
         const int k = 1 + (int)(urand(&seed) * 40);
-        for (int j = 0; j < k; j++) {
-            const double x = (2 * urand(&seed) - 1) * 2 * s, y = (2 * urand(&seed) - 1) * 2 * s;
-            int at = j;
-            const double dj = x * x + y * y;
-            while (at > 0 && dd[at - 1] > dj) {
-                dd[at] = dd[at - 1]; yx[at] = yx[at - 1]; yy[at] = yy[at - 1];
-                at--;
-            }
-            dd[at] = dj; yx[at] = x; yy[at] = y;
-        }
+        sites_nearest_first(&seed, k, 2 * s, yx, yy, dd);
         for (int j = 0; j < k; j++) {
             yr[j] = cfpo_dens_local_q(&d, ox, oy, yx[j], yy[j]);
             w[j] = sqrt(yr[j]);
