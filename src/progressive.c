@@ -215,6 +215,12 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         if (p->level_begin) p->level_begin(k, m, p->user);
         if (run_level(m, prev, k > 0 && !resume ? xy : NULL, &lo, p, resume, R, res, &levels[k], err, errlen) != 0)
             break;
+        if (cap > 0 && o->max_iter > cap && res->stop == CFPO_STOP_MAX_ITER) {
+            /* the cap, not the caller's --max-iter, ended the level: the
+             * schedule's own end (progressive.h level_iter) */
+            res->stop = levels[k].stop = CFPO_STOP_LEVEL_ITER;
+            res->converged = 1;
+        }
         if (res->stop == CFPO_STOP_SIGNAL) { /* the checkpoint is written: stop, no output */
             R->ops->free(R->E);
             free(xy);

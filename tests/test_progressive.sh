@@ -223,6 +223,9 @@ cmp -s jref.npy jres.npy && ok || bad "--joint --resume: not the uninterrupted b
 run -n 2048 -s 4 -t 1 --progressive --level-iter 0 -o li0.npy >li0.sum || bad "--level-iter 0"
 run -n 2048 -s 4 -t 1 --progressive --level-iter 24 -o li24.npy >li24.sum || bad "--level-iter 24"
 cmp -s li24.npy p1.npy && ok || bad "the default is not --level-iter 24"
+grep '^SUMMARY' li24.sum | grep ' converged=yes ' | grep -q ' stop=level-iter ' && ok || bad "the level cap's end: $(grep ^SUMMARY li24.sum)"
+run -n 2048 -s 4 -t 1 --progressive --max-iter 5 -o lim5.npy >lim5.sum || bad "--progressive --max-iter 5"
+grep '^SUMMARY' lim5.sum | grep ' converged=no ' | grep -q ' stop=max-iter ' && ok || bad "--max-iter below the cap: $(grep ^SUMMARY lim5.sum)"
 python3 - <<'PY' && ok || bad "--level-iter: a level ran past its cap, or the uncapped levels did not run longer"
 import sys
 it = lambda f: [int(l.split()[3].split("=")[1]) for l in open(f) if l.startswith("LEVEL")]

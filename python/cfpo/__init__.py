@@ -25,7 +25,7 @@ from ._progress import ProgressLine
 __version__ = _core.version
 __all__ = ["sample", "run", "Result", "load", "save", "analysis", "baselines", "__version__"]
 
-STOP_REASONS = ("converged", "target", "time", "max-iter", "caller")
+STOP_REASONS = ("converged", "target", "time", "max-iter", "caller", "flat", "level-iter")
 TRACE_COLUMNS = _core.trace_columns  # the C library's (src/common/tracecols.h)
 
 
@@ -38,7 +38,8 @@ class Result:
     nearest-neighbour distances of the result over Delta(n) (Delta3(n) for
     dim=3); converged: whether the convergence rule held;
     stop: which rule ended the run, one of "converged", "target", "time",
-    "max-iter", "caller"; trace: dict of numpy arrays, one entry a row of the
+    "max-iter", "caller", "flat" (dim=3's schedule), "level-iter" (the
+    progressive schedule's level cap); trace: dict of numpy arrays, one entry a row of the
     command's --trace file (columns TRACE_COLUMNS; a baseline's are its
     command's: the first eight of them, then its own). packing_fraction
     (dim=3 only, else None): the packing fraction of spheres of diameter

@@ -56,6 +56,7 @@ const char *cfpo_stop_name(int why)
     case CFPO_STOP_CALLER: return "caller";
     case CFPO_STOP_SIGNAL: return "signal";
     case CFPO_STOP_FLAT: return "flat";
+    case CFPO_STOP_LEVEL_ITER: return "level-iter";
     default: return "-";
     }
 }

@@ -20,7 +20,8 @@ enum {
     CFPO_STOP_MAX_ITER,   /* the iteration cap */
     CFPO_STOP_CALLER,     /* the progress callback asked to stop */
     CFPO_STOP_SIGNAL,     /* SIGTERM or SIGUSR1, a checkpoint written (run_loop.h) */
-    CFPO_STOP_FLAT        /* the flatness rule held (stopflat.h; the 3-D command) */
+    CFPO_STOP_FLAT,       /* the flatness rule held (stopflat.h; the 3-D command) */
+    CFPO_STOP_LEVEL_ITER  /* a progressive level reached its cap, the schedule's end (progressive.h) */
 };
 
 void cfpo_stop_rules_init(cfpo_stop_rules *r);
