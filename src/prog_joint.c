@@ -257,9 +257,9 @@ static double local_solve(const joint *J, const nbuf *w, double *px, double *py,
  * raw[K] (a pair across classes: the union only). */
 static void set_floors(joint *J, int K, const double *raw)
 {
-    if (J->classes) {
-        J->F[K] = raw[K];
-        for (int c = 0; c < K; c++) J->F[c] = J->Fmax[c] = fmax(raw[c], raw[K]);
+    if (J->classes) { /* (a union floor: the union's pairs may fall to it) */
+        J->F[K] = J->floor > 0 ? fmin(raw[K], J->floor * J->Dm[K]) : raw[K];
+        for (int c = 0; c < K; c++) J->F[c] = J->Fmax[c] = fmax(raw[c], J->F[K]);
         return;
     }
     double f = 0;
@@ -379,6 +379,50 @@ static int pair_move(joint *J, double *xy, int64_t i, int64_t j, double base, in
     return 1;
 }
 
+/* The class swap of point i (prog_joint.h swaps): i and a point k of
+ * another class within rho of it exchange places (so, as sets, their
+ * classes), each checked with the other at its new place; of the first
+ * `tries` such k, the one that raises the smaller of the two measures the
+ * most above min(q0, k's measure) is made. 1 when made. */
+static int swap_move(joint *J, double *xy, int64_t i, double q0, double rho, int tries)
+{
+    const prog_buckets *B = &J->B;
+    const double xi = xy[2 * i], yi = xy[2 * i + 1];
+    int64_t wx, wy, cand[64];
+    int nc = 0;
+    const int64_t span = prog_buckets_window(B, prog_buckets_of(B, xi, yi), (int64_t)ceil(rho / B->cs), &wx, &wy);
+    for (int64_t oy = 0; oy < span; oy++)
+        for (int64_t ox = 0; ox < span; ox++)
+            for (int64_t k = prog_buckets_first(B, wx + ox, wy + oy); k >= 0 && nc < tries && nc < 64; k = B->next[k])
+                if (J->lev[k] != J->lev[i] && prog_torus_d2(xi, yi, xy[2 * k], xy[2 * k + 1]) < rho * rho)
+                    cand[nc++] = k;
+    double gain = 0;
+    int64_t best = -1;
+    for (int c = 0; c < nc; c++) {
+        const int64_t k = cand[c];
+        const double xk = xy[2 * k], yk = xy[2 * k + 1];
+        int64_t bk;
+        const double qk = measure_at(J, k, xk, yk, &bk, -INFINITY);
+        if (qk < 0) continue;
+        const double base = fmin(q0, qk);
+        place(J, xy, k, xi, yi);
+        const double qi = measure_at(J, i, xk, yk, &bk, base);
+        double qn = -1;
+        if (qi > base) {
+            place(J, xy, i, xk, yk);
+            qn = measure_at(J, k, xi, yi, &bk, base);
+            place(J, xy, i, xi, yi);
+        }
+        place(J, xy, k, xk, yk);
+        if (qi > base && qn > base && fmin(qi, qn) - base > gain) gain = fmin(qi, qn) - base, best = k;
+    }
+    if (best < 0) return 0;
+    const double xk = xy[2 * best], yk = xy[2 * best + 1];
+    place(J, xy, best, xi, yi);
+    place(J, xy, i, xk, yk);
+    return 1;
+}
+
 /* One move of point i in sweep s (prog_joint.h): the trials, then the
  * local solve; 1 when it moved, 0 when not, -1 when out of memory. Reads
  * the points within the level's reach of i's trial positions, writes i
@@ -436,6 +480,8 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
             if (q > bq) bq = q, bx = cx, by = cy;
         }
     }
+    if (bq <= q0 && jo->swaps > 0 && J->classes)
+        return swap_move(J, xy, i, q0, 1.5 * J->G[J->K] / (jo->target_full > 0 ? jo->target_full : 0.90), jo->swaps);
     if (bq <= q0) {
         if (jo->pairs <= 0 || J->lev[bind] < J->lev[i] || jo->hold > 0) return 0;
         int64_t bk;
@@ -523,6 +569,8 @@ static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t
         J.G[K] = tf * cfpo_delta_bound((double)n);
         J.H[K] = jo->hold * cfpo_delta_bound((double)n);
         for (int c = 0; c < K; c++) J.Gmax[c] = fmax(J.G[c], J.G[K]);
+        J.floor = jo->floor;
+        J.Dm[K] = cfpo_delta_bound((double)n);
     } else {
         J.floor = jo->floor;
         for (int L = 0; L < K; L++) J.Dm[L] = cfpo_delta_bound((double)sizes[L]);
@@ -560,7 +608,7 @@ static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t
              * see each other or each other's buckets (prog_joint.h). */
             const int64_t lo = l ? sizes[l - 1] : 0, hi = sizes[l];
             const double r = reach_of(&J, l), cs = J.classes ? J.B.cs : J.P.G[l].cs; /* (grid l's buckets are the largest read) */
-            const double c = (jo->pairs > 0 ? 2.5 : 1.5) * r + 2.0 * cs; /* pair moves reach further */
+            const double c = (jo->pairs > 0 || jo->swaps > 0 ? 2.5 : 1.5) * r + 2.0 * cs; /* pair moves reach further */
             int64_t g = 3 * (int64_t)floor(1.0 / (3.0 * c));
             if (g < 3) g = 1;
             int64_t *start = calloc((size_t)(g * g + 1), sizeof *start);
