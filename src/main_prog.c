@@ -160,6 +160,9 @@ void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
     if (tf >= sqrt(2.0) * tp) /* the pair weights must fall with the level (prog_joint.h) */
         cli_usage_error(prog, "--joint-full %g must be below sqrt(2) times --joint-prefix %g", tf, tp);
     if (pc->base_given && pc->p.classes > 0) cli_usage_error(prog, "--base does not go with --classes");
+    if (pc->p.classes > 0 && !pc->p.classes_levels && (pc->relax_given || pc->level_min_given || pc->level_iter_given))
+        cli_usage_error(prog, "%s does not go with --classes (by colouring; --classes-levels takes it)",
+                        pc->relax_given ? "--relax" : pc->level_min_given ? "--level-min" : "--level-iter");
     if (variant == CFPO_VARIANT_HYPERUNIFORM)
         cli_usage_error(prog, "--variant hyperuniform does not go with %s", pc->p.classes ? "--classes" : "--progressive");
     int64_t sizes[CFPO_PROG_MAX_LEVELS];

@@ -43,8 +43,8 @@
 #define CFPO_PROG_CLASS_SWEEPS 100
 #define CFPO_PROG_CLASS_TARGET 0.80
 #define CFPO_PROG_UNION_TARGET 0.88
-#define CFPO_PROG_CLASS_CIRCUM 12
-#define CFPO_PROG_CLASS_SOLVE 20
+#define CFPO_PROG_CLASS_CIRCUM 6
+#define CFPO_PROG_CLASS_SOLVE 8
 #define CFPO_PROG_CLASS_SWAPS 8
 #define CFPO_PROG_DEFAULT_LEVEL_ITER 24 /* each level's iteration cap by default (no joint phase, no classes) */
 
