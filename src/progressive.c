@@ -208,7 +208,6 @@ static int colour_run(int64_t n, const int64_t *sizes, int K, const cfpo_options
         free(xy);
         return -1;
     }
-    if (getenv("CFPO_COLOUR_DEBUG")) fprintf(stderr, "colour: close pairs %lld -> %lld, %d passes\n", (long long)co.close_start, (long long)co.close_end, co.passes_run);
     cfpo_prog_options q = *p;
     if (q.joint.sweeps <= 0 && q.joint_last <= 0) q.joint.sweeps = CFPO_PROG_CLASS_SWEEPS;
     if (q.joint.target_prefix <= 0) q.joint.target_prefix = CFPO_PROG_CLASS_TARGET;
