@@ -240,8 +240,9 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
             if (q > bq) bq = q, bx = cx, by = cy;
         }
     }
-    if (bq <= q0 && jo->swaps > 0 && J->classes)
-        return prog_joint_swap_move(J, xy, i, q0, 1.5 * J->G[J->K] / (jo->target_full > 0 ? jo->target_full : 0.90), jo->swaps);
+    if (bq <= q0 && jo->swaps > 0 && J->classes && /* a class swap, else the pair move */
+        prog_joint_swap_move(J, xy, i, q0, 1.5 * J->G[J->K] / (jo->target_full > 0 ? jo->target_full : 0.90), jo->swaps))
+        return 1;
     if (bq <= q0) {
         if (jo->pairs <= 0 || J->lev[bind] < J->lev[i] || jo->hold > 0) return 0;
         int64_t bk;

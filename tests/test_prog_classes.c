@@ -132,7 +132,8 @@ int main(void)
         memcpy(xy, xy0, 2 * N * sizeof *xy);
         watch w = {.xy = xy, .sizes = sizes, .K = K, .floor = floors[s]};
         cfpo_prog_joint_options jo = {.sweeps = 8, .classes = 1, .circum = s == 2 ? 0 : 10, .solve = s == 2 ? 0 : 8,
-                                      .swaps = 8, .floor = floors[s], .target_prefix = 0.80, .target_full = 0.88,
+                                      .swaps = 8, .pairs = s == 1 ? 4 : 0, .floor = floors[s], .target_prefix = 0.80,
+                                      .target_full = 0.88,
                                       .seed = 5 + (uint64_t)s, .sweep_done = on_sweep, .user = &w};
         double dm[K + 1], da[K + 1];
         CHECK(cfpo_prog_joint(xy, sizes, K, &jo, dm, da, err, sizeof err) == 0, "class move failed: %s", err);
