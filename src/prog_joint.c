@@ -194,6 +194,10 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
     int64_t bind;
     const double q0 = prog_joint_measure_at(J, i, x0, y0, &bind, -INFINITY);
     if (q0 < 0 || q0 >= J->cap * (1.0 + J->lam) || bind < 0) return 0; /* (a point at a floor's edge by rounding stays) */
+    const double rho = 1.5 * J->G[J->K] / (jo->target_full > 0 ? jo->target_full : 0.90); /* (the swaps' reach, Delta(n)) */
+    if (jo->swaps > 0 && J->classes && q0 < 1.0 && J->lev[bind] == J->lev[i] && /* bound by its own class below */
+        prog_joint_swap_move(J, xy, i, q0, rho, jo->swaps))                       /* the target: a swap first */
+        return 1;
     const double dx = x0 - xy[2 * bind], dy = y0 - xy[2 * bind + 1];
     const double ux = dx - round(dx), uy = dy - round(dy); /* away from the binding partner */
     const double dn = sqrt(ux * ux + uy * uy);
@@ -241,7 +245,7 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
         }
     }
     if (bq <= q0 && jo->swaps > 0 && J->classes && /* a class swap, else the pair move */
-        prog_joint_swap_move(J, xy, i, q0, 1.5 * J->G[J->K] / (jo->target_full > 0 ? jo->target_full : 0.90), jo->swaps))
+        prog_joint_swap_move(J, xy, i, q0, rho, jo->swaps))
         return 1;
     if (bq <= q0) {
         if (jo->pairs <= 0 || J->lev[bind] < J->lev[i] || jo->hold > 0) return 0;
