@@ -98,7 +98,7 @@ static void usage(void)
            "      --polish-floor F the polish's floor in each prefix's own units (default 0.78)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
            "                       output: a CFPO set coloured into K classes, then the\n"
-           "                       class-aware move (--joint S sweeps, default 100; docs/cli.md)\n"
+           "                       class-aware move (--joint S sweeps, default 150; docs/cli.md)\n"
            "      --classes-levels build the classes as levels instead (class c, classes < c held)\n"
            "      --class-union-floor F  the union may fall to F Delta(n) in the class move\n"
            "                       (default: --joint-full, 0.88 for classes; 1.5: never falls)\n"

@@ -40,7 +40,7 @@
  * class: CLASS_TARGET Delta(N/K), across: UNION_TARGET Delta(N)), the
  * circumcentre candidates, the local ascent's steps, the class swaps
  * (each of these three off when below 0). */
-#define CFPO_PROG_CLASS_SWEEPS 100
+#define CFPO_PROG_CLASS_SWEEPS 150
 #define CFPO_PROG_CLASS_TARGET 0.80
 #define CFPO_PROG_UNION_TARGET 0.88
 #define CFPO_PROG_CLASS_CIRCUM 6
