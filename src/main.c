@@ -97,7 +97,13 @@ static void usage(void)
            "                       at or above min(its delta_min, --polish-floor)\n"
            "      --polish-floor F the polish's floor in each prefix's own units (default 0.78)\n"
            "      --classes K      K classes: class c is rows [c n/K, (c+1) n/K) of the\n"
-           "                       output, built like the levels (docs/cli.md)\n\n"
+           "                       output: a CFPO set coloured into K classes, then the\n"
+           "                       class-aware move (--joint S sweeps, default 150; docs/cli.md)\n"
+           "      --classes-levels build the classes as levels instead (class c, classes < c held)\n"
+           "      --class-union-floor F  the union may fall to F Delta(n) in the class move\n"
+           "                       (default: --joint-full, 0.88 for classes; 1.5: never falls)\n"
+           "      --class-reach R  the colouring's reach in Delta(n/K) (default 1.0)\n"
+           "      --class-swaps S  class swaps with up to S neighbours (default 8)\n\n"
            "Several ranks (run under mpirun; the grid is cut into one tile per rank):\n"
            "      --tiles AxB      cut into A x B tiles (default: the most square cut)\n"
            "      --checkpoint F   write the state to F (atomically) ...\n"
@@ -337,6 +343,10 @@ static void parse(int argc, char **argv, cmdline *c)
         {"polish", required_argument, 0, PROG_OPT_POLISH},
         {"level-iter", required_argument, 0, PROG_OPT_LEVEL_ITER},
         {"polish-floor", required_argument, 0, PROG_OPT_POLISH_FLOOR},
+        {"classes-levels", no_argument, 0, PROG_OPT_CLASSES_LEVELS},
+        {"class-union-floor", required_argument, 0, PROG_OPT_CLASS_UNION_FLOOR},
+        {"class-reach", required_argument, 0, PROG_OPT_CLASS_REACH},
+        {"class-swaps", required_argument, 0, PROG_OPT_CLASS_SWAPS},
         {0, 0, 0, 0}};
     cfpo_options_init(&c->o);
     c->n = c->dry_ranks = -1;

@@ -62,7 +62,7 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
     case PROG_OPT_JOINT_SOLVE:
         if (cli_parse_i64(arg, 0, 1000, &v) != 0)
             cli_usage_error(prog, "--joint-solve: '%s' is not a whole number in 0..1000", arg);
-        pc->p.joint.solve = (int)v;
+        pc->p.joint.solve = v > 0 ? (int)v : -1; /* (0: off, not the classes' default) */
         pc->joint_given = 1;
         return 1;
     case PROG_OPT_JOINT_AVG:
@@ -78,7 +78,7 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
     case PROG_OPT_JOINT_CIRCUM:
         if (cli_parse_i64(arg, 0, 24, &v) != 0)
             cli_usage_error(prog, "--joint-circum: '%s' is not a whole number in 0..24", arg);
-        pc->p.joint.circum = (int)v;
+        pc->p.joint.circum = v > 0 ? (int)v : -1; /* (0: off, not the classes' default) */
         pc->joint_given = 1;
         return 1;
     case PROG_OPT_JOINT_PAIRS:
@@ -103,6 +103,25 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
             cli_usage_error(prog, "--level-iter: '%s' is not a whole number in 0..1e9", arg);
         pc->p.level_iter = v > 0 ? (int)v : -1; /* (0: no cap) */
         pc->level_iter_given = 1;
+        return 1;
+    case PROG_OPT_CLASSES_LEVELS:
+        pc->p.classes_levels = 1;
+        pc->colour_given |= 2;
+        return 1;
+    case PROG_OPT_CLASS_UNION_FLOOR:
+        if (cli_parse_double(arg, 0.05, 1.5, &pc->p.union_floor) != 0)
+            cli_usage_error(prog, "--class-union-floor: '%s' is not a number in [0.05, 1.5]", arg);
+        pc->colour_given |= 1;
+        return 1;
+    case PROG_OPT_CLASS_REACH:
+        if (cli_parse_double(arg, 0.5, 1.5, &pc->p.colour_reach) != 0)
+            cli_usage_error(prog, "--class-reach: '%s' is not a number in [0.5, 1.5]", arg);
+        pc->colour_given |= 1;
+        return 1;
+    case PROG_OPT_CLASS_SWAPS:
+        if (cli_parse_i64(arg, 0, 64, &v) != 0) cli_usage_error(prog, "--class-swaps: '%s' is not a whole number in 0..64", arg);
+        pc->p.joint.swaps = v > 0 ? (int)v : -1; /* (0: off, not the default) */
+        pc->colour_given |= 1;
         return 1;
     case PROG_OPT_POLISH_FLOOR:
         if (cli_parse_double(arg, 0.05, 1.2, &pc->p.polish_floor) != 0)
@@ -131,6 +150,9 @@ void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
         cli_usage_error(prog, "%s needs --progressive or --classes K",
                         pc->base_given ? "--base" : pc->relax_given ? "--relax" : pc->joint_given ? "--joint"
                         : pc->polish_given ? "--polish" : pc->level_iter_given ? "--level-iter" : "--level-min");
+    if (pc->colour_given && pc->p.classes <= 0)
+        cli_usage_error(prog, "%s needs --classes K", pc->colour_given & 2 ? "--classes-levels" : "--class-union-floor, --class-reach or --class-swaps");
+    if (pc->colour_given == 3) cli_usage_error(prog, "--class-union-floor, --class-reach and --class-swaps do not go with --classes-levels");
     if (!pc->on) return;
     if (pc->polish_given && pc->p.classes > 0) cli_usage_error(prog, "--polish does not go with --classes");
     const double tp = pc->p.joint.target_prefix > 0 ? pc->p.joint.target_prefix : 0.78;
@@ -138,6 +160,9 @@ void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
     if (tf >= sqrt(2.0) * tp) /* the pair weights must fall with the level (prog_joint.h) */
         cli_usage_error(prog, "--joint-full %g must be below sqrt(2) times --joint-prefix %g", tf, tp);
     if (pc->base_given && pc->p.classes > 0) cli_usage_error(prog, "--base does not go with --classes");
+    if (pc->p.classes > 0 && !pc->p.classes_levels && (pc->relax_given || pc->level_min_given || pc->level_iter_given))
+        cli_usage_error(prog, "%s does not go with --classes (by colouring; --classes-levels takes it)",
+                        pc->relax_given ? "--relax" : pc->level_min_given ? "--level-min" : "--level-iter");
     if (variant == CFPO_VARIANT_HYPERUNIFORM)
         cli_usage_error(prog, "--variant hyperuniform does not go with %s", pc->p.classes ? "--classes" : "--progressive");
     int64_t sizes[CFPO_PROG_MAX_LEVELS];
@@ -254,6 +279,9 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
                   int quiet, const char *checkpoint, int every, const char *resume)
 {
     char err[600];
+    if (pc->p.classes > 0 && !pc->p.classes_levels && (checkpoint || resume))
+        cli_usage_error(prog, "%s does not go with --classes (by colouring; --classes-levels takes it)",
+                        checkpoint ? "--checkpoint" : "--resume");
     cfpo_runfiles *files = cfpo_runfiles_open(out, NULL, checkpoint, n, err, sizeof err);
     if (!files) cli_fail(prog, "%s", err);
     cfpo_prog_level levels[CFPO_PROG_MAX_LEVELS];
@@ -272,7 +300,7 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     o->user = &ctx;
     char *jbuf = NULL;
     size_t jlen = 0;
-    if (pc->p.joint.sweeps > 0 || pc->p.joint_last > 0 || pc->p.polish > 0) {
+    if (pc->p.joint.sweeps > 0 || pc->p.joint_last > 0 || pc->p.polish > 0 || (pc->p.classes > 0 && !pc->p.classes_levels)) {
         ctx.joint = open_memstream(&jbuf, &jlen);
         if (!ctx.joint) cli_fail(prog, "out of memory for the JOINT lines");
         pc->p.joint.sweep_done = on_sweep;

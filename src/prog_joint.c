@@ -1,5 +1,5 @@
 /* prog_joint.c - see prog_joint.h. */
-#include "prog_joint.h"
+#include "prog_joint_int.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -13,153 +13,12 @@
 
 #include <omp.h>
 
-static double wrap1(double v)
-{
-    const double w = v - floor(v);
-    return w < 1.0 ? w : 0.0;
-}
-
-/* ---- the moves */
-
-typedef struct {
-    prog_buckets B;     /* with classes: every point (one grid) */
-    prog_pgrid P;       /* without: the prefixes' grids (P.G[K - 1] holds every point) */
-    const int *lev;     /* each point's level */
-    double R[65];       /* without classes: the reach of a pair of level L, max(F_L, cap G_L, H_L) */
-    uint32_t now;       /* the time of the colour phase under way (stamps, prog_pgrid.h) */
-    int K, classes;
-    double F[65], G[65]; /* the pair floors (distances) and weights by pair level */
-    double Gmax[65];     /* max of G over the pair levels a point of level l can be in */
-    double H[65];        /* hold distances: a pair shorter than H_L may not shrink */
-    double Hmax;         /* the largest of them */
-    double Fmax[65];     /* the same for F */
-    double Dm[65];       /* Delta(m_L) of each prefix */
-    double floor;        /* > 0: the polish's floor (prog_joint.h floor) */
-    double cap;          /* the measure counted up to this (a mover at or past it has nothing to gain) */
-    double tau;          /* > 0: the pair measure is the soft minimum with this temperature (prog_joint.h soft) */
-    double lam;          /* weight of the mover's mean nearest distance over its groups (prog_joint.h avg) */
-} joint;
-
 /* One thread's neighbours for the local solve: offset x, y from the
  * mover, 1 / G_L, F_L (4 doubles each). */
 typedef struct {
     double *e;
     int64_t n, cap;
 } nbuf;
-
-/* The running state of a score: the smallest pair measure, its partner,
- * the soft minimum's sum, each group's nearest distance. */
-typedef struct {
-    double best, S, mL[66];
-    int64_t bind;
-} score;
-
-/* The pairs of point i (level l) at (x, y) with the points of one
- * bucket (first point k) within r (squared: r2) of it, all of pair level
- * `only` when only >= 0 (else found from their levels), into st: -1 when some pair falls below its
- * floor (or shrinks below its hold distance), else 0. A point farther than
- * r changes nothing (its measure is past the cap, its distance past the
- * floor and the hold distance). */
-static int visit(const joint *J, const prog_buckets *B, int64_t k, int64_t i, int l, double x, double y, double r2,
-                 int only, score *st)
-{
-    for (; k >= 0; k = B->next[k]) {
-        if (k == i) continue;
-        const double d2 = prog_torus_d2(x, y, B->xy[2 * k], B->xy[2 * k + 1]);
-        if (d2 > r2) continue;
-        const double d = sqrt(d2);
-        const int L = only >= 0 ? only : J->classes ? (J->lev[k] == l ? l : J->K) : J->lev[k] > l ? J->lev[k] : l;
-        if (d < J->F[L]) return -1;
-        if (d < J->H[L] && d < sqrt(prog_torus_d2(B->xy[2 * i], B->xy[2 * i + 1], B->xy[2 * k], B->xy[2 * k + 1])))
-            return -1; /* a pair below its hold distance may not shrink */
-        const double q = d / J->G[L];
-        if (J->tau > 0 && q < J->cap) /* S = sum of exp(-(q_j - best) / tau) */
-            st->S = q < st->best ? st->S * exp((q - st->best) / J->tau) + 1.0 : st->S + exp((st->best - q) / J->tau);
-        if (q < st->best) st->best = q, st->bind = k;
-        if (J->lam > 0) {
-            if (d < st->mL[L]) st->mL[L] = d;
-            if (J->classes && d < st->mL[J->K]) st->mL[J->K] = d; /* the union holds every pair */
-        }
-    }
-    return 0;
-}
-
-/* The pairs of point i (level l) placed at (x, y) with the points of B
- * within r of it (all of pair level `only` when only >= 0) into st,
- * the buckets by rings outwards from (x, y)'s: -1 when some pair falls
- * below its floor, 1 when the smallest measure fell to stop or below (the
- * rest unread: the score can only fall further), else 0. */
-static int scan(const joint *J, const prog_buckets *B, int64_t i, int l, double x, double y, double r, int only,
-                double stop, score *st)
-{
-    const int64_t gs = B->gs, b = prog_buckets_of(B, x, y), bx = b % gs, by = b / gs;
-    const int64_t reach = (int64_t)ceil(r / B->cs);
-    const double r2 = r * r;
-    if (2 * reach + 1 >= gs) { /* the window wraps onto itself: every bucket once */
-        for (int64_t c = 0; c < gs * gs; c++) {
-            if (visit(J, B, B->head[c], i, l, x, y, r2, only, st) != 0) return -1;
-            if (st->best <= stop) return 1;
-        }
-        return 0;
-    }
-    for (int64_t rr = 0; rr <= reach; rr++)
-        for (int64_t oy = -rr; oy <= rr; oy++) {
-            const int64_t step = oy == -rr || oy == rr ? 1 : 2 * rr; /* the ring's edge only */
-            for (int64_t ox = -rr; ox <= rr; ox += step > 0 ? step : 1) {
-                if (visit(J, B, prog_buckets_first(B, bx + ox, by + oy), i, l, x, y, r2, only, st) != 0) return -1;
-                if (st->best <= stop) return 1;
-            }
-        }
-    return 0;
-}
-
-/* The score of point i placed at (x, y): its pair measure, the smallest
- * d_ij / G_L over the other points (capped at J->cap), plus J->lam times
- * the mean over the groups that hold i of its nearest distance in the
- * group over the group's G (each capped at J->cap); or -1 when some pair
- * falls below its floor. *bind: the binding partner (-1 if none within
- * reach). Without classes the pairs of level L matter within J->R[L]:
- * those with the points of levels up to i's in the grid of i's prefix,
- * those with each finer level L in the grid of prefix L (a few buckets
- * each). */
-static double measure_at(const joint *J, int64_t i, double x, double y, int64_t *bind, double stop)
-{
-    score st;
-    st.best = J->cap, st.S = 0, st.bind = -1;
-    if (J->lam > 0)
-        for (int L = 0; L <= J->K; L++) st.mL[L] = INFINITY;
-    if (J->lam > 0) stop = -INFINITY; /* (the delta_avg term may lift a score whose minimum fell) */
-    const int l = J->lev[i];
-    *bind = -1;
-    int rc;
-    if (J->classes) {
-        rc = scan(J, &J->B, i, l, x, y, fmax(fmax(J->Fmax[l], J->cap * J->Gmax[l]), J->Hmax), -1, stop, &st);
-    } else {
-        rc = scan(J, &J->P.G[l], i, l, x, y, J->R[l], l, stop, &st);
-        for (int L = l + 1; L < J->K && rc == 0; L++) rc = scan(J, &J->P.V[L], i, l, x, y, J->R[L], L, stop, &st);
-    }
-    if (rc < 0) return -1;
-    if (rc > 0) return st.best; /* at or below stop: the caller's better place stands */
-    *bind = st.bind;
-    double best = st.best;
-    const double *mL = st.mL;
-    if (J->tau > 0 && st.S > 1.0) best -= J->tau * log(st.S); /* the soft minimum, at most the minimum */
-    if (J->lam <= 0) return best;
-    double sum = 0;
-    int cnt = 0;
-    if (J->classes) {
-        sum = fmin(mL[l] / J->G[l], J->cap) + fmin(mL[J->K] / J->G[J->K], J->cap);
-        cnt = 2;
-    } else {
-        double nn = INFINITY; /* i's nearest distance in prefix L: pairs of level <= L */
-        for (int L = l; L < J->K; L++) {
-            if (mL[L] < nn) nn = mL[L];
-            sum += fmin(nn / J->G[L], J->cap);
-            cnt++;
-        }
-    }
-    return best + J->lam * sum / cnt;
-}
 
 /* The neighbours of point i within r of its place (x0, y0) into J->nb:
  * each as its offset from (x0, y0) on the torus, 1 / G_L and F_L. 0, or
@@ -257,9 +116,9 @@ static double local_solve(const joint *J, const nbuf *w, double *px, double *py,
  * raw[K] (a pair across classes: the union only). */
 static void set_floors(joint *J, int K, const double *raw)
 {
-    if (J->classes) {
-        J->F[K] = raw[K];
-        for (int c = 0; c < K; c++) J->F[c] = J->Fmax[c] = fmax(raw[c], raw[K]);
+    if (J->classes) { /* (a union floor: the union's pairs may fall to it) */
+        J->F[K] = J->floor > 0 ? fmin(raw[K], J->floor * J->Dm[K]) : raw[K];
+        for (int c = 0; c < K; c++) J->F[c] = J->Fmax[c] = fmax(raw[c], J->F[K]);
         return;
     }
     double f = 0;
@@ -324,61 +183,6 @@ static double best_circumcentre(const joint *J, nbuf *w, int nn, double reach, d
     return best;
 }
 
-/* Point k to (x, y) in xy and the move grid. */
-static void place(joint *J, double *xy, int64_t k, double x, double y)
-{
-    if (!J->classes) {
-        prog_pgrid_move(&J->P, xy, k, x, y, J->now);
-        return;
-    }
-    prog_buckets_unlink(&J->B, k);
-    xy[2 * k] = x;
-    xy[2 * k + 1] = y;
-    prog_buckets_link(&J->B, k);
-}
-
-/* The pair move of point i and its binding partner j (level at least i's,
- * so within i's reach): pairs trials, i straight away from j and j from i
- * by the same step (steps 0.2, 0.1, 0.04, 0.01 of their distance, a little
- * jitter), each checked with the other at its trial place; the best that
- * raises the smaller of the two measures above base is made. 1 when made. */
-static int pair_move(joint *J, double *xy, int64_t i, int64_t j, double base, int s, const cfpo_prog_joint_options *jo)
-{
-    static const double steps[4] = {0.2, 0.1, 0.04, 0.01};
-    const double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
-    double ux = xi - xj, uy = yi - yj;
-    ux -= round(ux);
-    uy -= round(uy);
-    const double d = sqrt(ux * ux + uy * uy);
-    if (d <= 0) return 0;
-    ux /= d;
-    uy /= d;
-    double best = base, b[4] = {0};
-    const uint64_t stream = ((uint64_t)s << 40) ^ (uint64_t)i ^ ((uint64_t)1 << 39);
-    for (int c = 0; c < jo->pairs; c++) {
-        const double st = steps[c % 4] * d;
-        const double ja = 0.3 * (2.0 * cfpo_rand01(jo->seed, stream, (uint64_t)c) - 1.0);
-        const double jb = 0.3 * (2.0 * cfpo_rand01(jo->seed, stream, (uint64_t)c + 32) - 1.0);
-        const double ax = wrap1(xi + st * (ux - ja * uy)), ay = wrap1(yi + st * (uy + ja * ux));
-        const double bx = wrap1(xj - st * (ux - jb * uy)), by = wrap1(yj - st * (uy + jb * ux));
-        int64_t bk;
-        place(J, xy, j, bx, by);
-        const double qi = measure_at(J, i, ax, ay, &bk, best);
-        double qj = -1;
-        if (qi > best) {
-            place(J, xy, i, ax, ay);
-            qj = measure_at(J, j, bx, by, &bk, best);
-            place(J, xy, i, xi, yi);
-        }
-        place(J, xy, j, xj, yj);
-        if (qi > best && qj > best) best = fmin(qi, qj), b[0] = ax, b[1] = ay, b[2] = bx, b[3] = by;
-    }
-    if (best <= base) return 0;
-    place(J, xy, i, b[0], b[1]);
-    place(J, xy, j, b[2], b[3]);
-    return 1;
-}
-
 /* One move of point i in sweep s (prog_joint.h): the trials, then the
  * local solve; 1 when it moved, 0 when not, -1 when out of memory. Reads
  * the points within the level's reach of i's trial positions, writes i
@@ -388,8 +192,12 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
     static const double steps[4] = {0.4, 0.2, 0.08, 0.02}; /* of the nearest neighbour's distance */
     const double x0 = xy[2 * i], y0 = xy[2 * i + 1];
     int64_t bind;
-    const double q0 = measure_at(J, i, x0, y0, &bind, -INFINITY);
+    const double q0 = prog_joint_measure_at(J, i, x0, y0, &bind, -INFINITY);
     if (q0 < 0 || q0 >= J->cap * (1.0 + J->lam) || bind < 0) return 0; /* (a point at a floor's edge by rounding stays) */
+    const double rho = 1.5 * J->G[J->K] / (jo->target_full > 0 ? jo->target_full : 0.90); /* (the swaps' reach, Delta(n)) */
+    if (jo->swaps > 0 && J->classes && q0 < 1.0 && J->lev[bind] == J->lev[i] && /* bound by its own class below */
+        prog_joint_swap_move(J, xy, i, q0, rho, jo->swaps))                       /* the target: a swap first */
+        return 1;
     const double dx = x0 - xy[2 * bind], dy = y0 - xy[2 * bind + 1];
     const double ux = dx - round(dx), uy = dy - round(dy); /* away from the binding partner */
     const double dn = sqrt(ux * ux + uy * uy);
@@ -409,10 +217,10 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
             cx = x0 + r * cos(a);
             cy = y0 + r * sin(a);
         }
-        cx = wrap1(cx);
-        cy = wrap1(cy);
+        cx = prog_joint_wrap1(cx);
+        cy = prog_joint_wrap1(cy);
         int64_t bk;
-        const double q = measure_at(J, i, cx, cy, &bk, bq);
+        const double q = prog_joint_measure_at(J, i, cx, cy, &bk, bq);
         if (q > bq) bq = q, bx = cx, by = cy;
     }
     if (jo->solve > 0 || jo->circum > 0) { /* the local solve from the best trial, checked against the grid */
@@ -430,19 +238,22 @@ static int move_point(joint *J, nbuf *w, double *xy, int64_t i, int s, const cfp
         const double ql = jo->solve > 0 ? local_solve(J, w, &px, &py, 0.2 * scale, jo->solve)
                                         : local_at(w, J->cap, px, py, 0, NULL, NULL);
         if (ql >= 0 && px * px + py * py <= scale * scale) {
-            const double cx = wrap1(x0 + px), cy = wrap1(y0 + py);
+            const double cx = prog_joint_wrap1(x0 + px), cy = prog_joint_wrap1(y0 + py);
             int64_t bk;
-            const double q = measure_at(J, i, cx, cy, &bk, bq);
+            const double q = prog_joint_measure_at(J, i, cx, cy, &bk, bq);
             if (q > bq) bq = q, bx = cx, by = cy;
         }
     }
+    if (bq <= q0 && jo->swaps > 0 && J->classes && /* a class swap, else the pair move */
+        prog_joint_swap_move(J, xy, i, q0, rho, jo->swaps))
+        return 1;
     if (bq <= q0) {
         if (jo->pairs <= 0 || J->lev[bind] < J->lev[i] || jo->hold > 0) return 0;
         int64_t bk;
-        const double qj = measure_at(J, bind, xy[2 * bind], xy[2 * bind + 1], &bk, -INFINITY);
-        return qj < 0 ? 0 : pair_move(J, xy, i, bind, fmin(q0, qj), s, jo);
+        const double qj = prog_joint_measure_at(J, bind, xy[2 * bind], xy[2 * bind + 1], &bk, -INFINITY);
+        return qj < 0 ? 0 : prog_joint_pair_move(J, xy, i, bind, fmin(q0, qj), s, jo);
     }
-    place(J, xy, i, bx, by);
+    prog_joint_place(J, xy, i, bx, by);
     return 1;
 }
 
@@ -523,6 +334,8 @@ static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t
         J.G[K] = tf * cfpo_delta_bound((double)n);
         J.H[K] = jo->hold * cfpo_delta_bound((double)n);
         for (int c = 0; c < K; c++) J.Gmax[c] = fmax(J.G[c], J.G[K]);
+        J.floor = jo->floor;
+        J.Dm[K] = cfpo_delta_bound((double)n);
     } else {
         J.floor = jo->floor;
         for (int L = 0; L < K; L++) J.Dm[L] = cfpo_delta_bound((double)sizes[L]);
@@ -560,7 +373,7 @@ static int joint_run(double *xy, double *out, const int64_t *perm, const int64_t
              * see each other or each other's buckets (prog_joint.h). */
             const int64_t lo = l ? sizes[l - 1] : 0, hi = sizes[l];
             const double r = reach_of(&J, l), cs = J.classes ? J.B.cs : J.P.G[l].cs; /* (grid l's buckets are the largest read) */
-            const double c = (jo->pairs > 0 ? 2.5 : 1.5) * r + 2.0 * cs; /* pair moves reach further */
+            const double c = (jo->pairs > 0 || jo->swaps > 0 ? 2.5 : 1.5) * r + 2.0 * cs; /* pair moves reach further */
             int64_t g = 3 * (int64_t)floor(1.0 / (3.0 * c));
             if (g < 3) g = 1;
             int64_t *start = calloc((size_t)(g * g + 1), sizeof *start);

@@ -52,13 +52,20 @@ typedef struct {
                              neighbours (the farthest-point candidates), the best kept before the solve */
     int pairs;            /* > 0: a point whose own moves all fail tries this many pair moves with its
                              binding partner (when that is of its level or finer; not with hold) */
+    int swaps;            /* > 0 (classes): a point whose own moves all fail tries class swaps: it and one
+                             of its this many first neighbours of another class within 1.5 Delta(n)
+                             exchange places (so their classes), kept when the smaller of their
+                             measures rises and every pair keeps its floor; 0: off */
     int solve;            /* > 0: then up to this many steps of the local solve from the best trial
                              (the ascent of the smallest pair measure over the neighbours); 0: off */
     double target_prefix; /* t_L for every level but the last (0: 0.78) */
     double target_full;   /* t_L for the last level (0: 0.90) */
     double hold;          /* > 0: a pair of level L shorter than hold Delta(m_L) may not shrink
                              (guards each prefix's delta_avg); 0: off */
-    double floor;         /* > 0 (not with classes): the polish of the full set. Every pair's weight
+    double floor;         /* with classes, > 0: the union's floor: a pair may fall to min(the union's
+                             delta_min, floor) Delta(n), a pair of one class not below its class's
+                             delta_min either (each class's delta_min never falls; the union's never
+                             below that floor). Without classes, > 0: the polish of the full set. Every pair's weight
                              is the full set's, target_full Delta(n) (the mover's nearest distance in
                              the full set is the score), and each prefix k below the full set may
                              fall to floor Delta(m_k) but not below (nor below its value when that

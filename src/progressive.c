@@ -8,6 +8,7 @@
 
 #include "grid.h"
 #include "omp_compat.h"
+#include "prog_colour.h"
 #include "prog_insert.h"
 #include "prog_measure.h"
 #include "rng.h"
@@ -176,12 +177,61 @@ static int joint_phase(double *xy, const int64_t *sizes, int k, int K, const cfp
     return 0;
 }
 
+/* Classes by colouring (progressive.h classes_levels = 0): a plain CFPO
+ * run of n points (the caller's options and stop rules), coloured into
+ * the K classes in class order, then the class-aware joint move. */
+static int colour_run(int64_t n, const int64_t *sizes, int K, const cfpo_options *o, const cfpo_prog_options *p,
+                      cfpo_run_engine *R, cfpo_result *res, cfpo_prog_level *levels, int *nlevels, char *err,
+                      size_t errlen)
+{
+    double *xy = malloc(2 * (size_t)n * sizeof *xy);
+    if (!xy) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    for (int c = 0; c < K; c++)
+        levels[c] = (cfpo_prog_level){.m = sizes[c], .delta_min0 = NAN, .delta_min = NAN, .delta_avg = NAN};
+    *nlevels = K;
+    if (p->level_begin) p->level_begin(0, n, p->user);
+    cfpo_prog_level run;
+    if (run_level(n, 0, NULL, o, p, NULL, R, res, &run, err, errlen) != 0) {
+        free(xy);
+        return -1;
+    }
+    levels[0].iterations = run.iterations, levels[0].stop = run.stop, levels[0].seconds = run.seconds;
+    levels[0].delta_min0 = run.delta_min0;
+    R->ops->copy(R->E, xy);
+    R->ops->free(R->E);
+    const double t0 = omp_get_wtime();
+    cfpo_prog_colour_options co = {.reach = p->colour_reach};
+    if (cfpo_prog_colour(xy, sizes, K, &co, err, errlen) != 0) {
+        free(xy);
+        return -1;
+    }
+    cfpo_prog_options q = *p;
+    if (q.joint.sweeps <= 0 && q.joint_last <= 0) q.joint.sweeps = CFPO_PROG_CLASS_SWEEPS;
+    if (q.joint.target_prefix <= 0) q.joint.target_prefix = CFPO_PROG_CLASS_TARGET;
+    if (q.joint.target_full <= 0) q.joint.target_full = CFPO_PROG_UNION_TARGET;
+    if (q.joint.circum == 0) q.joint.circum = CFPO_PROG_CLASS_CIRCUM;
+    if (q.joint.solve == 0) q.joint.solve = CFPO_PROG_CLASS_SOLVE;
+    if (q.joint.swaps == 0) q.joint.swaps = CFPO_PROG_CLASS_SWAPS;
+    q.joint.floor = p->union_floor > 0 ? p->union_floor : q.joint.target_full;
+    if (p->level_begin) p->level_begin(K - 1, n, p->user);
+    const double tc = omp_get_wtime() - t0; /* (the colouring; joint_phase adds its own time) */
+    int rc = joint_phase(xy, sizes, K - 1, K, o, &q, 0, levels, res, err, errlen);
+    levels[K - 1].seconds += tc;
+    if (rc == 0) rc = hold(n, xy, o, R, err, errlen);
+    free(xy);
+    return rc;
+}
+
 int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, cfpo_run_engine *R,
                   cfpo_result *res, cfpo_prog_level *levels, int *nlevels, char *err, size_t errlen)
 {
     int64_t sizes[CFPO_PROG_MAX_LEVELS];
     const int K = cfpo_prog_sizes(n, o->variant, p, sizes, err, errlen);
     if (K < 0) return -1;
+    if (p->classes > 0 && !p->classes_levels) return colour_run(n, sizes, K, o, p, R, res, levels, nlevels, err, errlen);
     double *xy = malloc(2 * (size_t)n * sizeof *xy);
     if (!xy) {
         snprintf(err, errlen, "out of memory");

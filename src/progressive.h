@@ -17,7 +17,13 @@
  * greedy order again and every level measured again. With polish > 0 the
  * full set is polished last by the same move with the full set's score,
  * the smaller prefixes held at or above a floor (prog_joint.h floor).
- * May include: engine.h, run_loop.h, prog_insert.h, prog_joint.h (layers 0-4). */
+ * With classes (K equal groups) the default colours instead: one plain CFPO
+ * run of n points, its points coloured into K balanced classes
+ * (prog_colour.h) and put in class order, then the class-aware joint move
+ * (prog_joint.h classes: every class's delta_min in Delta(N/K) and the
+ * union's in Delta(n) never fall); the K LEVEL records are then the
+ * prefixes of the class order (level 0 holds the CFPO run's iterations).
+ * May include: engine.h, run_loop.h, prog_insert.h, prog_joint.h, prog_colour.h (layers 0-4). */
 #ifndef CFPO_PROGRESSIVE_H
 #define CFPO_PROGRESSIVE_H
 
@@ -29,6 +35,17 @@
 
 #define CFPO_PROG_DEFAULT_BASE 64
 #define CFPO_PROG_MAX_LEVELS 64
+/* The class-aware move's defaults (classes by colouring; each used when
+ * its option is 0): sweeps, the pair weights' targets (a pair of one
+ * class: CLASS_TARGET Delta(N/K), across: UNION_TARGET Delta(N)), the
+ * circumcentre candidates, the local ascent's steps, the class swaps
+ * (each of these three off when below 0). */
+#define CFPO_PROG_CLASS_SWEEPS 150
+#define CFPO_PROG_CLASS_TARGET 0.80
+#define CFPO_PROG_UNION_TARGET 0.88
+#define CFPO_PROG_CLASS_CIRCUM 6
+#define CFPO_PROG_CLASS_SOLVE 8
+#define CFPO_PROG_CLASS_SWAPS 8
 #define CFPO_PROG_DEFAULT_LEVEL_ITER 24 /* each level's iteration cap by default (no joint phase, no classes) */
 
 typedef struct {
@@ -63,6 +80,15 @@ typedef struct {
     /* Called for each sweep of the polish instead of joint.sweep_done
      * (with joint.user); may be NULL (then joint.sweep_done). */
     void (*polish_sweep)(int sweep, int64_t moved, const double *dmin, const double *davg, int K, void *user);
+    int classes_levels;   /* with classes: 1 builds them as levels (class c with classes < c held);
+                             0, the default, colours a plain CFPO run of n points into the classes
+                             (prog_colour.h) and then runs the class-aware joint move (prog_joint.h,
+                             classes) for joint.sweeps sweeps (0: CFPO_PROG_CLASS_SWEEPS) */
+    double union_floor;   /* (colouring only) the union's delta_min may fall to this in Delta(n), not below
+                             (nor below its value when that is lower already); 0: the union's target
+                             (joint.target_full or CFPO_PROG_UNION_TARGET); at or above the union's
+                             start (e.g. 1.2): the union's delta_min never falls */
+    double colour_reach;  /* the colouring's reach in Delta(N/K) (0: 1.0) */
     const char *checkpoint; /* the level under way's engine checkpoint (ckpt.h) here ... */
     int checkpoint_every;   /* ... every this many of its iterations and at its end */
     const char *resume;     /* go on from such a checkpoint (its size says its level) */

@@ -9,7 +9,11 @@
 #    --prefixes finds in the file at that prefix;
 #  - no prefix's delta_min falls while its level is optimised (the trace,
 #    row by row within each level);
-#  - the same bytes for 1, 2 and 3 threads, progressive and with classes;
+#  - the same bytes for 1, 2 and 3 threads, progressive and with classes
+#    (by colouring and --classes-levels);
+#  - classes by colouring: no class's delta_min falls over the JOINT
+#    lines, the union's never below min(its value, 0.88); the last JOINT
+#    line is cfpo-analyze's delta_min of each class's rows and the union;
 #  - SUMMARY's worst prefix is the worst LEVEL line, and the trace's last
 #    row says the same;
 #  - SIGUSR1 mid-run leaves the level's checkpoint, exit 3 and no output,
@@ -61,6 +65,15 @@ expect 2 "--level-iter" -n 1024 --progressive --level-iter -2 -o x.npy
 expect 2 "--polish does not go with --classes" -n 1024 --classes 4 --polish 3 -o x.npy
 expect 2 "--polish-floor" -n 1024 --progressive --polish 3 --polish-floor 1.5 -o x.npy
 expect 2 "--polish:" -n 1024 --progressive --polish -1 -o x.npy
+expect 2 "--relax does not go with --classes" -n 1024 --classes 4 --relax 2 -o x.npy
+expect 2 "--level-iter does not go with --classes" -n 1024 --classes 4 --level-iter 3 -o x.npy
+expect 2 "--checkpoint does not go with --classes" -n 1024 --classes 4 --checkpoint ck.bin -o x.npy
+expect 2 "needs --classes K" -n 1024 --class-swaps 3 -o x.npy
+expect 2 "needs --classes K" -n 1024 --progressive --classes-levels -o x.npy
+expect 2 "do not go with --classes-levels" -n 1024 --classes 4 --classes-levels --class-union-floor 0.8 -o x.npy
+expect 2 "--class-union-floor" -n 1024 --classes 4 --class-union-floor 2 -o x.npy
+expect 2 "--class-reach" -n 1024 --classes 4 --class-reach 0.1 -o x.npy
+expect 2 "--class-swaps" -n 1024 --classes 4 --class-swaps 65 -o x.npy
 
 run() { "$CFPO" -q "$@"; }
 field() { grep -o " $1=[^ ]*" | head -1 | cut -d= -f2; }
@@ -72,6 +85,42 @@ for t in 1 2 3; do
 done
 cmp -s p1.npy p2.npy && cmp -s p1.npy p3.npy && ok || bad "--progressive: bytes differ across 1-3 threads"
 cmp -s c1.npy c2.npy && cmp -s c1.npy c3.npy && ok || bad "--classes 3: bytes differ across 1-3 threads"
+
+# ---- classes by colouring (the default): over the JOINT lines no class's
+# delta_min falls and the union's never below min(its value, 0.88); the
+# last JOINT line's classes and union are cfpo-analyze's delta_min of the
+# file's row blocks; --classes-levels: the same bytes for 1-3 threads and
+# not the colouring's
+python3 - <<'PY' && ok || bad "--classes 3: a class fell, or the union below its floor, over the JOINT lines"
+import sys
+rows = [[float(v) for v in l.split(" delta_min=")[1].split()[0].split(",")] for l in open("c1.sum") if l.startswith("JOINT")]
+if len(rows) < 3: sys.exit(1)
+for a, b in zip(rows, rows[1:]):
+    if any(y < x for x, y in zip(a[:-1], b[:-1])) or b[-1] < min(a[-1], 0.88) - 1e-12: sys.exit(1)
+sys.exit(0 if rows[-1][0] > rows[0][0] or rows[-1][1] > rows[0][1] else 1)
+PY
+python3 - <<'PY' || bad "splitting the classes' rows"
+b = open("c1.npy", "rb").read(); h = b.index(b"\n") + 1; n = (len(b) - h) // 16
+for c in range(3):
+    lo, hi = c * n // 3, (c + 1) * n // 3
+    head = "{'descr': '<f8', 'fortran_order': False, 'shape': (%d, 2), }" % (hi - lo)
+    head = head + " " * (118 - len(head)) + "\n"
+    open("cls%d.npy" % c, "wb").write(b"\x93NUMPY\x01\x00" + bytes([len(head), 0]) + head.encode() + b[h + 16 * lo:h + 16 * hi])
+PY
+for c in 0 1 2; do "$AN" -q -t 1 cls$c.npy >cls$c.an 2>/dev/null || bad "cfpo-analyze of class $c"; done
+"$AN" -q -t 1 c1.npy >clsu.an 2>/dev/null || bad "cfpo-analyze of the union"
+python3 - <<'PY' && ok || bad "--classes 3: the last JOINT line is not cfpo-analyze's delta_min of each class and the union"
+import sys
+last = [l for l in open("c1.sum") if l.startswith("JOINT")][-1]
+j = [float(v) for v in last.split(" delta_min=")[1].split()[0].split(",")]
+an = [float(open(f).read().split(" delta_min=")[1].split()[0]) for f in ("cls0.an", "cls1.an", "cls2.an", "clsu.an")]
+sys.exit(0 if all(abs(a - b) <= 2e-6 for a, b in zip(j, an)) else 1)
+PY
+for t in 1 2 3; do
+  run -n 1200 -s 2 -t $t --classes 3 --classes-levels -o cl$t.npy >cl$t.sum || bad "--classes-levels run, $t threads"
+done
+cmp -s cl1.npy cl2.npy && cmp -s cl1.npy cl3.npy && ok || bad "--classes-levels: bytes differ across 1-3 threads"
+cmp -s cl1.npy c1.npy && bad "--classes-levels gave the colouring's bytes" || ok
 
 # ---- the prefix order: the run of 1024 is the first half of the run of 2048
 run -n 1024 -s 4 -t 2 --progressive -o h.npy >h.sum || bad "progressive run of 1024"
