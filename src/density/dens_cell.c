@@ -250,13 +250,16 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         /* a move must gain more than tol local spacings in the measure
          * (sqrt(f) / Delta), as the uniform path's must gain tol L; the
-         * over-relaxed spot a + w (c - a) first (policy.h), where it
-         * passes the same rules, else the candidate */
-        const double thr = oldf * (1 + 1e-12), w = CFPO_POLICY_DENSITY_RELAX;
-        double rc = 0, x = 0, y = 0;
+         * over-relaxed spots a + w (c - a) of the iteration's weights
+         * first, in order (policy.h), where one passes the same rules,
+         * else the candidate */
+        const double thr = oldf * (1 + 1e-12);
+        double rc = 0, x = 0, y = 0, wv[3];
         int cc = -1, viol;
-        const double rx = ax + w * (cxp - ax), ry = ay + w * (cyp - ay);
-        if (w > 1 && rx >= S.x0 && rx <= S.x1 && ry >= S.y0 && ry <= S.y1) {
+        const int nw = cfpo_policy_density_relax(E->iter, wv);
+        for (int q = 0; q < nw && cc < 0; q++) {
+            const double rx = ax + wv[q] * (cxp - ax), ry = ay + wv[q] * (cyp - ay);
+            if (!(rx >= S.x0 && rx <= S.x1 && ry >= S.y0 && ry <= S.y1)) continue;
             const double rr = cfpo_dens_local_q(E->d, ox, oy, rx, ry);
             const double fr = rr > 0 ? cfpo_dens_value(b->nx, b->ny, b->nr, kk, rr, rx, ry) : -1;
             if (rr > 0 && sqrt(fr) > sqrt(oldf) + gain && fr > thr &&

@@ -40,8 +40,11 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
     size_t *idx = malloc((n ? n : 1) * sizeof *idx);
     double *rho = malloc((n ? n : 1) * sizeof *rho);
     int64_t *cell = malloc((n ? n : 1) * sizeof *cell);
+    /* the points in cell order (x, y, q a slot) and each one's slot: the
+     * scan reads its cells' points one after another */
+    double *pt = malloc((n ? n : 1) * 3 * sizeof *pt);
     int rc = -1;
-    if (!start || !fill || !idx || !rho || !cell) goto done;
+    if (!start || !fill || !idx || !rho || !cell || !pt) goto done;
     for (size_t i = 0; i < n; i++) {
         int64_t cx = (int64_t)(xy[2 * i] * (double)g), cy = (int64_t)(xy[2 * i + 1] * (double)g);
         cx = cx < 0 ? 0 : cx >= g ? g - 1 : cx;
@@ -52,34 +55,53 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
     }
     for (int64_t c = 0; c < g * g; c++) start[c + 1] += start[c];
     for (int64_t c = 0; c < g * g; c++) fill[c] = start[c];
-    for (size_t i = 0; i < n; i++) idx[fill[cell[i]]++] = i;
+    for (size_t i = 0; i < n; i++) {
+        const size_t s = fill[cell[i]]++;
+        idx[i] = s;
+        pt[3 * s] = xy[2 * i];
+        pt[3 * s + 1] = xy[2 * i + 1];
+        pt[3 * s + 2] = rho[i];
+    }
     const double lo = sqrt(d->rho_min);
 #pragma omp parallel for num_threads(nt) schedule(dynamic, 1024)
     for (size_t i = 0; i < k; i++) {
         const double x = xy[2 * i], y = xy[2 * i + 1], ri = rho[i];
+        const size_t si = idx[i];
         if (!(ri > 0)) { mm[i] = 0; continue; }
-        const int64_t cx = cell[i] % g, cy = cell[i] / g;
+        const int64_t cy = cell[i] / g, cx = cell[i] - cy * g;
         double best = INFINITY; /* d^2 q_j, the smallest so far */
         for (int64_t k = 0;; k++) {
             const int all = 2 * k + 1 >= g;
             const int64_t kk = all ? (g - 1) / 2 : k, kx0 = all ? -kk : -k, kx1 = all ? g - 1 - kk : k;
-            for (int64_t dy = kx0; dy <= kx1; dy++)
+            /* two running minima (cells of even and odd dx), so that the
+             * compares of one cell need not wait for the last cell's; the
+             * minimum is the same */
+            double b0 = best, b1 = best;
+            for (int64_t dy = kx0; dy <= kx1; dy++) {
+                /* cy + dy lies in (-g, 2g): one wrap, no division */
+                int64_t yy = cy + dy;
+                yy = yy < 0 ? yy + g : yy >= g ? yy - g : yy;
+                const size_t *row = start + yy * g;
                 for (int64_t dx = kx0; dx <= kx1; dx++) {
-                    if (!all && k > 0 && dx > -k && dx < k && dy > -k && dy < k) continue; /* inner rings done */
+                    if (!all && k > 0 && dx > -k && dx < k && dy > -k && dy < k) { dx = k - 1; continue; } /* inner rings done */
                     if (all && k > 0) {
                         /* cells seen in rings below k are skipped */
                         const int64_t ring = llabs(dx) > llabs(dy) ? llabs(dx) : llabs(dy);
                         if (ring < k) continue;
                     }
-                    const int64_t c = ((cy + dy) % g + g) % g * g + ((cx + dx) % g + g) % g;
-                    for (size_t s = start[c]; s < start[c + 1]; s++) {
-                        const size_t j = idx[s];
-                        if (j == i) continue;
-                        const double ex = wrapd(xy[2 * j] - x), ey = wrapd(xy[2 * j + 1] - y);
-                        const double v = (ex * ex + ey * ey) * rho[j];
-                        if (v < best) best = v;
+                    int64_t xx = cx + dx;
+                    xx = xx < 0 ? xx + g : xx >= g ? xx - g : xx;
+                    double bb = INFINITY;
+                    for (size_t s = row[xx]; s < row[xx + 1]; s++) {
+                        const double ex = wrapd(pt[3 * s] - x), ey = wrapd(pt[3 * s + 1] - y);
+                        const double v = (ex * ex + ey * ey) * pt[3 * s + 2];
+                        bb = s == si ? bb : v < bb ? v : bb;
                     }
+                    if (dx & 1) b1 = bb < b1 ? bb : b1;
+                    else b0 = bb < b0 ? bb : b0;
                 }
+            }
+            best = b0 < b1 ? b0 : b1;
             if (all) break;
             const double reach = (double)k * L;
             if (reach * reach * lo >= best) break;
@@ -94,7 +116,7 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
     }
     rc = 0;
 done:
-    free(start); free(fill); free(idx); free(rho); free(cell);
+    free(start); free(fill); free(idx); free(rho); free(cell); free(pt);
     if (qlow == &own) cfpo_dens_qbound_free(&own);
     return rc;
 }

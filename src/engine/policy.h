@@ -98,6 +98,32 @@ static inline int cfpo_policy_density_stalled(int k, double davg, double *ref)
  * box and the cell); else the point goes to c. As in the uniform path,
  * it carries a move across many points in one sweep. */
 #define CFPO_POLICY_DENSITY_RELAX 1.8
+/* Its weights by iteration (since 2026-11-29, issue 42), tried in order
+ * until a spot passes: none in iterations 1 to
+ * CFPO_POLICY_DENSITY_RELAX_FROM - 1, where relaxed moves slow delta_min's
+ * first climb (each gives up part of its point's own gain); then
+ * CFPO_POLICY_DENSITY_RELAX_STRONG up to CFPO_POLICY_DENSITY_RELAX_STRONG_TO,
+ * which carries the loose set's moves further, and
+ * CFPO_POLICY_DENSITY_RELAX_LATE after it; each followed by
+ * CFPO_POLICY_DENSITY_RELAX and CFPO_POLICY_DENSITY_RELAX_MILD. At 65,536
+ * points (0.85, 0.90) is reached after 7-9 iterations instead of 10-11;
+ * the late weights' stronger first try keeps the converged quality that
+ * the relaxation's late start alone lost (a single 1.8 from iteration 10
+ * on: delta_avg 0.0010 lower at the stop); docs/tried.md, results
+ * 2026-11-29-density8. Writes the weights into w[3]; returns their count. */
+#define CFPO_POLICY_DENSITY_RELAX_FROM 4
+#define CFPO_POLICY_DENSITY_RELAX_STRONG 3.0
+#define CFPO_POLICY_DENSITY_RELAX_STRONG_TO 9
+#define CFPO_POLICY_DENSITY_RELAX_LATE 2.2
+#define CFPO_POLICY_DENSITY_RELAX_MILD 1.4
+static inline int cfpo_policy_density_relax(int k, double w[3])
+{
+    if (k < CFPO_POLICY_DENSITY_RELAX_FROM) return 0;
+    w[0] = k <= CFPO_POLICY_DENSITY_RELAX_STRONG_TO ? CFPO_POLICY_DENSITY_RELAX_STRONG : CFPO_POLICY_DENSITY_RELAX_LATE;
+    w[1] = CFPO_POLICY_DENSITY_RELAX;
+    w[2] = CFPO_POLICY_DENSITY_RELAX_MILD;
+    return 3;
+}
 /* The density engine's near phase (docs/method.md, "Density"): in
  * iterations 1 to CFPO_POLICY_DENSITY_NEAR_ITERS (three of the grid's
  * offsets), in a 3 x 3 block whose largest q is at most
