@@ -134,6 +134,28 @@ void prog_joint_place(joint *J, double *xy, int64_t k, double x, double y)
     prog_buckets_link(&J->B, k);
 }
 
+/* The two-point move of i to (ax, ay) and j to (bx, by), scored: i is
+ * measured with j at its new place and, when that is above base, j with i
+ * at its new place; both are then put back. The smaller of the two
+ * measures when both are above base, else -1. */
+static double two_point_score(joint *J, double *xy, int64_t i, double ax, double ay, int64_t j, double bx, double by,
+                              double base)
+{
+    const double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
+    int64_t bk;
+    double q = -1;
+    prog_joint_place(J, xy, j, bx, by);
+    const double qi = prog_joint_measure_at(J, i, ax, ay, &bk, base);
+    if (qi > base) {
+        prog_joint_place(J, xy, i, ax, ay);
+        const double qj = prog_joint_measure_at(J, j, bx, by, &bk, base);
+        prog_joint_place(J, xy, i, xi, yi);
+        if (qj > base) q = fmin(qi, qj);
+    }
+    prog_joint_place(J, xy, j, xj, yj);
+    return q;
+}
+
 /* The pair move of point i and its binding partner j (level at least i's,
  * so within i's reach): pairs trials, i straight away from j and j from i
  * by the same step (steps 0.2, 0.1, 0.04, 0.01 of their distance, a little
@@ -158,17 +180,8 @@ int prog_joint_pair_move(joint *J, double *xy, int64_t i, int64_t j, double base
         const double jb = 0.3 * (2.0 * cfpo_rand01(jo->seed, stream, (uint64_t)c + 32) - 1.0);
         const double ax = prog_joint_wrap1(xi + st * (ux - ja * uy)), ay = prog_joint_wrap1(yi + st * (uy + ja * ux));
         const double bx = prog_joint_wrap1(xj - st * (ux - jb * uy)), by = prog_joint_wrap1(yj - st * (uy + jb * ux));
-        int64_t bk;
-        prog_joint_place(J, xy, j, bx, by);
-        const double qi = prog_joint_measure_at(J, i, ax, ay, &bk, best);
-        double qj = -1;
-        if (qi > best) {
-            prog_joint_place(J, xy, i, ax, ay);
-            qj = prog_joint_measure_at(J, j, bx, by, &bk, best);
-            prog_joint_place(J, xy, i, xi, yi);
-        }
-        prog_joint_place(J, xy, j, xj, yj);
-        if (qi > best && qj > best) best = fmin(qi, qj), b[0] = ax, b[1] = ay, b[2] = bx, b[3] = by;
+        const double q = two_point_score(J, xy, i, ax, ay, j, bx, by, best);
+        if (q > best) best = q, b[0] = ax, b[1] = ay, b[2] = bx, b[3] = by;
     }
     if (best <= base) return 0;
     prog_joint_place(J, xy, i, b[0], b[1]);
@@ -202,16 +215,8 @@ int prog_joint_swap_move(joint *J, double *xy, int64_t i, double q0, double rho,
         const double qk = prog_joint_measure_at(J, k, xk, yk, &bk, -INFINITY);
         if (qk < 0) continue;
         const double base = fmin(q0, qk);
-        prog_joint_place(J, xy, k, xi, yi);
-        const double qi = prog_joint_measure_at(J, i, xk, yk, &bk, base);
-        double qn = -1;
-        if (qi > base) {
-            prog_joint_place(J, xy, i, xk, yk);
-            qn = prog_joint_measure_at(J, k, xi, yi, &bk, base);
-            prog_joint_place(J, xy, i, xi, yi);
-        }
-        prog_joint_place(J, xy, k, xk, yk);
-        if (qi > base && qn > base && fmin(qi, qn) - base > gain) gain = fmin(qi, qn) - base, best = k;
+        const double q = two_point_score(J, xy, i, xk, yk, k, xi, yi, base);
+        if (q > base && q - base > gain) gain = q - base, best = k;
     }
     if (best < 0) return 0;
     const double xk = xy[2 * best], yk = xy[2 * best + 1];

@@ -26,20 +26,12 @@
 
 static int passed_, failed_;
 
-static double dist(const double *a, const double *b)
-{
-    double dx = fabs(a[0] - b[0]), dy = fabs(a[1] - b[1]);
-    if (dx > 0.5) dx = 1 - dx;
-    if (dy > 0.5) dy = 1 - dy;
-    return sqrt(dx * dx + dy * dy);
-}
-
 /* delta_min of the points [lo, hi) in Delta(hi - lo). */
 static double dmin_of(const double *xy, int64_t lo, int64_t hi)
 {
     double b = INFINITY;
     for (int64_t i = lo; i < hi; i++)
-        for (int64_t j = i + 1; j < hi; j++) b = fmin(b, dist(xy + 2 * i, xy + 2 * j));
+        for (int64_t j = i + 1; j < hi; j++) b = fmin(b, tu_torus_dist(xy + 2 * i, xy + 2 * j));
     return b / cfpo_delta_bound((double)(hi - lo));
 }
 

@@ -31,20 +31,12 @@
 
 static int passed_, failed_;
 
-static double dist(const double *a, const double *b)
-{
-    double dx = fabs(a[0] - b[0]), dy = fabs(a[1] - b[1]);
-    if (dx > 0.5) dx = 1 - dx;
-    if (dy > 0.5) dy = 1 - dy;
-    return sqrt(dx * dx + dy * dy);
-}
-
 /* Point i's nearest distance within the first m points. */
 static double nn(const double *xy, int64_t m, int64_t i)
 {
     double b = INFINITY;
     for (int64_t j = 0; j < m; j++)
-        if (j != i && dist(xy + 2 * i, xy + 2 * j) < b) b = dist(xy + 2 * i, xy + 2 * j);
+        if (j != i && tu_torus_dist(xy + 2 * i, xy + 2 * j) < b) b = tu_torus_dist(xy + 2 * i, xy + 2 * j);
     return b;
 }
 

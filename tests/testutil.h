@@ -1,8 +1,18 @@
 /* testutil.h - the closing line every test prints, "N passed, N failed",
- * and the exit code that goes with it. */
+ * and the exit code that goes with it; the brute-force tests' distance on
+ * the unit torus. */
 #ifndef CFPO_TESTUTIL_H
 #define CFPO_TESTUTIL_H
+#include <math.h>
 #include <stdio.h>
+/* The distance of the points a and b (x, y) on the unit torus. */
+static inline double tu_torus_dist(const double *a, const double *b)
+{
+    double dx = fabs(a[0] - b[0]), dy = fabs(a[1] - b[1]);
+    if (dx > 0.5) dx = 1 - dx;
+    if (dy > 0.5) dy = 1 - dy;
+    return sqrt(dx * dx + dy * dy);
+}
 static inline int test_report(int passed, int failed)
 {
     printf("%d passed, %d failed\n", passed, failed);
