@@ -7,6 +7,7 @@
 
 #include "geom.h"
 #include "rng.h"
+#include "start_relax.h"
 
 #define START_SALT 0x2545f4914f6cdd1dULL
 #define EXTRA_SALT 0x9e6c63d0676a9a99ULL
@@ -142,6 +143,43 @@ static int sort_by_cell(cfpo_start_pt *pts, size_t m, int64_t c0, int64_t ncell)
     return 0;
 }
 
+/* The relaxation (start_relax.h) of the m points made from the start rows
+ * [ylo, yhi) (torus units, unwrapped), then only those in optimisation
+ * rows [y0, y1) kept, their cells set. 0, or -1 when out of memory. */
+static int relax_band(const cfpo_grid *G, cfpo_start_pt *pts, size_t *m, double ylo, double yhi, int64_t y0,
+                      int64_t y1, int threads)
+{
+    const size_t k = *m;
+    double *x = malloc((k ? k : 1) * sizeof *x), *y = malloc((k ? k : 1) * sizeof *y);
+    uint64_t *key = malloc((k ? k : 1) * sizeof *key);
+    int rc = -1;
+    if (x && y && key) {
+        for (size_t i = 0; i < k; i++) {
+            x[i] = pts[i].x;
+            y[i] = pts[i].y;
+            key[i] = pts[i].key;
+        }
+        rc = cfpo_start_relax(x, y, key, k, G->n, ylo, yhi, threads);
+    }
+    if (rc == 0) {
+        size_t j = 0;
+        for (size_t i = 0; i < k; i++) {
+            const int64_t cy = cfpo_grid_cy(G, y[i]);
+            if (cy < y0 || cy >= y1) continue;
+            pts[j].cell = cy * G->g + cfpo_grid_cx(G, x[i]);
+            pts[j].key = key[i];
+            pts[j].x = x[i];
+            pts[j].y = y[i];
+            j++;
+        }
+        *m = j;
+    }
+    free(x);
+    free(y);
+    free(key);
+    return rc;
+}
+
 int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads, cfpo_start_pt **out)
 {
     start_params p;
@@ -150,7 +188,8 @@ int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads,
     const int nm = make_modes(G, &p, md);
     /* Start rows whose points can land in rows [y0, y1): the band's extent
      * plus the largest displacement, at most every row once. */
-    const double reach = nm ? p.amp * sqrt(2.0 * nm) + 1.0 : 1.0;
+    const int relax = cfpo_start_relax_steps(G->n) > 0;
+    const double reach = (nm ? p.amp * sqrt(2.0 * nm) + 1.0 : 1.0) + cfpo_start_relax_reach(G->n) * (double)p.h;
     int64_t jlo = (int64_t)floor((double)y0 * G->L * (double)p.h - reach) - 1;
     int64_t jhi = (int64_t)ceil((double)y1 * G->L * (double)p.h + reach) + 1;
     if (jhi - jlo > p.h) { jlo = 0; jhi = p.h; }
@@ -178,7 +217,7 @@ int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads,
                 double y = cfpo_wrap01(((double)j + cfpo_rand01(seed, 2 * sc + 1, 2 * k + 1)) / (double)p.h);
                 warp(md, nm, &x, &y);
                 const int64_t cy = cfpo_grid_cy(G, y);
-                if (cy < y0 || cy >= y1) continue;
+                if (!relax && (cy < y0 || cy >= y1)) continue; /* else kept for the relaxation */
                 pts[m].cell = cy * G->g + cfpo_grid_cx(G, x);
                 pts[m].key = sc * per + k;
                 pts[m].x = x;
@@ -194,6 +233,10 @@ int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads,
         m += kept[r];
     }
     free(kept);
+    if (relax && relax_band(G, pts, &m, (double)jlo / (double)p.h, (double)jhi / (double)p.h, y0, y1, threads) != 0) {
+        free(pts);
+        return -1;
+    }
     if (sort_by_cell(pts, m, y0 * G->g, (y1 - y0) * G->g) != 0) qsort(pts, m, sizeof *pts, cmp_pt);
     *out = pts;
     return (int64_t)m;

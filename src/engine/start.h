@@ -4,10 +4,13 @@
  * cell. The start is a jittered grid of h x h start cells, h = floor(sqrt
  * n), one uniform point in each, the n - h^2 remaining points in distinct
  * random start cells, then displaced by a smooth divergence-free random
- * field (docs/method.md says why). Every coordinate is a pure function of
- * (seed, start cell), so any process makes any optimisation cell's points
- * without the others. Order inside a cell: by start cell, then by point.
- * May include: geom.h, rng.h (layers 0-1), grid.h (the optimisation grid). */
+ * field (docs/method.md says why), then relaxed without a grid
+ * (start_relax.h). Every coordinate is a pure function of (seed, the
+ * start cells within the relaxation's reach), so any process makes any
+ * optimisation cell's points from a band of start rows around them.
+ * Order inside a cell: by start cell, then by point.
+ * May include: geom.h, rng.h (layers 0-1), grid.h (the optimisation
+ * grid), start_relax.h. */
 #ifndef CFPO_START_H
 #define CFPO_START_H
 
