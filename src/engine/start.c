@@ -143,10 +143,13 @@ static int sort_by_cell(cfpo_start_pt *pts, size_t m, int64_t c0, int64_t ncell)
     return 0;
 }
 
-/* The relaxation (start_relax.h) of the m points made from the start rows
- * [ylo, yhi) (torus units, unwrapped), then only those in optimisation
- * rows [y0, y1) kept, their cells set. 0, or -1 when out of memory. */
-static int relax_band(const cfpo_grid *G, cfpo_start_pt *pts, size_t *m, double ylo, double yhi, int64_t y0,
+/* The relaxation (start_relax.h) of the m points *pts made from the start
+ * rows [ylo, yhi) (torus units, unwrapped), then only those in optimisation
+ * rows [y0, y1) kept in a new *pts, their cells set. The old array is freed
+ * before the relaxation's work arrays are taken, so the start's peak
+ * memory stays under the engine's. 0, or -1 when out of memory (*pts is
+ * then freed and NULL). */
+static int relax_band(const cfpo_grid *G, cfpo_start_pt **pts, size_t *m, double ylo, double yhi, int64_t y0,
                       int64_t y1, int threads)
 {
     const size_t k = *m;
@@ -155,29 +158,39 @@ static int relax_band(const cfpo_grid *G, cfpo_start_pt *pts, size_t *m, double 
     int rc = -1;
     if (x && y && key) {
         for (size_t i = 0; i < k; i++) {
-            x[i] = pts[i].x;
-            y[i] = pts[i].y;
-            key[i] = pts[i].key;
+            x[i] = (*pts)[i].x;
+            y[i] = (*pts)[i].y;
+            key[i] = (*pts)[i].key;
         }
+        free(*pts);
+        *pts = NULL;
         rc = cfpo_start_relax(x, y, key, k, G->n, ylo, yhi, threads);
     }
-    if (rc == 0) {
+    size_t kept = 0;
+    for (size_t i = 0; rc == 0 && i < k; i++) {
+        const int64_t cy = cfpo_grid_cy(G, y[i]);
+        kept += cy >= y0 && cy < y1;
+    }
+    cfpo_start_pt *out = rc == 0 ? malloc((kept ? kept : 1) * sizeof *out) : NULL;
+    if (out) {
         size_t j = 0;
         for (size_t i = 0; i < k; i++) {
             const int64_t cy = cfpo_grid_cy(G, y[i]);
             if (cy < y0 || cy >= y1) continue;
-            pts[j].cell = cy * G->g + cfpo_grid_cx(G, x[i]);
-            pts[j].key = key[i];
-            pts[j].x = x[i];
-            pts[j].y = y[i];
+            out[j].cell = cy * G->g + cfpo_grid_cx(G, x[i]);
+            out[j].key = key[i];
+            out[j].x = x[i];
+            out[j].y = y[i];
             j++;
         }
         *m = j;
     }
+    free(*pts);
+    *pts = out;
     free(x);
     free(y);
     free(key);
-    return rc;
+    return out ? 0 : -1;
 }
 
 int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads, cfpo_start_pt **out)
@@ -233,10 +246,8 @@ int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads,
         m += kept[r];
     }
     free(kept);
-    if (relax && relax_band(G, pts, &m, (double)jlo / (double)p.h, (double)jhi / (double)p.h, y0, y1, threads) != 0) {
-        free(pts);
+    if (relax && relax_band(G, &pts, &m, (double)jlo / (double)p.h, (double)jhi / (double)p.h, y0, y1, threads) != 0)
         return -1;
-    }
     if (sort_by_cell(pts, m, y0 * G->g, (y1 - y0) * G->g) != 0) qsort(pts, m, sizeof *pts, cmp_pt);
     *out = pts;
     return (int64_t)m;

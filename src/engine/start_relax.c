@@ -59,12 +59,12 @@ static inline int64_t band_bin(const bins *B, int64_t bx, int64_t by)
     return rel < B->rows ? rel * B->nb + bx : -1;
 }
 
-static void bin_points(bins *B, const double *x, const double *y, const uint64_t *key, size_t m, int64_t *bof)
+static void bin_points(bins *B, const double *x, const double *y, const uint64_t *key, size_t m, int32_t *bof)
 {
     const int64_t nbin = B->rows * B->nb;
     memset(B->off, 0, (size_t)(nbin + 1) * sizeof *B->off);
     for (size_t i = 0; i < m; i++) {
-        bof[i] = band_bin(B, axis_bin(x[i], B->nb), axis_bin(y[i], B->nb));
+        bof[i] = (int32_t)band_bin(B, axis_bin(x[i], B->nb), axis_bin(y[i], B->nb));
         if (bof[i] >= 0) B->off[bof[i] + 1]++;
     }
     for (int64_t b = 0; b < nbin; b++) B->off[b + 1] += B->off[b];
@@ -119,7 +119,6 @@ int cfpo_start_relax(double *x, double *y, const uint64_t *key, size_t m, int64_
 {
     const int steps = cfpo_start_relax_steps(n);
     if (steps == 0 || m == 0) return 0;
-    if (m >= UINT32_MAX) return -1;
     const double r = radius(n);
     bins B;
     B.nb = (int64_t)floor(1.0 / r);
@@ -131,9 +130,10 @@ int cfpo_start_relax(double *x, double *y, const uint64_t *key, size_t m, int64_
         B.rows = (int64_t)ceil(yhi * (double)B.nb) - B.rb0 + 1;
         if (B.rows > B.nb) B.rows = B.nb;
     }
+    if (m >= UINT32_MAX || B.rows * B.nb >= INT32_MAX) return -1;
     B.off = malloc((size_t)(B.rows * B.nb + 1) * sizeof *B.off);
     B.idx = malloc(m * sizeof *B.idx);
-    int64_t *bof = malloc(m * sizeof *bof);
+    int32_t *bof = malloc(m * sizeof *bof);
     double *x2 = malloc(m * sizeof *x2), *y2 = malloc(m * sizeof *y2);
     if (!B.off || !B.idx || !bof || !x2 || !y2) {
         free(B.off); free(B.idx); free(bof); free(x2); free(y2);
