@@ -161,20 +161,7 @@ rest = [p for p in pts if not (0.49 < p[0] < 0.51 + L / 2 and 0.49 < p[1] < 0.51
 hdr = b'CFPOCKP1' + struct.pack('<QQQdQQQ', N, 1, 2, 0.0, 10, 0, 0)
 open(sys.argv[2], 'wb').write(hdr + b''.join(struct.pack('<dd', *p) for p in lat + rest[:N - len(lat)]))
 PY
-# The adaptive start is relaxed (docs/method.md, item 1: its points are
-# 0.013 apart at this n), so the start's distance already bounds a cell at
-# 9 points and refuses the clump; the paper variant's start (a uniform
-# point per cell) bounds nothing, and its clump meets the fixed limit.
-refused clump.v1 "no run of cfpo puts more than 9 in a cell"
-python3 - clump.v1 clump0.v1 <<'PY'
-import struct, sys
-d = bytearray(open(sys.argv[1], 'rb').read())
-struct.pack_into('<Q', d, 24, 0)  # the variant: paper
-open(sys.argv[2], 'wb').write(bytes(d))
-PY
-timeout 30 "$CFPO" -q --variant paper --max-iter 2 --resume clump0.v1 -o out.bin >o.log 2>e.log
-rc=$?
-[ $rc -eq 1 ] && grep -q "more than 64 is refused" e.log && ok || bad "clump0.v1 (paper): exit $rc, $(head -c 300 e.log)"
+refused clump.v1 "more than 64 is refused"
 
 # Across the switch from the near phase to exact solves (S, the first
 # trace row with near = 0; the switch comes at the end of iteration S - 1,

@@ -115,7 +115,7 @@ static void test_adaptive_start(void)
         char err[256];
         cfpo_grid_init(&G, n, CFPO_VARIANT_ADAPTIVE, 9, err, sizeof err);
         cfpo_start_pt *all = NULL;
-        int64_t m = cfpo_start_band(&G, 0, G.g, 1, &all);
+        int64_t m = cfpo_start_band(&G, 0, G.g, 1, 1, &all);
         int64_t bad = 0;
         for (int64_t i = 0; i < m; i++) {
             const cfpo_start_pt *p = &all[i];
@@ -130,7 +130,7 @@ static void test_adaptive_start(void)
         for (int64_t y0 = 0, w = 1; y0 < G.g; y0 += w, w++) {
             int64_t y1 = y0 + w < G.g ? y0 + w : G.g;
             cfpo_start_pt *b = NULL;
-            int64_t mb = cfpo_start_band(&G, y0, y1, (int)(w % 3) + 1, &b);
+            int64_t mb = cfpo_start_band(&G, y0, y1, (int)(w % 3) + 1, 1, &b);
             for (int64_t i = 0; i < mb; i++, k++)
                 if (k >= m || memcmp(&b[i], &all[k], sizeof *b) != 0) diff++;
             free(b);
@@ -140,7 +140,7 @@ static void test_adaptive_start(void)
         cfpo_grid G2 = G;
         G2.seed = 10;
         cfpo_start_pt *o = NULL;
-        int64_t m2 = cfpo_start_band(&G2, 0, G2.g, 2, &o);
+        int64_t m2 = cfpo_start_band(&G2, 0, G2.g, 2, 1, &o);
         int64_t same = 0;
         for (int64_t i = 0; i < m2 && i < m; i++) same += o[i].x == all[i].x;
         CHECK(m2 == n && same < 3, "adaptive start n=%lld: seeds 9 and 10 share %lld points", (long long)n,

@@ -127,6 +127,8 @@ struct cfpo_engine {
     cfpo_policy pol;  /* iteration cur's decisions (policy.h): what every
                          backend reads of the variant's schedule */
     double dmin_now;  /* delta_min / Delta(n) of the set as it stands (1 until measured) */
+    int start_raw;    /* eng_make_initial makes the start without its
+                         relaxation (the checkpoint's bound, engine_ckpt.c) */
     uint64_t id_sum;  /* checksum of all ids (check mode) */
     /* timing and traffic */
     double t_compute, t_migrate, t_halo, b_halo, b_migrate;

@@ -28,12 +28,19 @@ int cfpo_checkpoint_peek(const char *path, cfpo_checkpoint_info *info, char *err
 /* delta(X) never decreases (docs/method.md), so no state cfpo reaches
  * has two points closer than its start's minimum distance d0: the start
  * is a function of (n, seed, variant), made here as a fresh run makes it
- * and measured. A cell then holds at most ckpt_cell_bound(L, d0) points. */
+ * and measured. A cell then holds at most ckpt_cell_bound(L, d0) points.
+ * The adaptive start is measured without its relaxation (start_relax.h):
+ * the relaxed start's d0 (about 0.7 Delta(n)) would refuse the states of
+ * runs from given points (the progressive levels, --init), which start
+ * closer; the raw start's d0 (about 1e-3 Delta(n)) is the bound it was
+ * before the relaxation, and the relaxed start is far above it. */
 static int start_cell_bound(cfpo_engine *E, int64_t *bound, double *d0, char *err, size_t errlen)
 {
     const double shx = E->G.shift_x, shy = E->G.shift_y;
     E->G.shift_x = E->G.shift_y = 0;
+    E->start_raw = 1;
     int rc = eng_make_initial(E, err, errlen);
+    E->start_raw = 0;
     if (!comm_all(rc == 0)) {
         E->G.shift_x = shx, E->G.shift_y = shy;
         if (rc == 0) snprintf(err, errlen, "another rank failed to make the start");

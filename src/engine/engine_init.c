@@ -22,7 +22,7 @@ static int make_initial_adaptive(cfpo_engine *E, char *err, size_t errlen)
     cfpo_start_pt *pt = NULL;
     if (!rowsum) goto oom;
     int64_t r0 = g * E->rank / E->nranks, r1 = g * (E->rank + 1) / E->nranks;
-    int64_t m = cfpo_start_band(&E->G, r0, r1, E->nthreads, &pt);
+    int64_t m = cfpo_start_band(&E->G, r0, r1, E->nthreads, !E->start_raw, &pt);
     if (m < 0) goto oom;
     for (int64_t i = 0; i < m; i++) rowsum[pt[i].cell / g]++;
     comm_sum_i64(rowsum, (int)g); /* rows are disjoint: the sum gathers them */
@@ -31,7 +31,7 @@ static int make_initial_adaptive(cfpo_engine *E, char *err, size_t errlen)
     if (r0 != E->y0 || r1 != E->y0 + E->h) { /* else the band made is the tile's */
         free(pt);
         pt = NULL;
-        m = cfpo_start_band(&E->G, E->y0, E->y0 + E->h, E->nthreads, &pt);
+        m = cfpo_start_band(&E->G, E->y0, E->y0 + E->h, E->nthreads, !E->start_raw, &pt);
     }
     if (m < 0) goto oom;
     int64_t nloc = 0;

@@ -193,7 +193,7 @@ static int relax_band(const cfpo_grid *G, cfpo_start_pt **pts, size_t *m, double
     return out ? 0 : -1;
 }
 
-int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads, cfpo_start_pt **out)
+int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads, int relax_on, cfpo_start_pt **out)
 {
     start_params p;
     params(G, &p);
@@ -201,8 +201,8 @@ int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads,
     const int nm = make_modes(G, &p, md);
     /* Start rows whose points can land in rows [y0, y1): the band's extent
      * plus the largest displacement, at most every row once. */
-    const int relax = cfpo_start_relax_steps(G->n) > 0;
-    const double reach = (nm ? p.amp * sqrt(2.0 * nm) + 1.0 : 1.0) + cfpo_start_relax_reach(G->n) * (double)p.h;
+    const int relax = relax_on && cfpo_start_relax_steps(G->n) > 0;
+    const double reach = (nm ? p.amp * sqrt(2.0 * nm) + 1.0 : 1.0) + (relax ? cfpo_start_relax_reach(G->n) * (double)p.h : 0);
     int64_t jlo = (int64_t)floor((double)y0 * G->L * (double)p.h - reach) - 1;
     int64_t jhi = (int64_t)ceil((double)y1 * G->L * (double)p.h + reach) + 1;
     if (jhi - jlo > p.h) { jlo = 0; jhi = p.h; }

@@ -26,8 +26,9 @@ typedef struct {
 
 /* The points of the start that fall into optimisation rows [y0, y1) (all
  * columns), sorted by cell and then by key, made by `threads` OpenMP
- * threads (the same result for any count); *out is malloc'ed. Returns
+ * threads (the same result for any count), relaxed (start_relax.h) unless
+ * relax is 0; *out is malloc'ed. Returns
  * their number, or -1 when out of memory. */
-int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads, cfpo_start_pt **out);
+int64_t cfpo_start_band(const cfpo_grid *G, int64_t y0, int64_t y1, int threads, int relax, cfpo_start_pt **out);
 
 #endif
