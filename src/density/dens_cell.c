@@ -172,10 +172,10 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (b->br[j] < qlo) qlo = b->br[j];
         if (b->br[j] > qbl) qbl = b->br[j];
     }
-    /* the near phase's solve only where q is nearly flat over the block
+    /* the near solve only where q is nearly flat over the block
      * (policy.h): across a steep change the nearest two polygons miss the
      * spots a point should reach */
-    const int cells0 = qbl <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT ? E->cells : DENS_CELLS;
+    const int cells0 = qbl <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT ? CFPO_POLICY_DENSITY_NEAR_CELLS : DENS_CELLS;
     const double h = bk->h, gain = E->o.tol * E->D;
     const scan_limits lim = {wrap, qlo, h, lo, L};
     int64_t moves = 0;
@@ -241,7 +241,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (S.x1 > hi) S.x1 = hi;
         if (S.y1 > hi) S.y1 = hi;
         double cxp, cyp, fc;
-        int cells = cells0; /* the near phase's polygons first; all of them when those give no move */
+        int cells = cells0; /* the near solve's polygons first; all of them when those give no move */
         const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
     solve:
         if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, cells, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX)) {

@@ -219,12 +219,7 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
     E->iter++;
     double sx, sy;
     grid_offset(E, E->iter, &sx, &sy);
-    /* the near phase's solve, or the full one; the first full sweep
-     * solves every cell (a cell the near solve left alone may move now) */
-    const int cells = cfpo_policy_density_near(E->iter) ? CFPO_POLICY_DENSITY_NEAR_CELLS : DENS_CELLS;
-    if (!E->placed || sx != E->sx || sy != E->sy || !E->o.skip || cells != E->cells)
-        memset(E->dirty, 1, (size_t)(E->g * E->g));
-    E->cells = cells;
+    if (!E->placed || sx != E->sx || sy != E->sy || !E->o.skip) memset(E->dirty, 1, (size_t)(E->g * E->g));
     E->placed = 1;
     E->sx = sx;
     E->sy = sy;

@@ -46,7 +46,6 @@ struct cfpo_dens_engine {
     int nthreads;
     tbuf *tb;
     int iter, placed; /* placed: the grid has an offset (sx, sy) */
-    int cells;        /* the polygons each solve of this iteration searches (policy.h) */
     int iters_run;    /* iterations made by this engine (not before a resume) */
     double davg_ref;  /* the schedule's delta_avg one window back (policy.h) */
     double t_compute, t_migrate, t_halo; /* this rank's seconds in each */
