@@ -148,12 +148,13 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
             if (dx == 0 && dy == 0) c0 = m;
             const double mx = ((double)dx + 0.5) * L, my = ((double)dy + 0.5) * L;
             for (int64_t s = E->cstart[c]; s < E->cstart[c + 1]; s++) {
-                const int64_t j = E->cidx[s];
-                double u = E->s.xy[2 * j] - ox, v = E->s.xy[2 * j + 1] - oy;
+                const double *r = E->cxyq + 3 * s; /* the store's x, y, q of point cidx[s] */
+                double u = r[0] - ox, v = r[1] - oy;
                 b->bx[m] = u - rint(u - mx);
                 b->by[m] = v - rint(v - my);
-                b->br[m] = E->s.q[j];
-                b->bid[m] = j;
+                b->br[m] = r[2];
+                b->bid[m] = E->cidx[s];
+                b->bslot[m] = s;
                 m++;
             }
             if (dx == 0 && dy == 0) c1 = m;
@@ -302,6 +303,10 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         E->s.xy[2 * id] = x;
         E->s.xy[2 * id + 1] = y;
         E->s.q[id] = rc;
+        double *r = E->cxyq + 3 * b->bslot[p];
+        r[0] = x;
+        r[1] = y;
+        r[2] = rc;
         moves++;
         if (E->on_move) E->on_move(E->s.xy, id, E->move_user);
     }
