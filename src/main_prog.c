@@ -308,6 +308,8 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
         ctx.classes = pc->p.classes > 0;
         pc->p.joint.user = &ctx;
     }
+    cfpo_prog_colour_options colour = {.passes_run = -1};
+    pc->p.colour_out = &colour;
     pc->p.level_begin = level_begin;
     pc->p.user = &ctx;
     pc->p.checkpoint = checkpoint;
@@ -358,6 +360,10 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
         printf("LEVEL level=%d prefix=%lld iterations=%s seconds=%.6f start_delta_min=%s delta_min=%.6f "
                "delta_avg=%.6f\n", k, (long long)L->m, its, L->seconds, d0, L->delta_min, L->delta_avg);
     }
+    if (colour.passes_run >= 0)
+        printf("COLOUR passes=%d restores=%lld close_start=%lld close_end=%lld cpu_seconds=%.6f\n",
+               colour.passes_run, (long long)colour.restores, (long long)colour.close_start,
+               (long long)colour.close_end, colour.cpu_seconds);
     if (jbuf) fwrite(jbuf, 1, jlen, stdout);
     free(jbuf);
     int wm, wa;

@@ -208,6 +208,7 @@ static int colour_run(int64_t n, const int64_t *sizes, int K, const cfpo_options
         free(xy);
         return -1;
     }
+    if (p->colour_out) *p->colour_out = co;
     cfpo_prog_options q = *p;
     if (q.joint.sweeps <= 0 && q.joint_last <= 0) q.joint.sweeps = CFPO_PROG_CLASS_SWEEPS;
     if (q.joint.target_prefix <= 0) q.joint.target_prefix = CFPO_PROG_CLASS_TARGET;

@@ -31,6 +31,7 @@
 #include <stdint.h>
 
 #include "engine.h"
+#include "prog_colour.h"
 #include "prog_joint.h"
 
 #define CFPO_PROG_DEFAULT_BASE 64
@@ -89,6 +90,7 @@ typedef struct {
                              (joint.target_full or CFPO_PROG_UNION_TARGET); at or above the union's
                              start (e.g. 1.2): the union's delta_min never falls */
     double colour_reach;  /* the colouring's reach in Delta(N/K) (0: 1.0) */
+    cfpo_prog_colour_options *colour_out; /* (colouring only) when not NULL: the colouring's statistics */
     const char *checkpoint; /* the level under way's engine checkpoint (ckpt.h) here ... */
     int checkpoint_every;   /* ... every this many of its iterations and at its end */
     const char *resume;     /* go on from such a checkpoint (its size says its level) */
