@@ -9,6 +9,7 @@
 #include "grid.h"
 #include "omp_compat.h"
 #include "prog_colour.h"
+#include "prog_balance.h"
 #include "prog_insert.h"
 #include "prog_measure.h"
 #include "rng.h"
@@ -257,7 +258,10 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
             memset(&lo.stop, 0, sizeof lo.stop);
             lo.stop.target_min = p->level_min;
         }
-        if (k > k0 && cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen) != 0) break;
+        if (k > k0 && (p->balance > 0 ? cfpo_prog_insert_balanced(xy, prev, m, cand, p->balance, lo.seed, (uint64_t)k,
+                                                                  err, errlen)
+                                      : cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen)) != 0)
+            break;
         const char *resume = k == k0 ? p->resume : NULL;
         if (resume && k > 0 && remeasure_points(resume, m, &lo, xy, err, errlen) != 0) break;
         for (int j = 0; resume && j < k; j++) levels[j].m = sizes[j];

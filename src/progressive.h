@@ -23,7 +23,7 @@
  * (prog_joint.h classes: every class's delta_min in Delta(N/K) and the
  * union's in Delta(n) never fall); the K LEVEL records are then the
  * prefixes of the class order (level 0 holds the CFPO run's iterations).
- * May include: engine.h, run_loop.h, prog_insert.h, prog_joint.h, prog_colour.h (layers 0-4). */
+ * May include: engine.h, run_loop.h, prog_insert.h, prog_balance.h, prog_joint.h, prog_colour.h (layers 0-4). */
 #ifndef CFPO_PROGRESSIVE_H
 #define CFPO_PROGRESSIVE_H
 
@@ -63,6 +63,8 @@ typedef struct {
     int classes;      /* K > 0: K equal groups (class c = ids [c n/K, (c+1) n/K)) instead of doublings */
     double level_min; /* > 0: every level but the last stops once its prefix's delta_min reaches this */
     int candidates;   /* best-candidate draws per new point (0: 16) */
+    int balance;      /* > 0: each level's new points by quota (prog_balance.h): every quadtree
+                         cell of about this many of the prefix's points gets its share; 0: off */
     int level_iter;   /* each level's iteration cap (the last's too; with the caller's max_iter): > 0 this;
                          0 the default: CFPO_PROG_DEFAULT_LEVEL_ITER without a joint phase and without
                          classes (a level's prefix is within about 0.001 of its end by then), none
