@@ -110,6 +110,9 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
         pc->p.balance = (int)v;
         pc->balance_given = 1;
         return 1;
+    case PROG_OPT_LEVEL_BALANCE_ORDER:
+        pc->p.balance_order = 1;
+        return 1;
     case PROG_OPT_CLASSES_LEVELS:
         pc->p.classes_levels = 1;
         pc->colour_given |= 2;
@@ -159,6 +162,7 @@ void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
     if (pc->colour_given && pc->p.classes <= 0)
         cli_usage_error(prog, "%s needs --classes K", pc->colour_given & 2 ? "--classes-levels" : "--class-union-floor, --class-reach or --class-swaps");
     if (pc->colour_given == 3) cli_usage_error(prog, "--class-union-floor, --class-reach and --class-swaps do not go with --classes-levels");
+    if (pc->p.balance_order && pc->p.balance <= 0) cli_usage_error(prog, "--level-balance-order needs --level-balance C");
     if (pc->balance_given && (!pc->on || pc->p.classes > 0)) cli_usage_error(prog, "--level-balance needs --progressive (without --classes)");
     if (!pc->on) return;
     if (pc->polish_given && pc->p.classes > 0) cli_usage_error(prog, "--polish does not go with --classes");

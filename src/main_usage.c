@@ -72,6 +72,8 @@ void cfpo_main_usage(void)
            "                       --joint and --classes, else none)\n"
            "      --level-balance C  each level's new points by quota: every quadtree cell of\n"
            "                       about C of the prefix's points gets its share (0: off)\n"
+           "      --level-balance-order  and each level's points in an order that keeps the\n"
+           "                       cells' shares at every partial level (default: greedy)\n"
            "      --polish S       then S sweeps polishing the full set, each smaller prefix kept\n"
            "                       at or above min(its delta_min, --polish-floor)\n"
            "      --polish-floor F the polish's floor in each prefix's own units (default 0.78)\n"

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "prog_buckets.h"
+#include "prog_insert.h"
 #include "rng.h"
 
 #define BALANCE_SALT 0x62616c616e6365ULL /* the draws of the rounding and the order */
@@ -152,5 +153,49 @@ int cfpo_prog_insert_balanced(double *xy, int64_t m0, int64_t m1, int cand, int 
     prog_buckets_free(&B);
     free(slot);
     free(quota);
+    return rc;
+}
+
+typedef struct {
+    double t;
+    int64_t i;
+} timed;
+
+static int by_time(const void *a, const void *b)
+{
+    const timed *x = a, *y = b;
+    return x->t < y->t ? -1 : x->t > y->t ? 1 : (x->i > y->i) - (x->i < y->i);
+}
+
+int cfpo_prog_order_balanced(double *xy, int64_t m0, int64_t m1, int per_cell, uint64_t seed, uint64_t stream,
+                             char *err, size_t errlen)
+{
+    const int64_t q = m1 - m0;
+    if (cfpo_prog_order(xy, m0, m1, err, errlen) != 0) return -1;
+    if (q <= 1) return 0;
+    int L = 0;
+    while (L < 15 && (double)m1 / pow(4.0, L + 1) >= (double)per_cell) L++;
+    const int64_t G = (int64_t)1 << L;
+    const uint64_t st = stream ^ BALANCE_SALT ^ 0x6f72646572ULL;
+    int64_t *count = calloc((size_t)(G * G), sizeof *count), *seen = calloc((size_t)(G * G), sizeof *seen);
+    timed *T = malloc((size_t)q * sizeof *T);
+    double *w = malloc(2 * (size_t)q * sizeof *w);
+    int rc = count && seen && T && w ? 0 : -1;
+    if (rc == 0) {
+        for (int64_t j = 0; j < q; j++) count[cell_of(xy[2 * (m0 + j) + 1], G) * G + cell_of(xy[2 * (m0 + j)], G)]++;
+        for (int64_t j = 0; j < q; j++) { /* a cell's j-th point (greedy order) at (j + u) / its count */
+            const int64_t c = cell_of(xy[2 * (m0 + j) + 1], G) * G + cell_of(xy[2 * (m0 + j)], G);
+            const double u = cfpo_rand01(seed, st, (uint64_t)c);
+            T[j] = (timed){((double)seen[c]++ + u) / (double)count[c], j};
+        }
+        qsort(T, (size_t)q, sizeof *T, by_time);
+        for (int64_t j = 0; j < q; j++) w[2 * j] = xy[2 * (m0 + T[j].i)], w[2 * j + 1] = xy[2 * (m0 + T[j].i) + 1];
+        for (int64_t j = 0; j < 2 * q; j++) xy[2 * m0 + j] = w[j];
+    } else
+        snprintf(err, errlen, "out of memory");
+    free(count);
+    free(seen);
+    free(T);
+    free(w);
     return rc;
 }

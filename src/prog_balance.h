@@ -17,7 +17,7 @@
  * `cand` uniform draws within its leaf cell (farthest from every point
  * placed so far, across cell borders too). Serial: the same bytes always.
  * Owns: the quadtree counts, the quotas and the slots' order.
- * May include: geom.h, rng.h, prog_buckets.h (layers 0-2). */
+ * May include: geom.h, rng.h, prog_buckets.h (layers 0-2), prog_insert.h. */
 #ifndef CFPO_PROG_BALANCE_H
 #define CFPO_PROG_BALANCE_H
 
@@ -34,5 +34,15 @@ int cfpo_prog_insert_balanced(double *xy, int64_t m0, int64_t m1, int cand, int 
  * major) each leaf's new points. 0, or -1 when out of memory. */
 int cfpo_prog_balance_quota(const double *xy, int64_t m0, int64_t m1, int per_cell, uint64_t seed, uint64_t stream,
                             int *depth, int64_t **quota);
+
+/* The level's points m0 .. m1 - 1 reordered so that every partial level
+ * keeps the quadtree cells' proportions: first the greedy order
+ * (prog_insert.h cfpo_prog_order), then each leaf cell's points (cells of
+ * about per_cell of the m1 points) spread evenly through the level, the
+ * j-th of a cell's c points at time (j + u) / c (u a seeded draw per
+ * cell), the cell's own points in their greedy order. 0, or -1 with one
+ * line in err (out of memory). */
+int cfpo_prog_order_balanced(double *xy, int64_t m0, int64_t m1, int per_cell, uint64_t seed, uint64_t stream,
+                             char *err, size_t errlen);
 
 #endif

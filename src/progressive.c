@@ -140,6 +140,16 @@ static int hold(int64_t n, const double *xy, const cfpo_options *o, cfpo_run_eng
     return 0;
 }
 
+/* Level k's points m0 .. m1 - 1 in their prefix order: greedy, or with
+ * balance_order the cells' proportions kept (prog_balance.h). */
+static int order_level(double *xy, int64_t m0, int64_t m1, const cfpo_options *o, const cfpo_prog_options *p, int k,
+                       char *err, size_t errlen)
+{
+    if (p->balance > 0 && p->balance_order)
+        return cfpo_prog_order_balanced(xy, m0, m1, p->balance, o->seed, (uint64_t)k, err, errlen);
+    return cfpo_prog_order(xy, m0, m1, err, errlen);
+}
+
 /* The bounded joint move (prog_joint.h) of levels 0 .. k in xy (prefix
  * m_k; its pair weights use the full set's target only at the last level
  * K - 1), each level's points in greedy order again after it (the dyadic
@@ -167,7 +177,7 @@ static int joint_phase(double *xy, const int64_t *sizes, int k, int K, const cfp
     const double t0 = omp_get_wtime();
     if (cfpo_prog_joint(xy, sizes, k + 1, &jo, dmin, davg, err, errlen) != 0) return -1;
     for (int j = 0; j <= k; j++)
-        if (cfpo_prog_order(xy, j > 0 ? sizes[j - 1] : 0, sizes[j], err, errlen) != 0) return -1;
+        if (order_level(xy, j > 0 ? sizes[j - 1] : 0, sizes[j], o, p, j, err, errlen) != 0) return -1;
     if (jo.classes && cfpo_prog_measure(xy, sizes, k + 1, dmin, davg, err, errlen) != 0) return -1;
     for (int j = 0; j <= k; j++) levels[j].delta_min = dmin[j], levels[j].delta_avg = davg[j];
     levels[k].seconds += omp_get_wtime() - t0;
@@ -300,7 +310,7 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         }
         R->ops->copy(R->E, xy); /* the prefix, in id order */
         R->ops->free(R->E);
-        if (cfpo_prog_order(xy, prev, m, err, errlen) != 0) break;
+        if (order_level(xy, prev, m, o, p, k, err, errlen) != 0) break;
         const int joint = k > 0 &&
                           (k == K - 1 && p->joint_last > 0 ? p->joint_last : p->joint.sweeps) > 0;
         if (joint && joint_phase(xy, sizes, k, K, o, p, 0, levels, res, err, errlen) != 0) break;

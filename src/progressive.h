@@ -65,6 +65,8 @@ typedef struct {
     int candidates;   /* best-candidate draws per new point (0: 16) */
     int balance;      /* > 0: each level's new points by quota (prog_balance.h): every quadtree
                          cell of about this many of the prefix's points gets its share; 0: off */
+    int balance_order; /* with balance: each level's points ordered so that every partial level keeps
+                          the cells' proportions (prog_balance.h cfpo_prog_order_balanced); 0: greedy */
     int level_iter;   /* each level's iteration cap (the last's too; with the caller's max_iter): > 0 this;
                          0 the default: CFPO_PROG_DEFAULT_LEVEL_ITER without a joint phase and without
                          classes (a level's prefix is within about 0.001 of its end by then), none

@@ -10,7 +10,11 @@
  *    the earlier points unchanged; the same bytes twice, other bytes for
  *    another seed;
  *  - the check can fail: the plain best-candidate insertion
- *    (prog_insert.c) misses the shares by more than 4/3. */
+ *    (prog_insert.c) misses the shares by more than 4/3;
+ *  - the balanced order of a level: the same points; at every partial
+ *    level of t of its q points, each leaf cell holds t q_c / q of them
+ *    within 2 (q_c its points in the level); the greedy order misses
+ *    that (the check can fail). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,6 +26,12 @@
 #include "testutil.h"
 
 static int passed_, failed_;
+
+static int cmp_pt(const void *a, const void *b)
+{
+    const double *p = a, *q = b;
+    return p[0] < q[0] ? -1 : p[0] > q[0] ? 1 : p[1] < q[1] ? -1 : p[1] > q[1];
+}
 
 static int64_t cell_of(double v, int64_t g)
 {
@@ -41,6 +51,23 @@ static double worst_share(const double *xy, int64_t m, int L)
         for (int64_t k = 0; k < g * g; k++) worst = fmax(worst, fabs((double)c[k] - (double)m / (double)(g * g)));
         free(c);
     }
+    return worst;
+}
+
+/* The largest |count - t q_c / q| over the partial levels t and the leaf
+ * cells (2^L a side) of the points m0 .. m0 + q - 1 in their order. */
+static double worst_partial(const double *xy, int64_t m0, int64_t q, int L)
+{
+    const int64_t g = (int64_t)1 << L;
+    int64_t *qc = calloc((size_t)(g * g), sizeof *qc), *c = calloc((size_t)(g * g), sizeof *c);
+    for (int64_t j = 0; j < q; j++) qc[cell_of(xy[2 * (m0 + j) + 1], g) * g + cell_of(xy[2 * (m0 + j)], g)]++;
+    double worst = 0;
+    for (int64_t t = 1; t <= q; t++) {
+        c[cell_of(xy[2 * (m0 + t - 1) + 1], g) * g + cell_of(xy[2 * (m0 + t - 1)], g)]++;
+        for (int64_t k = 0; k < g * g; k++) worst = fmax(worst, fabs((double)c[k] - (double)t * (double)qc[k] / (double)q));
+    }
+    free(qc);
+    free(c);
     return worst;
 }
 
@@ -93,6 +120,24 @@ int main(void)
     CHECK(cfpo_prog_insert(again, M0, M1, 16, 3, 4, err, sizeof err) == 0, "plain insert failed: %s", err);
     const double wp = worst_share(again, M1, L);
     CHECK(wp >= 4.0 / 3.0, "the plain insertion meets the shares too (%.3f): the check is empty", wp);
+    /* the balanced order of the level (cells of 16 of the 4,096 points: L = 4) */
+    memcpy(again, xy, 2 * M1 * sizeof *again);
+    CHECK(cfpo_prog_order_balanced(again, M0, M1, PER, 3, 4, err, sizeof err) == 0, "order failed: %s", err);
+    CHECK(memcmp(again, xy, 2 * M0 * sizeof *xy) == 0, "the order moved an earlier point");
+    double *sa = malloc(2 * M1 * sizeof *sa), *sb = malloc(2 * M1 * sizeof *sb);
+    memcpy(sa, xy + 2 * M0, 2 * (M1 - M0) * sizeof *sa);
+    memcpy(sb, again + 2 * M0, 2 * (M1 - M0) * sizeof *sb);
+    qsort(sa, M1 - M0, 2 * sizeof *sa, cmp_pt);
+    qsort(sb, M1 - M0, 2 * sizeof *sb, cmp_pt);
+    CHECK(memcmp(sa, sb, 2 * (M1 - M0) * sizeof *sa) == 0, "the order changed the level's points");
+    const double wo = worst_partial(again, M0, M1 - M0, L);
+    CHECK(wo <= 2.0, "a partial level misses a cell's share by %.3f (> 2)", wo);
+    memcpy(sa, xy, 2 * M1 * sizeof *sa);
+    CHECK(cfpo_prog_order(sa, M0, M1, err, sizeof err) == 0, "greedy order failed: %s", err);
+    const double wg = worst_partial(sa, M0, M1 - M0, L);
+    CHECK(wg > 2.0, "the greedy order keeps the shares too (%.3f): the check is empty", wg);
+    free(sa);
+    free(sb);
     free(q);
     /* a quadrant over its share: its cells get nothing, the rest take the level */
     for (int64_t i = 0; i < M0; i++) xy[2 * i] *= 0.5, xy[2 * i + 1] *= 0.5; /* all in [0, 1/2)^2 */
