@@ -78,6 +78,7 @@ expect 2 "--class-swaps" -n 1024 --classes 4 --class-swaps 65 -o x.npy
 expect 2 "--level-balance needs --progressive" -n 1024 --level-balance 16 -o x.npy
 expect 2 "--level-balance needs --progressive" -n 1024 --classes 4 --level-balance 16 -o x.npy
 expect 2 "--level-balance:" -n 1024 --progressive --level-balance -1 -o x.npy
+expect 2 "--level-balance-order needs" -n 1024 --progressive --level-balance-order -o x.npy
 
 run() { "$CFPO" -q "$@"; }
 field() { grep -o " $1=[^ ]*" | head -1 | cut -d= -f2; }
