@@ -4,6 +4,10 @@
  *  - the colouring keeps the set (the same points, sorted) and gives each
  *    class its size; it lowers the close same-class pairs; the same bytes
  *    twice;
+ *  - its last step (the classes back to their sizes) by the tournament
+ *    tree makes the relabels of the reference scan of every point: the
+ *    same bytes, on sets where it relabels points (equal and unequal
+ *    class sizes), each class its size and every point kept once;
  *  - the class move, with circumcentres, the local ascent and class swaps:
  *    after every sweep (brute force from the points as they are) each
  *    class's delta_min in its own Delta(n/K) never falls, nor the union's
@@ -117,6 +121,40 @@ int main(void)
     cfpo_prog_colour(again, sizes, K, &co2, err, sizeof err);
     CHECK(memcmp(again, xy, 2 * N * sizeof *xy) == 0, "the colouring: not the same bytes twice");
     memcpy(xy0, xy, 2 * N * sizeof *xy0); /* the coloured start of the moves */
+
+    /* the sizes restored by the tree: the reference scan's relabels */
+    {
+        enum { NR = 6000 };
+        static const int64_t eq[K] = {1500, 3000, 4500, 6000}, uneq[3] = {900, 3000, 6000};
+        double *init = malloc(2 * NR * sizeof *init), *ref = malloc(2 * NR * sizeof *ref),
+               *alt = malloc(2 * NR * sizeof *alt), *sa = malloc(2 * NR * sizeof *sa), *sb = malloc(2 * NR * sizeof *sb);
+        int64_t relabels = 0;
+        for (int t = 0; t < 6; t++) {
+            const int k = t % 2 ? 3 : K;
+            const int64_t *sz = t % 2 ? uneq : eq;
+            spread(init, NR, 20 + (uint64_t)t);
+            memcpy(ref, init, 2 * NR * sizeof *ref);
+            memcpy(alt, init, 2 * NR * sizeof *alt);
+            cfpo_prog_colour_options cs = {.restore_scan = 1, .reach = 1.0 + 0.1 * t}, ct = {.reach = 1.0 + 0.1 * t};
+            CHECK(cfpo_prog_colour(ref, sz, k, &cs, err, sizeof err) == 0, "colour (scan) failed: %s", err);
+            CHECK(cfpo_prog_colour(alt, sz, k, &ct, err, sizeof err) == 0, "colour (tree) failed: %s", err);
+            CHECK(cs.restores == ct.restores, "set %d: %lld relabels by the scan, %lld by the tree", t,
+                  (long long)cs.restores, (long long)ct.restores);
+            CHECK(memcmp(ref, alt, 2 * NR * sizeof *ref) == 0, "set %d: the tree's colouring is not the scan's bytes", t);
+            memcpy(sa, init, 2 * NR * sizeof *sa);
+            memcpy(sb, alt, 2 * NR * sizeof *sb);
+            qsort(sa, NR, 2 * sizeof *sa, cmp_pt);
+            qsort(sb, NR, 2 * sizeof *sb, cmp_pt);
+            CHECK(memcmp(sa, sb, 2 * NR * sizeof *sa) == 0, "set %d: a point lost or doubled (or a class not its size)", t);
+            relabels += ct.restores;
+        }
+        CHECK(relabels >= 20, "only %lld relabels to restore the sizes: the check is empty", (long long)relabels);
+        free(init);
+        free(ref);
+        free(alt);
+        free(sa);
+        free(sb);
+    }
 
     /* the class move: no class falls, the union not below min(its value, floor) */
     static const double floors[3] = {0, 0.80, 0};
