@@ -23,6 +23,7 @@
 #include "prog_balance.h"
 #include "prog_insert.h"
 #include "rng.h"
+#include "test_spread.h"
 #include "testutil.h"
 
 static int passed_, failed_;
@@ -71,22 +72,12 @@ static double worst_partial(const double *xy, int64_t m0, int64_t q, int L)
     return worst;
 }
 
-/* m0 earlier points: a jittered grid (under every cell's share of 2 m0). */
-static void spread(double *xy, int64_t n, uint64_t seed)
-{
-    const int64_t g = (int64_t)ceil(sqrt((double)n));
-    for (int64_t i = 0; i < n; i++) {
-        xy[2 * i] = fmod(((double)(i % g) + 0.5 + 0.3 * (cfpo_rand01(seed, 1, (uint64_t)i) - 0.5)) / (double)g + 1, 1);
-        xy[2 * i + 1] = fmod(((double)(i / g) + 0.5 + 0.3 * (cfpo_rand01(seed, 2, (uint64_t)i) - 0.5)) / (double)g + 1, 1);
-    }
-}
-
 int main(void)
 {
     char err[256];
     enum { M0 = 2025, M1 = 4096, PER = 16 };
     double *xy = malloc(2 * M1 * sizeof *xy), *again = malloc(2 * M1 * sizeof *again), *old = malloc(2 * M0 * sizeof *old);
-    spread(xy, M0, 7);
+    tu_spread(xy, M0, 7); /* m0 earlier points, under every cell's share of 2 m0 */
     memcpy(old, xy, 2 * M0 * sizeof *old);
     int L;
     int64_t *q = NULL;

@@ -26,6 +26,7 @@
 #include "prog_colour.h"
 #include "prog_joint.h"
 #include "rng.h"
+#include "test_spread.h"
 #include "testutil.h"
 
 static int passed_, failed_;
@@ -79,16 +80,6 @@ static int cmp_pt(const void *a, const void *b)
     return p[0] < q[0] ? -1 : p[0] > q[0] ? 1 : p[1] < q[1] ? -1 : p[1] > q[1];
 }
 
-/* n points jittered off a square grid (a spread start, like a relaxed set). */
-static void spread(double *xy, int64_t n, uint64_t seed)
-{
-    const int64_t g = (int64_t)ceil(sqrt((double)n));
-    for (int64_t i = 0; i < n; i++) {
-        xy[2 * i] = fmod(((double)(i % g) + 0.5 + 0.3 * (cfpo_rand01(seed, 1, (uint64_t)i) - 0.5)) / (double)g + 1, 1);
-        xy[2 * i + 1] = fmod(((double)(i / g) + 0.5 + 0.3 * (cfpo_rand01(seed, 2, (uint64_t)i) - 0.5)) / (double)g + 1, 1);
-    }
-}
-
 int main(void)
 {
     char err[256];
@@ -97,7 +88,7 @@ int main(void)
     double *xy = malloc(2 * N * sizeof *xy), *xy0 = malloc(2 * N * sizeof *xy0), *again = malloc(2 * N * sizeof *again);
     double *a = malloc(2 * N * sizeof *a), *b = malloc(2 * N * sizeof *b);
     /* the colouring */
-    spread(xy0, N, 3);
+    tu_spread(xy0, N, 3);
     memcpy(xy, xy0, 2 * N * sizeof *xy);
     cfpo_prog_colour_options co = {0};
     CHECK(cfpo_prog_colour(xy, sizes, K, &co, err, sizeof err) == 0, "colour failed: %s", err);
@@ -132,7 +123,7 @@ int main(void)
         for (int t = 0; t < 6; t++) {
             const int k = t % 2 ? 3 : K;
             const int64_t *sz = t % 2 ? uneq : eq;
-            spread(init, NR, 20 + (uint64_t)t);
+            tu_spread(init, NR, 20 + (uint64_t)t);
             memcpy(ref, init, 2 * NR * sizeof *ref);
             memcpy(alt, init, 2 * NR * sizeof *alt);
             cfpo_prog_colour_options cs = {.restore_scan = 1, .reach = 1.0 + 0.1 * t}, ct = {.reach = 1.0 + 0.1 * t};
@@ -181,7 +172,7 @@ int main(void)
         enum { NB = 4000 };
         static const int64_t big[K] = {1000, 2000, 3000, 4000};
         double *ref = malloc(2 * NB * sizeof *ref), *alt = malloc(2 * NB * sizeof *alt), *init = malloc(2 * NB * sizeof *init);
-        spread(init, NB, 9);
+        tu_spread(init, NB, 9);
         cfpo_prog_colour_options cb = {0};
         CHECK(cfpo_prog_colour(init, big, K, &cb, err, sizeof err) == 0, "colour failed: %s", err);
         cfpo_prog_joint_options jo = {.sweeps = 3, .classes = 1, .circum = 8, .solve = 6, .swaps = 8, .floor = 0.8,
