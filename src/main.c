@@ -246,6 +246,8 @@ static void parse(int argc, char **argv, cmdline *c)
         {"joint-pairs", required_argument, 0, PROG_OPT_JOINT_PAIRS},
         {"polish", required_argument, 0, PROG_OPT_POLISH},
         {"level-iter", required_argument, 0, PROG_OPT_LEVEL_ITER},
+        {"level-balance", required_argument, 0, PROG_OPT_LEVEL_BALANCE},
+        {"level-balance-order", no_argument, 0, PROG_OPT_LEVEL_BALANCE_ORDER},
         {"polish-floor", required_argument, 0, PROG_OPT_POLISH_FLOOR},
         {"classes-levels", no_argument, 0, PROG_OPT_CLASSES_LEVELS},
         {"class-union-floor", required_argument, 0, PROG_OPT_CLASS_UNION_FLOOR},

@@ -104,6 +104,15 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
         pc->p.level_iter = v > 0 ? (int)v : -1; /* (0: no cap) */
         pc->level_iter_given = 1;
         return 1;
+    case PROG_OPT_LEVEL_BALANCE:
+        if (cli_parse_i64(arg, 0, 1000000, &v) != 0)
+            cli_usage_error(prog, "--level-balance: '%s' is not a whole number in 0..1e6", arg);
+        pc->p.balance = (int)v;
+        pc->balance_given = 1;
+        return 1;
+    case PROG_OPT_LEVEL_BALANCE_ORDER:
+        pc->p.balance_order = 1;
+        return 1;
     case PROG_OPT_CLASSES_LEVELS:
         pc->p.classes_levels = 1;
         pc->colour_given |= 2;
@@ -153,6 +162,8 @@ void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
     if (pc->colour_given && pc->p.classes <= 0)
         cli_usage_error(prog, "%s needs --classes K", pc->colour_given & 2 ? "--classes-levels" : "--class-union-floor, --class-reach or --class-swaps");
     if (pc->colour_given == 3) cli_usage_error(prog, "--class-union-floor, --class-reach and --class-swaps do not go with --classes-levels");
+    if (pc->p.balance_order && pc->p.balance <= 0) cli_usage_error(prog, "--level-balance-order needs --level-balance C");
+    if (pc->balance_given && (!pc->on || pc->p.classes > 0)) cli_usage_error(prog, "--level-balance needs --progressive (without --classes)");
     if (!pc->on) return;
     if (pc->polish_given && pc->p.classes > 0) cli_usage_error(prog, "--polish does not go with --classes");
     const double tp = pc->p.joint.target_prefix > 0 ? pc->p.joint.target_prefix : 0.78;
@@ -308,6 +319,8 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
         ctx.classes = pc->p.classes > 0;
         pc->p.joint.user = &ctx;
     }
+    cfpo_prog_colour_options colour = {.passes_run = -1};
+    pc->p.colour_out = &colour;
     pc->p.level_begin = level_begin;
     pc->p.user = &ctx;
     pc->p.checkpoint = checkpoint;
@@ -358,6 +371,10 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
         printf("LEVEL level=%d prefix=%lld iterations=%s seconds=%.6f start_delta_min=%s delta_min=%.6f "
                "delta_avg=%.6f\n", k, (long long)L->m, its, L->seconds, d0, L->delta_min, L->delta_avg);
     }
+    if (colour.passes_run >= 0)
+        printf("COLOUR passes=%d restores=%lld close_start=%lld close_end=%lld cpu_seconds=%.6f\n",
+               colour.passes_run, (long long)colour.restores, (long long)colour.close_start,
+               (long long)colour.close_end, colour.cpu_seconds);
     if (jbuf) fwrite(jbuf, 1, jlen, stdout);
     free(jbuf);
     int wm, wa;

@@ -14,7 +14,7 @@
 
 typedef struct {
     int on;              /* --progressive or --classes given */
-    int base_given, level_min_given, relax_given, joint_given, polish_given, level_iter_given, colour_given;
+    int base_given, level_min_given, relax_given, joint_given, polish_given, level_iter_given, balance_given, colour_given;
     cfpo_prog_options p; /* base, classes, level_min */
 } prog_cli;
 
@@ -25,7 +25,7 @@ enum { PROG_OPT_PROGRESSIVE = 1101, PROG_OPT_BASE, PROG_OPT_CLASSES, PROG_OPT_LE
        PROG_OPT_JOINT_SOLVE, PROG_OPT_JOINT_AVG, PROG_OPT_JOINT_SOFT, PROG_OPT_JOINT_CIRCUM, PROG_OPT_JOINT_PAIRS,
        PROG_OPT_POLISH, PROG_OPT_POLISH_FLOOR, PROG_OPT_LEVEL_ITER,
        PROG_OPT_CLASSES_LEVELS, PROG_OPT_CLASS_UNION_FLOOR, PROG_OPT_CLASS_REACH,
-       PROG_OPT_CLASS_SWAPS };
+       PROG_OPT_CLASS_SWAPS, PROG_OPT_LEVEL_BALANCE, PROG_OPT_LEVEL_BALANCE_ORDER };
 
 /* One option of this path: 1 when ch is one (a bad value is a usage
  * error), 0 otherwise. */

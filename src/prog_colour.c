@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "geom.h"
 #include "prog_buckets.h"
@@ -119,6 +120,135 @@ static int64_t pass(colouring *C, int64_t slack)
     return made;
 }
 
+/* The class the sizes are restored from: the last class over its size (-1: none). */
+static int over_class(const colouring *C)
+{
+    int over = -1;
+    for (int c = 0; c < C->K; c++)
+        if (C->count[c] > C->target[c]) over = c;
+    return over;
+}
+
+/* Point i's cheapest relabel from class a to a class under its size:
+ * its cost change, and the class in *to (the first of equal costs). */
+static double cheapest(const colouring *C, int64_t i, int a, int *to)
+{
+    double bc = INFINITY;
+    *to = -1;
+    for (int b = 0; b < C->K; b++) {
+        const double d = C->cost[i * C->K + b] - C->cost[i * C->K + a];
+        if (C->count[b] < C->target[b] && d < bc) bc = d, *to = b;
+    }
+    return bc;
+}
+
+/* The sizes restored by a scan of every point for each relabel (O(n) a
+ * relabel): the reference of restore(). The relabels made. */
+static int64_t restore_scan(colouring *C)
+{
+    int64_t made = 0;
+    for (int over; (over = over_class(C)) >= 0; made++) {
+        int64_t bi = -1;
+        int bb = -1;
+        double bc = INFINITY;
+        for (int64_t i = 0; i < C->n; i++) {
+            if (C->cls[i] != over) continue;
+            int b;
+            const double d = cheapest(C, i, over, &b);
+            if (d < bc) bc = d, bi = i, bb = b;
+        }
+        relabel(C, bi, bb);
+    }
+    return made;
+}
+
+/* A tournament tree over the points of one class in id order: each leaf
+ * holds its point's cheapest relabel (INFINITY once relabelled), each
+ * node the leaf of least cost below it, the lower leaf of equal costs. */
+typedef struct {
+    int64_t P;     /* leaves (a power of two) */
+    int64_t *id;   /* id[l]: leaf l's point (-1: none) */
+    double *d;     /* d[l]: its cheapest relabel's cost */
+    int *to;       /* to[l]: that relabel's class */
+    int64_t *win;  /* win[v], v in [1, 2P): the winning leaf below node v */
+} tourney;
+
+static void tourney_up(tourney *T, int64_t l)
+{
+    for (int64_t v = (l + T->P) / 2; v >= 1; v /= 2) {
+        const int64_t a = T->win[2 * v], b = T->win[2 * v + 1];
+        T->win[v] = T->d[b] < T->d[a] ? b : a;
+    }
+}
+
+/* The same relabels as restore_scan() (the least cost, the lowest id and
+ * then the lowest class of equal costs), in O((n K + relabels x
+ * neighbours x log n) K): a relabel changes the costs of its point's
+ * neighbours only, so only their leaves are updated; the tree is built
+ * again only when the class over its size or the set of classes under
+ * theirs changes (each at most K times: a class over its size only loses
+ * points, one under only gains). The relabels made, or -1 when out of
+ * memory. */
+static int64_t restore(colouring *C)
+{
+    const int64_t n = C->n;
+    const int K = C->K;
+    if (over_class(C) < 0) return 0;
+    int64_t P = 1, most = 0; /* the leaves: the largest class (a class over its size only loses points) */
+    for (int c = 0; c < K; c++) most = C->count[c] > most ? C->count[c] : most;
+    while (P < most) P *= 2;
+    tourney T = {.P = P};
+    T.id = malloc((size_t)P * sizeof *T.id);
+    T.d = malloc((size_t)P * sizeof *T.d);
+    T.to = malloc((size_t)P * sizeof *T.to);
+    T.win = malloc(2 * (size_t)P * sizeof *T.win);
+    int64_t *leaf = malloc((size_t)n * sizeof *leaf);
+    unsigned char *under = malloc((size_t)K);
+    int64_t made = T.id && T.d && T.to && T.win && leaf && under ? 0 : -1;
+    int cur = -1; /* the class the tree holds (-1: none) */
+    for (int over; made >= 0 && (over = over_class(C)) >= 0; made++) {
+        int same = over == cur;
+        for (int b = 0; b < K && same; b++) same = under[b] == (C->count[b] < C->target[b]);
+        if (!same) { /* build it */
+            cur = over;
+            for (int b = 0; b < K; b++) under[b] = C->count[b] < C->target[b];
+            int64_t m = 0;
+            for (int64_t i = 0; i < n; i++) {
+                leaf[i] = -1;
+                if (C->cls[i] != over) continue;
+                leaf[i] = m;
+                T.id[m] = i;
+                T.d[m] = cheapest(C, i, over, &T.to[m]);
+                m++;
+            }
+            for (int64_t l = m; l < P; l++) T.id[l] = -1, T.d[l] = INFINITY, T.to[l] = -1;
+            for (int64_t l = 0; l < P; l++) T.win[P + l] = l;
+            for (int64_t v = P - 1; v >= 1; v--) {
+                const int64_t a = T.win[2 * v], b = T.win[2 * v + 1];
+                T.win[v] = T.d[b] < T.d[a] ? b : a;
+            }
+        }
+        const int64_t l = T.win[1], i = T.id[l];
+        relabel(C, i, T.to[l]);
+        leaf[i] = -1;
+        T.d[l] = INFINITY;
+        tourney_up(&T, l);
+        for (int64_t e = C->off[i]; e < C->off[i + 1]; e++) {
+            const int64_t j = C->nb[e];
+            if (leaf[j] < 0) continue;
+            T.d[leaf[j]] = cheapest(C, j, over, &T.to[leaf[j]]);
+            tourney_up(&T, leaf[j]);
+        }
+    }
+    free(T.id);
+    free(T.d);
+    free(T.to);
+    free(T.win);
+    free(leaf);
+    free(under);
+    return made;
+}
+
 /* The same-class pairs closer than t (cost above (r / t)^8 - 1), each once. */
 static int64_t close_pairs(const colouring *C, double pmin)
 {
@@ -129,9 +259,17 @@ static int64_t close_pairs(const colouring *C, double pmin)
     return c;
 }
 
+static double thread_cpu(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 int cfpo_prog_colour(double *xy, const int64_t *sizes, int K, cfpo_prog_colour_options *co, char *err,
                      size_t errlen)
 {
+    const double c0 = thread_cpu();
     const int64_t n = sizes[K - 1];
     const double reach = co->reach > 0 ? co->reach : 1.0;
     const double r = reach * cfpo_delta_bound((double)n / K);
@@ -158,27 +296,13 @@ int cfpo_prog_colour(double *xy, const int64_t *sizes, int K, cfpo_prog_colour_o
         const int64_t slack = n / K / 200 + 1;
         int p = 0;
         while (p < passes && pass(&C, slack) > 0) p++;
-        for (;;) { /* back to the sizes: the cheapest relabel from a class over its size to one under */
-            int over = -1;
-            for (int c = 0; c < K; c++)
-                if (C.count[c] > C.target[c]) over = c;
-            if (over < 0) break;
-            int64_t bi = -1;
-            int bb = -1;
-            double bc = INFINITY;
-            for (int64_t i = 0; i < n; i++) {
-                if (C.cls[i] != over) continue;
-                for (int b = 0; b < K; b++) {
-                    const double d = C.cost[i * K + b] - C.cost[i * K + over];
-                    if (C.count[b] < C.target[b] && d < bc) bc = d, bi = i, bb = b;
-                }
-            }
-            relabel(&C, bi, bb);
-        }
-        while (p < passes && pass(&C, 0) > 0) p++; /* swaps only: the sizes stay */
+        const int64_t moved = co->restore_scan ? restore_scan(&C) : restore(&C);
+        if (moved < 0) rc = -1;
+        co->restores = moved;
+        while (rc == 0 && p < passes && pass(&C, 0) > 0) p++; /* swaps only: the sizes stay */
         co->passes_run = p;
         co->close_end = close_pairs(&C, pmin);
-        int64_t *at = calloc((size_t)K, sizeof *at);
+        int64_t *at = rc == 0 ? calloc((size_t)K, sizeof *at) : NULL;
         if (!at) rc = -1;
         for (int c = 0; at && c < K; c++) at[c] = c ? sizes[c - 1] : 0;
         for (int64_t i = 0; at && i < n; i++) {
@@ -198,5 +322,6 @@ int cfpo_prog_colour(double *xy, const int64_t *sizes, int K, cfpo_prog_colour_o
     free(C.count);
     free(C.target);
     free(w);
+    co->cpu_seconds = thread_cpu() - c0;
     return rc;
 }

@@ -12,7 +12,11 @@
  * order: a point's relabel when the class sizes stay within a slack of
  * their targets, else the swap with a neighbour of the other class; both
  * taken only when they lower the sum; last, the classes brought back to
- * their sizes by the cheapest relabels. Serial and deterministic (no
+ * their sizes by the cheapest relabels (one at a time, from the last
+ * class over its size to a class under its size: the relabel of least
+ * cost, of the lowest id and then class among equal costs; a tournament
+ * tree over that class's points, updated at the relabelled point's
+ * neighbours only, finds each in O(log n)). Serial and deterministic (no
  * random draws): the same bytes for any thread count.
  * Owns: the colouring's pair lists and costs.
  * May include: geom.h, prog_buckets.h (layers 0-2). */
@@ -25,9 +29,13 @@
 typedef struct {
     double reach; /* r in Delta(N/K) (0: 1.0) */
     int passes;   /* local passes at most (0: 50); they also end after a pass that changed nothing */
+    int restore_scan; /* 1: the sizes restored by scanning every point for each relabel (the
+                         reference, O(n) a relabel); 0: by a tournament tree, the same relabels */
     /* out: the same-class pairs closer than 0.8 Delta(N/K) before and after the local passes */
     int64_t close_start, close_end;
     int passes_run;
+    int64_t restores; /* out: the relabels that brought the classes back to their sizes */
+    double cpu_seconds; /* out: the colouring's CPU seconds (its thread's) */
 } cfpo_prog_colour_options;
 
 /* Colours the sizes[K - 1] points of xy into K classes of sizes

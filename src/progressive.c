@@ -9,6 +9,7 @@
 #include "grid.h"
 #include "omp_compat.h"
 #include "prog_colour.h"
+#include "prog_balance.h"
 #include "prog_insert.h"
 #include "prog_measure.h"
 #include "rng.h"
@@ -139,6 +140,16 @@ static int hold(int64_t n, const double *xy, const cfpo_options *o, cfpo_run_eng
     return 0;
 }
 
+/* Level k's points m0 .. m1 - 1 in their prefix order: greedy, or with
+ * balance_order the cells' proportions kept (prog_balance.h). */
+static int order_level(double *xy, int64_t m0, int64_t m1, const cfpo_options *o, const cfpo_prog_options *p, int k,
+                       char *err, size_t errlen)
+{
+    if (p->balance > 0 && p->balance_order)
+        return cfpo_prog_order_balanced(xy, m0, m1, p->balance, o->seed, (uint64_t)k, err, errlen);
+    return cfpo_prog_order(xy, m0, m1, err, errlen);
+}
+
 /* The bounded joint move (prog_joint.h) of levels 0 .. k in xy (prefix
  * m_k; its pair weights use the full set's target only at the last level
  * K - 1), each level's points in greedy order again after it (the dyadic
@@ -166,7 +177,7 @@ static int joint_phase(double *xy, const int64_t *sizes, int k, int K, const cfp
     const double t0 = omp_get_wtime();
     if (cfpo_prog_joint(xy, sizes, k + 1, &jo, dmin, davg, err, errlen) != 0) return -1;
     for (int j = 0; j <= k; j++)
-        if (cfpo_prog_order(xy, j > 0 ? sizes[j - 1] : 0, sizes[j], err, errlen) != 0) return -1;
+        if (order_level(xy, j > 0 ? sizes[j - 1] : 0, sizes[j], o, p, j, err, errlen) != 0) return -1;
     if (jo.classes && cfpo_prog_measure(xy, sizes, k + 1, dmin, davg, err, errlen) != 0) return -1;
     for (int j = 0; j <= k; j++) levels[j].delta_min = dmin[j], levels[j].delta_avg = davg[j];
     levels[k].seconds += omp_get_wtime() - t0;
@@ -208,6 +219,7 @@ static int colour_run(int64_t n, const int64_t *sizes, int K, const cfpo_options
         free(xy);
         return -1;
     }
+    if (p->colour_out) *p->colour_out = co;
     cfpo_prog_options q = *p;
     if (q.joint.sweeps <= 0 && q.joint_last <= 0) q.joint.sweeps = CFPO_PROG_CLASS_SWEEPS;
     if (q.joint.target_prefix <= 0) q.joint.target_prefix = CFPO_PROG_CLASS_TARGET;
@@ -256,7 +268,10 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
             memset(&lo.stop, 0, sizeof lo.stop);
             lo.stop.target_min = p->level_min;
         }
-        if (k > k0 && cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen) != 0) break;
+        if (k > k0 && (p->balance > 0 ? cfpo_prog_insert_balanced(xy, prev, m, cand, p->balance, lo.seed, (uint64_t)k,
+                                                                  err, errlen)
+                                      : cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen)) != 0)
+            break;
         const char *resume = k == k0 ? p->resume : NULL;
         if (resume && k > 0 && remeasure_points(resume, m, &lo, xy, err, errlen) != 0) break;
         for (int j = 0; resume && j < k; j++) levels[j].m = sizes[j];
@@ -295,7 +310,7 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         }
         R->ops->copy(R->E, xy); /* the prefix, in id order */
         R->ops->free(R->E);
-        if (cfpo_prog_order(xy, prev, m, err, errlen) != 0) break;
+        if (order_level(xy, prev, m, o, p, k, err, errlen) != 0) break;
         const int joint = k > 0 &&
                           (k == K - 1 && p->joint_last > 0 ? p->joint_last : p->joint.sweeps) > 0;
         if (joint && joint_phase(xy, sizes, k, K, o, p, 0, levels, res, err, errlen) != 0) break;

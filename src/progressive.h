@@ -23,7 +23,7 @@
  * (prog_joint.h classes: every class's delta_min in Delta(N/K) and the
  * union's in Delta(n) never fall); the K LEVEL records are then the
  * prefixes of the class order (level 0 holds the CFPO run's iterations).
- * May include: engine.h, run_loop.h, prog_insert.h, prog_joint.h, prog_colour.h (layers 0-4). */
+ * May include: engine.h, run_loop.h, prog_insert.h, prog_balance.h, prog_joint.h, prog_colour.h (layers 0-4). */
 #ifndef CFPO_PROGRESSIVE_H
 #define CFPO_PROGRESSIVE_H
 
@@ -31,6 +31,7 @@
 #include <stdint.h>
 
 #include "engine.h"
+#include "prog_colour.h"
 #include "prog_joint.h"
 
 #define CFPO_PROG_DEFAULT_BASE 64
@@ -62,6 +63,10 @@ typedef struct {
     int classes;      /* K > 0: K equal groups (class c = ids [c n/K, (c+1) n/K)) instead of doublings */
     double level_min; /* > 0: every level but the last stops once its prefix's delta_min reaches this */
     int candidates;   /* best-candidate draws per new point (0: 16) */
+    int balance;      /* > 0: each level's new points by quota (prog_balance.h): every quadtree
+                         cell of about this many of the prefix's points gets its share; 0: off */
+    int balance_order; /* with balance: each level's points ordered so that every partial level keeps
+                          the cells' proportions (prog_balance.h cfpo_prog_order_balanced); 0: greedy */
     int level_iter;   /* each level's iteration cap (the last's too; with the caller's max_iter): > 0 this;
                          0 the default: CFPO_PROG_DEFAULT_LEVEL_ITER without a joint phase and without
                          classes (a level's prefix is within about 0.001 of its end by then), none
@@ -89,6 +94,7 @@ typedef struct {
                              (joint.target_full or CFPO_PROG_UNION_TARGET); at or above the union's
                              start (e.g. 1.2): the union's delta_min never falls */
     double colour_reach;  /* the colouring's reach in Delta(N/K) (0: 1.0) */
+    cfpo_prog_colour_options *colour_out; /* (colouring only) when not NULL: the colouring's statistics */
     const char *checkpoint; /* the level under way's engine checkpoint (ckpt.h) here ... */
     int checkpoint_every;   /* ... every this many of its iterations and at its end */
     const char *resume;     /* go on from such a checkpoint (its size says its level) */

@@ -4,6 +4,10 @@
  *  - the colouring keeps the set (the same points, sorted) and gives each
  *    class its size; it lowers the close same-class pairs; the same bytes
  *    twice;
+ *  - its last step (the classes back to their sizes) by the tournament
+ *    tree makes the relabels of the reference scan of every point: the
+ *    same bytes, on sets where it relabels points (equal and unequal
+ *    class sizes), each class its size and every point kept once;
  *  - the class move, with circumcentres, the local ascent and class swaps:
  *    after every sweep (brute force from the points as they are) each
  *    class's delta_min in its own Delta(n/K) never falls, nor the union's
@@ -22,6 +26,7 @@
 #include "prog_colour.h"
 #include "prog_joint.h"
 #include "rng.h"
+#include "test_spread.h"
 #include "testutil.h"
 
 static int passed_, failed_;
@@ -75,16 +80,6 @@ static int cmp_pt(const void *a, const void *b)
     return p[0] < q[0] ? -1 : p[0] > q[0] ? 1 : p[1] < q[1] ? -1 : p[1] > q[1];
 }
 
-/* n points jittered off a square grid (a spread start, like a relaxed set). */
-static void spread(double *xy, int64_t n, uint64_t seed)
-{
-    const int64_t g = (int64_t)ceil(sqrt((double)n));
-    for (int64_t i = 0; i < n; i++) {
-        xy[2 * i] = fmod(((double)(i % g) + 0.5 + 0.3 * (cfpo_rand01(seed, 1, (uint64_t)i) - 0.5)) / (double)g + 1, 1);
-        xy[2 * i + 1] = fmod(((double)(i / g) + 0.5 + 0.3 * (cfpo_rand01(seed, 2, (uint64_t)i) - 0.5)) / (double)g + 1, 1);
-    }
-}
-
 int main(void)
 {
     char err[256];
@@ -93,7 +88,7 @@ int main(void)
     double *xy = malloc(2 * N * sizeof *xy), *xy0 = malloc(2 * N * sizeof *xy0), *again = malloc(2 * N * sizeof *again);
     double *a = malloc(2 * N * sizeof *a), *b = malloc(2 * N * sizeof *b);
     /* the colouring */
-    spread(xy0, N, 3);
+    tu_spread(xy0, N, 3);
     memcpy(xy, xy0, 2 * N * sizeof *xy);
     cfpo_prog_colour_options co = {0};
     CHECK(cfpo_prog_colour(xy, sizes, K, &co, err, sizeof err) == 0, "colour failed: %s", err);
@@ -117,6 +112,40 @@ int main(void)
     cfpo_prog_colour(again, sizes, K, &co2, err, sizeof err);
     CHECK(memcmp(again, xy, 2 * N * sizeof *xy) == 0, "the colouring: not the same bytes twice");
     memcpy(xy0, xy, 2 * N * sizeof *xy0); /* the coloured start of the moves */
+
+    /* the sizes restored by the tree: the reference scan's relabels */
+    {
+        enum { NR = 6000 };
+        static const int64_t eq[K] = {1500, 3000, 4500, 6000}, uneq[3] = {900, 3000, 6000};
+        double *init = malloc(2 * NR * sizeof *init), *ref = malloc(2 * NR * sizeof *ref),
+               *alt = malloc(2 * NR * sizeof *alt), *sa = malloc(2 * NR * sizeof *sa), *sb = malloc(2 * NR * sizeof *sb);
+        int64_t relabels = 0;
+        for (int t = 0; t < 6; t++) {
+            const int k = t % 2 ? 3 : K;
+            const int64_t *sz = t % 2 ? uneq : eq;
+            tu_spread(init, NR, 20 + (uint64_t)t);
+            memcpy(ref, init, 2 * NR * sizeof *ref);
+            memcpy(alt, init, 2 * NR * sizeof *alt);
+            cfpo_prog_colour_options cs = {.restore_scan = 1, .reach = 1.0 + 0.1 * t}, ct = {.reach = 1.0 + 0.1 * t};
+            CHECK(cfpo_prog_colour(ref, sz, k, &cs, err, sizeof err) == 0, "colour (scan) failed: %s", err);
+            CHECK(cfpo_prog_colour(alt, sz, k, &ct, err, sizeof err) == 0, "colour (tree) failed: %s", err);
+            CHECK(cs.restores == ct.restores, "set %d: %lld relabels by the scan, %lld by the tree", t,
+                  (long long)cs.restores, (long long)ct.restores);
+            CHECK(memcmp(ref, alt, 2 * NR * sizeof *ref) == 0, "set %d: the tree's colouring is not the scan's bytes", t);
+            memcpy(sa, init, 2 * NR * sizeof *sa);
+            memcpy(sb, alt, 2 * NR * sizeof *sb);
+            qsort(sa, NR, 2 * sizeof *sa, cmp_pt);
+            qsort(sb, NR, 2 * sizeof *sb, cmp_pt);
+            CHECK(memcmp(sa, sb, 2 * NR * sizeof *sa) == 0, "set %d: a point lost or doubled (or a class not its size)", t);
+            relabels += ct.restores;
+        }
+        CHECK(relabels >= 20, "only %lld relabels to restore the sizes: the check is empty", (long long)relabels);
+        free(init);
+        free(ref);
+        free(alt);
+        free(sa);
+        free(sb);
+    }
 
     /* the class move: no class falls, the union not below min(its value, floor) */
     static const double floors[3] = {0, 0.80, 0};
@@ -143,7 +172,7 @@ int main(void)
         enum { NB = 4000 };
         static const int64_t big[K] = {1000, 2000, 3000, 4000};
         double *ref = malloc(2 * NB * sizeof *ref), *alt = malloc(2 * NB * sizeof *alt), *init = malloc(2 * NB * sizeof *init);
-        spread(init, NB, 9);
+        tu_spread(init, NB, 9);
         cfpo_prog_colour_options cb = {0};
         CHECK(cfpo_prog_colour(init, big, K, &cb, err, sizeof err) == 0, "colour failed: %s", err);
         cfpo_prog_joint_options jo = {.sweeps = 3, .classes = 1, .circum = 8, .solve = 6, .swaps = 8, .floor = 0.8,

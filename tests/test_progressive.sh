@@ -9,7 +9,8 @@
 #    --prefixes finds in the file at that prefix;
 #  - no prefix's delta_min falls while its level is optimised (the trace,
 #    row by row within each level);
-#  - the same bytes for 1, 2 and 3 threads, progressive and with classes
+#  - the same bytes for 1, 2 and 3 threads, progressive (also with
+#    --level-balance, not the bytes without it) and with classes
 #    (by colouring and --classes-levels);
 #  - classes by colouring: no class's delta_min falls over the JOINT
 #    lines, the union's never below min(its value, 0.88); the last JOINT
@@ -74,6 +75,10 @@ expect 2 "do not go with --classes-levels" -n 1024 --classes 4 --classes-levels 
 expect 2 "--class-union-floor" -n 1024 --classes 4 --class-union-floor 2 -o x.npy
 expect 2 "--class-reach" -n 1024 --classes 4 --class-reach 0.1 -o x.npy
 expect 2 "--class-swaps" -n 1024 --classes 4 --class-swaps 65 -o x.npy
+expect 2 "--level-balance needs --progressive" -n 1024 --level-balance 16 -o x.npy
+expect 2 "--level-balance needs --progressive" -n 1024 --classes 4 --level-balance 16 -o x.npy
+expect 2 "--level-balance:" -n 1024 --progressive --level-balance -1 -o x.npy
+expect 2 "--level-balance-order needs" -n 1024 --progressive --level-balance-order -o x.npy
 
 run() { "$CFPO" -q "$@"; }
 field() { grep -o " $1=[^ ]*" | head -1 | cut -d= -f2; }
@@ -85,6 +90,11 @@ for t in 1 2 3; do
 done
 cmp -s p1.npy p2.npy && cmp -s p1.npy p3.npy && ok || bad "--progressive: bytes differ across 1-3 threads"
 cmp -s c1.npy c2.npy && cmp -s c1.npy c3.npy && ok || bad "--classes 3: bytes differ across 1-3 threads"
+for t in 1 2 3; do
+  run -n 2048 -s 4 -t $t --progressive --level-balance 16 -o b$t.npy >b$t.sum || bad "--level-balance run, $t threads"
+done
+cmp -s b1.npy b2.npy && cmp -s b1.npy b3.npy && ok || bad "--level-balance: bytes differ across 1-3 threads"
+cmp -s b1.npy p1.npy && bad "--level-balance 16 gave the bytes without it" || ok
 
 # ---- classes by colouring (the default): over the JOINT lines no class's
 # delta_min falls and the union's never below min(its value, 0.88); the

@@ -16,6 +16,7 @@ static int axis(const cfpo_dens_buckets *b, double v, double origin)
 
 int cfpo_dens_bucket_of(const cfpo_dens_buckets *b, double x, double y)
 {
+    if (b->B == 1) return 0; /* one bucket: every position (axis() gives 0 on both axes) */
     return axis(b, y, b->y0) * b->B + axis(b, x, b->x0);
 }
 
@@ -45,6 +46,11 @@ int cfpo_dens_buckets_build(cfpo_dens_buckets *b, const double *x, const double 
     b->y0 = y0;
     b->h = side / (double)B;
     for (size_t i = 0; i < nb; i++) b->head[i] = -1;
+    if (B == 1) { /* the points in order, no position read */
+        for (int p = 0; p < m; p++) b->next[p] = p + 1 < m ? p + 1 : -1;
+        if (m > 0) b->head[0] = 0;
+        return 0;
+    }
     for (int p = m - 1; p >= 0; p--) {
         const int c = cfpo_dens_bucket_of(b, x[p], y[p]);
         b->next[p] = b->head[c];
@@ -94,6 +100,11 @@ int cfpo_dens_ring(const cfpo_dens_buckets *b, int c, int k, int *out)
 
 void cfpo_dens_span(const cfpo_dens_buckets *b, double lo, double hi, double origin, int *first, int *count)
 {
+    if (b->B == 1) { /* one bucket: it covers every span (both branches below give 0, 1) */
+        *first = 0;
+        *count = 1;
+        return;
+    }
     const double t0 = floor((lo - origin) / b->h), t1 = floor((hi - origin) / b->h);
     if (b->wrap) {
         const double w = t1 - t0 + 1;

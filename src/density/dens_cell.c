@@ -148,12 +148,13 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
             if (dx == 0 && dy == 0) c0 = m;
             const double mx = ((double)dx + 0.5) * L, my = ((double)dy + 0.5) * L;
             for (int64_t s = E->cstart[c]; s < E->cstart[c + 1]; s++) {
-                const int64_t j = E->cidx[s];
-                double u = E->s.xy[2 * j] - ox, v = E->s.xy[2 * j + 1] - oy;
+                const double *r = E->cxyq + 3 * s; /* the store's x, y, q of point cidx[s] */
+                double u = r[0] - ox, v = r[1] - oy;
                 b->bx[m] = u - rint(u - mx);
                 b->by[m] = v - rint(v - my);
-                b->br[m] = E->s.q[j];
-                b->bid[m] = j;
+                b->br[m] = r[2];
+                b->bid[m] = E->cidx[s];
+                b->bslot[m] = s;
                 m++;
             }
             if (dx == 0 && dy == 0) c1 = m;
@@ -172,10 +173,10 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (b->br[j] < qlo) qlo = b->br[j];
         if (b->br[j] > qbl) qbl = b->br[j];
     }
-    /* the near phase's solve only where q is nearly flat over the block
+    /* the near solve only where q is nearly flat over the block
      * (policy.h): across a steep change the nearest two polygons miss the
      * spots a point should reach */
-    const int cells0 = qbl <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT ? E->cells : DENS_CELLS;
+    const int cells0 = qbl <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT ? CFPO_POLICY_DENSITY_NEAR_CELLS : DENS_CELLS;
     const double h = bk->h, gain = E->o.tol * E->D;
     const scan_limits lim = {wrap, qlo, h, lo, L};
     int64_t moves = 0;
@@ -241,7 +242,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (S.x1 > hi) S.x1 = hi;
         if (S.y1 > hi) S.y1 = hi;
         double cxp, cyp, fc;
-        int cells = cells0; /* the near phase's polygons first; all of them when those give no move */
+        int cells = cells0; /* the near solve's polygons first; all of them when those give no move */
         const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
     solve:
         if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, cells, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX)) {
@@ -302,6 +303,10 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         E->s.xy[2 * id] = x;
         E->s.xy[2 * id + 1] = y;
         E->s.q[id] = rc;
+        double *r = E->cxyq + 3 * b->bslot[p];
+        r[0] = x;
+        r[1] = y;
+        r[2] = rc;
         moves++;
         if (E->on_move) E->on_move(E->s.xy, id, E->move_user);
     }

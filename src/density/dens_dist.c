@@ -339,7 +339,7 @@ done:
 }
 
 int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t *cstart, const int64_t *cidx,
-                           int colour, unsigned char *dirty, int64_t g)
+                           double *cxyq, int colour, unsigned char *dirty, int64_t g)
 {
     int ok = 1;
     for (int a = 0; a < T->nnb; a++) {
@@ -373,6 +373,11 @@ int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t 
                 s->xy[2 * j] = p[0];
                 s->xy[2 * j + 1] = p[1];
                 s->q[j] = p[2];
+                if (cxyq) {
+                    cxyq[3 * e] = p[0];
+                    cxyq[3 * e + 1] = p[1];
+                    cxyq[3 * e + 2] = p[2];
+                }
             }
             if (changed && dirty) cfpo_dens_mark_block(dirty, g, L->v[t]);
         }

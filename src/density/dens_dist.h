@@ -92,12 +92,13 @@ int cfpo_dens_dist_migrate(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, dou
 
 /* Collective, after a colour's phase: sends this rank's cells of the
  * colour to the ranks that keep them as halo, and writes the copies it
- * gets. cstart/cidx: the engine's cells (local indices). A copy that
+ * gets. cstart/cidx: the engine's cells (local indices); cxyq (may be
+ * NULL): x, y, q by slot of cidx, written with the copies. A copy that
  * differs from what the rank held marks its 3 x 3 cells in dirty (g x g;
  * may be NULL). 0, or -1 when out of memory or when a copy does not match
  * its cell (a bug). */
 int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t *cstart, const int64_t *cidx,
-                           int colour, unsigned char *dirty, int64_t g);
+                           double *cxyq, int colour, unsigned char *dirty, int64_t g);
 
 /* Collective: k doubles of each of the n points (own point i's at v + k i:
  * its position with v = s->xy, k = 2) into all (k n doubles, id order), on

@@ -32,6 +32,14 @@ static void build_cells(cfpo_dens_engine *E)
     for (int64_t i = 0; i < E->s.loc; i++) E->cidx[E->cstart[E->cell[i]]++] = i;
     for (int64_t c = G; c > 0; c--) E->cstart[c] = E->cstart[c - 1];
     E->cstart[0] = 0;
+    /* the solves gather their blocks from this copy, one cell's points
+     * side by side, instead of from the store in id order */
+    for (int64_t s = 0; s < E->s.loc; s++) {
+        const int64_t j = E->cidx[s];
+        E->cxyq[3 * s] = E->s.xy[2 * j];
+        E->cxyq[3 * s + 1] = E->s.xy[2 * j + 1];
+        E->cxyq[3 * s + 2] = E->s.q[j];
+    }
 }
 
 static int64_t block_count(const cfpo_dens_engine *E, int64_t cx, int64_t cy)
@@ -51,12 +59,13 @@ static int ensure_buffers(cfpo_dens_engine *E, size_t m)
         tbuf *b = &E->tb[t];
         if (b->cap >= m) continue;
         size_t cap = m + m / 2 + 16;
-        free(b->bx); free(b->bid); free(b->scratch); free(b->nj);
+        free(b->bx); free(b->bid); free(b->bslot); free(b->scratch); free(b->nj);
         b->bx = malloc(6 * cap * sizeof *b->bx + 3 * (KMAX + KADD + 1) * sizeof *b->bx);
         b->bid = malloc(cap * sizeof *b->bid);
+        b->bslot = malloc(cap * sizeof *b->bslot);
         b->scratch = malloc((KMAX + cfpo_dens_scratch(KMAX + KADD)) * sizeof *b->scratch);
         b->nj = malloc((KMAX + KADD + 1) * sizeof *b->nj);
-        if (!b->bx || !b->bid || !b->scratch || !b->nj) return -1;
+        if (!b->bx || !b->bid || !b->bslot || !b->scratch || !b->nj) return -1;
         b->by = b->bx + cap;
         b->br = b->by + cap;
         b->ck = b->br + cap; /* a scan's candidates: their keys, their indices */
@@ -98,10 +107,11 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     E->ccap = n;
     E->cell = malloc((size_t)n * sizeof *E->cell);
     E->cidx = malloc((size_t)n * sizeof *E->cidx);
+    E->cxyq = malloc((size_t)n * 3 * sizeof *E->cxyq);
     E->cstart = malloc((size_t)(g * g + 1) * sizeof *E->cstart);
     E->dirty = malloc((size_t)(g * g));
     E->tb = calloc((size_t)E->nthreads, sizeof *E->tb);
-    if (cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cstart || !E->dirty || !E->tb ||
+    if (cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cxyq || !E->cstart || !E->dirty || !E->tb ||
         cfpo_dens_qbound_build(&E->qb, d) != 0 || cfpo_dens_qbound_build_min(&E->qlow, d) != 0 ||
         (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0) : cfpo_dens_start(d, n, o->seed, E->s.xy)) != 0) {
         snprintf(err, errlen, "out of memory for %lld points", (long long)n);
@@ -142,7 +152,9 @@ static int fit_cells(cfpo_dens_engine *E)
     if (cell) E->cell = cell;
     int64_t *cidx = realloc(E->cidx, (size_t)cap * sizeof *cidx);
     if (cidx) E->cidx = cidx;
-    if (!cell || !cidx) return -1;
+    double *cxyq = realloc(E->cxyq, (size_t)cap * 3 * sizeof *cxyq);
+    if (cxyq) E->cxyq = cxyq;
+    if (!cell || !cidx || !cxyq) return -1;
     E->ccap = cap;
     return 0;
 }
@@ -154,7 +166,7 @@ static int fit_cells(cfpo_dens_engine *E)
  * edge), so its measure is at least e (q_i q_min)^(1/2) / Delta. */
 static int measure_own(cfpo_dens_engine *E, double *m)
 {
-    if (cfpo_dens_nn_first(E->d, &E->qlow, E->s.xy, (size_t)E->s.loc, (size_t)E->s.own, E->D, m, E->nthreads) != 0) return -1;
+    if (cfpo_dens_nn_first(E->d, &E->qlow, E->s.xy, E->s.q, (size_t)E->s.loc, (size_t)E->s.own, E->D, m, E->nthreads) != 0) return -1;
     const double lo = sqrt(E->d->rho_min), G = (double)E->g;
     for (int64_t i = 0; i < E->s.own; i++) {
         if (!(E->s.q[i] > 0)) continue;
@@ -172,14 +184,14 @@ static int measure_own(cfpo_dens_engine *E, double *m)
  * in that order, as on one rank: the same bits. */
 static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
 {
-    if (!E->T) return cfpo_dens_nn_q(E->d, &E->qlow, E->s.xy, (size_t)E->n, NULL, dmin, davg, E->nthreads);
+    if (!E->T) return cfpo_dens_nn_q(E->d, &E->qlow, E->s.xy, E->s.q, (size_t)E->n, NULL, dmin, davg, E->nthreads);
     double *m = malloc((size_t)(E->s.own + 1) * sizeof *m);
     int got = m ? (halo ? measure_own(E, m) : 0) : -1;
     if (!comm_all(got >= 0)) { free(m); return -1; }
     if (!comm_all(got == 1)) { /* a start far from the density: the whole set on every rank */
         free(m);
         if (cfpo_dens_dist_gather_values(E->T, &E->s, E->n, E->s.xy, 2, E->all) != 0) return -1;
-        return comm_all(cfpo_dens_nn_q(E->d, &E->qlow, E->all, (size_t)E->n, NULL, dmin, davg, E->nthreads) == 0) ? 0 : -1;
+        return comm_all(cfpo_dens_nn_q(E->d, &E->qlow, E->all, NULL, (size_t)E->n, NULL, dmin, davg, E->nthreads) == 0) ? 0 : -1;
     }
     const int rc = cfpo_dens_dist_gather_values(E->T, &E->s, E->n, m, 1, E->all);
     free(m);
@@ -219,12 +231,7 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
     E->iter++;
     double sx, sy;
     grid_offset(E, E->iter, &sx, &sy);
-    /* the near phase's solve, or the full one; the first full sweep
-     * solves every cell (a cell the near solve left alone may move now) */
-    const int cells = cfpo_policy_density_near(E->iter) ? CFPO_POLICY_DENSITY_NEAR_CELLS : DENS_CELLS;
-    if (!E->placed || sx != E->sx || sy != E->sy || !E->o.skip || cells != E->cells)
-        memset(E->dirty, 1, (size_t)(E->g * E->g));
-    E->cells = cells;
+    if (!E->placed || sx != E->sx || sy != E->sy || !E->o.skip) memset(E->dirty, 1, (size_t)(E->g * E->g));
     E->placed = 1;
     E->sx = sx;
     E->sy = sy;
@@ -255,7 +262,7 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
             }
             const double th = omp_get_wtime();
             E->t_compute += th - tm;
-            if (cfpo_dens_dist_refresh(E->T, &E->s, E->cstart, E->cidx, colour, E->dirty, g) != 0) return -1;
+            if (cfpo_dens_dist_refresh(E->T, &E->s, E->cstart, E->cidx, E->cxyq, colour, E->dirty, g) != 0) return -1;
             tm = omp_get_wtime();
             E->t_halo += tm - th;
             continue;
@@ -370,10 +377,10 @@ void cfpo_dens_free(cfpo_dens_engine *E)
     if (!E) return;
     if (E->tb)
         for (int t = 0; t < E->nthreads; t++) {
-            free(E->tb[t].bx); free(E->tb[t].bid); free(E->tb[t].scratch); free(E->tb[t].nj); free(E->tb[t].ring);
+            free(E->tb[t].bx); free(E->tb[t].bid); free(E->tb[t].bslot); free(E->tb[t].scratch); free(E->tb[t].nj); free(E->tb[t].ring);
             cfpo_dens_buckets_free(&E->tb[t].bk);
         }
-    free(E->tb); free(E->dirty); free(E->cell); free(E->cidx); free(E->cstart); free(E->all);
+    free(E->tb); free(E->dirty); free(E->cell); free(E->cidx); free(E->cxyq); free(E->cstart); free(E->all);
     cfpo_dens_store_free(&E->s);
     cfpo_dens_qbound_free(&E->qb);
     cfpo_dens_qbound_free(&E->qlow);

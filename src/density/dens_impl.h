@@ -23,7 +23,7 @@
 
 typedef struct { /* one thread's buffers */
     double *bx, *by, *br, *nx, *ny, *nr, *ck, *cj, *scratch;
-    int64_t *bid;
+    int64_t *bid, *bslot; /* the block's points' ids and slots in cell order */
     int *nj, *ring; /* the nearest's block indices; a ring's buckets */
     size_t cap, ring_cap;
     cfpo_dens_buckets bk;
@@ -41,12 +41,12 @@ struct cfpo_dens_engine {
     cfpo_dens_dist *T; /* several ranks: the cut (NULL on one) */
     double *all;       /* several ranks: the whole set, gathered for the measure and the output */
     int64_t *cell, *cstart, *cidx, ccap;
+    double *cxyq; /* x, y, q of the points in cell order (slot s = cidx's), kept equal to the store's */
     unsigned char *dirty; /* per cell: 1 when its 3 x 3 block changed since it was last solved without a move */
     int64_t solved;       /* this iteration's points solved on this rank */
     int nthreads;
     tbuf *tb;
     int iter, placed; /* placed: the grid has an offset (sx, sy) */
-    int cells;        /* the polygons each solve of this iteration searches (policy.h) */
     int iters_run;    /* iterations made by this engine (not before a resume) */
     double davg_ref;  /* the schedule's delta_avg one window back (policy.h) */
     double t_compute, t_migrate, t_halo; /* this rank's seconds in each */

@@ -10,7 +10,8 @@
  * scan rings until (k L)^2 q_min passed its value, 17% of an iteration at
  * a million points on the shipped image. The result is the exact minimum,
  * whatever the rings seen. Once the rings cover the torus every cell has
- * been seen once. */
+ * been seen once. The bound from the point's own cell's best also skips
+ * the cells of ring 1 whose box lies too far to hold a winner. */
 #include "dens_measure.h"
 
 #include <math.h>
@@ -23,8 +24,8 @@
 
 static inline double wrapd(double d) { return d - rint(d); }
 
-int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, size_t k,
-                       double D, double *mm, int nthreads)
+int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n,
+                       size_t k, double D, double *mm, int nthreads)
 {
     const int nt = nthreads > 0 ? nthreads : omp_get_max_threads();
     cfpo_dens_qbound own;
@@ -51,7 +52,7 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
         cy = cy < 0 ? 0 : cy >= g ? g - 1 : cy;
         cell[i] = cy * g + cx;
         start[cell[i] + 1]++;
-        rho[i] = sqrt(cfpo_density_at(d, xy[2 * i], xy[2 * i + 1])); /* q = sqrt(rho) */
+        rho[i] = q ? q[i] : sqrt(cfpo_density_at(d, xy[2 * i], xy[2 * i + 1])); /* q = sqrt(rho) */
     }
     for (int64_t c = 0; c < g * g; c++) start[c + 1] += start[c];
     for (int64_t c = 0; c < g * g; c++) fill[c] = start[c];
@@ -69,7 +70,12 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
         const size_t si = idx[i];
         if (!(ri > 0)) { mm[i] = 0; continue; }
         const int64_t cy = cell[i] / g, cx = cell[i] - cy * g;
+        /* the point's place in its cell, in cells: with ql, the smallest q
+         * a winner can have, a cell of ring 1 whose box is too far to hold
+         * one is skipped */
+        const double fx = x * (double)g - (double)cx, fy = y * (double)g - (double)cy;
         double best = INFINITY; /* d^2 q_j, the smallest so far */
+        double ql = lo, qlbest = INFINITY; /* ql bounds q over the box of the reach of qlbest */
         for (int64_t k = 0;; k++) {
             const int all = 2 * k + 1 >= g;
             const int64_t kk = all ? (g - 1) / 2 : k, kx0 = all ? -kk : -k, kx1 = all ? g - 1 - kk : k;
@@ -89,6 +95,11 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
                         const int64_t ring = llabs(dx) > llabs(dy) ? llabs(dx) : llabs(dy);
                         if (ring < k) continue;
                     }
+                    if (k == 1 && !all) { /* the box's distance, in cells, rounded down a little */
+                        const double ex = dx > 0 ? 1 - fx : dx < 0 ? fx : 0, ey = dy > 0 ? 1 - fy : dy < 0 ? fy : 0;
+                        const double e = (ex * ex + ey * ey) * L * L * (1 - 1e-9);
+                        if (e * ql > (b0 < b1 ? b0 : b1) * (1 + 1e-9)) continue;
+                    }
                     int64_t xx = cx + dx;
                     xx = xx < 0 ? xx + g : xx >= g ? xx - g : xx;
                     double bb = INFINITY;
@@ -105,11 +116,19 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
             if (all) break;
             const double reach = (double)k * L;
             if (reach * reach * lo >= best) break;
-            if (k > 0 && best < INFINITY) {
-                const double R = sqrt(best / lo) * (1 + 1e-9) + L; /* past it no point can win */
-                double ql = cfpo_dens_qbound_box(qlow, x - R, y - R, x + R, y + R);
-                if (ql < lo) ql = lo;
-                if (reach * reach * ql >= best * (1 + 1e-9)) break;
+            if (best < INFINITY) {
+                /* past R no point can win; q over that box bounds the
+                 * winner's, for ring 1's cells and the stop. A bound from
+                 * an older best (a wider box) holds too; it is made again
+                 * only when it cannot stop the scan */
+                if (k > 0 && reach * reach * ql >= best * (1 + 1e-9)) break;
+                if (best < qlbest && (k > 0 || ri > 1.2 * lo)) { /* after ring 0 only where it can prune */
+                    const double R = sqrt(best / lo) * (1 + 1e-9) + L;
+                    ql = cfpo_dens_qbound_box(qlow, x - R, y - R, x + R, y + R);
+                    if (ql < lo) ql = lo;
+                    qlbest = best;
+                    if (k > 0 && reach * reach * ql >= best * (1 + 1e-9)) break;
+                }
             }
         }
         mm[i] = sqrt(best * ri) / D; /* d (q_i q_j)^(1/2) / Delta */
@@ -123,14 +142,14 @@ done:
 
 int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg)
 {
-    return cfpo_dens_nn_q(d, NULL, xy, n, m, delta_min, delta_avg, 0);
+    return cfpo_dens_nn_q(d, NULL, xy, NULL, n, m, delta_min, delta_avg, 0);
 }
 
-int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, double *m,
+int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n, double *m,
                    double *delta_min, double *delta_avg, int nthreads)
 {
     double *mm = m ? m : malloc(n * sizeof *mm);
-    if (!mm || cfpo_dens_nn_first(d, qlow, xy, n, n, cfpo_delta_bound((double)n), mm, nthreads) != 0) {
+    if (!mm || cfpo_dens_nn_first(d, qlow, xy, q, n, n, cfpo_delta_bound((double)n), mm, nthreads) != 0) {
         if (!m) free(mm);
         return -1;
     }

@@ -23,20 +23,22 @@
  * does not depend on the number of threads. */
 int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg);
 /* The same with qlow, d's pyramid of minima (cfpo_dens_qbound_build_min),
- * built once by a caller that measures many times (NULL: built here), on
+ * built once by a caller that measures many times (NULL: built here), q
+ * as for cfpo_dens_nn_first below (NULL: read here), on
  * nthreads threads (0: OpenMP's default; an engine passes its own count,
  * so that -t 1 measures on one thread). */
-int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, double *m,
+int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n, double *m,
                    double *delta_min, double *delta_avg, int nthreads);
 
 /* Pieces of it, for a rank that holds part of the set (dens_engine.c):
  * the smallest measure of each of the first k of the n points xy against
- * all n (Delta = D, that of the whole set) into m, with qlow the pyramid
+ * all n (Delta = D, that of the whole set) into m, q[i] the sqrt of the
+ * density at point i as cfpo_density_at gives it (NULL: read here), qlow the pyramid
  * of minima of d (cfpo_dens_qbound_build_min; NULL: built here), on
  * nthreads threads (0: OpenMP's default); 0, or -1 when out of memory.
  * Then delta_min and delta_avg of the n measures m, summed in their order. */
-int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, size_t n, size_t k,
-                       double D, double *m, int nthreads);
+int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n,
+                       size_t k, double D, double *m, int nthreads);
 void cfpo_dens_nn_sum(const double *m, size_t n, double *delta_min, double *delta_avg);
 
 #endif

@@ -124,28 +124,29 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
     w[2] = CFPO_POLICY_DENSITY_RELAX_MILD;
     return 3;
 }
-/* The density engine's near phase (docs/method.md, "Density"): in
- * iterations 1 to CFPO_POLICY_DENSITY_NEAR_ITERS (three of the grid's
- * offsets), in a 3 x 3 block whose largest q is at most
- * CFPO_POLICY_DENSITY_NEAR_FLAT times its smallest, each solve searches
- * only the polygons of the point's CFPO_POLICY_DENSITY_NEAR_CELLS nearest
- * neighbours in the measure, as the uniform path's near solve searches
- * the Voronoi cells around the point's old place; a point they give no
- * move is solved again over the ten nearest's, as every point is in the
- * other blocks and from iteration CFPO_POLICY_DENSITY_NEAR_ITERS + 1 on.
+/* The density engine's near solve (docs/method.md, "Density"): in a
+ * 3 x 3 block whose largest q is at most CFPO_POLICY_DENSITY_NEAR_FLAT
+ * times its smallest, each solve searches only the polygons of the
+ * point's CFPO_POLICY_DENSITY_NEAR_CELLS nearest neighbours in the
+ * measure, as the uniform path's near solve searches the Voronoi cells
+ * around the point's old place; a point they give no move is solved
+ * again over the ten nearest's, as every point of the other blocks is.
+ * So a point stays only when the full solve moves it nowhere, and a
+ * block skipped for that reason would be skipped by the full solve too.
  * While the set is loose nearly every point moves anyway, and the two
  * polygons around its place hold a spot far better than its own: at
  * 65,536 points the runs to (0.85, 0.90) take as many iterations with
- * about a third of the clipping. Without the flatness rule the near solve
+ * about a third of the clipping. Until 2026-11-29 (second change) it ran
+ * in iterations 1-12 only; in every iteration the converged runs stop
+ * after as many iterations at the same quality (cos a=0.9, the ramp 1:16,
+ * Balzer's field, the image) and a flat block's iteration costs about
+ * 0.7 of the full solve's. Without the flatness rule the near solve
  * also ran across steep changes, and the block counts followed the
  * density less closely (8 x 8 blocks at 4,096 points: rms 0.057 against
- * 0.044); with it, 0.047. The accept rule is the same in both phases, so
- * delta_min still never falls. Pure functions of the iteration and the
- * block. */
-#define CFPO_POLICY_DENSITY_NEAR_ITERS 12
+ * 0.044); with it, 0.047. The accept rule is the same in both, so
+ * delta_min still never falls. A pure function of the block. */
 #define CFPO_POLICY_DENSITY_NEAR_CELLS 2
 #define CFPO_POLICY_DENSITY_NEAR_FLAT 1.2
-static inline int cfpo_policy_density_near(int k) { return k >= 1 && k <= CFPO_POLICY_DENSITY_NEAR_ITERS; }
 
 /* The decisions for one iteration. */
 typedef struct {
