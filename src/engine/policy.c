@@ -122,6 +122,7 @@ cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
     P.shift_y = cfpo_policy_shift(G, k, 1);
     P.rot_x = (int)floor(cfpo_policy_walk(G, k, 0)) % G->period;
     P.rot_y = (int)floor(cfpo_policy_walk(G, k, 1)) % G->period;
+    P.balanced = !earlier_schedule(G);
     P.cut = 1;
     P.freeze = FREEZE * G->L;
     if (G->variant == CFPO_VARIANT_HYPERUNIFORM && k >= HU_FROM) {

@@ -159,6 +159,7 @@ typedef struct {
     int rot_x;      /* the sweep solves colours (rot_y + a, rot_x + b) mod */
     int rot_y;      /* period in the order (a, b) = (0, 0), (0, 1), ... (0 but
                        in the adaptive-like variants) */
+    int balanced;   /* 1: (a, b) in the balanced order instead (period 3) */
     int cut;        /* 1: each point's square is cut to keep it t from the
                        points beyond its block (adaptive) */
     double freeze;  /* with cut: a point whose t reaches this stays (1.5 L) */
@@ -191,8 +192,18 @@ double cfpo_policy_shift(const cfpo_grid *G, int k, int axis);
  * walk (0 where cfpo_policy_shift is 0). */
 double cfpo_policy_walk(const cfpo_grid *G, int k, int axis);
 /* The colour the sweep of a policy solves j-th (j in [0, period^2)). */
+/* The balanced order (docs/method.md, item 1; issue 44): a sweep's
+ * colours in row order give every row of colours its turn together, so a
+ * row's cells move before or after their neighbours' by two thirds of a
+ * sweep on average, and that difference prints the colours' period on y
+ * at (0, g / 3). The first harmonic of the colours' turns, squared and
+ * summed over the four directions of the 3 x 3 colours (x, y, x + y,
+ * x - y), is the same for every order (270); row order puts 243 of it on
+ * y, this one at most 75 on any direction. Entry j: a * 3 + b. */
+static const int cfpo_policy_balanced_order[9] = {0, 1, 4, 5, 7, 8, 3, 2, 6};
 static inline int cfpo_policy_colour(const cfpo_policy *P, int period, int j)
 {
+    if (P->balanced && period == 3) j = cfpo_policy_balanced_order[j];
     return ((j / period + P->rot_y) % period) * period + (j % period + P->rot_x) % period;
 }
 

@@ -74,16 +74,22 @@ static int make_modes(const cfpo_grid *G, const start_params *p, mode *md)
     return p->modes;
 }
 
+/* The modes applied one after the other: each moves points along its
+ * crests only (c is perpendicular to k, so k . x does not change), a shear
+ * that keeps area exactly; so does their sequence. Summed at the same x
+ * the modes would keep area only to first order, and their second order
+ * beats pairs of modes into long waves (k_i - k_j) that a relaxed start
+ * keeps (docs/tried.md, issue 44). */
 static void warp(const mode *md, int nm, double *x, double *y)
 {
-    double ux = 0, uy = 0;
+    double u = *x, v = *y;
     for (int j = 0; j < nm; j++) {
-        double s = sin(md[j].kx * *x + md[j].ky * *y + md[j].ph);
-        ux += md[j].cx * s;
-        uy += md[j].cy * s;
+        const double s = sin(md[j].kx * u + md[j].ky * v + md[j].ph);
+        u += md[j].cx * s;
+        v += md[j].cy * s;
     }
-    *x = cfpo_wrap01(*x + ux);
-    *y = cfpo_wrap01(*y + uy);
+    *x = cfpo_wrap01(u);
+    *y = cfpo_wrap01(v);
 }
 
 static uint64_t start_count(const cfpo_grid *G, const start_params *p, int64_t i, int64_t j)

@@ -32,13 +32,6 @@ double cfpo_start_relax_reach(int64_t n)
     return cfpo_start_relax_steps(n) * radius(n) * (1 + 3 * CAP) + radius(n);
 }
 
-static inline double wrap_half(double d)
-{
-    if (d > 0.5) return d - 1.0;
-    if (d < -0.5) return d + 1.0;
-    return d;
-}
-
 static inline int64_t axis_bin(double v, int64_t nb)
 {
     int64_t b = (int64_t)(v * (double)nb);
@@ -48,70 +41,126 @@ static inline int64_t axis_bin(double v, int64_t nb)
 typedef struct {
     int64_t nb, rb0, rows; /* bins a side; the band's first bin row; its rows */
     uint32_t *off;         /* CSR offsets over the band's bins (rows x nb) */
-    uint32_t *idx;         /* points, bin by bin, each bin's by key */
+    double *sx, *sy;       /* the points' positions, bin by bin, each bin's by key */
 } bins;
 
-/* The band's bin of a torus bin (bx, by), or -1 when the row is not in
- * the band. */
-static inline int64_t band_bin(const bins *B, int64_t bx, int64_t by)
+/* The band's row of a torus bin row, or -1 when it is not in the band. */
+static inline int64_t band_row(const bins *B, int64_t by)
 {
-    const int64_t rel = ((by - B->rb0) % B->nb + B->nb) % B->nb;
-    return rel < B->rows ? rel * B->nb + bx : -1;
+    int64_t rel = by - B->rb0; /* both in [0, nb) */
+    if (rel < 0) rel += B->nb;
+    return rel < B->rows ? rel : -1;
 }
 
-static void bin_points(bins *B, const double *x, const double *y, const uint64_t *key, size_t m, int32_t *bof)
+/* The order of the m points (px, py) with ids id[] (keys key[id]) by band
+ * bin, each bin's by key, those outside the band's bins last in their
+ * order: ord[t] is the t-th point. B->off is set; returns how many are in
+ * the band's bins. */
+static inline int64_t bin_of(const bins *B, double px, double py)
+{
+    const int64_t row = band_row(B, axis_bin(py, B->nb));
+    return row < 0 ? -1 : row * B->nb + axis_bin(px, B->nb);
+}
+
+static size_t bin_points(bins *B, const double *px, const double *py, const uint32_t *id, const uint64_t *key,
+                         size_t m, uint32_t *ord)
 {
     const int64_t nbin = B->rows * B->nb;
     memset(B->off, 0, (size_t)(nbin + 1) * sizeof *B->off);
     for (size_t i = 0; i < m; i++) {
-        bof[i] = (int32_t)band_bin(B, axis_bin(x[i], B->nb), axis_bin(y[i], B->nb));
-        if (bof[i] >= 0) B->off[bof[i] + 1]++;
+        const int64_t b = bin_of(B, px[i], py[i]);
+        if (b >= 0) B->off[b + 1]++;
     }
     for (int64_t b = 0; b < nbin; b++) B->off[b + 1] += B->off[b];
-    for (size_t i = 0; i < m; i++) /* off[b] runs ahead, then is restored */
-        if (bof[i] >= 0) B->idx[B->off[bof[i]]++] = (uint32_t)i;
+    const size_t nin = B->off[nbin];
+    size_t out = nin;
+    for (size_t i = 0; i < m; i++) { /* off[b] runs ahead, then is restored */
+        const int64_t b = bin_of(B, px[i], py[i]);
+        ord[b >= 0 ? B->off[b]++ : out++] = (uint32_t)i;
+    }
     for (int64_t b = nbin; b > 0; b--) B->off[b] = B->off[b - 1];
     B->off[0] = 0;
     for (int64_t b = 0; b < nbin; b++) /* each bin by key: the sum's order */
         for (uint32_t s = B->off[b] + 1; s < B->off[b + 1]; s++) {
-            const uint32_t t = B->idx[s];
+            const uint32_t t = ord[s];
             uint32_t j = s;
-            while (j > B->off[b] && key[B->idx[j - 1]] > key[t]) {
-                B->idx[j] = B->idx[j - 1];
+            while (j > B->off[b] && key[id[ord[j - 1]]] > key[id[t]]) {
+                ord[j] = ord[j - 1];
                 j--;
             }
-            B->idx[j] = t;
+            ord[j] = t;
         }
+    return nin;
 }
 
-/* One point's move from the old positions (x, y). */
-static void move_one(const bins *B, const double *x, const double *y, size_t i, double r, double *nx, double *ny)
+/* The pushes on (px, py) from the k points (cx, cy), which it overwrites,
+ * added to (*fx, *fy) in their order. (Built with -fno-math-errno,
+ * CMakeLists.txt: sqrt here never sets errno, and without the errno path
+ * the first loop vectorises.) */
+static void push(double px, double py, double r, double *cx, double *cy, int k, double *fx, double *fy)
 {
-    const int64_t bx = axis_bin(x[i], B->nb), by = axis_bin(y[i], B->nb);
+#pragma omp simd
+    for (int t = 0; t < k; t++) { /* every operation done, then chosen: no branch */
+        double ex = px - cx[t], ey = py - cy[t];
+        const double exm = ex - 1.0, exp = ex + 1.0, eym = ey - 1.0, eyp = ey + 1.0;
+        ex = ex > 0.5 ? exm : (ex < -0.5 ? exp : ex);
+        ey = ey > 0.5 ? eym : (ey < -0.5 ? eyp : ey);
+        const double d = sqrt(ex * ex + ey * ey);
+        const double w = 0.5 * (r - d) / (d > 0 ? d : 1.0);
+        const double ws = (d < r) & (d > 0) ? w : 0.0;
+        cx[t] = ws * ex;
+        cy[t] = ws * ey;
+    }
+    for (int t = 0; t < k; t++) {
+        *fx += cx[t];
+        *fy += cy[t];
+    }
+}
+
+/* The new position of a point at (px, py) in torus bin column bx, from
+ * the binned old positions: its 3 x 3 bins in order (dy, then dx), each
+ * bin's points by key; rows[dy + 1] is the band row of its bin row + dy,
+ * or -1. The candidates are copied side by side; each pair's push is
+ * computed on its own (the loop vectorises: element-wise IEEE operations
+ * give the same bytes at any vector width), then the pushes are summed in
+ * order (a pair farther than r adds zero). */
+#define CHUNK 64
+static void move_at(const bins *B, double px, double py, int64_t bx, const int64_t rows[3], double r, double *nx,
+                    double *ny)
+{
     double fx = 0, fy = 0;
-    for (int dy = -1; dy <= 1; dy++)
+    double cx[CHUNK], cy[CHUNK];
+    int k = 0;
+    for (int dy = 0; dy < 3; dy++) {
+        if (rows[dy] < 0) continue;
+        const uint32_t *o = B->off + rows[dy] * B->nb;
         for (int dx = -1; dx <= 1; dx++) {
-            const int64_t b = band_bin(B, (bx + dx + B->nb) % B->nb, (by + dy + B->nb) % B->nb);
-            if (b < 0) continue;
-            for (uint32_t s = B->off[b]; s < B->off[b + 1]; s++) {
-                const uint32_t j = B->idx[s];
-                if (j == i) continue;
-                const double ex = wrap_half(x[i] - x[j]), ey = wrap_half(y[i] - y[j]);
-                const double d = sqrt(ex * ex + ey * ey);
-                if (d < r && d > 0) {
-                    const double w = 0.5 * (r - d) / d;
-                    fx += w * ex;
-                    fy += w * ey;
+            const int64_t c = bx + dx < 0 ? B->nb - 1 : (bx + dx >= B->nb ? 0 : bx + dx);
+            for (uint32_t t = o[c]; t < o[c + 1]; t++) {
+                if (k == CHUNK) { /* a crowded start: sum what is gathered */
+                    push(px, py, r, cx, cy, k, &fx, &fy);
+                    k = 0;
                 }
+                cx[k] = B->sx[t];
+                cy[k] = B->sy[t];
+                k++;
             }
         }
+    }
+    push(px, py, r, cx, cy, k, &fx, &fy);
     const double len = ALPHA * sqrt(fx * fx + fy * fy), lim = CAP * r;
     const double s = len > lim ? ALPHA * lim / len : ALPHA;
-    double u = x[i] + s * fx, v = y[i] + s * fy;
+    double u = px + s * fx, v = py + s * fy;
     u -= floor(u);
     v -= floor(v);
     *nx = u < 1.0 ? u : 0.0;
     *ny = v < 1.0 ? v : 0.0;
+}
+
+/* The band rows of torus bin rows by - 1, by, by + 1. */
+static void rows_of(const bins *B, int64_t by, int64_t rows[3])
+{
+    for (int dy = -1; dy <= 1; dy++) rows[dy + 1] = band_row(B, (by + dy + B->nb) % B->nb);
 }
 
 int cfpo_start_relax(double *x, double *y, const uint64_t *key, size_t m, int64_t n, double ylo, double yhi,
@@ -129,28 +178,60 @@ int cfpo_start_relax(double *x, double *y, const uint64_t *key, size_t m, int64_
         B.rb0 = (int64_t)floor(ylo * (double)B.nb);
         B.rows = (int64_t)ceil(yhi * (double)B.nb) - B.rb0 + 1;
         if (B.rows > B.nb) B.rows = B.nb;
+        B.rb0 = (B.rb0 % B.nb + B.nb) % B.nb; /* only ever taken modulo nb */
     }
     if (m >= UINT32_MAX || B.rows * B.nb >= INT32_MAX) return -1;
-    B.off = malloc((size_t)(B.rows * B.nb + 1) * sizeof *B.off);
-    B.idx = malloc(m * sizeof *B.idx);
-    int32_t *bof = malloc(m * sizeof *bof);
-    double *x2 = malloc(m * sizeof *x2), *y2 = malloc(m * sizeof *y2);
-    if (!B.off || !B.idx || !bof || !x2 || !y2) {
-        free(B.off); free(B.idx); free(bof); free(x2); free(y2);
+    const int64_t nbin = B.rows * B.nb;
+    /* (x, y) hold the positions in the order id[] (at first the callers');
+     * each step orders them by bin (ord), gathers them in that order into
+     * (sx, sy), turns ord into their ids, writes the new positions back
+     * into (x, y) in that order, and the two id arrays swap. */
+    B.off = malloc((size_t)(nbin + 1) * sizeof *B.off);
+    B.sx = malloc(m * sizeof *B.sx);
+    B.sy = malloc(m * sizeof *B.sy);
+    uint32_t *id = malloc(m * sizeof *id), *ord = malloc(m * sizeof *ord);
+    if (!B.off || !B.sx || !B.sy || !id || !ord) {
+        free(B.off); free(B.sx); free(B.sy); free(id); free(ord);
         return -1;
     }
-    double *px = x, *py = y, *qx = x2, *qy = y2;
+    for (size_t i = 0; i < m; i++) id[i] = (uint32_t)i;
+    const int nt = threads > 0 ? threads : 1;
     for (int k = 0; k < steps; k++) {
-        bin_points(&B, px, py, key, m, bof);
-#pragma omp parallel for schedule(static, 4096) num_threads(threads > 0 ? threads : 1)
-        for (size_t i = 0; i < m; i++) move_one(&B, px, py, i, r, &qx[i], &qy[i]);
-        double *t = px; px = qx; qx = t;
-        t = py; py = qy; qy = t;
+        const size_t nin = bin_points(&B, x, y, id, key, m, ord);
+#pragma omp parallel num_threads(nt)
+        {
+#pragma omp for schedule(static, 4096)
+            for (size_t t = 0; t < m; t++) {
+                B.sx[t] = x[ord[t]];
+                B.sy[t] = y[ord[t]];
+                ord[t] = id[ord[t]]; /* from here on ord holds the ids */
+            }
+#pragma omp for schedule(static, 2)
+            for (int64_t row = 0; row < B.rows; row++) {
+                int64_t rows[3];
+                rows_of(&B, (row + B.rb0) % B.nb, rows);
+                for (int64_t bx = 0; bx < B.nb; bx++)
+                    for (uint32_t t = B.off[row * B.nb + bx]; t < B.off[row * B.nb + bx + 1]; t++)
+                        move_at(&B, B.sx[t], B.sy[t], bx, rows, r, &x[t], &y[t]);
+            }
+#pragma omp for schedule(static, 64)
+            for (size_t t = nin; t < m; t++) { /* outside the band's bins */
+                int64_t rows[3];
+                rows_of(&B, axis_bin(B.sy[t], B.nb), rows);
+                move_at(&B, B.sx[t], B.sy[t], axis_bin(B.sx[t], B.nb), rows, r, &x[t], &y[t]);
+            }
+        }
+        uint32_t *tmp = id;
+        id = ord;
+        ord = tmp;
     }
-    if (px != x) {
-        memcpy(x, px, m * sizeof *x);
-        memcpy(y, py, m * sizeof *y);
+    /* back to the callers' order */
+    memcpy(B.sx, x, m * sizeof *x);
+    memcpy(B.sy, y, m * sizeof *y);
+    for (size_t t = 0; t < m; t++) {
+        x[id[t]] = B.sx[t];
+        y[id[t]] = B.sy[t];
     }
-    free(B.off); free(B.idx); free(bof); free(x2); free(y2);
+    free(B.off); free(B.sx); free(B.sy); free(id); free(ord);
     return 0;
 }
