@@ -29,7 +29,15 @@
  * (0, 2g/3), (g/3, 0), (2g/3, 0)) must stay below FIRST_BOUND on every
  * seed. Without the relaxation the first sweep writes 1,461 at (0, 2g/3)
  * and 457 at (0, g) on seed 1 (at 1,048,576 points 5,913 and 1,510);
- * with it 47 and 51 (docs/results/2026-11-29-imprint10.md). */
+ * with it 47 and 51 (docs/results/2026-11-29-imprint10.md).
+ *
+ * Third, the sweep's colour order (issue 44): colours solved in row order
+ * give each row of colours its turn together, and the second sweep prints
+ * the colours' period on y. After two iterations the median over the
+ * three seeds of P(0, g/3) and of P(g/3, 0) over their ring's mean must
+ * stay below COLOUR_BOUND. In row order (0, g/3) is 14.3, 26.2 and 22.9 on
+ * seeds 1-3 (median 22.9); in the balanced order (policy.h) at most 9.4
+ * (docs/results/2026-11-29-imprint11.md). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -42,6 +50,7 @@
 #define IMPRINT_BOUND 60.0
 #define RING 96
 #define FIRST_BOUND 200.0
+#define COLOUR_BOUND 15.0
 
 static int passed_, failed_;
 
@@ -117,7 +126,8 @@ int main(void)
     const int gd = (int)lround(g * sqrt(2.0));
     const int vec[6][2] = {{0, g}, {g, 0}, {0, g4}, {g4, 0}, {g, g}, {-g, g}};
     const char *name[6] = {"(0,g)", "(g,0)", "(0,4g/3)", "(4g/3,0)", "(g,g)", "(-g,g)"};
-    double q[3][6];
+    double q[3][6], qc[3][2];
+    const int g3 = (int)lround(g / 3.0);
     for (int seed = 1; seed <= 3; seed++) {
         cfpo_options o;
         cfpo_options_init(&o);
@@ -137,7 +147,10 @@ int main(void)
             q[seed - 1][v] = power(xy, n, vec[v][0], vec[v][1]) / ring[v];
             printf(" %s %.1f", name[v], q[seed - 1][v]);
         }
-        printf("\n");
+        const double m3 = ring_mean(xy, n, g3);
+        qc[seed - 1][0] = power(xy, n, 0, g3) / m3;
+        qc[seed - 1][1] = power(xy, n, g3, 0) / m3;
+        printf(" (0,g/3) %.1f (g/3,0) %.1f\n", qc[seed - 1][0], qc[seed - 1][1]);
         CHECK(r.iterations == IMPRINT_ITERS, "seed %d: %d iterations, not %d", seed, r.iterations, IMPRINT_ITERS);
     }
     for (int v = 0; v < 6; v++) {
@@ -147,6 +160,13 @@ int main(void)
         printf("median %s %.1f\n", name[v], med);
         CHECK(med < IMPRINT_BOUND, "the grid's print P%s / ring mean, median of seeds 1-3 = %.1f >= %.0f", name[v], med,
               IMPRINT_BOUND);
+    }
+    for (int v = 0; v < 2; v++) {
+        const double a = qc[0][v], b = qc[1][v], c = qc[2][v];
+        const double med = isfinite(a) && isfinite(b) && isfinite(c) ? fmax(fmin(a, b), fmin(fmax(a, b), c)) : NAN;
+        printf("median %s %.1f\n", v ? "(g/3,0)" : "(0,g/3)", med);
+        CHECK(med < COLOUR_BOUND, "the colours' print P%s / ring mean, median of seeds 1-3 = %.1f, not below %.0f",
+              v ? "(g/3,0)" : "(0,g/3)", med, COLOUR_BOUND);
     }
     for (int seed = 1; seed <= 3; seed++) {
         const char *at = "-";
