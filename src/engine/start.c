@@ -15,11 +15,11 @@
 #define WARP_MAX_MODES 64
 /* The warp's strength, measured at 65,536 points (docs/method.md): an rms
  * displacement of 1.5 start cells at a wavelength of 8 start cells removes
- * the start lattice's spike without making holes. Its second order beats
- * pairs of modes into long waves (k_i - k_j) that the iterations do not
- * remove; with 64 modes each such wave holds 1/16 of the power it held
- * with 16, and at 1,048,576 points they stay under the spectrum's noise
- * level (docs/results/2026-11-29-start-modes.md). */
+ * the start lattice's spike without making holes. Its 64 modes are
+ * applied as shears one after the other (warp below), which keeps area
+ * exactly; summed at one point they kept it to first order only, and
+ * their second order beat pairs of modes into long waves (k_i - k_j)
+ * that the relaxed start kept (docs/results/2026-11-29-imprint11.md). */
 #define WARP_AMP 1.5
 #define WARP_LEN 8.0
 #define WARP_MODES 64
@@ -48,11 +48,10 @@ typedef struct {
     double kx, ky, ph, cx, cy; /* wave vector, phase, displacement direction * amplitude */
 } mode;
 
-/* The field: the curl of a random stream function, a sum of `modes` plane
- * waves with integer wave vectors of length near h / len (so it is
- * periodic on the torus), scaled so the rms displacement is amp / h. Its
- * divergence is zero: it moves points without compressing them, to first
- * order. */
+/* The modes: `modes` plane waves with integer wave vectors of length near
+ * h / len (so they are periodic on the torus), each with a displacement
+ * perpendicular to its wave vector, scaled so the rms displacement is
+ * amp / h. */
 static int make_modes(const cfpo_grid *G, const start_params *p, mode *md)
 {
     if (!(p->amp > 0) || p->modes < 1) return 0;

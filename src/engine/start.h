@@ -3,8 +3,8 @@
  * Owns: the start of CFPO_VARIANT_ADAPTIVE, as points per optimisation
  * cell. The start is a jittered grid of h x h start cells, h = floor(sqrt
  * n), one uniform point in each, the n - h^2 remaining points in distinct
- * random start cells, then displaced by a smooth divergence-free random
- * field (docs/method.md says why), then relaxed without a grid
+ * random start cells, then displaced by a smooth random area-preserving
+ * map, 64 shears in turn (docs/method.md says why), then relaxed without a grid
  * (start_relax.h). Every coordinate is a pure function of (seed, the
  * start cells within the relaxation's reach), so any process makes any
  * optimisation cell's points from a band of start rows around them.
