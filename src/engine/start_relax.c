@@ -52,16 +52,17 @@ static inline int64_t band_row(const bins *B, int64_t by)
     return rel < B->rows ? rel : -1;
 }
 
-/* The order of the m points (px, py) with ids id[] (keys key[id]) by band
- * bin, each bin's by key, those outside the band's bins last in their
- * order: ord[t] is the t-th point. B->off is set; returns how many are in
- * the band's bins. */
+/* The band bin of a point, or -1 when its row is not in the band. */
 static inline int64_t bin_of(const bins *B, double px, double py)
 {
     const int64_t row = band_row(B, axis_bin(py, B->nb));
     return row < 0 ? -1 : row * B->nb + axis_bin(px, B->nb);
 }
 
+/* The order of the m points (px, py) with ids id[] (keys key[id]) by band
+ * bin, each bin's by key, those outside the band's bins last in their
+ * order: ord[t] is the t-th point. B->off is set; returns how many are in
+ * the band's bins. */
 static size_t bin_points(bins *B, const double *px, const double *py, const uint32_t *id, const uint64_t *key,
                          size_t m, uint32_t *ord)
 {
