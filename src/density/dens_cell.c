@@ -71,13 +71,12 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
 /* The block's points j != p that the buckets (fx.., fy..) hold with
  * d^2 q_j < T, by (d^2 q_j, j): the KMAX smallest, in order, into
  * b->scratch (keys) and b->nj. Returns their count. They are gathered
- * first (b->ck, b->cj: room for the whole block) and then placed: a few by
- * counting each one's place, with no branches (an insertion as they come
- * mispredicts on most of them), more by insertion; the list depends on
- * the set alone, so both give the same one. */
-#ifndef RANK_MAX
-#define RANK_MAX 64 /* a build with another value gives the same bytes (both placements) */
-#endif
+ * first (b->ck, b->cj: room for the whole block), with no branch on
+ * whether each is in reach, and then placed by insertion. The list
+ * depends on the set alone. Until 2026-11-29 a list of up to 64 was
+ * placed by counting each one's place, with no branches: the same list,
+ * 1.9e3 more instructions a solve where the CPU lacks wide vectors, and
+ * no faster where it has them (docs/results/2026-11-29-density11.md). */
 static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double ax, double ay, double T, int wrap,
                             int fx, int nx_, int fy, int ny_)
 {
@@ -104,18 +103,6 @@ static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double 
                 cnt += (d2 < T) & (j != p);
             }
         }
-    }
-    if (cnt <= RANK_MAX) { /* each one's place: the keys below it, and the equal keys of a smaller j */
-        for (int i = 0; i < cnt; i++) {
-            const double ki = ck[i], ji = cj[i];
-            int r = 0;
-            for (int l = 0; l < cnt; l++) r += (ck[l] < ki) | ((ck[l] == ki) & (cj[l] < ji));
-            if (r < KMAX) {
-                key[r] = ki;
-                nj[r] = (int)ji;
-            }
-        }
-        return cnt < KMAX ? cnt : KMAX;
     }
     int kk = 0;
     for (int i = 0; i < cnt; i++) {
