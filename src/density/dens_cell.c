@@ -129,23 +129,48 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     const double L = E->L, ox = (double)cx * L + E->sx, oy = (double)cy * L + E->sy;
     const int wrap = g < 6; /* the block spans the torus: differences wrap */
     int m = 0, c0 = 0, c1 = 0;
-    for (int dy = -1; dy <= 1; dy++)
-        for (int dx = -1; dx <= 1; dx++) {
-            const int64_t c = ((cy + dy + g) % g) * g + (cx + dx + g) % g;
-            if (dx == 0 && dy == 0) c0 = m;
-            const double mx = ((double)dx + 0.5) * L, my = ((double)dy + 0.5) * L;
-            for (int64_t s = E->cstart[c]; s < E->cstart[c + 1]; s++) {
+    if (!wrap && cx >= 1 && cx <= g - 3 && cy >= 1 && cy <= g - 3) {
+        /* a block clear of the grid's seam (cells 1..g-2, none wrapped;
+         * cell g-1 straddles x = 1 + sx): each row's three cells are one
+         * run of slots, and each point's offset from its cell's centre is
+         * under 0.5, so the rint below is 0 and the offset is u itself:
+         * the same points in the same order, the same bits */
+        for (int dy = -1; dy <= 1; dy++) {
+            const int64_t row = (cy + dy) * g + cx;
+            const int64_t s0 = E->cstart[row - 1], s1 = E->cstart[row + 2];
+            if (dy == 0) {
+                c0 = m + (int)(E->cstart[row] - s0);
+                c1 = m + (int)(E->cstart[row + 1] - s0);
+            }
+            for (int64_t s = s0; s < s1; s++) {
                 const double *r = E->cxyq + 3 * s; /* the store's x, y, q of point cidx[s] */
-                double u = r[0] - ox, v = r[1] - oy;
-                b->bx[m] = u - rint(u - mx);
-                b->by[m] = v - rint(v - my);
+                b->bx[m] = r[0] - ox;
+                b->by[m] = r[1] - oy;
                 b->br[m] = r[2];
                 b->bid[m] = E->cidx[s];
                 b->bslot[m] = s;
                 m++;
             }
-            if (dx == 0 && dy == 0) c1 = m;
         }
+    } else {
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dx = -1; dx <= 1; dx++) {
+                const int64_t c = ((cy + dy + g) % g) * g + (cx + dx + g) % g;
+                if (dx == 0 && dy == 0) c0 = m;
+                const double mx = ((double)dx + 0.5) * L, my = ((double)dy + 0.5) * L;
+                for (int64_t s = E->cstart[c]; s < E->cstart[c + 1]; s++) {
+                    const double *r = E->cxyq + 3 * s;
+                    double u = r[0] - ox, v = r[1] - oy;
+                    b->bx[m] = u - rint(u - mx);
+                    b->by[m] = v - rint(v - my);
+                    b->br[m] = r[2];
+                    b->bid[m] = E->cidx[s];
+                    b->bslot[m] = s;
+                    m++;
+                }
+                if (dx == 0 && dy == 0) c1 = m;
+            }
+    }
     const double lo = sqrt(E->d->rho_min), rmax = E->D / lo, hi = L * (1 - 1e-9);
     /* the block's buckets (one for a small block), and the smallest q in
      * it, which bounds the measure of the points a ring scan leaves out */

@@ -59,7 +59,8 @@ TGT int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *y
 {
     const int vmax = k + 8;
     double *bufa = scratch, *bufb = bufa + 2 * (size_t)vmax, *tl = bufb + 3 * (size_t)vmax, *hl = tl + vmax;
-    double best = floor_f, sxa[SMALL] = {0}, sya[SMALL] = {0}, sxb[SMALL] = {0}, syb[SMALL] = {0};
+    double best = floor_f, sxa[SMALL], sya[SMALL], sxb[SMALL], syb[SMALL];
+    for (int v = 0; v < 8; v++) sxa[v] = sya[v] = sxb[v] = syb[v] = 0; /* the lanes a cut loads (past nv: masked) */
     int found = 0;
     for (int i = 0; i < m; i++) {
         const double ax = yx[i], ay = yy[i], wi = w[i];
