@@ -16,12 +16,13 @@
  *    their Voronoi cells in the box), and never above the full solve's;
  *  - the routes: for random sets of up to 40 neighbours, the plain route,
  *    the AVX-512 route and the AVX2 route (where the CPU has them) give the
- *    same bits, with
+ *    same bits (and so does f at the spot found), with
  *    the density's global bound of q and with the tight bound of the box
  *    (dens_qbound.h), at several floors, searching 10 polygons or 2. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "dens_qbound.h"
 #include "dens_solve.h"
@@ -203,6 +204,12 @@ static void routes(const char *spec, int count)
                     const int got = r == 1 ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
                                   : r == 2 ? cfpo_dens_solve_avx2(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
                                            : cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch);
+                    { /* f at the spot found, by the same route */
+                        const double q = cfpo_dens_local_q(&d, ox, oy, cx, cy), f0 = cfpo_dens_value_plain(yx, yy, yr, k, q, cx, cy);
+                        const double fr = r == 1 ? cfpo_dens_value_avx512(yx, yy, yr, k, q, cx, cy)
+                                        : r == 2 ? cfpo_dens_value_avx2(yx, yy, yr, k, q, cx, cy) : f0;
+                        differ += memcmp(&fr, &f0, sizeof fr) != 0;
+                    }
                     if (ref < 0) {
                         ref = got;
                         ref_x = cx; ref_y = cy; ref_f = f;

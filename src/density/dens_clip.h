@@ -170,4 +170,13 @@ int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *yr, c
                          cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                          double *cx, double *cy, double *f, double *scratch);
 
+/* cfpo_dens_value (dens_solve.h) by the AVX-512 and AVX2 routes (the same
+ * conditions): the same min over the same terms, so the same bits. */
+double cfpo_dens_value_avx512(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                              double cy);
+double cfpo_dens_value_avx2(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                            double cy);
+double cfpo_dens_value_plain(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                             double cy);
+
 #endif /* CFPO_DENS_CLIP_H */

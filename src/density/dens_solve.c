@@ -10,7 +10,8 @@
 #include "dens_clip.h"
 #include "solver_simd.h"
 
-double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy)
+double cfpo_dens_value_plain(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                             double cy)
 {
     double best = INFINITY;
     for (int j = 0; j < k; j++) {
@@ -33,6 +34,15 @@ static int route(void)
         __atomic_store_n(&use, u, __ATOMIC_RELAXED);
     }
     return u;
+}
+
+double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy)
+{
+    switch (route()) {
+        case 2: return cfpo_dens_value_avx512(yx, yy, yr, k, rc, cx, cy);
+        case 1: return cfpo_dens_value_avx2(yx, yy, yr, k, rc, cx, cy);
+        default: return cfpo_dens_value_plain(yx, yy, yr, k, rc, cx, cy);
+    }
 }
 
 int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, int cells, cfpo_square S,

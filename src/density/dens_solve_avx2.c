@@ -11,7 +11,7 @@
  * (its output buffer's bound, vmax: never met in practice, kept exact).
  * The lines, the prunings and the vertex evaluation are the plain route's
  * own functions (dens_clip.h); a vertex's value takes four neighbours a
- * step. */
+ * step, and so does f at a spot (cfpo_dens_value's AVX2 route). */
 #include "dens_clip.h"
 #include "solver_cut256.h"
 
@@ -42,6 +42,12 @@ TGT static double geo4(double px, double py, const double *yx, const double *yy,
         if (!(geo * qhi > best)) break;
     }
     return geo;
+}
+
+TGT double cfpo_dens_value_avx2(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                                double cy)
+{
+    return geo4(cx, cy, yx, yy, yr, k, 0, INFINITY, 1, -INFINITY) * rc;
 }
 
 /* The polygon (x, y: nv vertices) written interleaved into poly. */
@@ -113,6 +119,12 @@ TGT int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *y
 }
 
 #else
+
+double cfpo_dens_value_avx2(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                            double cy)
+{
+    return cfpo_dens_value_plain(yx, yy, yr, k, rc, cx, cy);
+}
 
 int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
                          cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
