@@ -38,6 +38,11 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
                    double *y, int *viol)
 {
     const int c0 = cfpo_dens_bucket_of(bk, px, py);
+    /* the block's arrays and the flag in locals (spot_ok writes none of them) */
+    const double *restrict bx = b->bx, *restrict by = b->by, *restrict br = b->br;
+    const int *restrict head = bk->head, *restrict next = bk->next;
+    const int *ring = b->ring; /* written by cfpo_dens_ring each ring */
+    const int wrap = m->wrap;
     *viol = -1;
     for (int k = 0;; k++) {
         if (k > 1 && m->qlo > 0) {
@@ -47,11 +52,11 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
         const int nb = cfpo_dens_ring(bk, c0, k, b->ring);
         if (nb < 0) break;
         for (int r = 0; r < nb; r++)
-            for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
+            for (int j = head[ring[r]]; j >= 0; j = next[j]) {
                 if (j == p) continue;
-                double ex = b->bx[j] - px, ey = b->by[j] - py;
-                if (m->wrap) { ex -= rint(ex); ey -= rint(ey); }
-                if (!((ex * ex + ey * ey) * b->br[j] * rc > thr)) {
+                double ex = bx[j] - px, ey = by[j] - py;
+                if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                if (!((ex * ex + ey * ey) * br[j] * rc > thr)) {
                     *viol = j;
                     return 0;
                 }
