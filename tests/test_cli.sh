@@ -165,6 +165,14 @@ for v in adaptive paper simplified; do
     done
   done
 done
+# the density solve follows the same choice (src/density/dens_solve.c)
+for t in 1 2; do
+  "$CFPO" -n 3000 --seed 9 -t $t --max-iter 12 --density cos:a=0.9,kx=1,ky=0 -q -o rd$t.bin >/dev/null 2>&1
+  for r in $routes; do
+    CFPO_SOLVER=$r "$CFPO" -n 3000 --seed 9 -t $t --max-iter 12 --density cos:a=0.9,kx=1,ky=0 -q -o pd$t$r.bin >/dev/null 2>&1
+    cmp -s rd$t.bin pd$t$r.bin && ok || bad "density, $t threads: the $r solver gives other bytes"
+  done
+done
 CFPO_SOLVER=fast expect 2 "CFPO_SOLVER: bad value 'fast'" -n 100 -o x.npy
 "$CFPO" -n 3000 --seed 10 -q -o e.bin >/dev/null
 cmp -s d1.bin e.bin && bad "seeds 9 and 10 give the same bytes" || ok

@@ -14,13 +14,15 @@
  *    density: at least the enumeration's largest value over the grid
  *    points whose nearest neighbour is one of those two (the union of
  *    their Voronoi cells in the box), and never above the full solve's;
- *  - the routes: for random sets of up to 40 neighbours, the plain route
- *    and the AVX-512 route (where the CPU has it) give the same bits, with
+ *  - the routes: for random sets of up to 40 neighbours, the plain route,
+ *    the AVX-512 route and the AVX2 route (where the CPU has them) give the
+ *    same bits (and so does f at the spot found), with
  *    the density's global bound of q and with the tight bound of the box
  *    (dens_qbound.h), at several floors, searching 10 polygons or 2. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "dens_qbound.h"
 #include "dens_solve.h"
@@ -175,7 +177,7 @@ static void routes(const char *spec, int count)
     char err[256];
     if (cfpo_density_load(spec, &d, err, sizeof err) != 0) { CHECK(0, "%s: %s", spec, err); return; }
     if (cfpo_dens_qbound_build(&qb, &d) != 0) { CHECK(0, "%s: out of memory", spec); cfpo_density_free(&d); return; }
-    const int simd = cfpo_solver_avx512_usable();
+    const int simd = cfpo_solver_avx512_usable(), avx2 = cfpo_solver_avx2_usable();
     unsigned long long seed = 777;
     double yx[40], yy[40], yr[40], w[40], dd[40], scratch[8 * 48 + 16];
     int differ = 0, tight = 0, n = 0;
@@ -196,10 +198,18 @@ static void routes(const char *spec, int count)
         for (int q = 0; q < 3; q++) {
             int ref = -1;
             for (int b = 0; b < 2; b++)
-                for (int r = 0; r < 1 + simd; r++) {
+                for (int r = 0; r < 3; r++) {
+                    if ((r == 1 && !simd) || (r == 2 && !avx2)) continue;
                     double cx = 0.5 * (S.x0 + S.x1), cy = 0.5 * (S.y0 + S.y1), f;
-                    const int got = r ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
-                                      : cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch);
+                    const int got = r == 1 ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
+                                  : r == 2 ? cfpo_dens_solve_avx2(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
+                                           : cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch);
+                    { /* f at the spot found, by the same route */
+                        const double q = cfpo_dens_local_q(&d, ox, oy, cx, cy), f0 = cfpo_dens_value_plain(yx, yy, yr, k, q, cx, cy);
+                        const double fr = r == 1 ? cfpo_dens_value_avx512(yx, yy, yr, k, q, cx, cy)
+                                        : r == 2 ? cfpo_dens_value_avx2(yx, yy, yr, k, q, cx, cy) : f0;
+                        differ += memcmp(&fr, &f0, sizeof fr) != 0;
+                    }
                     if (ref < 0) {
                         ref = got;
                         ref_x = cx; ref_y = cy; ref_f = f;
@@ -213,7 +223,8 @@ static void routes(const char *spec, int count)
     }
     CHECK(differ == 0, "%s: %d of %d solves differ between the routes or the bounds of q", spec, differ, n);
     CHECK(tight > count / 2, "%s: the box's bound of q is below the global one in only %d of %d boxes", spec, tight, count);
-    printf("%s: %d solves by %s, same bits with both bounds of q\n", spec, n, simd ? "the plain and AVX-512 routes" : "the plain route");
+    printf("%s: %d solves by the plain route%s%s, same bits with both bounds of q\n", spec, n, simd ? ", the AVX-512 route" : "",
+           avx2 ? ", the AVX2 route" : "");
     cfpo_dens_qbound_free(&qb);
     cfpo_density_free(&d);
 }

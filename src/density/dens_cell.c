@@ -38,6 +38,11 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
                    double *y, int *viol)
 {
     const int c0 = cfpo_dens_bucket_of(bk, px, py);
+    /* the block's arrays and the flag in locals (spot_ok writes none of them) */
+    const double *restrict bx = b->bx, *restrict by = b->by, *restrict br = b->br;
+    const int *restrict head = bk->head, *restrict next = bk->next;
+    const int *ring = b->ring; /* written by cfpo_dens_ring each ring */
+    const int wrap = m->wrap;
     *viol = -1;
     for (int k = 0;; k++) {
         if (k > 1 && m->qlo > 0) {
@@ -47,11 +52,11 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
         const int nb = cfpo_dens_ring(bk, c0, k, b->ring);
         if (nb < 0) break;
         for (int r = 0; r < nb; r++)
-            for (int j = bk->head[b->ring[r]]; j >= 0; j = bk->next[j]) {
+            for (int j = head[ring[r]]; j >= 0; j = next[j]) {
                 if (j == p) continue;
-                double ex = b->bx[j] - px, ey = b->by[j] - py;
-                if (m->wrap) { ex -= rint(ex); ey -= rint(ey); }
-                if (!((ex * ex + ey * ey) * b->br[j] * rc > thr)) {
+                double ex = bx[j] - px, ey = by[j] - py;
+                if (wrap) { ex -= rint(ex); ey -= rint(ey); }
+                if (!((ex * ex + ey * ey) * br[j] * rc > thr)) {
                     *viol = j;
                     return 0;
                 }
@@ -71,13 +76,12 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
 /* The block's points j != p that the buckets (fx.., fy..) hold with
  * d^2 q_j < T, by (d^2 q_j, j): the KMAX smallest, in order, into
  * b->scratch (keys) and b->nj. Returns their count. They are gathered
- * first (b->ck, b->cj: room for the whole block) and then placed: a few by
- * counting each one's place, with no branches (an insertion as they come
- * mispredicts on most of them), more by insertion; the list depends on
- * the set alone, so both give the same one. */
-#ifndef RANK_MAX
-#define RANK_MAX 64 /* a build with another value gives the same bytes (both placements) */
-#endif
+ * first (b->ck, b->cj: room for the whole block), with no branch on
+ * whether each is in reach, and then placed by insertion. The list
+ * depends on the set alone. Until 2026-11-29 a list of up to 64 was
+ * placed by counting each one's place, with no branches: the same list,
+ * 1.9e3 more instructions a solve where the CPU lacks wide vectors, and
+ * no faster where it has them (docs/results/2026-11-29-density11.md). */
 static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double ax, double ay, double T, int wrap,
                             int fx, int nx_, int fy, int ny_)
 {
@@ -105,18 +109,6 @@ static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double 
             }
         }
     }
-    if (cnt <= RANK_MAX) { /* each one's place: the keys below it, and the equal keys of a smaller j */
-        for (int i = 0; i < cnt; i++) {
-            const double ki = ck[i], ji = cj[i];
-            int r = 0;
-            for (int l = 0; l < cnt; l++) r += (ck[l] < ki) | ((ck[l] == ki) & (cj[l] < ji));
-            if (r < KMAX) {
-                key[r] = ki;
-                nj[r] = (int)ji;
-            }
-        }
-        return cnt < KMAX ? cnt : KMAX;
-    }
     int kk = 0;
     for (int i = 0; i < cnt; i++) {
         const double d2 = ck[i];
@@ -142,23 +134,48 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     const double L = E->L, ox = (double)cx * L + E->sx, oy = (double)cy * L + E->sy;
     const int wrap = g < 6; /* the block spans the torus: differences wrap */
     int m = 0, c0 = 0, c1 = 0;
-    for (int dy = -1; dy <= 1; dy++)
-        for (int dx = -1; dx <= 1; dx++) {
-            const int64_t c = ((cy + dy + g) % g) * g + (cx + dx + g) % g;
-            if (dx == 0 && dy == 0) c0 = m;
-            const double mx = ((double)dx + 0.5) * L, my = ((double)dy + 0.5) * L;
-            for (int64_t s = E->cstart[c]; s < E->cstart[c + 1]; s++) {
+    if (!wrap && cx >= 1 && cx <= g - 3 && cy >= 1 && cy <= g - 3) {
+        /* a block clear of the grid's seam (cells 1..g-2, none wrapped;
+         * cell g-1 straddles x = 1 + sx): each row's three cells are one
+         * run of slots, and each point's offset from its cell's centre is
+         * under 0.5, so the rint below is 0 and the offset is u itself:
+         * the same points in the same order, the same bits */
+        for (int dy = -1; dy <= 1; dy++) {
+            const int64_t row = (cy + dy) * g + cx;
+            const int64_t s0 = E->cstart[row - 1], s1 = E->cstart[row + 2];
+            if (dy == 0) {
+                c0 = m + (int)(E->cstart[row] - s0);
+                c1 = m + (int)(E->cstart[row + 1] - s0);
+            }
+            for (int64_t s = s0; s < s1; s++) {
                 const double *r = E->cxyq + 3 * s; /* the store's x, y, q of point cidx[s] */
-                double u = r[0] - ox, v = r[1] - oy;
-                b->bx[m] = u - rint(u - mx);
-                b->by[m] = v - rint(v - my);
+                b->bx[m] = r[0] - ox;
+                b->by[m] = r[1] - oy;
                 b->br[m] = r[2];
                 b->bid[m] = E->cidx[s];
                 b->bslot[m] = s;
                 m++;
             }
-            if (dx == 0 && dy == 0) c1 = m;
         }
+    } else {
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dx = -1; dx <= 1; dx++) {
+                const int64_t c = ((cy + dy + g) % g) * g + (cx + dx + g) % g;
+                if (dx == 0 && dy == 0) c0 = m;
+                const double mx = ((double)dx + 0.5) * L, my = ((double)dy + 0.5) * L;
+                for (int64_t s = E->cstart[c]; s < E->cstart[c + 1]; s++) {
+                    const double *r = E->cxyq + 3 * s;
+                    double u = r[0] - ox, v = r[1] - oy;
+                    b->bx[m] = u - rint(u - mx);
+                    b->by[m] = v - rint(v - my);
+                    b->br[m] = r[2];
+                    b->bid[m] = E->cidx[s];
+                    b->bslot[m] = s;
+                    m++;
+                }
+                if (dx == 0 && dy == 0) c1 = m;
+            }
+    }
     const double lo = sqrt(E->d->rho_min), rmax = E->D / lo, hi = L * (1 - 1e-9);
     /* the block's buckets (one for a small block), and the smallest q in
      * it, which bounds the measure of the points a ring scan leaves out */

@@ -155,8 +155,9 @@ static inline double dens_corners(cfpo_square S, double ax, double ay, double c[
     return far2;
 }
 
-/* The plain and AVX-512 routes (call the latter only where
- * cfpo_solver_avx512_usable() says 1): cfpo_dens_solve's arguments, k > 0,
+/* The plain, AVX-512 and AVX2 routes (call the AVX-512 one only where
+ * cfpo_solver_avx512_usable() says 1, the AVX2 one where
+ * cfpo_solver_avx2_usable() does): cfpo_dens_solve's arguments, k > 0,
  * w[j] = sqrt(yr[j]) given, the polygons of the first m <= k neighbours; scratch holds 8 (k + 8) doubles, w among them
  * at 4 (k + 8). */
 int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
@@ -165,5 +166,17 @@ int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, 
 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
                            cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                            double *cx, double *cy, double *f, double *scratch);
+int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
+                         cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
+                         double *cx, double *cy, double *f, double *scratch);
+
+/* cfpo_dens_value (dens_solve.h) by the AVX-512 and AVX2 routes (the same
+ * conditions): the same min over the same terms, so the same bits. */
+double cfpo_dens_value_avx512(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                              double cy);
+double cfpo_dens_value_avx2(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                            double cy);
+double cfpo_dens_value_plain(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                             double cy);
 
 #endif /* CFPO_DENS_CLIP_H */

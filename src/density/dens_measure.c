@@ -83,6 +83,10 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
              * compares of one cell need not wait for the last cell's; the
              * minimum is the same */
             double b0 = best, b1 = best;
+            /* rings that wrap no cell index: every point seen is within
+             * (k + 1) L < 0.5 of (x, y) along each axis, so wrapd would
+             * subtract rint = 0 (the same bits) */
+            const int wr = all || 2 * (k + 1) >= g || cx < k || cx + k >= g || cy < k || cy + k >= g;
             for (int64_t dy = kx0; dy <= kx1; dy++) {
                 /* cy + dy lies in (-g, 2g): one wrap, no division */
                 int64_t yy = cy + dy;
@@ -104,7 +108,8 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
                     xx = xx < 0 ? xx + g : xx >= g ? xx - g : xx;
                     double bb = INFINITY;
                     for (size_t s = row[xx]; s < row[xx + 1]; s++) {
-                        const double ex = wrapd(pt[3 * s] - x), ey = wrapd(pt[3 * s + 1] - y);
+                        double ex = pt[3 * s] - x, ey = pt[3 * s + 1] - y;
+                        if (wr) { ex = wrapd(ex); ey = wrapd(ey); }
                         const double v = (ex * ex + ey * ey) * pt[3 * s + 2];
                         bb = s == si ? bb : v < bb ? v : bb;
                     }

@@ -1,6 +1,7 @@
 /* dens_solve.c - layer 2: the local solve under a density (dens_solve.h):
- * the choice between its plain route (dens_solve_plain.c) and its AVX-512
- * route (dens_solve_avx512.c), which give the same bits. */
+ * the choice between its plain route (dens_solve_plain.c), its AVX2 route
+ * (dens_solve_avx2.c) and its AVX-512 route (dens_solve_avx512.c), which
+ * give the same bits. */
 #include "dens_solve.h"
 
 #include <math.h>
@@ -9,7 +10,8 @@
 #include "dens_clip.h"
 #include "solver_simd.h"
 
-double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy)
+double cfpo_dens_value_plain(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                             double cy)
 {
     double best = INFINITY;
     for (int j = 0; j < k; j++) {
@@ -20,18 +22,27 @@ double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int
     return best * rc;
 }
 
-/* 1 where the AVX-512 route runs: the CPU has it and CFPO_SOLVER allows
- * it (the same choice as LocalCFPO's, geom.c). */
-static int use_avx512(void)
+/* The route that runs: 2 AVX-512, 1 AVX2, 0 plain, by what the CPU has
+ * and CFPO_SOLVER allows (the same choice as LocalCFPO's, geom.c). */
+static int route(void)
 {
     static int use = -1;
     int u = __atomic_load_n(&use, __ATOMIC_RELAXED);
     if (u < 0) {
         const char *r = cfpo_solver_name();
-        u = r && strcmp(r, "avx512") == 0;
+        u = r && strcmp(r, "avx512") == 0 ? 2 : r && strcmp(r, "avx2") == 0 ? 1 : 0;
         __atomic_store_n(&use, u, __ATOMIC_RELAXED);
     }
     return u;
+}
+
+double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy)
+{
+    switch (route()) {
+        case 2: return cfpo_dens_value_avx512(yx, yy, yr, k, rc, cx, cy);
+        case 1: return cfpo_dens_value_avx2(yx, yy, yr, k, rc, cx, cy);
+        default: return cfpo_dens_value_plain(yx, yy, yr, k, rc, cx, cy);
+    }
 }
 
 int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k, int cells, cfpo_square S,
@@ -48,6 +59,9 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
     double *w = scratch + 4 * ((size_t)k + 8); /* rho_j^(1/4), once */
     for (int j = 0; j < k; j++) w[j] = sqrt(yr[j]);
     const int m = cells < k ? cells : k;
-    return use_avx512() ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch)
-                        : cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+    switch (route()) {
+        case 2: return cfpo_dens_solve_avx512(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+        case 1: return cfpo_dens_solve_avx2(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+        default: return cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+    }
 }

@@ -36,6 +36,12 @@ T512 static double geo8(double px, double py, const double *yx, const double *yy
     return geo;
 }
 
+T512 double cfpo_dens_value_avx512(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                                  double cy)
+{
+    return geo8(cx, cy, yx, yy, yr, k, 0, INFINITY, 1, -INFINITY) * rc;
+}
+
 T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
                                 cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy,
                                 double floor_f, double *cx, double *cy, double *f, double *scratch)
@@ -93,6 +99,12 @@ T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double
 }
 
 #else
+
+double cfpo_dens_value_avx512(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                              double cy)
+{
+    return cfpo_dens_value_plain(yx, yy, yr, k, rc, cx, cy);
+}
 
 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
                            cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,

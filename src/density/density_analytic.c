@@ -90,7 +90,10 @@ int cfpo_density_named(const char *name, const char *params, cfpo_density *d, ch
         for (int64_t i = 0; i < R; i++) {
             const double x = ((double)i + 0.5) / (double)R, y = ((double)j + 0.5) / (double)R;
             double r;
-            if (kind == COS) r = 1 + ps[0].value * cos(two_pi * (ps[1].value * x + ps[2].value * y));
+            /* cos along x alone (ky = 0): ky y is +0 on every row, so row
+             * 0's value is every row's, the same bits */
+            if (kind == COS && ps[2].value == 0 && j > 0) r = v[i];
+            else if (kind == COS) r = 1 + ps[0].value * cos(two_pi * (ps[1].value * x + ps[2].value * y));
             else if (kind == RAMP) r = 1 + (ps[0].value - 1) * (1 - fabs(2 * (double)i / (double)R - 1));
             else {
                 const double u = 2 * x - 1, w = 2 * y - 1, su = sin(M_PI * u), sw = sin(M_PI * w);
