@@ -10,18 +10,6 @@
 #include "dens_clip.h"
 #include "solver_simd.h"
 
-double cfpo_dens_value_plain(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
-                             double cy)
-{
-    double best = INFINITY;
-    for (int j = 0; j < k; j++) {
-        const double dx = cx - yx[j], dy = cy - yy[j];
-        const double v = (dx * dx + dy * dy) * yr[j];
-        if (v < best) best = v;
-    }
-    return best * rc;
-}
-
 /* The route that runs: 2 AVX-512, 1 AVX2, 0 plain, by what the CPU has
  * and CFPO_SOLVER allows (the same choice as LocalCFPO's, geom.c). */
 static int route(void)

@@ -1,5 +1,7 @@
-/* dens_solve_plain.c - layer 2: the density solve's plain route
+/* dens_solve_plain.c - layer 2: the density solve's plain route and the
+ * plain value of f at a spot
  * (dens_clip.h has the pieces both routes share). */
+#include <math.h>
 #include <string.h>
 
 #include "dens_clip.h"
@@ -37,4 +39,16 @@ int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, 
     }
     *f = found ? best : -1;
     return found;
+}
+
+double cfpo_dens_value_plain(const double *yx, const double *yy, const double *yr, int k, double rc, double cx,
+                             double cy)
+{
+    double best = INFINITY;
+    for (int j = 0; j < k; j++) {
+        const double dx = cx - yx[j], dy = cy - yy[j];
+        const double v = (dx * dx + dy * dy) * yr[j];
+        if (v < best) best = v;
+    }
+    return best * rc;
 }
