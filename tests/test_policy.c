@@ -162,7 +162,7 @@ static void test_shift(void)
  * prints' phasors exp(2 pi i m sigma_j / (3 L)) of seven consecutive
  * moves sum to 0 and each move turns the last one's by more than 150
  * degrees at m = 3 and 4 (cos < -0.85); the two axes' walks start apart;
- * the sweep's colours are a permutation, row-major from colour
+ * the sweep's colours are a permutation (the balanced order) from colour
  * (rot_y, rot_x). */
 static void test_walk(void)
 {
