@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bigmem.h"
 #include "geom.h"
 #include "rng.h"
 #include "start_relax.h"
@@ -157,9 +158,9 @@ static int sort_by_cell(cfpo_start_pt *pts, size_t m, int64_t c0, int64_t ncell)
 static int relax_band(const cfpo_grid *G, cfpo_start_pt **pts, size_t *m, double ylo, double yhi, int64_t y0,
                       int64_t y1, int threads)
 {
-    const size_t k = *m;
-    double *x = malloc((k ? k : 1) * sizeof *x), *y = malloc((k ? k : 1) * sizeof *y);
-    uint64_t *key = malloc((k ? k : 1) * sizeof *key);
+    const size_t k = *m, db = k * sizeof(double), kb = k * sizeof(uint64_t);
+    double *x = cfpo_map_bytes(db), *y = cfpo_map_bytes(db);
+    uint64_t *key = cfpo_map_bytes(kb);
     int rc = -1;
     if (x && y && key) {
         for (size_t i = 0; i < k; i++) {
@@ -192,9 +193,9 @@ static int relax_band(const cfpo_grid *G, cfpo_start_pt **pts, size_t *m, double
     }
     free(*pts);
     *pts = out;
-    free(x);
-    free(y);
-    free(key);
+    cfpo_unmap_bytes(x, db);
+    cfpo_unmap_bytes(y, db);
+    cfpo_unmap_bytes(key, kb);
     return out ? 0 : -1;
 }
 

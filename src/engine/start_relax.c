@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bigmem.h"
 #include "omp_compat.h"
 
 /* r = RADIUS Delta(n); each pair nearer than r is pushed apart by
@@ -187,12 +188,14 @@ int cfpo_start_relax(double *x, double *y, const uint64_t *key, size_t m, int64_
      * each step orders them by bin (ord), gathers them in that order into
      * (sx, sy), turns ord into their ids, writes the new positions back
      * into (x, y) in that order, and the two id arrays swap. */
-    B.off = malloc((size_t)(nbin + 1) * sizeof *B.off);
-    B.sx = malloc(m * sizeof *B.sx);
-    B.sy = malloc(m * sizeof *B.sy);
-    uint32_t *id = malloc(m * sizeof *id), *ord = malloc(m * sizeof *ord);
+    const size_t offb = (size_t)(nbin + 1) * sizeof *B.off, db = m * sizeof(double), ib = m * sizeof(uint32_t);
+    B.off = cfpo_map_bytes(offb); /* mapped: bigmem.h says why */
+    B.sx = cfpo_map_bytes(db);
+    B.sy = cfpo_map_bytes(db);
+    uint32_t *id = cfpo_map_bytes(ib), *ord = cfpo_map_bytes(ib);
     if (!B.off || !B.sx || !B.sy || !id || !ord) {
-        free(B.off); free(B.sx); free(B.sy); free(id); free(ord);
+        cfpo_unmap_bytes(B.off, offb); cfpo_unmap_bytes(B.sx, db); cfpo_unmap_bytes(B.sy, db);
+        cfpo_unmap_bytes(id, ib); cfpo_unmap_bytes(ord, ib);
         return -1;
     }
     for (size_t i = 0; i < m; i++) id[i] = (uint32_t)i;
@@ -233,6 +236,7 @@ int cfpo_start_relax(double *x, double *y, const uint64_t *key, size_t m, int64_
         x[id[t]] = B.sx[t];
         y[id[t]] = B.sy[t];
     }
-    free(B.off); free(B.sx); free(B.sy); free(id); free(ord);
+    cfpo_unmap_bytes(B.off, offb); cfpo_unmap_bytes(B.sx, db); cfpo_unmap_bytes(B.sy, db);
+    cfpo_unmap_bytes(id, ib); cfpo_unmap_bytes(ord, ib);
     return 0;
 }
