@@ -192,7 +192,7 @@ double cfpo_policy_shift(const cfpo_grid *G, int k, int axis);
  * walk (0 where cfpo_policy_shift is 0). */
 double cfpo_policy_walk(const cfpo_grid *G, int k, int axis);
 /* The colour the sweep of a policy solves j-th (j in [0, period^2)). */
-/* The balanced order (docs/method.md, item 1; issue 44): a sweep's
+/* The balanced order (docs/method.md, item 3; issue 44): a sweep's
  * colours in row order give every row of colours its turn together, so a
  * row's cells move before or after their neighbours' by two thirds of a
  * sweep on average, and that difference prints the colours' period on y
