@@ -134,6 +134,9 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     const double L = E->L, ox = (double)cx * L + E->sx, oy = (double)cy * L + E->sy;
     const int wrap = g < 6; /* the block spans the torus: differences wrap */
     int m = 0, c0 = 0, c1 = 0;
+    /* the pixels every spot evaluated here lies on (each box S is clipped
+     * to the cell), asked for before the block's gather and ranking */
+    cfpo_density_prefetch_box(E->d, cfpo_wrap01(ox), cfpo_wrap01(oy), L);
     if (!wrap && cx >= 1 && cx <= g - 3 && cy >= 1 && cy <= g - 3) {
         /* a block clear of the grid's seam (cells 1..g-2, none wrapped;
          * cell g-1 straddles x = 1 + sx): each row's three cells are one
