@@ -262,11 +262,15 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (S.x1 > hi) S.x1 = hi;
         if (S.y1 > hi) S.y1 = hi;
         double cxp, cyp, fc;
-        int cells = cells0; /* the near solve's polygons first; all of them when those give no move */
+        /* the near solve's polygons first; all of them when those give no
+         * move, the search going on from the polygons it has done (`from`:
+         * the same vertex as searching them all again) */
+        int cells = cells0, from = 0;
         const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
     solve:
-        if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, cells, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX)) {
-            if (cells < DENS_CELLS) { cells = DENS_CELLS; goto solve; }
+        if (!cfpo_dens_solve_from(b->nx, b->ny, b->nr, kk, from, cells, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc,
+                                  b->scratch + KMAX)) {
+            if (cells < DENS_CELLS) { from = cells; cells = DENS_CELLS; goto solve; }
             continue;
         }
         /* a move must gain more than tol local spacings in the measure
@@ -292,7 +296,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         if (cc < 0) {
             if (!(sqrt(fc) > sqrt(oldf) + gain && fc > thr)) {
-                if (cells < DENS_CELLS) { cells = DENS_CELLS; goto solve; }
+                if (cells < DENS_CELLS) { from = cells; cells = DENS_CELLS; goto solve; }
                 continue;
             }
             rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
@@ -310,6 +314,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
                 if (wrap) { ex -= rint(ex); ey -= rint(ey); }
                 b->nx[kk] = ax + ex; b->ny[kk] = ay + ey; b->nr[kk] = b->br[viol];
                 b->nj[kk++] = viol;
+                from = 0; /* another neighbour: every polygon again */
                 goto solve;
             }
         }

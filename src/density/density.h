@@ -88,22 +88,16 @@ static inline void cfpo_density_prefetch_box(const cfpo_density *d, double x, do
 {
     const int64_t w = d->w, h = d->h;
     int64_t i0 = (int64_t)(x * (double)w), j0 = (int64_t)(y * (double)h);
-    int64_t ni = (int64_t)((x + s) * (double)w) - i0 + 1, nj = (int64_t)((y + s) * (double)h) - j0 + 1;
+    int64_t i1 = (int64_t)((x + s) * (double)w), nj = (int64_t)((y + s) * (double)h) - j0 + 1;
     if (i0 < 0 || i0 >= w) i0 = 0;
     if (j0 < 0 || j0 >= h) j0 = 0;
-    if (ni > w) ni = w;
+    if (i1 >= w) i1 = w - 1; /* the part past the seam is left to the loads */
+    if (i1 < i0) i1 = i0;
     if (nj > h) nj = h;
-    for (int64_t r = 0; r < nj; r++) {
-        const int64_t j = j0 + r < h ? j0 + r : j0 + r - h;
-        const double *row = d->rho + j * w;
-        int64_t i = i0, left = ni;
-        while (left > 0) { /* one hint per 64-byte line the run touches */
-            const int64_t run = w - i < left ? w - i : left;
-            for (int64_t k = 0; k < run; k += 8) __builtin_prefetch(row + i + k, 0, 3);
-            __builtin_prefetch(row + i + run - 1, 0, 3);
-            left -= run;
-            i = 0;
-        }
+    for (int64_t r = 0, j = j0; r < nj; r++, j = j + 1 < h ? j + 1 : 0) {
+        const uintptr_t e = (uintptr_t)(d->rho + j * w + i1);
+        for (uintptr_t a = (uintptr_t)(d->rho + j * w + i0) & ~(uintptr_t)63; a <= e; a += 64)
+            __builtin_prefetch((const void *)a, 0, 3); /* one hint a 64-byte line */
     }
 }
 
