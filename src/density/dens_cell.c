@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "dens_impl.h"
+#include "dens_order.h"
 #include "dens_solve.h"
 #include "policy.h"
 #include "geom.h"
@@ -77,11 +78,9 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
  * d^2 q_j < T, by (d^2 q_j, j): the KMAX smallest, in order, into
  * b->scratch (keys) and b->nj. Returns their count. They are gathered
  * first (b->ck, b->cj: room for the whole block), with no branch on
- * whether each is in reach, and then placed by insertion. The list
- * depends on the set alone. Until 2026-11-29 a list of up to 64 was
- * placed by counting each one's place, with no branches: the same list,
- * 1.9e3 more instructions a solve where the CPU lacks wide vectors, and
- * no faster where it has them (docs/results/2026-11-29-density11.md). */
+ * whether each is in reach, and then placed in order (dens_order.h:
+ * by insertion, or by counting each one's place in 8-lane compares where
+ * the CPU has the AVX-512 route). The list depends on the set alone. */
 static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double ax, double ay, double T, int wrap,
                             int fx, int nx_, int fy, int ny_)
 {
@@ -109,21 +108,7 @@ static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double 
             }
         }
     }
-    int kk = 0;
-    for (int i = 0; i < cnt; i++) {
-        const double d2 = ck[i];
-        const int j = (int)cj[i];
-        if (kk == KMAX && (d2 > key[KMAX - 1] || (d2 == key[KMAX - 1] && j > nj[KMAX - 1]))) continue;
-        int t = kk < KMAX ? kk++ : KMAX - 1;
-        while (t > 0 && (key[t - 1] > d2 || (key[t - 1] == d2 && nj[t - 1] > j))) {
-            key[t] = key[t - 1];
-            nj[t] = nj[t - 1];
-            t--;
-        }
-        key[t] = d2;
-        nj[t] = j;
-    }
-    return kk;
+    return cfpo_dens_order(ck, cj, cnt, KMAX, key, nj);
 }
 
 /* Solves the points of cell (cx, cy) one after another; returns the moves
@@ -224,7 +209,8 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         cfpo_dens_span(bk, ax - R, ax + R, bk->x0, &fx, &nx_);
         cfpo_dens_span(bk, ay - R, ay + R, bk->y0, &fy, &ny_);
-        kk = nearest_in_reach(b, bk, p, ax, ay, T, wrap, fx, nx_, fy, ny_);
+        kk = bk->B == 1 && !wrap ? cfpo_dens_order_block(b->bx, b->by, b->br, m, p, ax, ay, T, KMAX, b->scratch, b->nj) : -1;
+        if (kk < 0) kk = nearest_in_reach(b, bk, p, ax, ay, T, wrap, fx, nx_, fy, ny_);
         for (int t = 0; t < kk; t++) { /* their places, as the scan computed them */
             const int j = b->nj[t];
             double ex = b->bx[j] - ax, ey = b->by[j] - ay;

@@ -12,7 +12,7 @@
 
 /* The route that runs: 2 AVX-512, 1 AVX2, 0 plain, by what the CPU has
  * and CFPO_SOLVER allows (the same choice as LocalCFPO's, geom.c). */
-static int route(void)
+int cfpo_dens_route(void)
 {
     static int use = -1;
     int u = __atomic_load_n(&use, __ATOMIC_RELAXED);
@@ -26,7 +26,7 @@ static int route(void)
 
 double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy)
 {
-    switch (route()) {
+    switch (cfpo_dens_route()) {
         case 2: return cfpo_dens_value_avx512(yx, yy, yr, k, rc, cx, cy);
         case 1: return cfpo_dens_value_avx2(yx, yy, yr, k, rc, cx, cy);
         default: return cfpo_dens_value_plain(yx, yy, yr, k, rc, cx, cy);
@@ -61,7 +61,7 @@ int cfpo_dens_solve_from(const double *yx, const double *yy, const double *yr, i
     }
     double *w = scratch + 4 * ((size_t)k + 8); /* rho_j^(1/4), once */
     for (int j = 0; j < k; j++) w[j] = sqrt(yr[j]);
-    switch (route()) {
+    switch (cfpo_dens_route()) {
         case 2: return cfpo_dens_solve_avx512(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, best, cx, cy, f, scratch);
         case 1: return cfpo_dens_solve_avx2(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, best, cx, cy, f, scratch);
         default: return cfpo_dens_solve_plain(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, best, cx, cy, f, scratch);

@@ -52,6 +52,10 @@ int cfpo_dens_solve_from(const double *yx, const double *yy, const double *yr, i
                          cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                          double *cx, double *cy, double *f, double *scratch);
 
+/* The route the solve runs: 2 AVX-512, 1 AVX2, 0 plain, by what the CPU
+ * has and CFPO_SOLVER allows (LocalCFPO's choice). */
+int cfpo_dens_route(void);
+
 /* f at c (local frame) against the k neighbours. */
 double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy);
 
