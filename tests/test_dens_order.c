@@ -1,7 +1,9 @@
 /* test_dens_order.c - the density solve's neighbours in order
  * (src/density/dens_order.c):
- *  - cfpo_dens_order against a reference (every candidate's place
- *    counted by brute force over (key, index)), the kmax smallest kept;
+ *  - cfpo_dens_order and cfpo_dens_order_fast (its vector route where
+ *    the CPU has it) against a reference (every candidate's place
+ *    counted by brute force over (key, index)), the kmax smallest kept,
+ *    the candidates given in block order or shuffled;
  *  - cfpo_dens_order_block (where the CPU has its route) against the
  *    scalar gather (every j != p with the scalar key below T) and
  *    cfpo_dens_order: the same count, the same keys bit for bit, the same
@@ -42,7 +44,7 @@ int main(void)
     double bx[64], by[64], br[64], ck[65], cj[65];
     double k1[64], k2[64];
     int n1[64], n2[64];
-    int trials = 0, blocks = 0, bad_ref = 0, bad_block = 0, ties = 0, cut = 0;
+    int trials = 0, blocks = 0, bad_ref = 0, bad_fast = 0, bad_block = 0, ties = 0, cut = 0;
     const double qs[3] = {1.0, 0.75, 1.3};
     for (int t = 0; t < 20000; t++) {
         const int m = 1 + (int)(urand() * 64);
@@ -81,6 +83,9 @@ int main(void)
         trials++;
         if (r1 != r2 || memcmp(k1, k2, (size_t)r1 * sizeof *k1) != 0 || memcmp(n1, n2, (size_t)r1 * sizeof *n1) != 0)
             bad_ref++;
+        const int r4 = cfpo_dens_order_fast(ck, cj, cnt, kmax, k2, n2);
+        if (r1 != r4 || memcmp(k1, k2, (size_t)r1 * sizeof *k1) != 0 || memcmp(n1, n2, (size_t)r1 * sizeof *n1) != 0)
+            bad_fast++;
         const int r3 = cfpo_dens_order_block(bx, by, br, m, p, ax, ay, T, kmax, k2, n2);
         if (r3 < 0) continue; /* no AVX-512 route on this CPU */
         blocks++;
@@ -88,6 +93,7 @@ int main(void)
             bad_block++;
     }
     CHECK(bad_ref == 0, "insertion: %d of %d lists differ from the reference", bad_ref, trials);
+    CHECK(bad_fast == 0, "the list's vector route: %d of %d lists differ", bad_fast, trials);
     CHECK(ties > trials, "only %d tied keys in %d lists: ties are not exercised", ties, trials);
     CHECK(cut > trials / 20, "only %d of %d lists cut at kmax", cut, trials);
     CHECK(bad_block == 0, "the block's vector route: %d of %d lists differ", bad_block, blocks);

@@ -108,7 +108,7 @@ static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double 
             }
         }
     }
-    return cfpo_dens_order(ck, cj, cnt, KMAX, key, nj);
+    return cfpo_dens_order_fast(ck, cj, cnt, KMAX, key, nj);
 }
 
 /* Solves the points of cell (cx, cy) one after another; returns the moves

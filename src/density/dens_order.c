@@ -76,6 +76,44 @@ T512 static int order_block512(const double *bx, const double *by, const double 
     return cnt < kmax ? cnt : kmax;
 }
 
+/* The same count over cnt <= 64 candidates given in memory. */
+T512 static int order_list512(const double *ck, const double *cj, int cnt, int kmax, double *key, int *nj)
+{
+    const __m512d INF = _mm512_set1_pd(__builtin_inf());
+    __m512d K[8], J[8];
+    const int ng = (cnt + 7) / 8;
+    for (int g = 0; g < ng; g++) {
+        const int nl = cnt - 8 * g < 8 ? cnt - 8 * g : 8;
+        const __mmask8 in = (__mmask8)((1u << nl) - 1u);
+        K[g] = _mm512_mask_loadu_pd(INF, in, ck + 8 * g); /* +inf past the end: before no candidate */
+        J[g] = _mm512_maskz_loadu_pd(in, cj + 8 * g);
+    }
+    for (int g = 0; g < ng; g++) {
+        const int nl = cnt - 8 * g < 8 ? cnt - 8 * g : 8;
+        for (int l = 0; l < nl; l++) {
+            const __m512i sel = _mm512_set1_epi64(l);
+            const __m512d k = _mm512_permutexvar_pd(sel, K[g]), j = _mm512_permutexvar_pd(sel, J[g]);
+            int r = 0;
+            for (int h = 0; h < ng; h++) {
+                const __mmask8 lt = _mm512_cmp_pd_mask(K[h], k, _CMP_LT_OQ);
+                const __mmask8 tie = _mm512_cmp_pd_mask(K[h], k, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(J[h], j, _CMP_LT_OQ);
+                r += __builtin_popcount((unsigned)(lt | tie));
+            }
+            if (r < kmax) {
+                key[r] = _mm512_cvtsd_f64(k);
+                nj[r] = (int)_mm512_cvtsd_f64(j);
+            }
+        }
+    }
+    return cnt < kmax ? cnt : kmax;
+}
+
+int cfpo_dens_order_fast(const double *ck, const double *cj, int cnt, int kmax, double *key, int *nj)
+{
+    if (cnt > 64 || cfpo_dens_route() != 2) return cfpo_dens_order(ck, cj, cnt, kmax, key, nj);
+    return order_list512(ck, cj, cnt, kmax, key, nj);
+}
+
 int cfpo_dens_order_block(const double *bx, const double *by, const double *br, int m, int p, double ax, double ay,
                           double T, int kmax, double *key, int *nj)
 {
@@ -84,6 +122,11 @@ int cfpo_dens_order_block(const double *bx, const double *by, const double *br, 
 }
 
 #else
+
+int cfpo_dens_order_fast(const double *ck, const double *cj, int cnt, int kmax, double *key, int *nj)
+{
+    return cfpo_dens_order(ck, cj, cnt, kmax, key, nj);
+}
 
 int cfpo_dens_order_block(const double *bx, const double *by, const double *br, int m, int p, double ax, double ay,
                           double T, int kmax, double *key, int *nj)

@@ -4,11 +4,12 @@
  * smallest kept; the solve reads them nearest first (dens_cell.c gathers
  * them). The order is total, so the list depends on the block alone, not
  * on how it is found: by insertion (each place found by branches that
- * random keys mispredict: a tenth of a flat density's iteration,
- * natively), or, for a block of one bucket clear of the torus's wrap on a
- * CPU with the AVX-512 route (dens_solve.h's choice), with no branch on
- * the keys: the keys of eight points at a time, by the scalar loop's
- * operations, and each one's place counted in 8-lane compares.
+ * random keys mispredict: a tenth of a flat density's iteration and of
+ * cos a=0.9's, natively), or, on a CPU with the AVX-512 route
+ * (dens_solve.h's choice), with no branch on the keys: each candidate's
+ * place counted in 8-lane compares against all of them (up to 64), and
+ * for a block of one bucket clear of the torus's wrap the keys too
+ * computed eight points at a time, by the scalar loop's operations.
  * Owns: that order. May include dens_solve.h. */
 #ifndef CFPO_DENS_ORDER_H
 #define CFPO_DENS_ORDER_H
@@ -17,6 +18,10 @@
  * distinct) in order by (key, index) into key and nj, the first kmax of
  * them (kmax > 0). Returns how many were placed, min(cnt, kmax). */
 int cfpo_dens_order(const double *ck, const double *cj, int cnt, int kmax, double *key, int *nj);
+
+/* The same list, by counting in 8-lane compares where the CPU has the
+ * AVX-512 route and cnt <= 64 (else cfpo_dens_order). */
+int cfpo_dens_order_fast(const double *ck, const double *cj, int cnt, int kmax, double *key, int *nj);
 
 /* The same list for the m points (bx, by, br: block frame, q) of a block
  * that wraps nowhere, the candidates being every j != p with key
