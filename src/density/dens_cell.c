@@ -7,6 +7,7 @@
 
 #include "dens_impl.h"
 #include "dens_order.h"
+#include "dens_scan.h"
 #include "dens_solve.h"
 #include "policy.h"
 #include "geom.h"
@@ -24,6 +25,7 @@ typedef struct {
     int wrap;          /* the block spans the torus: differences wrap */
     double qlo, h;     /* the block's smallest q; a bucket's side */
     double lo, L;      /* sqrt(rho_min); the cell side */
+    int n;             /* the block's points */
 } scan_limits;
 
 /* Whether (px, py) (block frame) may take point p: f there (q = rc) is
@@ -45,7 +47,15 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
     const int *ring = b->ring; /* written by cfpo_dens_ring each ring */
     const int wrap = m->wrap;
     *viol = -1;
-    for (int k = 0;; k++) {
+    /* a block of one bucket clear of the wrap: its points eight at a
+     * time where the CPU has the AVX-512 route (dens_scan.h; the same
+     * first point as the bucket's list in order) */
+    const int fast = bk->B == 1 && !wrap ? cfpo_dens_scan_block(bx, by, br, m->n, p, px, py, rc, thr) : -2;
+    if (fast >= 0) {
+        *viol = fast;
+        return 0;
+    }
+    for (int k = 0; fast == -2; k++) {
         if (k > 1 && m->qlo > 0) {
             const double e = (double)(k - 1) * m->h;
             if (e * e * m->qlo * rc > thr * BOUND_SAFE) break;
@@ -183,7 +193,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
      * spots a point should reach */
     const int cells0 = qbl <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT ? CFPO_POLICY_DENSITY_NEAR_CELLS : DENS_CELLS;
     const double h = bk->h, gain = E->o.tol * E->D;
-    const scan_limits lim = {wrap, qlo, h, lo, L};
+    const scan_limits lim = {wrap, qlo, h, lo, L, m};
     int64_t moves = 0;
     for (int p = c0; p < c1; p++) {
         const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
