@@ -26,6 +26,7 @@ typedef struct {
     double qlo, h;     /* the block's smallest q; a bucket's side */
     double lo, L;      /* sqrt(rho_min); the cell side */
     int n;             /* the block's points */
+    int vec;           /* one bucket clear of the wrap, the AVX-512 route: dens_scan.h */
 } scan_limits;
 
 /* Whether (px, py) (block frame) may take point p: f there (q = rc) is
@@ -50,7 +51,7 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
     /* a block of one bucket clear of the wrap: its points eight at a
      * time where the CPU has the AVX-512 route (dens_scan.h; the same
      * first point as the bucket's list in order) */
-    const int fast = bk->B == 1 && !wrap ? cfpo_dens_scan_block(bx, by, br, m->n, p, px, py, rc, thr) : -2;
+    const int fast = m->vec ? cfpo_dens_scan_block(bx, by, br, m->n, p, px, py, rc, thr) : -2;
     if (fast >= 0) {
         *viol = fast;
         return 0;
@@ -193,7 +194,11 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
      * spots a point should reach */
     const int cells0 = qbl <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT ? CFPO_POLICY_DENSITY_NEAR_CELLS : DENS_CELLS;
     const double h = bk->h, gain = E->o.tol * E->D;
-    const scan_limits lim = {wrap, qlo, h, lo, L, m};
+    /* a block of one bucket clear of the wrap on the AVX-512 route: its
+     * neighbours and accept checks eight points at a time (dens_order.h,
+     * dens_scan.h) */
+    const int vec = bk->B == 1 && !wrap && cfpo_dens_route() == 2;
+    const scan_limits lim = {wrap, qlo, h, lo, L, m, vec};
     int64_t moves = 0;
     for (int p = c0; p < c1; p++) {
         const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
@@ -219,7 +224,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         cfpo_dens_span(bk, ax - R, ax + R, bk->x0, &fx, &nx_);
         cfpo_dens_span(bk, ay - R, ay + R, bk->y0, &fy, &ny_);
-        kk = bk->B == 1 && !wrap ? cfpo_dens_order_block(b->bx, b->by, b->br, m, p, ax, ay, T, KMAX, b->scratch, b->nj) : -1;
+        kk = vec ? cfpo_dens_order_block(b->bx, b->by, b->br, m, p, ax, ay, T, KMAX, b->scratch, b->nj) : -1;
         if (kk < 0) kk = nearest_in_reach(b, bk, p, ax, ay, T, wrap, fx, nx_, fy, ny_);
         for (int t = 0; t < kk; t++) { /* their places, as the scan computed them */
             const int j = b->nj[t];
