@@ -18,7 +18,10 @@
  *    the AVX-512 route and the AVX2 route (where the CPU has them) give the
  *    same bits (and so does f at the spot found), with
  *    the density's global bound of q and with the tight bound of the box
- *    (dens_qbound.h), at several floors, searching 10 polygons or 2. */
+ *    (dens_qbound.h), at several floors, searching 10 polygons or 2; and
+ *    the search resumed after polygon `from` (cfpo_dens_solve_from, as the
+ *    engine goes on from the near solve's polygons) gives the bits of the
+ *    search in one. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -169,6 +172,43 @@ static void near_trials(int count)
     cfpo_density_free(&d);
 }
 
+/* Route r (0 plain, 1 AVX-512, 2 AVX2) over polygons i0 .. m - 1. */
+static int route_solve(int r, const double *yx, const double *yy, const double *yr, const double *w, int k, int i0, int m,
+                       int found0, cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy,
+                       double floor_f, double *cx, double *cy, double *f, double *scratch)
+{
+    return r == 1 ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch)
+         : r == 2 ? cfpo_dens_solve_avx2(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch)
+                  : cfpo_dens_solve_plain(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+}
+
+/* The search in two parts, as the engine resumes it (the near solve's
+ * polygons, then the rest: cfpo_dens_solve_from), against the search in
+ * one: the same return and bits, on route r; the split after polygon
+ * `from`. Returns 1 when they differ. */
+static int split_differs(int r, const double *yx, const double *yy, const double *yr, const double *w, int k, int from,
+                         int m, cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
+                         int got, double cx, double cy, double f, double *scratch)
+{
+    double sx = 0.5 * (S.x0 + S.x1), sy = 0.5 * (S.y0 + S.y1), sf;
+    const int first = route_solve(r, yx, yy, yr, w, k, 0, from, 0, S, d, qhi, ox, oy, floor_f, &sx, &sy, &sf, scratch);
+    const int two = route_solve(r, yx, yy, yr, w, k, from, m, first, S, d, qhi, ox, oy, first ? sf : floor_f, &sx, &sy,
+                                &sf, scratch);
+    return two != got || (got && (sx != cx || sy != cy || sf != f));
+}
+
+/* The same through the public entry, on the CPU's route. */
+static int split_public_differs(const double *yx, const double *yy, const double *yr, int k, int from, int cells,
+                                cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
+                                double *scratch)
+{
+    double cx, cy, f, sx, sy, sf;
+    const int got = cfpo_dens_solve(yx, yy, yr, k, cells, S, d, qhi, ox, oy, floor_f, &cx, &cy, &f, scratch);
+    (void)cfpo_dens_solve(yx, yy, yr, k, from, S, d, qhi, ox, oy, floor_f, &sx, &sy, &sf, scratch);
+    const int two = cfpo_dens_solve_from(yx, yy, yr, k, from, cells, S, d, qhi, ox, oy, floor_f, &sx, &sy, &sf, scratch);
+    return two != got || (got && (sx != cx || sy != cy || sf != f));
+}
+
 /* The routes and the bounds against each other (see the header). */
 static void routes(const char *spec, int count)
 {
@@ -180,7 +220,7 @@ static void routes(const char *spec, int count)
     const int simd = cfpo_solver_avx512_usable(), avx2 = cfpo_solver_avx2_usable();
     unsigned long long seed = 777;
     double yx[40], yy[40], yr[40], w[40], dd[40], scratch[8 * 48 + 16];
-    int differ = 0, tight = 0, n = 0;
+    int differ = 0, tight = 0, n = 0, split_differs_n = 0, split_found = 0, split_n = 0, public_differs = 0;
     for (int t = 0; t < count; t++) {
         const double ox = urand(&seed), oy = urand(&seed), s = 0.01 + 0.04 * urand(&seed);
         const int k = 1 + (int)(urand(&seed) * 40);
@@ -201,9 +241,13 @@ static void routes(const char *spec, int count)
                 for (int r = 0; r < 3; r++) {
                     if ((r == 1 && !simd) || (r == 2 && !avx2)) continue;
                     double cx = 0.5 * (S.x0 + S.x1), cy = 0.5 * (S.y0 + S.y1), f;
-                    const int got = r == 1 ? cfpo_dens_solve_avx512(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
-                                  : r == 2 ? cfpo_dens_solve_avx2(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch)
-                                           : cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch);
+                    const int got = route_solve(r, yx, yy, yr, w, k, 0, m, 0, S, &d, qhi[b], ox, oy, floor_f, &cx, &cy, &f, scratch);
+                    if (m > 1) { /* resumed after polygon `from` */
+                        const int from = 1 + (int)((unsigned)t % (unsigned)(m - 1));
+                        split_differs_n += split_differs(r, yx, yy, yr, w, k, from, m, S, &d, qhi[b], ox, oy, floor_f, got, cx, cy, f, scratch);
+                        split_found += got && f != floor_f;
+                        split_n++;
+                    }
                     { /* f at the spot found, by the same route */
                         const double q = cfpo_dens_local_q(&d, ox, oy, cx, cy), f0 = cfpo_dens_value_plain(yx, yy, yr, k, q, cx, cy);
                         const double fr = r == 1 ? cfpo_dens_value_avx512(yx, yy, yr, k, q, cx, cy)
@@ -218,10 +262,15 @@ static void routes(const char *spec, int count)
                     }
                 }
             n++;
+            public_differs += split_public_differs(yx, yy, yr, k, 2, DENS_CELLS, S, &d, qhi[1], ox, oy, floor_f, scratch);
             floor_f = ref ? ref_f * (q == 0 ? 0.5 : 1 - 1e-9) : -1;
         }
     }
     CHECK(differ == 0, "%s: %d of %d solves differ between the routes or the bounds of q", spec, differ, n);
+    CHECK(split_differs_n == 0, "%s: %d of %d searches resumed after a polygon differ from the search in one", spec,
+          split_differs_n, split_n);
+    CHECK(split_found > split_n / 4, "%s: only %d of %d split searches found a vertex", spec, split_found, split_n);
+    CHECK(public_differs == 0, "%s: %d of %d searches resumed by cfpo_dens_solve_from differ", spec, public_differs, n);
     CHECK(tight > count / 2, "%s: the box's bound of q is below the global one in only %d of %d boxes", spec, tight, count);
     printf("%s: %d solves by the plain route%s%s, same bits with both bounds of q\n", spec, n, simd ? ", the AVX-512 route" : "",
            avx2 ? ", the AVX2 route" : "");

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 
 #include "dens_impl.h"
+#include "dens_order.h"
+#include "dens_scan.h"
 #include "dens_solve.h"
 #include "policy.h"
 #include "geom.h"
@@ -23,6 +25,8 @@ typedef struct {
     int wrap;          /* the block spans the torus: differences wrap */
     double qlo, h;     /* the block's smallest q; a bucket's side */
     double lo, L;      /* sqrt(rho_min); the cell side */
+    int n;             /* the block's points */
+    int vec;           /* one bucket clear of the wrap, the AVX-512 route: dens_scan.h */
 } scan_limits;
 
 /* Whether (px, py) (block frame) may take point p: f there (q = rc) is
@@ -44,7 +48,15 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
     const int *ring = b->ring; /* written by cfpo_dens_ring each ring */
     const int wrap = m->wrap;
     *viol = -1;
-    for (int k = 0;; k++) {
+    /* a block of one bucket clear of the wrap: its points eight at a
+     * time where the CPU has the AVX-512 route (dens_scan.h; the same
+     * first point as the bucket's list in order) */
+    const int fast = m->vec ? cfpo_dens_scan_block(bx, by, br, m->n, p, px, py, rc, thr) : -2;
+    if (fast >= 0) {
+        *viol = fast;
+        return 0;
+    }
+    for (int k = 0; fast == -2; k++) {
         if (k > 1 && m->qlo > 0) {
             const double e = (double)(k - 1) * m->h;
             if (e * e * m->qlo * rc > thr * BOUND_SAFE) break;
@@ -77,11 +89,9 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
  * d^2 q_j < T, by (d^2 q_j, j): the KMAX smallest, in order, into
  * b->scratch (keys) and b->nj. Returns their count. They are gathered
  * first (b->ck, b->cj: room for the whole block), with no branch on
- * whether each is in reach, and then placed by insertion. The list
- * depends on the set alone. Until 2026-11-29 a list of up to 64 was
- * placed by counting each one's place, with no branches: the same list,
- * 1.9e3 more instructions a solve where the CPU lacks wide vectors, and
- * no faster where it has them (docs/results/2026-11-29-density11.md). */
+ * whether each is in reach, and then placed in order (dens_order.h:
+ * by insertion, or by counting each one's place in 8-lane compares where
+ * the CPU has the AVX-512 route). The list depends on the set alone. */
 static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double ax, double ay, double T, int wrap,
                             int fx, int nx_, int fy, int ny_)
 {
@@ -109,21 +119,7 @@ static int nearest_in_reach(tbuf *b, const cfpo_dens_buckets *bk, int p, double 
             }
         }
     }
-    int kk = 0;
-    for (int i = 0; i < cnt; i++) {
-        const double d2 = ck[i];
-        const int j = (int)cj[i];
-        if (kk == KMAX && (d2 > key[KMAX - 1] || (d2 == key[KMAX - 1] && j > nj[KMAX - 1]))) continue;
-        int t = kk < KMAX ? kk++ : KMAX - 1;
-        while (t > 0 && (key[t - 1] > d2 || (key[t - 1] == d2 && nj[t - 1] > j))) {
-            key[t] = key[t - 1];
-            nj[t] = nj[t - 1];
-            t--;
-        }
-        key[t] = d2;
-        nj[t] = j;
-    }
-    return kk;
+    return cfpo_dens_order_fast(ck, cj, cnt, KMAX, key, nj);
 }
 
 /* Solves the points of cell (cx, cy) one after another; returns the moves
@@ -134,6 +130,9 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     const double L = E->L, ox = (double)cx * L + E->sx, oy = (double)cy * L + E->sy;
     const int wrap = g < 6; /* the block spans the torus: differences wrap */
     int m = 0, c0 = 0, c1 = 0;
+    /* the pixels every spot evaluated here lies on (each box S is clipped
+     * to the cell), asked for before the block's gather and ranking */
+    cfpo_density_prefetch_box(E->d, cfpo_wrap01(ox), cfpo_wrap01(oy), L);
     if (!wrap && cx >= 1 && cx <= g - 3 && cy >= 1 && cy <= g - 3) {
         /* a block clear of the grid's seam (cells 1..g-2, none wrapped;
          * cell g-1 straddles x = 1 + sx): each row's three cells are one
@@ -195,7 +194,11 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
      * spots a point should reach */
     const int cells0 = qbl <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT ? CFPO_POLICY_DENSITY_NEAR_CELLS : DENS_CELLS;
     const double h = bk->h, gain = E->o.tol * E->D;
-    const scan_limits lim = {wrap, qlo, h, lo, L};
+    /* a block of one bucket clear of the wrap on the AVX-512 route: its
+     * neighbours and accept checks eight points at a time (dens_order.h,
+     * dens_scan.h) */
+    const int vec = bk->B == 1 && !wrap && cfpo_dens_route() == 2;
+    const scan_limits lim = {wrap, qlo, h, lo, L, m, vec};
     int64_t moves = 0;
     for (int p = c0; p < c1; p++) {
         const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
@@ -221,7 +224,8 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         cfpo_dens_span(bk, ax - R, ax + R, bk->x0, &fx, &nx_);
         cfpo_dens_span(bk, ay - R, ay + R, bk->y0, &fy, &ny_);
-        kk = nearest_in_reach(b, bk, p, ax, ay, T, wrap, fx, nx_, fy, ny_);
+        kk = vec ? cfpo_dens_order_block(b->bx, b->by, b->br, m, p, ax, ay, T, KMAX, b->scratch, b->nj) : -1;
+        if (kk < 0) kk = nearest_in_reach(b, bk, p, ax, ay, T, wrap, fx, nx_, fy, ny_);
         for (int t = 0; t < kk; t++) { /* their places, as the scan computed them */
             const int j = b->nj[t];
             double ex = b->bx[j] - ax, ey = b->by[j] - ay;
@@ -259,11 +263,15 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (S.x1 > hi) S.x1 = hi;
         if (S.y1 > hi) S.y1 = hi;
         double cxp, cyp, fc;
-        int cells = cells0; /* the near solve's polygons first; all of them when those give no move */
+        /* the near solve's polygons first; all of them when those give no
+         * move, the search going on from the polygons it has done (`from`:
+         * the same vertex as searching them all again) */
+        int cells = cells0, from = 0;
         const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
     solve:
-        if (!cfpo_dens_solve(b->nx, b->ny, b->nr, kk, cells, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc, b->scratch + KMAX)) {
-            if (cells < DENS_CELLS) { cells = DENS_CELLS; goto solve; }
+        if (!cfpo_dens_solve_from(b->nx, b->ny, b->nr, kk, from, cells, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc,
+                                  b->scratch + KMAX)) {
+            if (cells < DENS_CELLS) { from = cells; cells = DENS_CELLS; goto solve; }
             continue;
         }
         /* a move must gain more than tol local spacings in the measure
@@ -289,7 +297,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         if (cc < 0) {
             if (!(sqrt(fc) > sqrt(oldf) + gain && fc > thr)) {
-                if (cells < DENS_CELLS) { cells = DENS_CELLS; goto solve; }
+                if (cells < DENS_CELLS) { from = cells; cells = DENS_CELLS; goto solve; }
                 continue;
             }
             rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);
@@ -307,6 +315,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
                 if (wrap) { ex -= rint(ex); ey -= rint(ey); }
                 b->nx[kk] = ax + ex; b->ny[kk] = ay + ey; b->nr[kk] = b->br[viol];
                 b->nj[kk++] = viol;
+                from = 0; /* another neighbour: every polygon again */
                 goto solve;
             }
         }

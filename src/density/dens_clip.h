@@ -158,15 +158,17 @@ static inline double dens_corners(cfpo_square S, double ax, double ay, double c[
 /* The plain, AVX-512 and AVX2 routes (call the AVX-512 one only where
  * cfpo_solver_avx512_usable() says 1, the AVX2 one where
  * cfpo_solver_avx2_usable() does): cfpo_dens_solve's arguments, k > 0,
- * w[j] = sqrt(yr[j]) given, the polygons of the first m <= k neighbours; scratch holds 8 (k + 8) doubles, w among them
- * at 4 (k + 8). */
-int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
+ * w[j] = sqrt(yr[j]) given, the polygons i0 .. m - 1 (m <= k); found0 says
+ * that polygons before i0 gave the best vertex so far, floor_f its value
+ * and (*cx, *cy) its place (cfpo_dens_solve_from); scratch holds 8 (k + 8)
+ * doubles, w among them at 4 (k + 8). */
+int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k, int i0, int m, int found0,
                           cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                           double *cx, double *cy, double *f, double *scratch);
-int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
+int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int i0, int m, int found0,
                            cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                            double *cx, double *cy, double *f, double *scratch);
-int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
+int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *yr, const double *w, int k, int i0, int m, int found0,
                          cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                          double *cx, double *cy, double *f, double *scratch);
 

@@ -76,45 +76,76 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
         const double fx = x * (double)g - (double)cx, fy = y * (double)g - (double)cy;
         double best = INFINITY; /* d^2 q_j, the smallest so far */
         double ql = lo, qlbest = INFINITY; /* ql bounds q over the box of the reach of qlbest */
-        for (int64_t k = 0;; k++) {
+        /* rings 0 and 1 at once where they wrap no index: three runs of
+         * slots (rows cy - 1 .. cy + 1, cells cx - 1 .. cx + 1), every
+         * point's value as the ring scan computes it (no wrap of the
+         * differences, as there), with no test per cell; the minimum is
+         * the same, and the scan goes on from ring 2 only when the tests
+         * after ring 1 cannot stop it */
+        const int64_t k0 = g >= 5 && cx >= 1 && cx + 1 < g && cy >= 1 && cy + 1 < g;
+        if (k0) {
+            double b0 = INFINITY, b1 = INFINITY;
+            for (int64_t dy = -1; dy <= 1; dy++) {
+                const size_t *row = start + (cy + dy) * g;
+                const size_t s1 = row[cx + 2];
+                size_t s = row[cx - 1];
+                for (; s + 1 < s1; s += 2) { /* two running minima, as the ring scan keeps */
+                    const double ex0 = pt[3 * s] - x, ey0 = pt[3 * s + 1] - y;
+                    const double ex1 = pt[3 * s + 3] - x, ey1 = pt[3 * s + 4] - y;
+                    const double v0 = (ex0 * ex0 + ey0 * ey0) * pt[3 * s + 2];
+                    const double v1 = (ex1 * ex1 + ey1 * ey1) * pt[3 * s + 5];
+                    b0 = s == si ? b0 : v0 < b0 ? v0 : b0;
+                    b1 = s + 1 == si ? b1 : v1 < b1 ? v1 : b1;
+                }
+                if (s < s1) {
+                    const double ex = pt[3 * s] - x, ey = pt[3 * s + 1] - y;
+                    const double v = (ex * ex + ey * ey) * pt[3 * s + 2];
+                    b0 = s == si ? b0 : v < b0 ? v : b0;
+                }
+            }
+            best = b0 < b1 ? b0 : b1;
+        }
+        for (int64_t k = k0;; k++) {
             const int all = 2 * k + 1 >= g;
             const int64_t kk = all ? (g - 1) / 2 : k, kx0 = all ? -kk : -k, kx1 = all ? g - 1 - kk : k;
             /* two running minima (cells of even and odd dx), so that the
              * compares of one cell need not wait for the last cell's; the
              * minimum is the same */
             double b0 = best, b1 = best;
-            /* rings that wrap no cell index: every point seen is within
-             * (k + 1) L < 0.5 of (x, y) along each axis, so wrapd would
-             * subtract rint = 0 (the same bits) */
-            const int wr = all || 2 * (k + 1) >= g || cx < k || cx + k >= g || cy < k || cy + k >= g;
-            for (int64_t dy = kx0; dy <= kx1; dy++) {
-                /* cy + dy lies in (-g, 2g): one wrap, no division */
-                int64_t yy = cy + dy;
-                yy = yy < 0 ? yy + g : yy >= g ? yy - g : yy;
-                const size_t *row = start + yy * g;
-                for (int64_t dx = kx0; dx <= kx1; dx++) {
-                    if (!all && k > 0 && dx > -k && dx < k && dy > -k && dy < k) { dx = k - 1; continue; } /* inner rings done */
-                    if (all && k > 0) {
-                        /* cells seen in rings below k are skipped */
-                        const int64_t ring = llabs(dx) > llabs(dy) ? llabs(dx) : llabs(dy);
-                        if (ring < k) continue;
+            if (!(k0 && k == 1)) { /* rings 0 and 1 were scanned above */
+                /* rings that wrap no cell index: every point seen is within
+                 * (k + 1) L < 0.5 of (x, y) along each axis, so wrapd would
+                 * subtract rint = 0 (the same bits) */
+                const int wr = all || 2 * (k + 1) >= g || cx < k || cx + k >= g || cy < k || cy + k >= g;
+                for (int64_t dy = kx0; dy <= kx1; dy++) {
+                    /* cy + dy lies in (-g, 2g): one wrap, no division */
+                    int64_t yy = cy + dy;
+                    yy = yy < 0 ? yy + g : yy >= g ? yy - g : yy;
+                    const size_t *row = start + yy * g;
+                    for (int64_t dx = kx0; dx <= kx1; dx++) {
+                        if (!all && k > 0 && dx > -k && dx < k && dy > -k && dy < k) { dx = k - 1; continue; } /* inner rings done */
+                        if (all && k > 0) {
+                            /* cells seen in rings below k are skipped */
+                            const int64_t ring = llabs(dx) > llabs(dy) ? llabs(dx) : llabs(dy);
+                            if (ring < k) continue;
+                        }
+                        if (k == 1 && !all) { /* the box's distance, in cells, rounded down a little */
+                            const double ex = dx > 0 ? 1 - fx : dx < 0 ? fx : 0, ey = dy > 0 ? 1 - fy : dy < 0 ? fy : 0;
+                            const double e = (ex * ex + ey * ey) * L * L * (1 - 1e-9);
+                            if (e * ql > (b0 < b1 ? b0 : b1) * (1 + 1e-9)) continue;
+                        }
+                        int64_t xx = cx + dx;
+                        xx = xx < 0 ? xx + g : xx >= g ? xx - g : xx;
+                        double bb = INFINITY;
+                        for (size_t s = row[xx]; s < row[xx + 1]; s++) {
+                            double ex = pt[3 * s] - x, ey = pt[3 * s + 1] - y;
+                            if (wr) { ex = wrapd(ex); ey = wrapd(ey); }
+                            const double v = (ex * ex + ey * ey) * pt[3 * s + 2];
+                            bb = s == si ? bb : v < bb ? v : bb;
+                        }
+                        if (dx & 1) b1 = bb < b1 ? bb : b1;
+                        else b0 = bb < b0 ? bb : b0;
                     }
-                    if (k == 1 && !all) { /* the box's distance, in cells, rounded down a little */
-                        const double ex = dx > 0 ? 1 - fx : dx < 0 ? fx : 0, ey = dy > 0 ? 1 - fy : dy < 0 ? fy : 0;
-                        const double e = (ex * ex + ey * ey) * L * L * (1 - 1e-9);
-                        if (e * ql > (b0 < b1 ? b0 : b1) * (1 + 1e-9)) continue;
-                    }
-                    int64_t xx = cx + dx;
-                    xx = xx < 0 ? xx + g : xx >= g ? xx - g : xx;
-                    double bb = INFINITY;
-                    for (size_t s = row[xx]; s < row[xx + 1]; s++) {
-                        double ex = pt[3 * s] - x, ey = pt[3 * s + 1] - y;
-                        if (wr) { ex = wrapd(ex); ey = wrapd(ey); }
-                        const double v = (ex * ex + ey * ey) * pt[3 * s + 2];
-                        bb = s == si ? bb : v < bb ? v : bb;
-                    }
-                    if (dx & 1) b1 = bb < b1 ? bb : b1;
-                    else b0 = bb < b0 ? bb : b0;
                 }
             }
             best = b0 < b1 ? b0 : b1;

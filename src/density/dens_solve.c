@@ -12,7 +12,7 @@
 
 /* The route that runs: 2 AVX-512, 1 AVX2, 0 plain, by what the CPU has
  * and CFPO_SOLVER allows (the same choice as LocalCFPO's, geom.c). */
-static int route(void)
+int cfpo_dens_route(void)
 {
     static int use = -1;
     int u = __atomic_load_n(&use, __ATOMIC_RELAXED);
@@ -26,7 +26,7 @@ static int route(void)
 
 double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy)
 {
-    switch (route()) {
+    switch (cfpo_dens_route()) {
         case 2: return cfpo_dens_value_avx512(yx, yy, yr, k, rc, cx, cy);
         case 1: return cfpo_dens_value_avx2(yx, yy, yr, k, rc, cx, cy);
         default: return cfpo_dens_value_plain(yx, yy, yr, k, rc, cx, cy);
@@ -37,8 +37,23 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
                     const cfpo_density *d, double qhi, double ox, double oy, double floor_f, double *cx, double *cy,
                     double *f, double *scratch)
 {
-    *cx = 0.5 * (S.x0 + S.x1);
-    *cy = 0.5 * (S.y0 + S.y1);
+    return cfpo_dens_solve_from(yx, yy, yr, k, 0, cells, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+}
+
+int cfpo_dens_solve_from(const double *yx, const double *yy, const double *yr, int k, int from, int cells,
+                         cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
+                         double *cx, double *cy, double *f, double *scratch)
+{
+    const int m = cells < k ? cells : k;
+    int i0 = from < m ? from : m, found0 = 0;
+    double best = floor_f;
+    if (i0 > 0 && *f > floor_f) { /* the polygons before `from` gave (*cx, *cy) */
+        best = *f;
+        found0 = 1;
+    } else {
+        *cx = 0.5 * (S.x0 + S.x1);
+        *cy = 0.5 * (S.y0 + S.y1);
+    }
     if (k == 0) { /* nothing to keep away from: the box's centre */
         const double rc = cfpo_dens_local_q(d, ox, oy, *cx, *cy);
         *f = rc > 0 ? INFINITY : -1;
@@ -46,10 +61,9 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
     }
     double *w = scratch + 4 * ((size_t)k + 8); /* rho_j^(1/4), once */
     for (int j = 0; j < k; j++) w[j] = sqrt(yr[j]);
-    const int m = cells < k ? cells : k;
-    switch (route()) {
-        case 2: return cfpo_dens_solve_avx512(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
-        case 1: return cfpo_dens_solve_avx2(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
-        default: return cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+    switch (cfpo_dens_route()) {
+        case 2: return cfpo_dens_solve_avx512(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, best, cx, cy, f, scratch);
+        case 1: return cfpo_dens_solve_avx2(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, best, cx, cy, f, scratch);
+        default: return cfpo_dens_solve_plain(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, best, cx, cy, f, scratch);
     }
 }

@@ -42,6 +42,20 @@ int cfpo_dens_solve(const double *yx, const double *yy, const double *yr, int k,
                     const cfpo_density *d, double qhi, double ox, double oy, double floor_f, double *cx, double *cy,
                     double *f, double *scratch);
 
+/* The same search resumed: the polygons from `from` on (up to min(cells,
+ * k)), after a call with the same neighbours, S, qhi and floor_f that
+ * searched those before it (cells = from) and left *cx, *cy, *f. Returns
+ * what cfpo_dens_solve with `cells` returns, bit for bit: that search
+ * carries nothing from one polygon to the next but the best vertex so far
+ * (the earlier call's result when it returned 1, else floor_f). */
+int cfpo_dens_solve_from(const double *yx, const double *yy, const double *yr, int k, int from, int cells,
+                         cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
+                         double *cx, double *cy, double *f, double *scratch);
+
+/* The route the solve runs: 2 AVX-512, 1 AVX2, 0 plain, by what the CPU
+ * has and CFPO_SOLVER allows (LocalCFPO's choice). */
+int cfpo_dens_route(void);
+
 /* f at c (local frame) against the k neighbours. */
 double cfpo_dens_value(const double *yx, const double *yy, const double *yr, int k, double rc, double cx, double cy);
 

@@ -59,7 +59,7 @@ static inline void interleave(const double *x, const double *y, int nv, double *
     }
 }
 
-TGT int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
+TGT int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *yr, const double *w, int k, int i0, int m, int found0,
                              cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                              double *cx, double *cy, double *f, double *scratch)
 {
@@ -67,8 +67,8 @@ TGT int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *y
     double *bufa = scratch, *bufb = bufa + 2 * (size_t)vmax, *tl = bufb + 3 * (size_t)vmax, *hl = tl + vmax;
     double best = floor_f, sxa[SMALL], sya[SMALL], sxb[SMALL], syb[SMALL];
     for (int v = 0; v < 8; v++) sxa[v] = sya[v] = sxb[v] = syb[v] = 0; /* the lanes a cut loads (past nv: masked) */
-    int found = 0;
-    for (int i = 0; i < m; i++) {
+    int found = found0;
+    for (int i = i0; i < m; i++) {
         const double ax = yx[i], ay = yy[i], wi = w[i];
         double corner[4][2];
         double far2 = dens_corners(S, ax, ay, corner);
@@ -126,11 +126,11 @@ double cfpo_dens_value_avx2(const double *yx, const double *yy, const double *yr
     return cfpo_dens_value_plain(yx, yy, yr, k, rc, cx, cy);
 }
 
-int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
+int cfpo_dens_solve_avx2(const double *yx, const double *yy, const double *yr, const double *w, int k, int i0, int m, int found0,
                          cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                          double *cx, double *cy, double *f, double *scratch)
 {
-    return cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+    return cfpo_dens_solve_plain(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
 }
 
 #endif

@@ -42,7 +42,7 @@ T512 double cfpo_dens_value_avx512(const double *yx, const double *yy, const dou
     return geo8(cx, cy, yx, yy, yr, k, 0, INFINITY, 1, -INFINITY) * rc;
 }
 
-T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
+T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int i0, int m, int found0,
                                 cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy,
                                 double floor_f, double *cx, double *cy, double *f, double *scratch)
 {
@@ -51,8 +51,8 @@ T512 int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double
     const __m512d SX = _mm512_set_pd(0, 0, 0, 0, S.x0, S.x1, S.x1, S.x0);
     const __m512d SY = _mm512_set_pd(0, 0, 0, 0, S.y1, S.y1, S.y0, S.y0);
     double best = floor_f, spx[24], spy[24];
-    int found = 0;
-    for (int i = 0; i < m; i++) {
+    int found = found0;
+    for (int i = i0; i < m; i++) {
         const double ax = yx[i], ay = yy[i], wi = w[i];
         double corner[4][2];
         double far2 = dens_corners(S, ax, ay, corner);
@@ -106,11 +106,11 @@ double cfpo_dens_value_avx512(const double *yx, const double *yy, const double *
     return cfpo_dens_value_plain(yx, yy, yr, k, rc, cx, cy);
 }
 
-int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
+int cfpo_dens_solve_avx512(const double *yx, const double *yy, const double *yr, const double *w, int k, int i0, int m, int found0,
                            cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                            double *cx, double *cy, double *f, double *scratch)
 {
-    return cfpo_dens_solve_plain(yx, yy, yr, w, k, m, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
+    return cfpo_dens_solve_plain(yx, yy, yr, w, k, i0, m, found0, S, d, qhi, ox, oy, floor_f, cx, cy, f, scratch);
 }
 
 #endif

@@ -6,7 +6,7 @@
 
 #include "dens_clip.h"
 
-int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k, int m,
+int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, const double *w, int k, int i0, int m, int found0,
                           cfpo_square S, const cfpo_density *d, double qhi, double ox, double oy, double floor_f,
                           double *cx, double *cy, double *f, double *scratch)
 {
@@ -14,8 +14,8 @@ int cfpo_dens_solve_plain(const double *yx, const double *yy, const double *yr, 
     double *bufa = scratch, *bufb = bufa + 2 * (size_t)vmax, *tl = bufb + 3 * (size_t)vmax, *hl = tl + vmax;
     double best = floor_f; /* only a vertex above it counts: polygons and
                               evaluations that cannot beat it stop early */
-    int found = 0;
-    for (int i = 0; i < m; i++) {
+    int found = found0;
+    for (int i = i0; i < m; i++) {
         const double ax = yx[i], ay = yy[i], wi = w[i];
         double corner[4][2];
         double far2 = dens_corners(S, ax, ay, corner);
