@@ -29,6 +29,19 @@ int cfpo_dens_order(const double *ck, const double *cj, int cnt, int kmax, doubl
 
 #define T512 __attribute__((target("avx2,avx512f,avx512dq,bmi,popcnt"))) /* the AVX-512 route's CPU (dens_solve.h) */
 
+/* The place of the candidate (k, j) among the ng groups of eight: the
+ * candidates before it in the order (key, then index). */
+T512 static inline int rank512(const __m512d *K, const __m512d *J, int ng, __m512d k, __m512d j)
+{
+    int r = 0;
+    for (int h = 0; h < ng; h++) {
+        const __mmask8 lt = _mm512_cmp_pd_mask(K[h], k, _CMP_LT_OQ);
+        const __mmask8 tie = _mm512_cmp_pd_mask(K[h], k, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(J[h], j, _CMP_LT_OQ);
+        r += __builtin_popcount((unsigned)(lt | tie));
+    }
+    return r;
+}
+
 /* m <= 64 points in up to eight 8-lane registers: each lane's key (+inf
  * where the point is no candidate: it then counts before no candidate,
  * whose keys are finite), its index as a double; each candidate's place
@@ -61,12 +74,7 @@ T512 static int order_block512(const double *bx, const double *by, const double 
             const int l = __builtin_ctz(c);
             const __m512i sel = _mm512_set1_epi64(l);
             const __m512d k = _mm512_permutexvar_pd(sel, K[g]), j = _mm512_permutexvar_pd(sel, J[g]);
-            int r = 0;
-            for (int h = 0; h < ng; h++) {
-                const __mmask8 lt = _mm512_cmp_pd_mask(K[h], k, _CMP_LT_OQ);
-                const __mmask8 tie = _mm512_cmp_pd_mask(K[h], k, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(J[h], j, _CMP_LT_OQ);
-                r += __builtin_popcount((unsigned)(lt | tie));
-            }
+            const int r = rank512(K, J, ng, k, j);
             if (r < kmax) {
                 key[r] = _mm512_cvtsd_f64(k);
                 nj[r] = 8 * g + l;
@@ -93,12 +101,7 @@ T512 static int order_list512(const double *ck, const double *cj, int cnt, int k
         for (int l = 0; l < nl; l++) {
             const __m512i sel = _mm512_set1_epi64(l);
             const __m512d k = _mm512_permutexvar_pd(sel, K[g]), j = _mm512_permutexvar_pd(sel, J[g]);
-            int r = 0;
-            for (int h = 0; h < ng; h++) {
-                const __mmask8 lt = _mm512_cmp_pd_mask(K[h], k, _CMP_LT_OQ);
-                const __mmask8 tie = _mm512_cmp_pd_mask(K[h], k, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(J[h], j, _CMP_LT_OQ);
-                r += __builtin_popcount((unsigned)(lt | tie));
-            }
+            const int r = rank512(K, J, ng, k, j);
             if (r < kmax) {
                 key[r] = _mm512_cvtsd_f64(k);
                 nj[r] = (int)_mm512_cvtsd_f64(j);
