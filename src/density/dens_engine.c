@@ -10,6 +10,7 @@
 #include "dens_impl.h"
 #include "dens_measure.h"
 #include "dens_solve.h"
+#include "dens_relax.h"
 #include "dens_start.h"
 #include "geom.h"
 #include "omp_compat.h"
@@ -113,7 +114,8 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     E->tb = calloc((size_t)E->nthreads, sizeof *E->tb);
     if (cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cxyq || !E->cstart || !E->dirty || !E->tb ||
         cfpo_dens_qbound_build(&E->qb, d) != 0 || cfpo_dens_qbound_build_min(&E->qlow, d) != 0 ||
-        (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0) : cfpo_dens_start(d, n, o->seed, E->s.xy)) != 0) {
+        (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0)
+               : (cfpo_dens_start(d, n, o->seed, E->s.xy) != 0 ? -1 : cfpo_dens_relax(d, n, E->s.xy, cfpo_dens_relax_steps(n), E->nthreads))) != 0) {
         snprintf(err, errlen, "out of memory for %lld points", (long long)n);
         cfpo_dens_free(E);
         return NULL;
