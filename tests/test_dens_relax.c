@@ -135,7 +135,7 @@ int main(void)
         const double *from = c == 2 ? crowd : s0;
         memcpy(a, from, 2 * N * sizeof *a);
         memcpy(r, from, 2 * N * sizeof *r);
-        CHECK(cfpo_dens_relax(&d, N, a, steps, 2) == 0, "relax %d", steps);
+        CHECK(cfpo_dens_relax(&d, N, a, steps, 2, 0, 1, NULL, NULL) == 0, "relax %d", steps);
         for (int k = 0; k < steps; k++) {
             reference_step(&d, N, r, t);
             memcpy(r, t, 2 * N * sizeof *r);
@@ -150,10 +150,10 @@ int main(void)
     const int steps = cfpo_dens_relax_steps(N);
     CHECK(steps > 0, "steps for %d points: %d", N, steps);
     memcpy(a, s0, 2 * N * sizeof *a);
-    CHECK(cfpo_dens_relax(&d, N, a, steps, 1) == 0, "relax");
+    CHECK(cfpo_dens_relax(&d, N, a, steps, 1, 0, 1, NULL, NULL) == 0, "relax");
     for (int th = 2; th <= 3; th++) {
         memcpy(t, s0, 2 * N * sizeof *t);
-        CHECK(cfpo_dens_relax(&d, N, t, steps, th) == 0, "relax");
+        CHECK(cfpo_dens_relax(&d, N, t, steps, th, 0, 1, NULL, NULL) == 0, "relax");
         CHECK(memcmp(a, t, 2 * N * sizeof *a) == 0, "%d steps: %d threads give other bytes than one", steps, th);
     }
     int64_t off = 0;
@@ -168,7 +168,7 @@ int main(void)
 
     /* too few points for the density: nothing moves */
     memcpy(a, s0, 2 * 16 * sizeof *a);
-    CHECK(cfpo_dens_relax(&d, 16, a, 4, 1) == 0 && memcmp(a, s0, 2 * 16 * sizeof *a) == 0,
+    CHECK(cfpo_dens_relax(&d, 16, a, 4, 1, 0, 1, NULL, NULL) == 0 && memcmp(a, s0, 2 * 16 * sizeof *a) == 0,
           "16 points: the relaxation should leave them");
 
     free(s0); free(a); free(r); free(t);

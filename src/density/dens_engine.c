@@ -89,6 +89,22 @@ int64_t cfpo_dens_grid(const cfpo_density *d, int64_t n)
     return g;
 }
 
+/* The start's relaxation under several ranks (dens_relax.h): every
+ * rank's new places gathered in rank order. */
+static int relax_share(void *ctx, int ok, const double *mine, size_t bytes, double *all)
+{
+    const int64_t n = *(const int64_t *)ctx;
+    if (!comm_all(ok)) return -1;
+    if (!mine) return 0;
+    void *got = NULL;
+    size_t total = 0;
+    if (comm_allgatherv(mine, bytes, &got, &total) != 0) return -1;
+    const int good = total == (size_t)n * 2 * sizeof *all;
+    if (good) memcpy(all, got, total);
+    free(got);
+    return comm_all(good) ? 0 : -1;
+}
+
 cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_options *o, const double *start,
                                    int iter0, char *err, size_t errlen)
 {
@@ -115,7 +131,10 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     if (cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cxyq || !E->cstart || !E->dirty || !E->tb ||
         cfpo_dens_qbound_build(&E->qb, d) != 0 || cfpo_dens_qbound_build_min(&E->qlow, d) != 0 ||
         (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0)
-               : (cfpo_dens_start(d, n, o->seed, E->s.xy) != 0 ? -1 : cfpo_dens_relax(d, n, E->s.xy, cfpo_dens_relax_steps(n), E->nthreads))) != 0) {
+               : (cfpo_dens_start(d, n, o->seed, E->s.xy) != 0
+                      ? -1
+                      : cfpo_dens_relax(d, n, E->s.xy, cfpo_dens_relax_steps(n), E->nthreads, comm_rank(), comm_size(),
+                                        relax_share, &n))) != 0) {
         snprintf(err, errlen, "out of memory for %lld points", (long long)n);
         cfpo_dens_free(E);
         return NULL;

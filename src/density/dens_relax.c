@@ -137,8 +137,10 @@ static double *tile_qmin(const cfpo_density *d, int64_t T)
     return m9;
 }
 
-int cfpo_dens_relax(const cfpo_density *d, int64_t n, double *xy, int steps, int threads)
+int cfpo_dens_relax(const cfpo_density *d, int64_t n, double *xy, int steps, int threads, int part, int parts,
+                    cfpo_dens_relax_share share, void *ctx)
 {
+    if (parts < 1 || part < 0 || part >= parts || (parts > 1 && !share)) return -1;
     if (steps <= 0 || n <= 0 || (uint64_t)n >= UINT32_MAX) return 0;
     bins B;
     B.r0 = RADIUS * cfpo_delta_bound((double)n);
@@ -165,7 +167,9 @@ int cfpo_dens_relax(const cfpo_density *d, int64_t n, double *xy, int steps, int
     B.sy = cfpo_map_bytes(db);
     B.sw = cfpo_map_bytes(db);
     uint32_t *bin = cfpo_map_bytes(ib);
-    int rc = tq && B.off && B.id && B.sx && B.sy && B.sw && bin ? 0 : -1;
+    double *mine = parts > 1 ? cfpo_map_bytes(2 * db) : NULL, *all = parts > 1 ? cfpo_map_bytes(2 * db) : NULL;
+    int rc = tq && B.off && B.id && B.sx && B.sy && B.sw && bin && (parts == 1 || (mine && all)) ? 0 : -1;
+    if (parts > 1 && share(ctx, rc == 0, NULL, 0, NULL) != 0) rc = -1; /* every part ready, or none goes on */
     const int nt = threads > 0 ? threads : 1;
     for (int k = 0; k < steps && rc == 0; k++) {
         memset(B.off, 0, offb);
@@ -180,6 +184,9 @@ int cfpo_dens_relax(const cfpo_density *d, int64_t n, double *xy, int steps, int
         }
         for (int64_t b = nb * nb; b > 0; b--) B.off[b] = B.off[b - 1];
         B.off[0] = 0;
+        /* this part's rows of bins and their points t in [t0, t1) */
+        const int64_t row0 = nb * part / parts, row1 = nb * (part + 1) / parts;
+        const uint32_t t0 = B.off[row0 * nb], t1 = B.off[row1 * nb];
 #pragma omp parallel num_threads(nt)
         {
 #pragma omp for schedule(static, 4096)
@@ -190,17 +197,30 @@ int cfpo_dens_relax(const cfpo_density *d, int64_t n, double *xy, int steps, int
                 B.sw[t] = 1.0 / sqrt(sqrt(cfpo_density_at(d, B.sx[t], B.sy[t])));
             }
             /* every point from the step's old places (the bins' copy),
-             * row by row of bins */
+             * row by row of bins; one part: straight into xy, else into
+             * the part's slice of `mine`, in bin order */
 #pragma omp for schedule(static, 2)
-            for (int64_t row = 0; row < nb; row++)
+            for (int64_t row = row0; row < row1; row++)
                 for (uint32_t t = B.off[row * nb]; t < B.off[(row + 1) * nb]; t++) {
                     const uint32_t i = B.id[t];
-                    move_at(&B, d, B.sx[t], B.sy[t], B.sw[t], &xy[2 * i], &xy[2 * i + 1]);
+                    double *o = parts > 1 ? mine + 2 * (size_t)(t - t0) : xy + 2 * (size_t)i;
+                    move_at(&B, d, B.sx[t], B.sy[t], B.sw[t], &o[0], &o[1]);
                 }
+        }
+        if (parts > 1) { /* every part's places, in bin order: back by id */
+            if (share(ctx, 1, mine, (size_t)(t1 - t0) * 2 * sizeof *mine, all) != 0) {
+                rc = -1;
+                break;
+            }
+            for (int64_t t = 0; t < n; t++) {
+                xy[2 * (size_t)B.id[t]] = all[2 * t];
+                xy[2 * (size_t)B.id[t] + 1] = all[2 * t + 1];
+            }
         }
     }
     cfpo_unmap_bytes(B.off, offb); cfpo_unmap_bytes(B.id, ib); cfpo_unmap_bytes(B.sx, db);
     cfpo_unmap_bytes(B.sy, db); cfpo_unmap_bytes(B.sw, db); cfpo_unmap_bytes(bin, ib);
+    cfpo_unmap_bytes(mine, 2 * db); cfpo_unmap_bytes(all, 2 * db);
     free(tq);
     return rc;
 }
