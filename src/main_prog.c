@@ -107,7 +107,7 @@ int prog_cli_option(prog_cli *pc, const char *prog, int ch, const char *arg)
     case PROG_OPT_LEVEL_BALANCE:
         if (cli_parse_i64(arg, 0, 1000000, &v) != 0)
             cli_usage_error(prog, "--level-balance: '%s' is not a whole number in 0..1e6", arg);
-        pc->p.balance = (int)v;
+        pc->p.balance = v > 0 ? (int)v : -1; /* (0: off, not the default) */
         pc->balance_given = 1;
         return 1;
     case PROG_OPT_LEVEL_BALANCE_ORDER:
@@ -162,8 +162,11 @@ void prog_cli_settle(prog_cli *pc, const char *prog, int64_t n, int variant)
     if (pc->colour_given && pc->p.classes <= 0)
         cli_usage_error(prog, "%s needs --classes K", pc->colour_given & 2 ? "--classes-levels" : "--class-union-floor, --class-reach or --class-swaps");
     if (pc->colour_given == 3) cli_usage_error(prog, "--class-union-floor, --class-reach and --class-swaps do not go with --classes-levels");
-    if (pc->p.balance_order && pc->p.balance <= 0) cli_usage_error(prog, "--level-balance-order needs --level-balance C");
-    if (pc->balance_given && (!pc->on || pc->p.classes > 0)) cli_usage_error(prog, "--level-balance needs --progressive (without --classes)");
+    if (pc->p.balance_order && pc->p.balance < 0)
+        cli_usage_error(prog, "--level-balance-order does not go with --level-balance 0");
+    if ((pc->balance_given || pc->p.balance_order) && (!pc->on || pc->p.classes > 0))
+        cli_usage_error(prog, "%s needs --progressive (without --classes)",
+                        pc->balance_given ? "--level-balance" : "--level-balance-order");
     if (!pc->on) return;
     if (pc->polish_given && pc->p.classes > 0) cli_usage_error(prog, "--polish does not go with --classes");
     const double tp = pc->p.joint.target_prefix > 0 ? pc->p.joint.target_prefix : 0.78;

@@ -17,6 +17,33 @@
 #include "stoprule.h"
 
 #define PROG_SALT 0x9e3779b97f4a7c15ULL /* level seeds: seed ^ mix(level + salt) */
+#define BALANCE_SALT 0x42414c414e4345ULL /* ... ^ mix(balance tag + this) with the balance on */
+#define BALANCE_TAG_MAX 1000000          /* the largest leaf size a resume's message looks for */
+
+int cfpo_prog_balance_of(const cfpo_prog_options *p)
+{
+    if (p->classes > 0 || p->balance < 0) return 0;
+    return p->balance > 0 ? p->balance : CFPO_PROG_DEFAULT_BALANCE;
+}
+
+/* The level seed for a balance tag (0: off; else 2 C + order). */
+static uint64_t level_seed_tag(uint64_t seed, int k, uint64_t tag)
+{
+    if (k == 0) return seed;
+    const uint64_t s = seed ^ cfpo_mix64((uint64_t)k + PROG_SALT);
+    return tag ? s ^ cfpo_mix64(tag + BALANCE_SALT) : s;
+}
+
+static uint64_t balance_tag(const cfpo_prog_options *p)
+{
+    const int C = cfpo_prog_balance_of(p);
+    return C > 0 ? 2 * (uint64_t)C + (p->balance_order ? 1 : 0) : 0;
+}
+
+uint64_t cfpo_prog_level_seed(uint64_t seed, int k, const cfpo_prog_options *p)
+{
+    return level_seed_tag(seed, k, balance_tag(p));
+}
 
 int cfpo_prog_sizes(int64_t n, int variant, const cfpo_prog_options *p, int64_t *sizes, char *err, size_t errlen)
 {
@@ -101,13 +128,42 @@ static int remeasure(const double *xy, int K, const cfpo_options *o, cfpo_prog_l
     return 0;
 }
 
-/* The level a checkpoint belongs to: the one of its size. */
-static int resumed_level(const char *path, const int64_t *sizes, int K, char *err, size_t errlen)
+/* The balance setting of a tag, in the command's words. */
+static void tag_words(uint64_t tag, char *s, size_t len)
+{
+    if (!tag) snprintf(s, len, "--level-balance 0");
+    else snprintf(s, len, "--level-balance %llu%s", (unsigned long long)(tag / 2), tag & 1 ? " --level-balance-order" : "");
+}
+
+/* A checkpoint of level k >= 1 whose seed is level k's under another
+ * balance setting: -1 with one line naming both settings; 0 otherwise
+ * (its seed is this run's, or another run's: the engine refuses that). */
+static int check_balance(const char *path, uint64_t ck_seed, uint64_t seed, int k, const cfpo_prog_options *p,
+                         char *err, size_t errlen)
+{
+    const uint64_t want = balance_tag(p);
+    if (k == 0 || ck_seed == level_seed_tag(seed, k, want)) return 0;
+    for (uint64_t tag = 0; tag <= 2 * (uint64_t)BALANCE_TAG_MAX + 1; tag = tag ? tag + 1 : 2) {
+        if (tag == want || ck_seed != level_seed_tag(seed, k, tag)) continue;
+        char had[64], now[64];
+        tag_words(tag, had, sizeof had);
+        tag_words(want, now, sizeof now);
+        snprintf(err, errlen, "--resume %s: the checkpoint was written with %s, this run has %s; resume with the "
+                 "checkpoint's setting", path, had, now);
+        return -1;
+    }
+    return 0;
+}
+
+/* The level a checkpoint belongs to: the one of its size (and, past level
+ * 0, of this run's balance setting: check_balance). */
+static int resumed_level(const char *path, const int64_t *sizes, int K, uint64_t seed, const cfpo_prog_options *p,
+                         char *err, size_t errlen)
 {
     cfpo_checkpoint_info info;
     if (cfpo_checkpoint_peek(path, &info, err, errlen) != 0) return -1;
     for (int k = 0; k < K; k++)
-        if (sizes[k] == info.n) return k;
+        if (sizes[k] == info.n) return check_balance(path, info.seed, seed, k, p, err, errlen) != 0 ? -1 : k;
     snprintf(err, errlen, "--resume %s: the checkpoint holds %lld points, no level of this run has that size", path,
              (long long)info.n);
     return -1;
@@ -145,8 +201,8 @@ static int hold(int64_t n, const double *xy, const cfpo_options *o, cfpo_run_eng
 static int order_level(double *xy, int64_t m0, int64_t m1, const cfpo_options *o, const cfpo_prog_options *p, int k,
                        char *err, size_t errlen)
 {
-    if (p->balance > 0 && p->balance_order)
-        return cfpo_prog_order_balanced(xy, m0, m1, p->balance, o->seed, (uint64_t)k, err, errlen);
+    const int C = cfpo_prog_balance_of(p);
+    if (C > 0 && p->balance_order) return cfpo_prog_order_balanced(xy, m0, m1, C, o->seed, (uint64_t)k, err, errlen);
     return cfpo_prog_order(xy, m0, m1, err, errlen);
 }
 
@@ -250,27 +306,28 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         return -1;
     }
     const int cand = p->candidates > 0 ? p->candidates : 16;
+    const int balance = cfpo_prog_balance_of(p);
     const int cap = p->level_iter > 0 ? p->level_iter
                     : p->level_iter < 0 || p->classes > 0 || p->joint.sweeps > 0 || p->joint_last > 0
                         ? 0
                         : CFPO_PROG_DEFAULT_LEVEL_ITER;
     int k0 = 0; /* the level to start at: a resumed checkpoint's */
-    if (p->resume && (k0 = resumed_level(p->resume, sizes, K, err, errlen)) < 0) {
+    if (p->resume && (k0 = resumed_level(p->resume, sizes, K, o->seed, p, err, errlen)) < 0) {
         free(xy);
         return -1;
     }
     for (int k = k0; k < K; k++) {
         const int64_t m = sizes[k], prev = k > 0 ? sizes[k - 1] : 0;
         cfpo_options lo = *o;
-        lo.seed = k == 0 ? o->seed : o->seed ^ cfpo_mix64((uint64_t)k + PROG_SALT);
+        lo.seed = cfpo_prog_level_seed(o->seed, k, p);
         if (cap > 0 && lo.max_iter > cap) lo.max_iter = cap; /* (progressive.h level_iter) */
         if (k < K - 1) { /* the last level keeps the caller's stop rules */
             memset(&lo.stop, 0, sizeof lo.stop);
             lo.stop.target_min = p->level_min;
         }
-        if (k > k0 && (p->balance > 0 ? cfpo_prog_insert_balanced(xy, prev, m, cand, p->balance, lo.seed, (uint64_t)k,
-                                                                  err, errlen)
-                                      : cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen)) != 0)
+        if (k > k0 && (balance > 0 ? cfpo_prog_insert_balanced(xy, prev, m, cand, balance, lo.seed, (uint64_t)k, err,
+                                                               errlen)
+                                   : cfpo_prog_insert(xy, prev, m, cand, lo.seed, (uint64_t)k, err, errlen)) != 0)
             break;
         const char *resume = k == k0 ? p->resume : NULL;
         if (resume && k > 0 && remeasure_points(resume, m, &lo, xy, err, errlen) != 0) break;

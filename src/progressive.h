@@ -47,6 +47,7 @@
 #define CFPO_PROG_CLASS_CIRCUM 6
 #define CFPO_PROG_CLASS_SOLVE 8
 #define CFPO_PROG_CLASS_SWAPS 8
+#define CFPO_PROG_DEFAULT_BALANCE 16 /* the balance's leaf size C by default (progressive levels, not classes) */
 #define CFPO_PROG_DEFAULT_LEVEL_ITER 24 /* each level's iteration cap by default (no joint phase, no classes) */
 
 typedef struct {
@@ -63,10 +64,13 @@ typedef struct {
     int classes;      /* K > 0: K equal groups (class c = ids [c n/K, (c+1) n/K)) instead of doublings */
     double level_min; /* > 0: every level but the last stops once its prefix's delta_min reaches this */
     int candidates;   /* best-candidate draws per new point (0: 16) */
-    int balance;      /* > 0: each level's new points by quota (prog_balance.h): every quadtree
-                         cell of about this many of the prefix's points gets its share; 0: off */
-    int balance_order; /* with balance: each level's points ordered so that every partial level keeps
-                          the cells' proportions (prog_balance.h cfpo_prog_order_balanced); 0: greedy */
+    int balance;      /* each level's new points by quota (prog_balance.h): every quadtree cell of
+                         about C of the prefix's points gets its share; > 0: C = this; 0, the
+                         default: C = CFPO_PROG_DEFAULT_BALANCE; < 0: off (best-candidate insertion
+                         anywhere, prog_insert.h). Never with classes (cfpo_prog_balance_of) */
+    int balance_order; /* with the balance on: each level's points ordered so that every partial level
+                          keeps the cells' proportions (prog_balance.h cfpo_prog_order_balanced);
+                          0: greedy */
     int level_iter;   /* each level's iteration cap (the last's too; with the caller's max_iter): > 0 this;
                          0 the default: CFPO_PROG_DEFAULT_LEVEL_ITER without a joint phase and without
                          classes (a level's prefix is within about 0.001 of its end by then), none
@@ -108,6 +112,18 @@ typedef struct {
  * their count, or -1 with one line in err (a base or class size the grid
  * cannot hold, a base larger than n, K < 1 or K > n). */
 int cfpo_prog_sizes(int64_t n, int variant, const cfpo_prog_options *p, int64_t *sizes, char *err, size_t errlen);
+
+/* The balance's leaf size C of a run of p (progressive.h balance): 0 when
+ * it is off (balance < 0, or classes > 0: the classes never use it). */
+int cfpo_prog_balance_of(const cfpo_prog_options *p);
+
+/* Level k's seed for the run's seed (level 0: the run's seed; level k >= 1:
+ * mixed with k, and, when the balance is on, with its leaf size C and
+ * balance_order too). The level's checkpoint holds this seed, so a resume
+ * whose balance setting differs from the checkpoint's is told apart from
+ * one of another run (cfpo_prog_run refuses it in one line). Level 0 is
+ * the same set under every setting, so its checkpoint continues any. */
+uint64_t cfpo_prog_level_seed(uint64_t seed, int k, const cfpo_prog_options *p);
 
 /* Runs every level (one rank). o: the engine's options; its stop targets
  * and max_iter apply to the last level, max_iter to every level; its

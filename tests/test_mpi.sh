@@ -5,7 +5,8 @@
 # (--check: point count, id checksum, ownership, every halo cell equal to
 # its owner's cell), checkpoint and resume on another rank count, a rank
 # killed mid-run leaving a usable checkpoint, and errors reported once with
-# every rank exiting non-zero.
+# every rank exiting non-zero; --progressive (one rank only) refused on
+# several ranks, the one-process bytes under mpirun -np 1.
 set -u
 . "$(cd "$(dirname "$0")" && pwd)/mpi_common.sh" "$1" "$2" cfpo-mpi
 
@@ -139,6 +140,16 @@ expect_err 2 "use at most 9 ranks" 11 -n 100
 expect_err 2 "does not give one tile" 2 -n $N --tiles 3x1
 expect_err 2 "cannot cut the 6x6x6 grid" 3 --dim 3 -n 324 -o x.npy
 expect_err 2 "text output needs one rank" 2 -n $N -o x.txt
+# --progressive runs on one rank (its default, --level-balance 16, and
+# --level-balance 0): several ranks are refused; mpirun -np 1 gives the
+# one-process bytes
+expect_err 2 "runs on one rank" 2 -n 2048 --progressive -o x.npy
+expect_err 2 "runs on one rank" 4 -n 2048 --progressive --level-balance 0 -o x.npy
+for lb in 16 0; do
+  "$CFPO" -q -n 2048 -t 1 --progressive --level-balance $lb -o refp$lb.npy >/dev/null || bad "--progressive reference"
+  run 1 -n 2048 -t 2 --progressive --level-balance $lb -o outp$lb.npy >/dev/null 2>run.err && \
+    same outp$lb.npy refp$lb.npy "--progressive --level-balance $lb on 1 rank" || bad "--progressive on 1 rank failed"
+done
 expect_err 2 "the checkpoint is for" 2 --resume ck.bin --seed 9
 head -c 1000 ck.bin >trunc.bin
 expect_err 1 "truncated" 2 --resume trunc.bin -o y.npy

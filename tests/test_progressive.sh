@@ -9,16 +9,19 @@
 #    --prefixes finds in the file at that prefix;
 #  - no prefix's delta_min falls while its level is optimised (the trace,
 #    row by row within each level);
-#  - the same bytes for 1, 2 and 3 threads, progressive (also with
-#    --level-balance, not the bytes without it) and with classes
-#    (by colouring and --classes-levels);
+#  - the same bytes for 1, 2 and 3 threads, progressive (the default,
+#    --level-balance 16, and --level-balance 0, the greedy insertion: not
+#    the default's bytes) and with classes (by colouring and
+#    --classes-levels);
 #  - classes by colouring: no class's delta_min falls over the JOINT
 #    lines, the union's never below min(its value, 0.88); the last JOINT
 #    line is cfpo-analyze's delta_min of each class's rows and the union;
 #  - SUMMARY's worst prefix is the worst LEVEL line, and the trace's last
 #    row says the same;
 #  - SIGUSR1 mid-run leaves the level's checkpoint, exit 3 and no output,
-#    and --resume from it gives the uninterrupted bytes and levels;
+#    and --resume from it gives the uninterrupted bytes and levels (the
+#    default, and --level-balance 0); a resume whose --level-balance
+#    differs from the checkpoint's is refused in one line, nothing written;
 #  - the joint move (--joint): no prefix's delta_min falls from one JOINT
 #    line to the next over the whole run (every sweep of every level's
 #    joint move, the levels between them), nor within a level's trace rows
@@ -77,8 +80,12 @@ expect 2 "--class-reach" -n 1024 --classes 4 --class-reach 0.1 -o x.npy
 expect 2 "--class-swaps" -n 1024 --classes 4 --class-swaps 65 -o x.npy
 expect 2 "--level-balance needs --progressive" -n 1024 --level-balance 16 -o x.npy
 expect 2 "--level-balance needs --progressive" -n 1024 --classes 4 --level-balance 16 -o x.npy
-expect 2 "--level-balance:" -n 1024 --progressive --level-balance -1 -o x.npy
-expect 2 "--level-balance-order needs" -n 1024 --progressive --level-balance-order -o x.npy
+expect 2 "--level-balance: '-1'" -n 1024 --progressive --level-balance -1 -o x.npy
+expect 2 "--level-balance needs --progressive (without --classes)" -n 1024 --classes 4 --level-balance 0 -o x.npy
+expect 2 "--level-balance needs --progressive (without --classes)" -n 1024 --classes 4 --classes-levels --level-balance 16 -o x.npy
+expect 2 "--level-balance-order does not go with --level-balance 0" -n 1024 --progressive --level-balance 0 --level-balance-order -o x.npy
+expect 2 "--level-balance-order needs --progressive" -n 1024 --level-balance-order -o x.npy
+expect 2 "--level-balance-order needs --progressive" -n 1024 --classes 4 --level-balance-order -o x.npy
 
 run() { "$CFPO" -q "$@"; }
 field() { grep -o " $1=[^ ]*" | head -1 | cut -d= -f2; }
@@ -91,10 +98,12 @@ done
 cmp -s p1.npy p2.npy && cmp -s p1.npy p3.npy && ok || bad "--progressive: bytes differ across 1-3 threads"
 cmp -s c1.npy c2.npy && cmp -s c1.npy c3.npy && ok || bad "--classes 3: bytes differ across 1-3 threads"
 for t in 1 2 3; do
-  run -n 2048 -s 4 -t $t --progressive --level-balance 16 -o b$t.npy >b$t.sum || bad "--level-balance run, $t threads"
+  run -n 2048 -s 4 -t $t --progressive --level-balance 0 -o b$t.npy >b$t.sum || bad "--level-balance 0 run, $t threads"
 done
-cmp -s b1.npy b2.npy && cmp -s b1.npy b3.npy && ok || bad "--level-balance: bytes differ across 1-3 threads"
-cmp -s b1.npy p1.npy && bad "--level-balance 16 gave the bytes without it" || ok
+cmp -s b1.npy b2.npy && cmp -s b1.npy b3.npy && ok || bad "--level-balance 0: bytes differ across 1-3 threads"
+cmp -s b1.npy p1.npy && bad "--level-balance 0 gave the default's bytes" || ok
+run -n 2048 -s 4 -t 2 --progressive --level-balance 16 -o b16.npy >b16.sum || bad "--level-balance 16 run"
+cmp -s b16.npy p1.npy && ok || bad "the default is not --level-balance 16"
 
 # ---- classes by colouring (the default): over the JOINT lines no class's
 # delta_min falls and the union's never below min(its value, 0.88); the
@@ -230,6 +239,30 @@ PY
 expect 2 "needs the run's -n" --progressive --resume ck.bin -o x.npy
 expect 1 "checkpoint is for another run" -n 16384 -s 3 --progressive --resume ck.bin -o x.npy
 expect 1 "no level of this run has that size" -n 16000 --base 100 -s 2 --progressive --resume ck.bin -o x.npy
+# the checkpoint's balance setting (its level seed says it): the run of 2,048
+# points leaves its last level's checkpoint, which is level 5 of the run of
+# 4,096; resumed there, the default and --level-balance 0 each give their
+# uninterrupted bytes; a resume with another setting is refused, nothing written
+for lb in 16 0; do
+  run -n 2048 -s 3 -t 1 --progressive --level-balance $lb --checkpoint ckh$lb.bin -o h$lb.npy >/dev/null \
+    || bad "--level-balance $lb: the checkpointed run of 2048"
+  run -n 4096 -s 3 -t 1 --progressive --level-balance $lb -o f$lb.npy >/dev/null || bad "--level-balance $lb: 4096"
+  run -n 4096 -s 3 -t 2 --progressive --level-balance $lb --resume ckh$lb.bin -o r$lb.npy >r$lb.sum \
+    || bad "--level-balance $lb: --resume at level 5"
+  cmp -s f$lb.npy r$lb.npy && ok || bad "--level-balance $lb: --resume at level 5 is not the uninterrupted bytes"
+  grep -q "^LEVEL level=5 prefix=2048 iterations=24 " r$lb.sum && grep -q "^LEVEL level=4 prefix=1024 iterations=- " r$lb.sum \
+    && ok || bad "--level-balance $lb: the resume did not start at level 5"
+done
+cmp -s f16.npy f0.npy && bad "--level-balance 0 and the default gave the same bytes at 4096" || ok
+expect 1 "written with --level-balance 0, this run has --level-balance 16;" -n 4096 -s 3 --progressive --resume ckh0.bin -o x.npy
+expect 1 "written with --level-balance 16, this run has --level-balance 0;" -n 4096 -s 3 --progressive --level-balance 0 \
+  --resume ckh16.bin -o x.npy
+expect 1 "written with --level-balance 16, this run has --level-balance 32;" -n 4096 -s 3 --progressive --level-balance 32 \
+  --resume ckh16.bin -o x.npy
+expect 1 "this run has --level-balance 16 --level-balance-order;" -n 4096 -s 3 --progressive --level-balance-order \
+  --resume ckh16.bin -o x.npy
+expect 1 "written with --level-balance 16, this run has --level-balance 0;" -n 16384 -s 2 --progressive --level-balance 0 \
+  --resume ck.bin -o x.npy
 
 # ---- the joint move: threads, the prefixes never fall, LEVEL = file, worst prefix
 for t in 1 2 3; do

@@ -180,7 +180,7 @@ def run(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=
 
 def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
            target_avg=None, time_limit=None, init=None, progress=None, density=None, dim=2, progressive=False,
-           classes=None, base=None, level_min=None, relax=None, joint=None, joint_last=None):
+           classes=None, base=None, level_min=None, relax=None, joint=None, joint_last=None, level_balance=None):
     """CFPO points: run(...).points, an (n, 2) float64 array (dim=3: (n, 3)) that owns its memory.
 
     The same arguments as cfpo.run; the same bytes as `cfpo ... -o x.npy`
@@ -188,9 +188,12 @@ def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_it
     progressive=True: the set of `cfpo --progressive` (every prefix of
     base * 2^k points blue noise, rows in prefix order); classes=K: that of
     `cfpo --classes K` (class c = rows [c n/K, (c+1) n/K)); base, level_min,
-    relax, joint and joint_last as the command's --base, --level-min,
-    --relax, --joint S and --joint-last S (the bounded joint move's sweeps,
-    docs/cli.md). Both take
+    relax, joint, joint_last and level_balance as the command's --base,
+    --level-min, --relax, --joint S, --joint-last S (the bounded joint
+    move's sweeps) and --level-balance C (each level's new points by
+    quadtree quota, cells of about C of the prefix's points; None: the
+    default 16; 0: off; progressive only, not with classes), docs/cli.md.
+    Both take
     neither init, density nor time_limit (the command refuses them too),
     and only dim=2.
     """
@@ -200,24 +203,28 @@ def sample(n=None, *, seed=1, variant="adaptive", threads=None, tol=None, max_it
         return progressive_run(n, seed=seed, variant=variant, threads=threads, tol=tol, max_iter=max_iter,
                                target_min=target_min, target_avg=target_avg, progress=progress,
                                classes=classes, base=base, level_min=level_min, relax=relax, joint=joint,
-                               joint_last=joint_last,
+                               joint_last=joint_last, level_balance=level_balance,
                                _refuse=dict(init=init, density=density, time_limit=time_limit))[0]
     if base is not None or level_min is not None or relax is not None or joint is not None or joint_last is not None:
         raise ValueError("base, level_min, relax, joint and joint_last need progressive=True or classes=K")
+    if level_balance is not None:
+        raise ValueError("level_balance needs progressive=True (without classes)")
     return _call(False, n, seed, variant, threads, tol, max_iter, target_min, target_avg, time_limit, init,
                  progress, density, dim)[0]
 
 
 def progressive_run(n, *, seed=1, variant="adaptive", threads=None, tol=None, max_iter=None, target_min=None,
                     target_avg=None, progress=None, classes=None, base=None, level_min=None, relax=None, joint=None,
-                    joint_last=None,
+                    joint_last=None, level_balance=None,
                     _refuse=None):
     """Progressive CFPO (`cfpo --progressive`, or `--classes K`): returns
     (points, levels), points (n, 2) in prefix order, the same bytes as the
     command's -o x.npy; levels a list of (prefix, iterations, delta_min,
     delta_avg), each prefix in its own Delta(m) units (docs/cli.md).
     progress: a callable receiving every level's iterations' statistics (a
-    True return stops the run with RuntimeError)."""
+    True return stops the run with RuntimeError). level_balance: None the
+    default leaf size (16), 0 off, C > 0 cells of about C points; not with
+    classes."""
     for k, v in (_refuse or {}).items():
         if v is not None:
             raise ValueError(f"{k} does not go with {'classes' if classes is not None else 'progressive'}")
@@ -246,11 +253,17 @@ def progressive_run(n, *, seed=1, variant="adaptive", threads=None, tol=None, ma
         raise ValueError(f"relax: '{relax}' is not a whole number >= 0")
     js = 0 if joint is None else _args.whole("joint", joint, 0, 1000000)
     jl = 0 if joint_last is None else _args.whole("joint_last", joint_last, 1, 1000000)
+    lb = 0  # the default (progressive.h balance)
+    if level_balance is not None:
+        if K:
+            raise ValueError("level_balance needs progressive=True (without classes)")
+        v = _args.whole("level_balance", level_balance, 0, 1000000)
+        lb = v if v > 0 else -1  # 0: off
     stops = _args.stop_rules(target_min, target_avg, None)
     cb, line = _callback(progress, nn, _args.max_iter(max_iter), stops)
     try:
         r = _core.progressive(nn, _args.seed(seed), variant, _args.threads(threads), _args.tol(tol, -1.0),
-                              _args.max_iter(max_iter), stops[0], stops[1], b, K, lm, rx, js, jl, cb)
+                              _args.max_iter(max_iter), stops[0], stops[1], b, K, lm, rx, js, jl, lb, cb)
     finally:
         if line is not None:
             line.end()

@@ -14,20 +14,21 @@
 
 /* progressive(n, seed, variant, threads, tol, max_iter, target_min,
  * target_avg, base, classes, level_min, relax, joint, joint_last,
- * callback) -> (points,
+ * balance, callback) -> (points,
  * iterations, seconds, delta_min, delta_avg, converged, stop, levels):
- * levels a list of (prefix, iterations, delta_min, delta_avg). */
+ * levels a list of (prefix, iterations, delta_min, delta_avg). balance as
+ * cfpo_prog_options.balance: 0 the default leaf size, < 0 off. */
 PyObject *core_progressive(PyObject *self, PyObject *args)
 {
     (void)self;
     long long n, base;
     unsigned long long seed;
     const char *variant;
-    int threads, max_iter, classes, relax, joint, joint_last;
+    int threads, max_iter, classes, relax, joint, joint_last, balance;
     double tol, tmin, tavg, level_min;
     PyObject *callback;
-    if (!PyArg_ParseTuple(args, "LKsididdLidiiiO", &n, &seed, &variant, &threads, &tol, &max_iter, &tmin, &tavg,
-                          &base, &classes, &level_min, &relax, &joint, &joint_last, &callback))
+    if (!PyArg_ParseTuple(args, "LKsididdLidiiiiO", &n, &seed, &variant, &threads, &tol, &max_iter, &tmin, &tavg,
+                          &base, &classes, &level_min, &relax, &joint, &joint_last, &balance, &callback))
         return NULL;
     cfpo_options o;
     if (core_options_of(&o, seed, variant, threads, tol, max_iter, tmin, tavg, 0) != 0) return NULL;
@@ -36,7 +37,7 @@ PyObject *core_progressive(PyObject *self, PyObject *args)
         return NULL;
     }
     cfpo_prog_options p = {.base = base, .classes = classes, .level_min = level_min, .relax = relax,
-                           .joint = {.sweeps = joint}, .joint_last = joint_last};
+                           .joint = {.sweeps = joint}, .joint_last = joint_last, .balance = balance};
     char err[1024];
     int64_t sizes[CFPO_PROG_MAX_LEVELS];
     if (cfpo_prog_sizes(n, o.variant, &p, sizes, err, sizeof err) < 0) return core_error(PyExc_ValueError, err);

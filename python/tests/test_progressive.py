@@ -15,6 +15,21 @@ def test_progressive_bytes_of_the_command(command, tmp_path):
     assert got.tobytes() == want.tobytes()
 
 
+def test_level_balance_bytes_of_the_command(command, tmp_path):
+    """the default (--level-balance 16), level_balance=0 (off: the old
+    greedy insertion) and another leaf size: each the command's bytes, and
+    the three sets differ"""
+    got = {}
+    for name, args, kw in (("d", (), {}), ("o", ("--level-balance", 0), dict(level_balance=0)),
+                           ("e", ("--level-balance", 16), dict(level_balance=16)),
+                           ("c", ("--level-balance", 32), dict(level_balance=32))):
+        command("cfpo", "-n", 1500, "-s", 3, "-t", 1, "--progressive", *args, "-o", f"{name}.npy")
+        got[name] = cfpo.sample(1500, seed=3, threads=2, progressive=True, **kw).tobytes()
+        assert got[name] == np.load(tmp_path / f"{name}.npy").tobytes(), name
+    assert got["d"] == got["e"]
+    assert got["d"] != got["o"] and got["d"] != got["c"] and got["o"] != got["c"]
+
+
 def test_progressive_options_bytes(command, tmp_path):
     command("cfpo", "-n", 1000, "-s", 2, "--progressive", "--base", 100, "--level-min", 0.8, "--relax", 2,
             "-o", "q.npy")
@@ -65,6 +80,10 @@ def test_levels_are_the_prefixes():
     (dict(progressive=True, joint=-1), "joint"),
     (dict(progressive=True, joint_last=0), "joint_last"),
     (dict(progressive=True, variant="hyperuniform"), "hyperuniform"),
+    (dict(progressive=True, level_balance=-1), "level_balance"),
+    (dict(classes=4, level_balance=16), "level_balance needs progressive"),
+    (dict(classes=4, level_balance=0), "level_balance needs progressive"),
+    (dict(level_balance=16), "level_balance needs progressive"),
 ])
 def test_refused(kw, msg):
     with pytest.raises(ValueError, match=msg):
