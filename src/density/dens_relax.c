@@ -28,7 +28,7 @@ typedef struct {
     double *sw;          /* q^(-1/2) there */
     const double *tq;    /* the smallest q over the 3 x 3 tiles around each of T x T */
     int64_t T;
-    double r0, qmin;
+    double r0;
 } bins;
 
 static inline int64_t axis_bin(double v, int64_t nb)
@@ -68,7 +68,7 @@ static void push_run(const bins *B, int64_t ry, int64_t c0, int64_t c1, double p
 static void move_at(const bins *B, const cfpo_density *d, double px, double py, double wi, double *nx, double *ny)
 {
     const int64_t nb = B->nb, T = B->T;
-    const double lo = T > 1 ? B->tq[axis_bin(py, T) * T + axis_bin(px, T)] : B->qmin;
+    const double lo = B->tq[axis_bin(py, T) * T + axis_bin(px, T)];
     const double R = B->r0 * wi / sqrt(lo);
     const int64_t x0 = (int64_t)floor((px - R) * (double)nb), x1 = (int64_t)floor((px + R) * (double)nb);
     const int64_t y0 = (int64_t)floor((py - R) * (double)nb), y1 = (int64_t)floor((py + R) * (double)nb);
@@ -144,7 +144,7 @@ int cfpo_dens_relax(const cfpo_density *d, int64_t n, double *xy, int steps, int
     if (steps <= 0 || n <= 0 || (uint64_t)n >= UINT32_MAX) return 0;
     bins B;
     B.r0 = RADIUS * cfpo_delta_bound((double)n);
-    B.qmin = sqrt(d->rho_min);
+    const double qmin = sqrt(d->rho_min);
     /* bins of the densest reach's side, at most 4 n of them */
     int64_t nb = (int64_t)floor(sqrt(d->rho_max) / B.r0);
     const int64_t cap = (int64_t)floor(sqrt(4.0 * (double)n));
@@ -152,11 +152,11 @@ int cfpo_dens_relax(const cfpo_density *d, int64_t n, double *xy, int steps, int
     /* a pair reaches at most r0 / qmin: it must stay under half the
      * torus, and the 3 x 3 tiles of side at least that around a point
      * hold every point it can meet */
-    const double rfar = B.r0 / B.qmin;
+    const double rfar = B.r0 / qmin;
     if (nb < 3 || nb * nb >= INT32_MAX || !(2 * rfar + 2.0 / (double)nb < 1.0)) return 0;
     B.nb = nb;
     B.T = (int64_t)floor(1.0 / rfar);
-    if (B.T < 3) B.T = 1;
+    if (B.T < 3) B.T = 1; /* one tile: its smallest q is the density's */
     double *tq = tile_qmin(d, B.T);
     B.tq = tq;
     const size_t offb = (size_t)(nb * nb + 1) * sizeof *B.off, db = (size_t)n * sizeof(double),
