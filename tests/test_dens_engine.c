@@ -1,7 +1,9 @@
 /* test_dens_engine.c - CFPO under a density (src/density/dens_engine.c):
  *  - the smallest symmetric measure over all pairs, by brute force, never
  *    falls across any accepted move (one thread, every move checked), on
- *    several densities, one with zero-density pixels;
+ *    several densities, one with zero-density pixels, one nearly flat
+ *    (past iteration 7, where its blocks take the uniform path's near
+ *    solve);
  *  - exactly n points, none on a zero-density pixel;
  *  - the same bytes for 1, 2 and 3 threads;
  *  - counts follow the density: count fidelity on cos a=0.9 and the ramp
@@ -248,6 +250,9 @@ int main(void)
     never_falls("balzer:res=64", 500, 4);
     never_falls("cos:a=0,res=16", 200, 6);
     never_falls("cos:a=0.9,kx=2,ky=1,res=64", 400, 4);
+    /* nearly flat: the uniform path's near solve (one polygon from
+     * iteration 7, no fall-back; policy.h) */
+    never_falls("cos:a=0.01,res=64", 300, 10);
     support_and_threads();
     fidelity("cos:a=0.9");
     fidelity("ramp:contrast=16");

@@ -191,8 +191,11 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     }
     /* the near solve only where q is nearly flat over the block
      * (policy.h): across a steep change the nearest two polygons miss the
-     * spots a point should reach */
-    const int cells0 = qbl <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT ? CFPO_POLICY_DENSITY_NEAR_CELLS : DENS_CELLS;
+     * spots a point should reach; where it is flatter still, the uniform
+     * path's near solve (fall: whether the ten follow a near solve that
+     * gives no move) */
+    int fall;
+    const int cells0 = cfpo_policy_density_near(E->iter, qlo, qbl, DENS_CELLS, &fall);
     const double h = bk->h, gain = E->o.tol * E->D;
     /* a block of one bucket clear of the wrap on the AVX-512 route: its
      * neighbours and accept checks eight points at a time (dens_order.h,
@@ -264,14 +267,14 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (S.y1 > hi) S.y1 = hi;
         double cxp, cyp, fc;
         /* the near solve's polygons first; all of them when those give no
-         * move, the search going on from the polygons it has done (`from`:
+         * move (and `fall`), the search going on from the polygons it has done (`from`:
          * the same vertex as searching them all again) */
         int cells = cells0, from = 0;
         const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
     solve:
         if (!cfpo_dens_solve_from(b->nx, b->ny, b->nr, kk, from, cells, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc,
                                   b->scratch + KMAX)) {
-            if (cells < DENS_CELLS) { from = cells; cells = DENS_CELLS; goto solve; }
+            if (fall && cells < DENS_CELLS) { from = cells; cells = DENS_CELLS; goto solve; }
             continue;
         }
         /* a move must gain more than tol local spacings in the measure
@@ -297,7 +300,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         if (cc < 0) {
             if (!(sqrt(fc) > sqrt(oldf) + gain && fc > thr)) {
-                if (cells < DENS_CELLS) { from = cells; cells = DENS_CELLS; goto solve; }
+                if (fall && cells < DENS_CELLS) { from = cells; cells = DENS_CELLS; goto solve; }
                 continue;
             }
             rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);

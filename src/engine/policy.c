@@ -8,8 +8,6 @@
 
 #include "rng.h"
 
-/* Near solves search two Voronoi cells before this iteration, one after. */
-#define NEAR_TWO_UNTIL 7
 /* Moves are over-relaxed from this iteration on ... */
 #define RELAX_FROM 4
 /* ... with the strong weights before this one and the mild ones after. */
@@ -140,7 +138,7 @@ cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
         return P;
     }
     P.near = near != 0;
-    P.near_cells = P.near ? (k < NEAR_TWO_UNTIL ? 2 : 1) : 0;
+    P.near_cells = P.near ? (k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1) : 0;
     if (k >= RELAX_FROM) {
         const double *w = k < RELAX_STRONG_UNTIL ? relax_strong : relax_mild;
         P.relax = 2;
