@@ -339,9 +339,6 @@ static void progressive_fits(const cmdline *c)
                     : c->cfg.check ? "--check"
                     : c->o.stop.time_limit > 0 ? "--time-limit" : NULL;
     if (bad) cli_usage_error(prog, "%s does not go with %s (not supported yet)", bad, what);
-    if (comm_size() > 1)
-        cli_usage_error(prog, "%s runs on one rank (this run has %d): several ranks are not supported yet", what,
-                        comm_size());
 }
 
 /* Options that only make sense together, the defaults that depend on

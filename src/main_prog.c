@@ -8,6 +8,7 @@
 
 #include "cfpo.h"
 #include "cli.h"
+#include "comm.h"
 #include "omp_compat.h"
 #include "plan.h"
 #include "runfiles.h"
@@ -302,14 +303,15 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     prog_ctx ctx = {.done = levels, .worst_min = INFINITY, .worst_m = -1, .tag = "JOINT"};
     char *tbuf = NULL;
     size_t tlen = 0;
-    if (trace) {
+    const int root = comm_rank() == 0; /* several ranks: rank 0 reports, every rank writes its part of the output */
+    if (trace && root) {
         ctx.trace = open_memstream(&tbuf, &tlen);
         if (!ctx.trace) cli_fail(prog, "out of memory for the trace");
         fprintf(ctx.trace, "level\tprefix\t");
         cfpo_trace_write_names(ctx.trace, cfpo_trace_columns, CFPO_TRACE_COLUMNS, 1);
         fprintf(ctx.trace, "\tworst_prefix\tworst_delta_min\n");
     }
-    cli_progress_init(&ctx.prog, quiet);
+    cli_progress_init(&ctx.prog, quiet || !root);
     o->progress = on_iteration;
     o->user = &ctx;
     char *jbuf = NULL;
@@ -358,12 +360,19 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
         R.ops->free(R.E);
         cli_fail(prog, "%s", err);
     }
-    if (trace && commit_trace(trace, tbuf, tlen, err, sizeof err) != 0) {
+    if (trace && root && commit_trace(trace, tbuf, tlen, err, sizeof err) != 0) {
         free(tbuf);
         R.ops->free(R.E);
         cli_fail(prog, "%s", err);
     }
     free(tbuf);
+    uint64_t peak, peak_max; /* (collective) */
+    cfpo_plan_peak_memory(&peak, &peak_max);
+    if (!root) {
+        free(jbuf);
+        R.ops->free(R.E);
+        return 0;
+    }
     int64_t iters = 0;
     for (int k = 0; k < K; k++) {
         const cfpo_prog_level *L = &levels[k];
@@ -386,11 +395,9 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     snprintf(extra, sizeof extra, " levels=%d worst_prefix_min=%lld worst_delta_min=%.6f worst_prefix_avg=%lld "
              "worst_delta_avg=%.6f", K, (long long)levels[wm].m, levels[wm].delta_min, (long long)levels[wa].m,
              levels[wa].delta_avg);
-    uint64_t peak, peak_max;
-    cfpo_plan_peak_memory(&peak, &peak_max);
     cli_summary sm = {.method = pc->p.classes ? "cfpo-classes" : "cfpo-progressive",
                       .variant = cfpo_variant_name(o->variant), .n = n, .seed = o->seed,
-                      .threads = o->threads > 0 ? o->threads : omp_get_num_procs(), .ranks = 1,
+                      .threads = o->threads > 0 ? o->threads : omp_get_num_procs(), .ranks = comm_size(),
                       .iterations = iters, .seconds = seconds, .delta_min = res.delta_min,
                       .delta_avg = res.delta_avg, .converged = res.converged, .peak_bytes = peak,
                       .stop = cfpo_stop_name(res.stop)};

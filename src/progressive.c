@@ -6,7 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "comm.h"
 #include "grid.h"
+#include "tiles.h"
 #include "omp_compat.h"
 #include "prog_colour.h"
 #include "prog_balance.h"
@@ -85,6 +87,34 @@ void cfpo_prog_worst(const cfpo_prog_level *levels, int k, int *by_min, int *by_
     }
 }
 
+/* The engine's m points into xy in id order, on every rank: under
+ * several ranks each holds its own points only, so the others' slots are
+ * filled with -inf and the ranks' copies merged by a maximum (each slot
+ * is one rank's point, so the merge gives its bits). The levels' insertions,
+ * orderings and joint moves then run on the whole prefix on every rank,
+ * the same on each. */
+static void all_points(const cfpo_engine *E, int64_t m, double *xy)
+{
+    if (comm_size() > 1)
+        for (size_t i = 0; i < 2 * (size_t)m; i++) xy[i] = -INFINITY;
+    cfpo_engine_points(E, xy);
+    if (comm_size() > 1) comm_max_d(xy, (int)(2 * m));
+}
+
+/* Under several ranks, whether a set of m points is too small to cut
+ * across them (a tile under CFPO_TILE_MIN cells a side): then every rank
+ * works on it alone, the same way (comm_solo_begin), and the ranks hold
+ * the same points after it. The full set is cut as a plain run's is. */
+static int alone(int64_t m, const cfpo_options *o)
+{
+    if (comm_size() == 1) return 0;
+    cfpo_grid G;
+    cfpo_tiling T;
+    char e[256];
+    return cfpo_grid_init(&G, m, o->variant, o->seed, e, sizeof e) == 0 &&
+           cfpo_tiling_init(&T, G.g, comm_size(), 0, 0, e, sizeof e) != 0;
+}
+
 /* One level: m points, the first `fixed` held, from xy (NULL: the
  * variant's own start); its engine into R, its run into res and L. */
 static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_options *lo, const cfpo_prog_options *p,
@@ -96,13 +126,20 @@ static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_opti
     cfg.fixed = fixed;
     cfg.resume = resume;
     const double t0 = omp_get_wtime();
+    const int solo = alone(m, lo);
+    if (solo) comm_solo_begin();
     cfpo_engine *E = cfpo_engine_create_ex(m, lo, &cfg, err, errlen);
-    if (!E) return -1;
+    if (!E) {
+        comm_solo_end();
+        return -1;
+    }
     cfpo_engine_as_run(E, R);
     R->t_born = t0;
     double d0, a0;
     cfpo_engine_deltas(E, &d0, &a0);
-    if (cfpo_run_loop(R, p->checkpoint, p->checkpoint ? p->checkpoint_every : 0, res, err, errlen) != 0) {
+    const int rc = cfpo_run_loop(R, p->checkpoint, p->checkpoint ? p->checkpoint_every : 0, res, err, errlen);
+    if (solo) comm_solo_end(); /* E holds all m points on every rank: all_points takes them as they are */
+    if (rc != 0) {
         cfpo_engine_free(E);
         return -1;
     }
@@ -120,9 +157,12 @@ static int remeasure(const double *xy, int K, const cfpo_options *o, cfpo_prog_l
     for (int k = 0; k < K - 1; k++) {
         cfpo_engine_config cfg = {0};
         cfg.start_xy = xy;
+        const int solo = alone(levels[k].m, o);
+        if (solo) comm_solo_begin();
         cfpo_engine *E = cfpo_engine_create_ex(levels[k].m, o, &cfg, err, errlen);
+        if (E) cfpo_engine_deltas(E, &levels[k].delta_min, &levels[k].delta_avg);
+        if (solo) comm_solo_end();
         if (!E) return -1;
-        cfpo_engine_deltas(E, &levels[k].delta_min, &levels[k].delta_avg);
         cfpo_engine_free(E);
     }
     return 0;
@@ -176,9 +216,12 @@ static int remeasure_points(const char *path, int64_t m, const cfpo_options *lo,
 {
     cfpo_engine_config cfg = {0};
     cfg.resume = path;
+    const int solo = alone(m, lo);
+    if (solo) comm_solo_begin();
     cfpo_engine *E = cfpo_engine_create_ex(m, lo, &cfg, err, errlen);
+    if (solo) comm_solo_end();
     if (!E) return -1;
-    cfpo_engine_points(E, xy);
+    all_points(E, m, xy);
     cfpo_engine_free(E);
     return 0;
 }
@@ -267,7 +310,7 @@ static int colour_run(int64_t n, const int64_t *sizes, int K, const cfpo_options
     }
     levels[0].iterations = run.iterations, levels[0].stop = run.stop, levels[0].seconds = run.seconds;
     levels[0].delta_min0 = run.delta_min0;
-    R->ops->copy(R->E, xy);
+    all_points(R->E, R->n, xy);
     R->ops->free(R->E);
     const double t0 = omp_get_wtime();
     cfpo_prog_colour_options co = {.reach = p->colour_reach};
@@ -351,7 +394,7 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
         }
         if (p->relax > 0 && k > 0) { /* the level before moves too, the one before that stays */
             cfpo_prog_level keep = levels[k];
-            R->ops->copy(R->E, xy);
+            all_points(R->E, R->n, xy);
             R->ops->free(R->E);
             cfpo_options ro = lo;
             ro.max_iter = p->relax;
@@ -365,7 +408,7 @@ int cfpo_prog_run(int64_t n, const cfpo_options *o, const cfpo_prog_options *p, 
             R->ops->free(R->E);
             break;
         }
-        R->ops->copy(R->E, xy); /* the prefix, in id order */
+        all_points(R->E, R->n, xy); /* the prefix, in id order */
         R->ops->free(R->E);
         if (order_level(xy, prev, m, o, p, k, err, errlen) != 0) break;
         const int joint = k > 0 &&

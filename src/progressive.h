@@ -1,5 +1,6 @@
 /* progressive.h - layer 4: progressive (nested) CFPO on the uniform torus,
- * one rank. The set is built level by level: level k is the prefix of the
+ * on any number of ranks (every rank holds the whole prefix between
+ * levels; a level too small to cut across them runs on each alone). The set is built level by level: level k is the prefix of the
  * first m_k points (m_0 = base, m_k = min(2 m_(k-1), n), the last m = n;
  * or, with classes K, m_k = (k + 1) n / K). Level k's new points (ids
  * m_(k-1) .. m_k - 1) start by best-candidate insertion (prog_insert.h)
@@ -9,7 +10,7 @@
  * the output order is the prefix order, prefix m_k is final once its level
  * ends, its delta_min never falls while its level runs (the engine's
  * moves never lower a set's delta_min), and the bytes do not depend on the
- * thread count (the engine's do not; the insertion is serial).
+ * thread or rank count (the engine's do not; the insertion is serial).
  * Owns: the level sizes, the per-level runs, the per-level results.
  * With joint.sweeps > 0 (progressive levels only) the bounded joint move
  * of prog_joint.h follows the last level: every point may move while no
@@ -125,7 +126,7 @@ int cfpo_prog_balance_of(const cfpo_prog_options *p);
  * the same set under every setting, so its checkpoint continues any. */
 uint64_t cfpo_prog_level_seed(uint64_t seed, int k, const cfpo_prog_options *p);
 
-/* Runs every level (one rank). o: the engine's options; its stop targets
+/* Runs every level (collective over the ranks). o: the engine's options; its stop targets
  * and max_iter apply to the last level, max_iter to every level; its
  * progress callback sees every level's iterations (the statistics of the
  * prefix under way, in its own Delta(m)). On success R holds the last

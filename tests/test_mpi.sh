@@ -5,8 +5,8 @@
 # (--check: point count, id checksum, ownership, every halo cell equal to
 # its owner's cell), checkpoint and resume on another rank count, a rank
 # killed mid-run leaving a usable checkpoint, and errors reported once with
-# every rank exiting non-zero; --progressive (one rank only) refused on
-# several ranks, the one-process bytes under mpirun -np 1.
+# every rank exiting non-zero; --progressive and --classes on 1-4 ranks
+# (the one-process bytes, a resume on another rank count).
 set -u
 . "$(cd "$(dirname "$0")" && pwd)/mpi_common.sh" "$1" "$2" cfpo-mpi
 
@@ -140,15 +140,29 @@ expect_err 2 "use at most 9 ranks" 11 -n 100
 expect_err 2 "does not give one tile" 2 -n $N --tiles 3x1
 expect_err 2 "cannot cut the 6x6x6 grid" 3 --dim 3 -n 324 -o x.npy
 expect_err 2 "text output needs one rank" 2 -n $N -o x.txt
-# --progressive runs on one rank (its default, --level-balance 16, and
-# --level-balance 0): several ranks are refused; mpirun -np 1 gives the
-# one-process bytes
-expect_err 2 "runs on one rank" 2 -n 2048 --progressive -o x.npy
-expect_err 2 "runs on one rank" 4 -n 2048 --progressive --level-balance 0 -o x.npy
-for lb in 16 0; do
-  "$CFPO" -q -n 2048 -t 1 --progressive --level-balance $lb -o refp$lb.npy >/dev/null || bad "--progressive reference"
-  run 1 -n 2048 -t 2 --progressive --level-balance $lb -o outp$lb.npy >/dev/null 2>run.err && \
-    same outp$lb.npy refp$lb.npy "--progressive --level-balance $lb on 1 rank" || bad "--progressive on 1 rank failed"
+# --progressive and --classes on 1-4 ranks: the one-process bytes (its
+# default, --level-balance 16, and --level-balance 0, the classes by
+# colouring and by levels, the joint move); the levels too small to cut
+# across the ranks (64 points on 3 ranks) are solved by every rank alone.
+# A checkpoint of a 2-rank progressive run resumes on 1 and 3 ranks to the
+# same bytes.
+for args in "--progressive" "--progressive --level-balance 0" "--classes 4" "--classes 4 --classes-levels" \
+            "--progressive --joint 2"; do
+  "$CFPO" -q -n 2048 -t 1 $args -o refp.npy >/dev/null || bad "$args: reference"
+  for p in 1 2 3 4; do
+    rm -f outp.npy
+    run $p -n 2048 -t 1 $args -o outp.npy >run.out 2>run.err && same outp.npy refp.npy "$args on $p ranks" ||
+      bad "$args on $p ranks failed: $(head -2 run.err)"
+    [ "$(grep -c '^SUMMARY.* ranks='$p' ' run.out)" = 1 ] && ok || bad "$args on $p ranks: not one SUMMARY saying ranks=$p"
+  done
+done
+"$CFPO" -q -n 8192 -t 1 --progressive -o refp.npy >/dev/null || bad "--progressive reference"
+run 2 -n 8192 -t 1 --progressive --checkpoint ckp.bin --checkpoint-every 5 -o outp.npy >/dev/null 2>run.err &&
+  same outp.npy refp.npy "--progressive on 2 ranks with checkpoints" || bad "--progressive --checkpoint on 2 ranks failed"
+for p in 1 3; do
+  rm -f outp.npy
+  run $p -n 8192 -t 1 --progressive --resume ckp.bin -o outp.npy >/dev/null 2>run.err &&
+    same outp.npy refp.npy "--progressive resumed on $p ranks" || bad "--progressive --resume on $p ranks failed"
 done
 expect_err 2 "the checkpoint is for" 2 --resume ck.bin --seed 9
 head -c 1000 ck.bin >trunc.bin

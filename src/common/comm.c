@@ -52,10 +52,31 @@ void comm_finalize(void)
 int comm_rank(void) { return rank; }
 int comm_size(void) { return size; }
 
+/* The job's rank and size while every rank works alone (comm_solo_begin). */
+static int solo, world_rank, world_size;
+
+void comm_solo_begin(void)
+{
+    if (solo) return;
+    solo = 1;
+    world_rank = rank;
+    world_size = size;
+    rank = 0;
+    size = 1;
+}
+
+void comm_solo_end(void)
+{
+    if (!solo) return;
+    solo = 0;
+    rank = world_rank;
+    size = world_size;
+}
+
 void comm_abort(int code)
 {
 #ifdef CFPO_HAVE_MPI
-    if (active && size > 1) MPI_Abort(MPI_COMM_WORLD, code);
+    if (active && (solo ? world_size : size) > 1) MPI_Abort(MPI_COMM_WORLD, code);
     comm_finalize();
 #endif
     exit(code);

@@ -24,6 +24,13 @@ void comm_init(int *argc, char ***argv);
 void comm_finalize(void);
 int comm_rank(void);
 int comm_size(void);
+/* From comm_solo_begin to comm_solo_end every rank works alone: comm_rank
+ * is 0 and comm_size 1 on each, every reduction and exchange is the
+ * identity and files are each rank's own, as on one rank without MPI (a
+ * piece of work too small to cut across the ranks, done by each of them
+ * the same way; they must not wait on one another inside it). */
+void comm_solo_begin(void);
+void comm_solo_end(void);
 /* Ends every rank of the job at once (MPI_Abort), or exits on one rank. */
 void comm_abort(int code) __attribute__((noreturn));
 /* Ranks on this machine (sharing its memory). */
