@@ -346,7 +346,8 @@ int prog_cli_main(prog_cli *pc, const char *prog, int64_t n, cfpo_options *o, co
     if (rc == 1) { /* stopped by a signal after the checkpoint */
         free(tbuf);
         cfpo_runfiles_abort(files);
-        fprintf(stderr, "%s: stopped by a signal at level %d (prefix %lld); checkpoint %s written, no output; "
+        if (root)
+            fprintf(stderr, "%s: stopped by a signal at level %d (prefix %lld); checkpoint %s written, no output; "
                 "continue with --resume %s\n", prog, K - 1, (long long)levels[K - 1].m, checkpoint, checkpoint);
         return 3;
     }

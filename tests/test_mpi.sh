@@ -164,6 +164,27 @@ for p in 1 3; do
   run $p -n 8192 -t 1 --progressive --resume ckp.bin -o outp.npy >/dev/null 2>run.err &&
     same outp.npy refp.npy "--progressive resumed on $p ranks" || bad "--progressive --resume on $p ranks failed"
 done
+# SIGUSR1 to mpirun during a 3-rank progressive run (early levels are
+# solved by every rank alone): exit 3, one message, no output; the
+# checkpoint resumes on 2 ranks to the one-process bytes
+"$CFPO" -q -n 65536 -t 1 --progressive -o refp.npy >/dev/null || bad "--progressive reference (65,536)"
+rm -f ckp.bin outp.npy
+timeout 120 "$MPIRUN" --oversubscribe -np 3 "$CFPO" -q -n 65536 -t 1 --progressive --checkpoint ckp.bin \
+  --checkpoint-every 1 -o outp.npy >sig.out 2>sig.err &
+job=$!
+for w in $(seq 100); do [ -e ckp.bin ] && break; sleep 0.1; done # the ranks are running: signal now
+kill -USR1 $job 2>/dev/null
+wait $job
+rc=$?
+if [ $rc -eq 3 ]; then
+  [ ! -e outp.npy ] && [ "$(grep -c 'stopped by a signal' sig.err)" = 1 ] && ok ||
+    bad "--progressive signalled on 3 ranks: output left or not one message: $(grep -c 'stopped by a signal' sig.err)"
+else
+  echo "note: the 3-rank progressive run ended (exit $rc) before the signal; resuming from its last checkpoint"
+fi
+rm -f outp.npy
+run 2 -n 65536 -t 1 --progressive --resume ckp.bin -o outp.npy >/dev/null 2>run.err &&
+  same outp.npy refp.npy "--progressive signalled on 3 ranks, resumed on 2" || bad "--progressive resume on 2 ranks failed: $(head -2 run.err)"
 expect_err 2 "the checkpoint is for" 2 --resume ck.bin --seed 9
 head -c 1000 ck.bin >trunc.bin
 expect_err 1 "truncated" 2 --resume trunc.bin -o y.npy
