@@ -267,8 +267,8 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (S.y1 > hi) S.y1 = hi;
         double cxp, cyp, fc;
         /* the near solve's polygons first; all of them when those give no
-         * move (and `fall`), the search going on from the polygons it has done (`from`:
-         * the same vertex as searching them all again) */
+         * move (and `fall`), the search going on from the polygons it has
+         * done (`from`: the same vertex as searching them all again) */
         int cells = cells0, from = 0;
         const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
     solve:
