@@ -126,8 +126,7 @@ static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_opti
     cfg.fixed = fixed;
     cfg.resume = resume;
     const double t0 = omp_get_wtime();
-    const int solo = alone(m, lo);
-    if (solo) comm_solo_begin();
+    if (alone(m, lo)) comm_solo_begin(); /* comm_solo_end: nothing when it did not begin */
     cfpo_engine *E = cfpo_engine_create_ex(m, lo, &cfg, err, errlen);
     if (!E) {
         comm_solo_end();
@@ -138,7 +137,7 @@ static int run_level(int64_t m, int64_t fixed, const double *xy, const cfpo_opti
     double d0, a0;
     cfpo_engine_deltas(E, &d0, &a0);
     const int rc = cfpo_run_loop(R, p->checkpoint, p->checkpoint ? p->checkpoint_every : 0, res, err, errlen);
-    if (solo) comm_solo_end(); /* E holds all m points on every rank: all_points takes them as they are */
+    comm_solo_end(); /* alone, E holds all m points on every rank: all_points takes them as they are */
     if (rc != 0) {
         cfpo_engine_free(E);
         return -1;
@@ -157,11 +156,10 @@ static int remeasure(const double *xy, int K, const cfpo_options *o, cfpo_prog_l
     for (int k = 0; k < K - 1; k++) {
         cfpo_engine_config cfg = {0};
         cfg.start_xy = xy;
-        const int solo = alone(levels[k].m, o);
-        if (solo) comm_solo_begin();
+        if (alone(levels[k].m, o)) comm_solo_begin();
         cfpo_engine *E = cfpo_engine_create_ex(levels[k].m, o, &cfg, err, errlen);
         if (E) cfpo_engine_deltas(E, &levels[k].delta_min, &levels[k].delta_avg);
-        if (solo) comm_solo_end();
+        comm_solo_end();
         if (!E) return -1;
         cfpo_engine_free(E);
     }
@@ -216,10 +214,9 @@ static int remeasure_points(const char *path, int64_t m, const cfpo_options *lo,
 {
     cfpo_engine_config cfg = {0};
     cfg.resume = path;
-    const int solo = alone(m, lo);
-    if (solo) comm_solo_begin();
+    if (alone(m, lo)) comm_solo_begin();
     cfpo_engine *E = cfpo_engine_create_ex(m, lo, &cfg, err, errlen);
-    if (solo) comm_solo_end();
+    comm_solo_end();
     if (!E) return -1;
     all_points(E, m, xy);
     cfpo_engine_free(E);
