@@ -454,10 +454,11 @@ static void report(const cmdline *c, cfpo_run_engine *R, const cfpo_result *res,
                       .converged = res->converged, .peak_bytes = peak, .stop = cfpo_stop_name(res->stop)};
     cli_print_summary(stdout, &sm);
     if (c->dp)
-        printf("DENSITY spec=%s hash=%016llx pixels=%lldx%lld contrast=%.4g support=%.4g cells=%lld engine=%s\n",
+        printf("DENSITY spec=%s hash=%016llx pixels=%lldx%lld contrast=%.4g support=%.4g cells=%lld levels=%d "
+               "engine=%s\n",
                c->density, (unsigned long long)c->dp->hash, (long long)c->dp->w, (long long)c->dp->h,
                c->dp->rho_max / c->dp->rho_min, c->dp->support, (long long)R->ops->cells_per_side(R->E),
-               R->ops->name);
+               cfpo_dens_run_levels(R), R->ops->name);
     if (P > 1 && dens) print_density_ranks(&tm, own, P, c->n);
     if (P > 1 && !dens) {
         const cfpo_tiling *T = cfpo_engine_tiling(R->E);

@@ -3,7 +3,8 @@
  *    falls across any accepted move (one thread, every move checked), on
  *    several densities, one with zero-density pixels, one nearly flat
  *    (past iteration 7, where its blocks take the uniform path's near
- *    solve);
+ *    solve), and two on levels of finer cells (dens_levels.h), where the
+ *    outside bound takes its tiers;
  *  - exactly n points, none on a zero-density pixel;
  *  - the same bytes for 1, 2 and 3 threads;
  *  - counts follow the density: count fidelity on cos a=0.9 and the ramp
@@ -85,15 +86,30 @@ static const double *points_of(cfpo_run_engine *R, double *xy, int64_t n)
     return xy;
 }
 
+static void never_falls_on(const cfpo_density *dd, const char *spec, int64_t n, int iters, int levels);
+
 static void never_falls(const char *spec, int64_t n, int iters)
 {
     char err[512];
     cfpo_density d;
     if (cfpo_density_load(spec, &d, err, sizeof err) != 0) { CHECK(0, "%s: %s", spec, err); return; }
+    never_falls_on(&d, spec, n, iters, 0);
+    cfpo_density_free(&d);
+}
+
+/* The same on d, which must take at least `levels` levels of cells
+ * (dens_levels.h) when levels > 1. */
+static void never_falls_on(const cfpo_density *dd, const char *spec, int64_t n, int iters, int levels)
+{
+    char err[512];
+    const cfpo_density d = *dd;
     cfpo_options o = opts(1, iters);
     cfpo_dens_engine *E = cfpo_dens_create(&d, n, &o, NULL, 0, err, sizeof err);
     CHECK(E != NULL, "%s: %s", spec, err);
-    if (!E) { cfpo_density_free(&d); return; }
+    if (!E) return;
+    if (levels > 1)
+        CHECK(cfpo_dens_levels_count(E) >= levels, "%s: %d levels of cells, not %d", spec, cfpo_dens_levels_count(E),
+              levels);
     watch w = {&d, n, brute_min(&d, cfpo_dens_points(E), n), 0, 0};
     const double first = w.last;
     cfpo_dens_on_move(E, on_move, &w);
@@ -107,9 +123,17 @@ static void never_falls(const char *spec, int64_t n, int iters)
     cfpo_dens_nn(&d, cfpo_dens_points(E), (size_t)n, NULL, &dmin, &davg);
     CHECK(fabs(dmin - brute_min(&d, cfpo_dens_points(E), n)) < 1e-12, "%s: delta_min %.15g vs brute force %.15g", spec,
           dmin, brute_min(&d, cfpo_dens_points(E), n));
-    printf("%s n=%lld: %lld moves, smallest measure %.4f -> %.4f, never fell\n", spec, (long long)n, (long long)w.moves,
-           first, w.last);
+    printf("%s n=%lld, %d levels: %lld moves, smallest measure %.4f -> %.4f, never fell\n", spec, (long long)n,
+           cfpo_dens_levels_count(E), (long long)w.moves, first, w.last);
     cfpo_dens_free(E);
+}
+
+static void never_falls_on_spec(const char *spec, int64_t n, int iters, int levels)
+{
+    char err[512];
+    cfpo_density d;
+    if (cfpo_density_load(spec, &d, err, sizeof err) != 0) { CHECK(0, "%s: %s", spec, err); return; }
+    never_falls_on(&d, spec, n, iters, levels);
     cfpo_density_free(&d);
 }
 
@@ -253,6 +277,16 @@ int main(void)
     /* nearly flat: the uniform path's near solve (one polygon from
      * iteration 7, no fall-back; policy.h) */
     never_falls("cos:a=0.01,res=64", 300, 10);
+    /* cells sized to the local spacing (dens_levels.h): finer levels
+     * whose blocks need the tiers of the outside bound, on a smooth 1:64
+     * and beside a sharp 1:40 step and a zero disc */
+    never_falls_on_spec("ramp:contrast=64,res=64", 800, 6, 3);
+    {
+        cfpo_density z;
+        zero_disc(&z);
+        never_falls_on(&z, "disc", 900, 6, 2);
+        cfpo_density_free(&z);
+    }
     support_and_threads();
     fidelity("cos:a=0.9");
     fidelity("ramp:contrast=16");

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # test_dens_mpi.sh BUILD_DIR MPIRUN - `cfpo --density` under mpirun: the
 # same bytes (output and trace statistics) as one process for P = 2, 3, 4
-# ranks and 1 or 2 threads on cos, the ramp, Balzer's field and the shipped
-# image; each rank's points within 20% of n / P (the cut balances points);
+# ranks and 1 or 2 threads on cos, the ramps 1:16 and 1:256, Balzer's field
+# and the shipped image (each on levels of finer cells, dens_levels.h);
+# each rank's points within 20% of n / P (the cut balances points);
 # checkpoint on one rank count, resume and --init on others, the same
 # bytes; a rank count too large for the grid refused once, no file left.
 set -u
@@ -12,7 +13,9 @@ IMG="$HERE/../data/astronaut-256.png"
 
 # name, SPEC, n, iterations: the image needs 32,768 points for a grid of
 # 9 x 9 cells (up to 9 ranks)
-cases=("cos cos:a=0.9 16384 4" "ramp ramp:contrast=16 16384 4" "balzer balzer 16384 4" "img $IMG 32768 3")
+# image and the ramp 1:256 take levels of finer cells (dens_levels.h)
+cases=("cos cos:a=0.9 16384 4" "ramp ramp:contrast=16 16384 4" "balzer balzer 16384 4" "img $IMG 32768 3"
+       "ramp256 ramp:contrast=256 16384 5")
 for cs in "${cases[@]}"; do
   set -- $cs
   name=$1 spec=$2 n=$3 it=$4

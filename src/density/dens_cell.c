@@ -27,6 +27,8 @@ typedef struct {
     double lo, L;      /* sqrt(rho_min); the cell side */
     int n;             /* the block's points */
     int vec;           /* one bucket clear of the wrap, the AVX-512 route: dens_scan.h */
+    int nt;            /* levels (dens_levels.h): the outside bound's tiers, 0 for the one grid's bound */
+    const double *tq;  /* their q */
 } scan_limits;
 
 /* Whether (px, py) (block frame) may take point p: f there (q = rc) is
@@ -76,7 +78,8 @@ static int spot_ok(const cfpo_dens_engine *E, tbuf *b, cfpo_dens_buckets *bk, in
     }
     if (!m->wrap) {
         const double e = fmin(fmin(px + m->L, 2 * m->L - px), fmin(py + m->L, 2 * m->L - py));
-        if (!(e * e * m->lo * rc >= oldf)) return 0;
+        if (m->nt ? !cfpo_dens_levels_clear(m->tq, m->nt, m->lo, m->L, e, rc, oldf) : !(e * e * m->lo * rc >= oldf))
+            return 0;
     }
     *x = cfpo_wrap01(ox + px);
     *y = cfpo_wrap01(oy + py);
@@ -129,11 +132,18 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     const int64_t g = E->g;
     const double L = E->L, ox = (double)cx * L + E->sx, oy = (double)cy * L + E->sy;
     const int wrap = g < 6; /* the block spans the torus: differences wrap */
+    const int levels = E->lv.n > 1;
     int m = 0, c0 = 0, c1 = 0;
     /* the pixels every spot evaluated here lies on (each box S is clipped
      * to the cell), asked for before the block's gather and ranking */
     cfpo_density_prefetch_box(E->d, cfpo_wrap01(ox), cfpo_wrap01(oy), L);
-    if (!wrap && cx >= 1 && cx <= g - 3 && cy >= 1 && cy <= g - 3) {
+    /* the block clear of the torus's seam: with one grid the offset is
+     * under a cell, so the seam lies in cell g - 1; a finer level's seam
+     * may lie further in (its cells take level 0's offset), and the block
+     * keeps a cell away from it */
+    const int clear = levels ? cx >= 1 && cy >= 1 && (double)(cx + 3) * L + E->sx <= 1 && (double)(cy + 3) * L + E->sy <= 1
+                             : cx >= 1 && cx <= g - 3 && cy >= 1 && cy <= g - 3;
+    if (!wrap && clear) {
         /* a block clear of the grid's seam (cells 1..g-2, none wrapped;
          * cell g-1 straddles x = 1 + sx): each row's three cells are one
          * run of slots, and each point's offset from its cell's centre is
@@ -201,9 +211,12 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
      * neighbours and accept checks eight points at a time (dens_order.h,
      * dens_scan.h) */
     const int vec = bk->B == 1 && !wrap && cfpo_dens_route() == 2;
-    const scan_limits lim = {wrap, qlo, h, lo, L, m, vec};
+    double tq[CFPO_DENS_TIERS];
+    const int nt = levels && !wrap ? cfpo_dens_levels_tiers(&E->lv, E->cur, cx, cy, tq) : 0;
+    const scan_limits lim = {wrap, qlo, h, lo, L, m, vec, nt, tq};
     int64_t moves = 0;
     for (int p = c0; p < c1; p++) {
+        if (levels && E->lev[b->bid[p]] != E->cur) continue; /* another level's point: a neighbour only */
         const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
         const double ri = ra > 0 ? E->D / ra : rmax;
         /* neighbours by their weight in the measure, d^2 q_j, up to what a
@@ -323,6 +336,10 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
             }
         }
         const int64_t id = b->bid[p];
+        if (levels) { /* every level's blocks around the old and the new place */
+            cfpo_dens_levels_mark(&E->lv, E->ldirty, E->s.xy[2 * id], E->s.xy[2 * id + 1]);
+            cfpo_dens_levels_mark(&E->lv, E->ldirty, x, y);
+        }
         const double dd = sqrt((cxp - ax) * (cxp - ax) + (cyp - ay) * (cyp - ay)) / ri;
         if (dd > *maxd) *maxd = dd;
         cfpo_dens_buckets_move(bk, p, cp, cc);

@@ -341,45 +341,56 @@ done:
 int cfpo_dens_dist_refresh(cfpo_dens_dist *T, cfpo_dens_store *s, const int64_t *cstart, const int64_t *cidx,
                            double *cxyq, int colour, unsigned char *dirty, int64_t g)
 {
+    const int k0 = colour < 0 ? 0 : colour, k1 = colour < 0 ? 9 : colour + 1;
     int ok = 1;
     for (int a = 0; a < T->nnb; a++) {
-        const ivec *L = &T->snd[colour * T->P + a];
         size_t len = 0;
-        for (int64_t t = 0; t < L->n; t++) len += (size_t)(cstart[L->v[t] + 1] - cstart[L->v[t]]) * 3 * sizeof(double);
+        for (int k = k0; k < k1; k++) {
+            const ivec *L = &T->snd[k * T->P + a];
+            for (int64_t t = 0; t < L->n; t++) len += (size_t)(cstart[L->v[t] + 1] - cstart[L->v[t]]) * 3 * sizeof(double);
+        }
         if (grow_buf(&T->sbuf[a], &T->scap[a], len) != 0) { ok = 0; break; }
         double *p = (double *)(void *)T->sbuf[a];
-        for (int64_t t = 0; t < L->n; t++)
-            for (int64_t e = cstart[L->v[t]]; e < cstart[L->v[t] + 1]; e++) {
-                const int64_t j = cidx[e];
-                *p++ = s->xy[2 * j];
-                *p++ = s->xy[2 * j + 1];
-                *p++ = s->q[j];
-            }
+        for (int k = k0; k < k1; k++) {
+            const ivec *L = &T->snd[k * T->P + a];
+            for (int64_t t = 0; t < L->n; t++)
+                for (int64_t e = cstart[L->v[t]]; e < cstart[L->v[t] + 1]; e++) {
+                    const int64_t j = cidx[e];
+                    *p++ = s->xy[2 * j];
+                    *p++ = s->xy[2 * j + 1];
+                    *p++ = s->q[j];
+                }
+        }
         T->msg[a].send = T->sbuf[a];
         T->msg[a].sendbytes = len;
     }
     if (!comm_all(ok) || comm_exchange(T->msg, T->nnb) != 0) return -1;
     for (int a = 0; a < T->nnb; a++) {
-        const ivec *L = &T->rcv[colour * T->P + a];
         size_t len = 0;
-        for (int64_t t = 0; t < L->n; t++) len += (size_t)(cstart[L->v[t] + 1] - cstart[L->v[t]]) * 3 * sizeof(double);
+        for (int k = k0; k < k1; k++) {
+            const ivec *L = &T->rcv[k * T->P + a];
+            for (int64_t t = 0; t < L->n; t++) len += (size_t)(cstart[L->v[t] + 1] - cstart[L->v[t]]) * 3 * sizeof(double);
+        }
         if (len != T->msg[a].recvbytes) { ok = 0; continue; }
         const double *p = (const double *)T->msg[a].recv;
-        for (int64_t t = 0; t < L->n; t++) {
-            int changed = 0;
-            for (int64_t e = cstart[L->v[t]]; e < cstart[L->v[t] + 1]; e++, p += 3) {
-                const int64_t j = cidx[e];
-                changed |= s->xy[2 * j] != p[0] || s->xy[2 * j + 1] != p[1] || s->q[j] != p[2];
-                s->xy[2 * j] = p[0];
-                s->xy[2 * j + 1] = p[1];
-                s->q[j] = p[2];
-                if (cxyq) {
-                    cxyq[3 * e] = p[0];
-                    cxyq[3 * e + 1] = p[1];
-                    cxyq[3 * e + 2] = p[2];
+        for (int k = k0; k < k1; k++) {
+            const ivec *L = &T->rcv[k * T->P + a];
+            for (int64_t t = 0; t < L->n; t++) {
+                int changed = 0;
+                for (int64_t e = cstart[L->v[t]]; e < cstart[L->v[t] + 1]; e++, p += 3) {
+                    const int64_t j = cidx[e];
+                    changed |= s->xy[2 * j] != p[0] || s->xy[2 * j + 1] != p[1] || s->q[j] != p[2];
+                    s->xy[2 * j] = p[0];
+                    s->xy[2 * j + 1] = p[1];
+                    s->q[j] = p[2];
+                    if (cxyq) {
+                        cxyq[3 * e] = p[0];
+                        cxyq[3 * e + 1] = p[1];
+                        cxyq[3 * e + 2] = p[2];
+                    }
                 }
+                if (changed && dirty) cfpo_dens_mark_block(dirty, g, L->v[t]);
             }
-            if (changed && dirty) cfpo_dens_mark_block(dirty, g, L->v[t]);
         }
     }
     return comm_all(ok) ? 0 : -1;

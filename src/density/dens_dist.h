@@ -91,8 +91,8 @@ int cfpo_dens_dist_keep(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, double
 int cfpo_dens_dist_migrate(cfpo_dens_dist *T, cfpo_dens_store *s, double sx, double sy);
 
 /* Collective, after a colour's phase: sends this rank's cells of the
- * colour to the ranks that keep them as halo, and writes the copies it
- * gets. cstart/cidx: the engine's cells (local indices); cxyq (may be
+ * colour (every colour's when colour < 0) to the ranks that keep them as
+ * halo, and writes the copies it gets. cstart/cidx: the engine's cells (local indices); cxyq (may be
  * NULL): x, y, q by slot of cidx, written with the copies. A copy that
  * differs from what the rank held marks its 3 x 3 cells in dirty (g x g;
  * may be NULL). 0, or -1 when out of memory or when a copy does not match

@@ -33,6 +33,8 @@ static void build_cells(cfpo_dens_engine *E)
     for (int64_t i = 0; i < E->s.loc; i++) E->cidx[E->cstart[E->cell[i]]++] = i;
     for (int64_t c = G; c > 0; c--) E->cstart[c] = E->cstart[c - 1];
     E->cstart[0] = 0;
+    if (E->slot)
+        for (int64_t s = 0; s < E->s.loc; s++) E->slot[E->cidx[s]] = s;
     /* the solves gather their blocks from this copy, one cell's points
      * side by side, instead of from the store in id order */
     for (int64_t s = 0; s < E->s.loc; s++) {
@@ -125,10 +127,19 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     E->cell = malloc((size_t)n * sizeof *E->cell);
     E->cidx = malloc((size_t)n * sizeof *E->cidx);
     E->cxyq = malloc((size_t)n * 3 * sizeof *E->cxyq);
-    E->cstart = malloc((size_t)(g * g + 1) * sizeof *E->cstart);
-    E->dirty = malloc((size_t)(g * g));
+    /* cells sized to the local spacing: levels of finer grids (dens_levels.h) */
+    int lvok = cfpo_dens_levels_init(&E->lv, d, n, g, E->D, CELL_SPACINGS) == 0;
+    for (int l = 0; l < E->lv.n && E->lv.n > 1 && lvok; l++) {
+        E->ldirty[l] = malloc((size_t)((g << l) * (g << l)));
+        lvok = E->ldirty[l] != NULL;
+    }
+    const int64_t gf = g << (E->lv.n - 1); /* the finest level's cells a side */
+    E->cstart = malloc((size_t)(gf * gf + 1) * sizeof *E->cstart);
+    E->dirty = malloc((size_t)(gf * gf));
+    E->lev = E->lv.n > 1 ? malloc((size_t)n) : NULL;
     E->tb = calloc((size_t)E->nthreads, sizeof *E->tb);
-    if (cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cxyq || !E->cstart || !E->dirty || !E->tb ||
+    if (!lvok || (E->lv.n > 1 && !E->lev) ||
+        cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cxyq || !E->cstart || !E->dirty || !E->tb ||
         cfpo_dens_qbound_build(&E->qb, d) != 0 || cfpo_dens_qbound_build_min(&E->qlow, d) != 0 ||
         (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0)
                : (cfpo_dens_start(d, n, o->seed, E->s.xy) != 0
@@ -155,7 +166,13 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     if (comm_size() > 1) { /* several ranks: each keeps its cells' points */
         E->T = cfpo_dens_dist_create(g, err, errlen);
         E->all = malloc((size_t)n * 2 * sizeof *E->all);
-        if (!E->T || !comm_all(E->all != NULL) || cfpo_dens_dist_keep(E->T, &E->s, 0, 0) != 0) {
+        if (E->lv.n > 1) {
+            E->cstart0 = malloc((size_t)(g * g + 1) * sizeof *E->cstart0);
+            E->cidx0 = malloc((size_t)n * sizeof *E->cidx0);
+            E->slot = malloc((size_t)n * sizeof *E->slot);
+        }
+        const int lvmem = E->lv.n == 1 || (E->cstart0 && E->cidx0 && E->slot);
+        if (!E->T || !comm_all(E->all != NULL && lvmem) || cfpo_dens_dist_keep(E->T, &E->s, 0, 0) != 0) {
             if (E->T) snprintf(err, errlen, "out of memory for %lld points", (long long)n);
             cfpo_dens_free(E);
             return NULL;
@@ -176,6 +193,15 @@ static int fit_cells(cfpo_dens_engine *E)
     double *cxyq = realloc(E->cxyq, (size_t)cap * 3 * sizeof *cxyq);
     if (cxyq) E->cxyq = cxyq;
     if (!cell || !cidx || !cxyq) return -1;
+    if (E->lv.n > 1) {
+        unsigned char *lev = realloc(E->lev, (size_t)cap);
+        if (lev) E->lev = lev;
+        int64_t *c0 = realloc(E->cidx0, (size_t)cap * sizeof *c0);
+        if (c0) E->cidx0 = c0;
+        int64_t *sl = realloc(E->slot, (size_t)cap * sizeof *sl);
+        if (sl) E->slot = sl;
+        if (!lev || !c0 || !sl) return -1;
+    }
     E->ccap = cap;
     return 0;
 }
@@ -236,29 +262,12 @@ static int64_t visit_cell(cfpo_dens_engine *E, tbuf *b, int64_t c, double *maxd,
     return moves;
 }
 
-/* The grid's offset for iteration k: one random offset in [0, L)^2 for
- * each group of four iterations 4j + 1 .. 4j + 4 (docs/method.md,
- * "Density"); between moves the unchanged cells are skipped. */
-static void grid_offset(const cfpo_dens_engine *E, int k, double *sx, double *sy)
+/* One iteration's nine phases on the one grid, into *moves, *solved,
+ * *maxd (*tm: the phase clock, for the timers). 0, or -1. */
+static int sweep_grid(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, double *maxd_, double *tm_)
 {
-    const uint64_t grp = (uint64_t)((k - 1) / DENS_SHIFT_EVERY);
-    *sx = cfpo_rand01(E->o.seed, 0xD5E1ull, grp) * E->L;
-    *sy = cfpo_rand01(E->o.seed, 0xD5E2ull, grp) * E->L;
-}
-
-int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
-{
-    const double t0 = omp_get_wtime();
-    E->iter++;
-    double sx, sy;
-    grid_offset(E, E->iter, &sx, &sy);
-    if (!E->placed || sx != E->sx || sy != E->sy || !E->o.skip) memset(E->dirty, 1, (size_t)(E->g * E->g));
-    E->placed = 1;
-    E->sx = sx;
-    E->sy = sy;
-    double tm = omp_get_wtime();
-    if (E->T && (cfpo_dens_dist_migrate(E->T, &E->s, E->sx, E->sy) != 0 || !comm_all(fit_cells(E) == 0))) return -1;
-    E->t_migrate += omp_get_wtime() - tm;
+    int64_t moves = 0, solved = 0;
+    double maxd = 0, tm = *tm_;
     build_cells(E);
     const int64_t g = E->g, per = g / 3;
     int64_t mx = 0;
@@ -268,8 +277,6 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
             if (m > mx) mx = m;
         }
     if (!comm_all(ensure_buffers(E, (size_t)mx) == 0)) return -1;
-    int64_t moves = 0, solved = 0;
-    double maxd = 0;
     for (int colour = 0; colour < 9; colour++) {
         const int64_t bx = colour % 3, by = colour / 3;
         if (E->T) { /* this rank's cells of the colour, then their copies to the ranks that keep them */
@@ -296,6 +303,173 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
             if (md > maxd) maxd = md;
         }
     }
+    *moves_ = moves;
+    *solved_ = solved;
+    *maxd_ = maxd;
+    *tm_ = tm;
+    return 0;
+}
+
+/* Several ranks, level l: this rank's cells of level l (those inside its
+ * level-0 cells), grouped by colour into E->lcells, the colour k's from
+ * at[k] to at[k + 1]. 0, or -1. */
+static int level_cells(cfpo_dens_engine *E, int l, int64_t at[10])
+{
+    const int64_t g = E->lv.g0 << l, side = (int64_t)1 << l;
+    int64_t own = 0, cnt[9] = {0};
+    for (int k = 0; k < 9; k++) {
+        int64_t m;
+        (void)cfpo_dens_dist_cells(E->T, k, &m);
+        own += m;
+    }
+    const int64_t need = own * side * side;
+    if (need > E->lcap) {
+        int64_t *v = realloc(E->lcells, (size_t)(need > 0 ? need : 1) * sizeof *v);
+        if (!v) return -1;
+        E->lcells = v;
+        E->lcap = need;
+    }
+    for (int pass = 0; pass < 2; pass++) { /* count, then place */
+        if (pass) {
+            at[0] = 0;
+            for (int k = 0; k < 9; k++) at[k + 1] = at[k] + cnt[k];
+            for (int k = 0; k < 9; k++) cnt[k] = at[k];
+        }
+        for (int k = 0; k < 9; k++) {
+            int64_t m;
+            const int64_t *c0 = cfpo_dens_dist_cells(E->T, k, &m);
+            for (int64_t t = 0; t < m; t++) {
+                const int64_t X = c0[t] % E->lv.g0, Y = c0[t] / E->lv.g0;
+                for (int64_t b = 0; b < side; b++)
+                    for (int64_t a = 0; a < side; a++) {
+                        const int64_t i = (X << l) + a, j = (Y << l) + b, col = (i % 3) + 3 * (j % 3);
+                        if (pass) E->lcells[cnt[col]++] = j * g + i;
+                        else cnt[col]++;
+                    }
+            }
+        }
+    }
+    return 0;
+}
+
+/* One iteration on the levels (dens_levels.h): each own point's level,
+ * then level by level the nine phases over the cells that hold points of
+ * that level, each solving those points against its whole block. No cell
+ * is skipped. Several ranks: level 0's cells are cut as on the one grid;
+ * a finer cell lies in one of them and is solved by its owner, and after
+ * each phase every cell another rank keeps as halo is sent again. */
+static int sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, double *maxd_, double *tm_)
+{
+    int64_t moves = 0, solved = 0;
+    double maxd = 0, tm = *tm_;
+    const int64_t g0 = E->lv.g0;
+    if (!comm_all(cfpo_dens_levels_place(&E->lv, &E->qlow, E->sx, E->sy) == 0)) return -1;
+    for (int64_t i = 0; i < E->s.own; i++)
+        E->lev[i] = (unsigned char)cfpo_dens_levels_of(&E->lv, E->s.xy[2 * i], E->s.xy[2 * i + 1], E->s.q[i], E->D,
+                                                       CELL_SPACINGS);
+    if (E->T) { /* level 0's cells, for the refreshes */
+        build_cells(E);
+        memcpy(E->cstart0, E->cstart, (size_t)(g0 * g0 + 1) * sizeof *E->cstart0);
+        memcpy(E->cidx0, E->cidx, (size_t)E->s.loc * sizeof *E->cidx0);
+    }
+    int ok = 1;
+    for (int l = 0; l < E->lv.n && ok; l++) {
+        E->cur = l;
+        E->g = g0 << l;
+        E->L = 1.0 / (double)E->g;
+        const int64_t g = E->g, per = g / 3;
+        build_cells(E);
+        int64_t mx = 0;
+        for (int64_t cy = 0; cy < g; cy++)
+            for (int64_t cx = 0; cx < g; cx++) {
+                const int64_t m = block_count(E, cx, cy);
+                if (m > mx) mx = m;
+            }
+        int64_t at[10];
+        if (!comm_all(ensure_buffers(E, (size_t)mx) == 0 && (!E->T || level_cells(E, l, at) == 0))) { ok = 0; break; }
+        unsigned char *has = E->dirty, *dirty = E->ldirty[l]; /* the cells holding a point of this level; the skip */
+        memset(has, 0, (size_t)(g * g));
+        for (int64_t i = 0; i < E->s.own; i++)
+            if (E->lev[i] == l) has[E->cell[i]] = 1;
+        for (int colour = 0; colour < 9 && ok; colour++) {
+            const int64_t bx = colour % 3, by = colour / 3;
+            const int64_t m = E->T ? at[colour + 1] - at[colour] : per * per;
+#pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves, solved) reduction(max : maxd)
+            for (int64_t t = 0; t < m; t++) {
+                const int64_t c = E->T ? E->lcells[at[colour] + t] : (by + 3 * (t / per)) * g + bx + 3 * (t % per);
+                if (!has[c] || !dirty[c]) continue;
+                dirty[c] = 0; /* a move marks it again (its block holds the move) */
+                for (int64_t e = E->cstart[c]; e < E->cstart[c + 1]; e++) solved += E->lev[E->cidx[e]] == l;
+                double md = 0;
+                moves += dens_solve_cell(E, &E->tb[omp_get_thread_num()], c % g, c / g, &md);
+                if (md > maxd) maxd = md;
+            }
+            if (!E->T) continue;
+            const double th = omp_get_wtime();
+            E->t_compute += th - tm;
+            const int64_t nh = E->s.loc - E->s.own;
+            if (nh > E->hcap) {
+                double *h = realloc(E->hold, (size_t)nh * 2 * sizeof *h);
+                if (h) { E->hold = h; E->hcap = nh; }
+            }
+            ok = nh <= E->hcap;
+            if (ok) memcpy(E->hold, E->s.xy + 2 * E->s.own, (size_t)nh * 2 * sizeof *E->hold);
+            ok = comm_all(ok) && cfpo_dens_dist_refresh(E->T, &E->s, E->cstart0, E->cidx0, NULL, -1, NULL, g0) == 0;
+            for (int64_t j = E->s.own; j < E->s.loc && ok; j++) { /* the halo's new places into this level's rows */
+                double *r = E->cxyq + 3 * E->slot[j];
+                const double *was = E->hold + 2 * (j - E->s.own);
+                if (was[0] != E->s.xy[2 * j] || was[1] != E->s.xy[2 * j + 1]) { /* moved on its rank: marked as there */
+                    cfpo_dens_levels_mark(&E->lv, E->ldirty, was[0], was[1]);
+                    cfpo_dens_levels_mark(&E->lv, E->ldirty, E->s.xy[2 * j], E->s.xy[2 * j + 1]);
+                }
+                r[0] = E->s.xy[2 * j];
+                r[1] = E->s.xy[2 * j + 1];
+                r[2] = E->s.q[j];
+            }
+            tm = omp_get_wtime();
+            E->t_halo += tm - th;
+        }
+    }
+    E->g = g0;
+    E->L = 1.0 / (double)g0;
+    if (!comm_all(ok)) return -1;
+    *moves_ = moves;
+    *solved_ = solved;
+    *maxd_ = maxd;
+    *tm_ = tm;
+    return 0;
+}
+
+/* The grid's offset for iteration k: one random offset in [0, L)^2 for
+ * each group of four iterations 4j + 1 .. 4j + 4 (docs/method.md,
+ * "Density"); between moves the unchanged cells are skipped. */
+static void grid_offset(const cfpo_dens_engine *E, int k, double *sx, double *sy)
+{
+    const uint64_t grp = (uint64_t)((k - 1) / DENS_SHIFT_EVERY);
+    *sx = cfpo_rand01(E->o.seed, 0xD5E1ull, grp) * E->L;
+    *sy = cfpo_rand01(E->o.seed, 0xD5E2ull, grp) * E->L;
+}
+
+int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
+{
+    const double t0 = omp_get_wtime();
+    E->iter++;
+    double sx, sy;
+    grid_offset(E, E->iter, &sx, &sy);
+    const int fresh = !E->placed || sx != E->sx || sy != E->sy || !E->o.skip;
+    if (fresh) memset(E->dirty, 1, (size_t)(E->g * E->g));
+    for (int l = 0; fresh && l < E->lv.n && E->lv.n > 1; l++)
+        memset(E->ldirty[l], 1, (size_t)((E->lv.g0 << l) * (E->lv.g0 << l)));
+    E->placed = 1;
+    E->sx = sx;
+    E->sy = sy;
+    double tm = omp_get_wtime();
+    if (E->T && (cfpo_dens_dist_migrate(E->T, &E->s, E->sx, E->sy) != 0 || !comm_all(fit_cells(E) == 0))) return -1;
+    E->t_migrate += omp_get_wtime() - tm;
+    int64_t moves = 0, solved = 0;
+    double maxd = 0;
+    if ((E->lv.n > 1 ? sweep_levels(E, &moves, &solved, &maxd, &tm) : sweep_grid(E, &moves, &solved, &maxd, &tm)) != 0)
+        return -1;
     if (!E->T) E->t_compute += omp_get_wtime() - tm;
     E->iters_run++;
     int oom = 0;
@@ -392,6 +566,7 @@ void cfpo_dens_on_move(cfpo_dens_engine *E, cfpo_dens_move_fn fn, void *user)
     E->move_user = user;
 }
 int64_t cfpo_dens_cells_per_side(const cfpo_dens_engine *E) { return E->g; }
+int cfpo_dens_levels_count(const cfpo_dens_engine *E) { return E->lv.n; }
 
 void cfpo_dens_free(cfpo_dens_engine *E)
 {
@@ -402,6 +577,9 @@ void cfpo_dens_free(cfpo_dens_engine *E)
             cfpo_dens_buckets_free(&E->tb[t].bk);
         }
     free(E->tb); free(E->dirty); free(E->cell); free(E->cidx); free(E->cxyq); free(E->cstart); free(E->all);
+    free(E->lev); free(E->cstart0); free(E->cidx0); free(E->slot); free(E->lcells); free(E->hold);
+    for (int l = 0; l < CFPO_DENS_LEVELS_MAX; l++) free(E->ldirty[l]);
+    cfpo_dens_levels_free(&E->lv);
     cfpo_dens_store_free(&E->s);
     cfpo_dens_qbound_free(&E->qb);
     cfpo_dens_qbound_free(&E->qlow);

@@ -70,6 +70,8 @@ void cfpo_dens_timing(const cfpo_dens_engine *E, cfpo_engine_timing *t);
 const double *cfpo_dens_points(const cfpo_dens_engine *E);
 /* The points this rank owns (n on one rank). */
 int64_t cfpo_dens_own_points(const cfpo_dens_engine *E);
+/* The levels of cells (dens_levels.h): 1 when the one grid serves. */
+int cfpo_dens_levels_count(const cfpo_dens_engine *E);
 
 /* For the tests: fn(points, id, user) after every accepted move (from the
  * thread that made it). */

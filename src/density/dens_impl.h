@@ -10,6 +10,7 @@
 #include "dens_buckets.h"
 #include "dens_dist.h"
 #include "dens_engine.h"
+#include "dens_levels.h"
 #include "dens_qbound.h"
 
 #define KMAX 40        /* neighbours the solve looks at, nearest first */
@@ -52,6 +53,20 @@ struct cfpo_dens_engine {
     double t_compute, t_migrate, t_halo; /* this rank's seconds in each */
     cfpo_dens_move_fn on_move;
     void *move_user;
+    /* levels of cells sized to the local spacing (dens_levels.h); with
+     * more than one, g, L, cstart, cidx and cxyq are the level being
+     * solved's while it is, and level 0's otherwise */
+    cfpo_dens_levels lv;
+    int cur;              /* the level being solved */
+    unsigned char *lev;   /* per store slot: an own point's level this iteration */
+    int64_t *cstart0, *cidx0; /* several ranks: level 0's cells, for the halo refreshes */
+    int64_t *slot;        /* several ranks: each store point's place in cidx (cxyq's row) */
+    int64_t *lcells;      /* several ranks: this rank's cells of the level being solved, by colour */
+    int64_t lcap;
+    unsigned char *ldirty[CFPO_DENS_LEVELS_MAX]; /* per level, per cell: its block changed since it was last
+                                                    solved without a move (the skip, as dirty on the one grid) */
+    double *hold;         /* several ranks: the halo's places before a refresh */
+    int64_t hcap;
 };
 
 static inline int64_t cell_of(const cfpo_dens_engine *E, double x, double y)

@@ -108,3 +108,5 @@ int64_t cfpo_dens_run_own_points(const cfpo_run_engine *R)
 {
     return cfpo_dens_own_points(((const dens_run *)R->E)->E);
 }
+
+int cfpo_dens_run_levels(const cfpo_run_engine *R) { return cfpo_dens_levels_count(((const dens_run *)R->E)->E); }

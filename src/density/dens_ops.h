@@ -15,5 +15,7 @@ int cfpo_dens_open(const cfpo_density *d, int64_t n, const cfpo_options *o, cons
 
 /* The points this rank owns in a density run R (n on one rank). */
 int64_t cfpo_dens_run_own_points(const cfpo_run_engine *R);
+/* The levels of cells of a density run (dens_levels.h; 1: the one grid). */
+int cfpo_dens_run_levels(const cfpo_run_engine *R);
 
 #endif

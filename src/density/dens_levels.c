@@ -1,0 +1,152 @@
+/* dens_levels.c - layer 3: cells sized to the local spacing (dens_levels.h). */
+#include "dens_levels.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "dens_dist.h"
+
+int cfpo_dens_levels_init(cfpo_dens_levels *V, const cfpo_density *d, int64_t n, int64_t g0, double D, double spacings)
+{
+    (void)n;
+    *V = (cfpo_dens_levels){.n = 1, .g0 = g0, .qmin = sqrt(d->rho_min), .sx = NAN, .sy = NAN};
+    /* the densest spacing's cells a side */
+    const double gd = floor(1.0 / (spacings * D / sqrt(d->rho_max)));
+    while (V->n < CFPO_DENS_LEVELS_MAX && (double)(g0 << V->n) <= gd && (g0 << V->n) <= 3 * 8192) V->n++;
+    if (V->n == 1) return 0;
+    const int64_t gf = g0 << (V->n - 1);
+    V->work = malloc((size_t)(gf * gf) * sizeof *V->work);
+    int ok = V->work != NULL;
+    for (int l = 0; l < V->n; l++) {
+        const int64_t g = g0 << l;
+        for (int k = 0; k < CFPO_DENS_TIERS; k++) {
+            V->tq[l][k] = malloc((size_t)(g * g) * sizeof *V->tq[l][k]);
+            ok &= V->tq[l][k] != NULL;
+        }
+    }
+    if (!ok) {
+        cfpo_dens_levels_free(V);
+        return -1;
+    }
+    return 0;
+}
+
+/* out: the least of a over the cells within h of each (wrapping, g x g),
+ * by a running minimum along the rows, then along the columns; line: g
+ * floats of room. */
+static void box_min(const float *a, float *out, int64_t g, int64_t h, float *line)
+{
+    if (2 * h + 1 > g) h = g / 2; /* the whole line */
+    for (int pass = 0; pass < 2; pass++) {
+        const float *src = pass ? out : a;
+        for (int64_t r = 0; r < g; r++) {
+            for (int64_t i = 0; i < g; i++) line[i] = pass ? src[i * g + r] : src[r * g + i];
+            for (int64_t i = 0; i < g; i++) {
+                float m = line[i];
+                for (int64_t k = -h; k <= h; k++) {
+                    const float v = line[((i + k) % g + g) % g];
+                    if (v < m) m = v;
+                }
+                if (pass) out[i * g + r] = m;
+                else out[r * g + i] = m;
+            }
+        }
+    }
+}
+
+/* float at most v (v >= 0 or +inf) */
+static float below(double v)
+{
+    const float f = (float)v;
+    return (double)f > v ? nextafterf(f, 0) : f;
+}
+
+int cfpo_dens_levels_place(cfpo_dens_levels *V, const cfpo_dens_qbound *qlow, double sx, double sy)
+{
+    if (V->n == 1 || (sx == V->sx && sy == V->sy)) return 0;
+    const int f = V->n - 1;
+    const int64_t gf = V->g0 << f;
+    float *line = malloc((size_t)gf * sizeof *line), *own = malloc((size_t)(gf * gf) * sizeof *own);
+    if (!line || !own) {
+        free(line);
+        free(own);
+        return -1;
+    }
+    /* each finest cell's own least q, from the pyramid (over the pixels
+     * it touches, widened by one) */
+    const double Lf = 1.0 / (double)gf;
+    for (int64_t j = 0; j < gf; j++)
+        for (int64_t i = 0; i < gf; i++) {
+            const double x0 = sx + (double)i * Lf, y0 = sy + (double)j * Lf;
+            V->work[j * gf + i] = below(cfpo_dens_qbound_box(qlow, x0, y0, x0 + Lf, y0 + Lf));
+        }
+    /* up the levels (a cell of level l is 2 x 2 of level l + 1: the same
+     * offset, cell_of's floors nest), each level's tiers from its own */
+    for (int l = f; l >= 0; l--) {
+        const int64_t g = V->g0 << l;
+        if (l < f) {
+            const int64_t h = 2 * g;
+            const float *c = V->work;
+            for (int64_t j = 0; j < g; j++)
+                for (int64_t i = 0; i < g; i++) {
+                    float m = c[(2 * j) * h + 2 * i];
+                    if (c[(2 * j) * h + 2 * i + 1] < m) m = c[(2 * j) * h + 2 * i + 1];
+                    if (c[(2 * j + 1) * h + 2 * i] < m) m = c[(2 * j + 1) * h + 2 * i];
+                    if (c[(2 * j + 1) * h + 2 * i + 1] < m) m = c[(2 * j + 1) * h + 2 * i + 1];
+                    own[j * g + i] = m;
+                }
+            for (int64_t t = 0; t < g * g; t++) V->work[t] = own[t];
+        }
+        for (int k = 1; k <= CFPO_DENS_TIERS; k++) box_min(V->work, V->tq[l][k - 1], g, ((int64_t)1 << (k - 1)) + 1, line);
+    }
+    free(line);
+    free(own);
+    V->sx = sx;
+    V->sy = sy;
+    return 0;
+}
+
+int cfpo_dens_levels_tiers(const cfpo_dens_levels *V, int l, int64_t cx, int64_t cy, double *t)
+{
+    const int64_t g = V->g0 << l;
+    for (int k = 0; k < CFPO_DENS_TIERS; k++) t[k] = (double)V->tq[l][k][cy * g + cx];
+    return CFPO_DENS_TIERS;
+}
+
+int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings)
+{
+    if (V->n == 1 || !(q > 0)) return 0;
+    int l = V->n - 1;
+    const double s = spacings * D / q;
+    while (l > 0 && 1.0 / (double)(V->g0 << l) < s) l--;
+    double t[CFPO_DENS_TIERS];
+    for (; l > 0; l--) {
+        const int64_t g = V->g0 << l, c = cfpo_dens_cell_of(g, V->sx, V->sy, x, y);
+        const int nt = cfpo_dens_levels_tiers(V, l, c % g, c / g, t);
+        const double L = 1.0 / (double)g;
+        if (cfpo_dens_levels_clear(t, nt, V->qmin, L, L, q, (spacings * D) * (spacings * D))) break;
+    }
+    return l;
+}
+
+void cfpo_dens_levels_mark(const cfpo_dens_levels *V, unsigned char *const *dirty, double x, double y)
+{
+    for (int l = 0; l < V->n; l++) {
+        const int64_t g = V->g0 << l, c = cfpo_dens_cell_of(g, V->sx, V->sy, x, y), cx = c % g, cy = c / g;
+        for (int64_t dy = -1; dy <= 1; dy++)
+            for (int64_t dx = -1; dx <= 1; dx++)
+                __atomic_store_n(&dirty[l][((cy + dy + g) % g) * g + (cx + dx + g) % g], 1, __ATOMIC_RELAXED);
+    }
+}
+
+void cfpo_dens_levels_free(cfpo_dens_levels *V)
+{
+    for (int l = 0; l < CFPO_DENS_LEVELS_MAX; l++)
+        for (int k = 0; k < CFPO_DENS_TIERS; k++) {
+            free(V->tq[l][k]);
+            V->tq[l][k] = NULL;
+        }
+    free(V->work);
+    V->work = NULL;
+    V->n = 1;
+}
