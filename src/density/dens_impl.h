@@ -1,5 +1,6 @@
-/* dens_impl.h - layer 3: the density engine's state, shared by its two
- * files: dens_engine.c (lifetime, grid, schedule, measure, points out) and
+/* dens_impl.h - layer 3: the density engine's state, shared by its
+ * files: dens_engine.c (lifetime, grid, schedule, measure, points out),
+ * dens_sweep.c (an iteration's phases, on the one grid or the levels) and
  * dens_cell.c (one cell's solves and the accept rule). Not for use
  * outside them (dens_engine.h is the engine's interface). */
 #ifndef CFPO_DENS_IMPL_H
@@ -73,6 +74,17 @@ static inline int64_t cell_of(const cfpo_dens_engine *E, double x, double y)
 {
     return cfpo_dens_cell_of(E->g, E->sx, E->sy, x, y);
 }
+
+/* The cells of the grid E->g (under the offset E->sx, E->sy): E->cell,
+ * cstart, cidx (store slots, in store order inside each cell), cxyq, and
+ * slot when kept (dens_sweep.c). */
+void dens_build_cells(cfpo_dens_engine *E);
+
+/* One iteration's phases into *moves, *solved, *maxd (*tm: the phase
+ * clock, for the timers; dens_sweep.c): on the one grid, or (more than one
+ * level) level by level. Collective. 0, or -1 when out of memory. */
+int dens_sweep_grid(cfpo_dens_engine *E, int64_t *moves, int64_t *solved, double *maxd, double *tm);
+int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves, int64_t *solved, double *maxd, double *tm);
 
 /* Solves the points of cell (cx, cy) one after another (dens_cell.c);
  * returns the moves made, the largest move (in local spacings) into
