@@ -89,10 +89,12 @@ static inline int cfpo_dens_levels_clear(const double *t, int nt, double qmin, d
 int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings);
 
 /* Marks, in every level's dirty (g0 2^l cells a side each), the 3 x 3
- * cells around the cell of (x, y) under the placed offset: their blocks
- * hold that spot. Relaxed atomic stores (cells of other levels than the
- * one being solved can be marked by several threads at once). */
-void cfpo_dens_levels_mark(const cfpo_dens_levels *V, unsigned char *const *dirty, double x, double y);
+ * cells around the cells of (x0, y0) and (x1, y1) under the placed
+ * offset (a move's old and new places): their blocks hold those spots.
+ * Relaxed atomic stores (cells of other levels than the one being solved
+ * can be marked by several threads at once). */
+void cfpo_dens_levels_mark(const cfpo_dens_levels *V, unsigned char *const *dirty, double x0, double y0, double x1,
+                           double y1);
 
 void cfpo_dens_levels_free(cfpo_dens_levels *V);
 

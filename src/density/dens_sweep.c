@@ -247,8 +247,7 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
                 double *r = E->cxyq + 3 * E->slot[j];
                 const double *was = E->hold + 2 * (j - E->s.own);
                 if (was[0] != E->s.xy[2 * j] || was[1] != E->s.xy[2 * j + 1]) { /* moved on its rank: marked as there */
-                    cfpo_dens_levels_mark(&E->lv, E->ldirty, was[0], was[1]);
-                    cfpo_dens_levels_mark(&E->lv, E->ldirty, E->s.xy[2 * j], E->s.xy[2 * j + 1]);
+                    cfpo_dens_levels_mark(&E->lv, E->ldirty, was[0], was[1], E->s.xy[2 * j], E->s.xy[2 * j + 1]);
                 }
                 r[0] = E->s.xy[2 * j];
                 r[1] = E->s.xy[2 * j + 1];
