@@ -32,21 +32,22 @@ int cfpo_dens_levels_init(cfpo_dens_levels *V, const cfpo_density *d, int64_t n,
 }
 
 /* out: the least of a over the cells within h of each (wrapping, g x g),
- * by a running minimum along the rows, then along the columns; line: g
- * floats of room. */
+ * by a running minimum along the rows, then along the columns; line:
+ * 2 g floats of room (a line with its wrapped ends). */
 static void box_min(const float *a, float *out, int64_t g, int64_t h, float *line)
 {
     if (2 * h + 1 > g) h = g / 2; /* the whole line */
     for (int pass = 0; pass < 2; pass++) {
         const float *src = pass ? out : a;
         for (int64_t r = 0; r < g; r++) {
-            for (int64_t i = 0; i < g; i++) line[i] = pass ? src[i * g + r] : src[r * g + i];
+            for (int64_t i = -h; i < g + h; i++) {
+                const int64_t k = i < 0 ? i + g : i >= g ? i - g : i;
+                line[i + h] = pass ? src[k * g + r] : src[r * g + k];
+            }
             for (int64_t i = 0; i < g; i++) {
                 float m = line[i];
-                for (int64_t k = -h; k <= h; k++) {
-                    const float v = line[((i + k) % g + g) % g];
-                    if (v < m) m = v;
-                }
+                for (int64_t k = 1; k <= 2 * h; k++)
+                    if (line[i + k] < m) m = line[i + k];
                 if (pass) out[i * g + r] = m;
                 else out[r * g + i] = m;
             }
@@ -66,7 +67,7 @@ int cfpo_dens_levels_place(cfpo_dens_levels *V, const cfpo_dens_qbound *qlow, do
     if (V->n == 1 || (sx == V->sx && sy == V->sy)) return 0;
     const int f = V->n - 1;
     const int64_t gf = V->g0 << f;
-    float *line = malloc((size_t)gf * sizeof *line), *own = malloc((size_t)(gf * gf) * sizeof *own);
+    float *line = malloc((size_t)(2 * gf + 2) * sizeof *line), *own = malloc((size_t)(gf * gf) * sizeof *own);
     if (!line || !own) {
         free(line);
         free(own);
