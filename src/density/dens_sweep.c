@@ -182,10 +182,13 @@ static int level_cells(cfpo_dens_engine *E, int l, int64_t at[10])
 
 /* One iteration on the levels (dens_levels.h): each own point's level,
  * then level by level the nine phases over the cells that hold points of
- * that level, each solving those points against its whole block. No cell
- * is skipped. Several ranks: level 0's cells are cut as on the one grid;
- * a finer cell lies in one of them and is solved by its owner, and after
- * each phase every cell another rank keeps as halo is sent again. */
+ * that level, each solving those points against its whole block; a cell
+ * whose block did not change since it was last solved without a move is
+ * skipped (a move marks the blocks around its old and new place at every
+ * level). Several ranks: level 0's cells are cut as on the one grid; a
+ * finer cell lies in one of them and is solved by its owner, and after
+ * each phase every cell another rank keeps as halo is sent again, a halo
+ * point that moved marking what it marked on its own rank. */
 int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, double *maxd_, double *tm_)
 {
     int64_t moves = 0, solved = 0;
@@ -241,7 +244,7 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
                 if (h) { E->hold = h; E->hcap = nh; }
             }
             ok = nh <= E->hcap;
-            if (ok) memcpy(E->hold, E->s.xy + 2 * E->s.own, (size_t)nh * 2 * sizeof *E->hold);
+            if (ok && nh > 0) memcpy(E->hold, E->s.xy + 2 * E->s.own, (size_t)nh * 2 * sizeof *E->hold);
             ok = comm_all(ok) && cfpo_dens_dist_refresh(E->T, &E->s, E->cstart0, E->cidx0, NULL, -1, NULL, g0) == 0;
             for (int64_t j = E->s.own; j < E->s.loc && ok; j++) { /* the halo's new places into this level's rows */
                 double *r = E->cxyq + 3 * E->slot[j];
