@@ -49,12 +49,12 @@ static void counts(void)
     const int64_t n = 65536;
     const double D = cfpo_delta_bound((double)n);
     cfpo_dens_levels V;
-    CHECK(cfpo_dens_levels_init(&V, &d, n, 189, D, 1.25) == 0 && V.n == 1 && !V.work, "flat: %d levels", V.n);
+    CHECK(cfpo_dens_levels_init(&V, &d, 189, D, 1.25) == 0 && V.n == 1 && !V.work, "flat: %d levels", V.n);
     cfpo_dens_levels_free(&V);
     cfpo_density_free(&d);
     if (load("ramp:contrast=256,res=256", &d) != 0) return;
     const double densest = D / sqrt(d.rho_max);
-    CHECK(cfpo_dens_levels_init(&V, &d, n, 15, D, 1.25) == 0 && V.n >= 4, "ramp 1:256: %d levels", V.n);
+    CHECK(cfpo_dens_levels_init(&V, &d, 15, D, 1.25) == 0 && V.n >= 4, "ramp 1:256: %d levels", V.n);
     for (int l = 0; l < V.n; l++)
         CHECK(1.0 / (double)(V.g0 << l) >= 1.25 * densest, "level %d: cells %g under 1.25 x the densest spacing %g", l,
               1.0 / (double)(V.g0 << l), densest);
@@ -84,7 +84,7 @@ static void tiers_bound(void)
     if (cfpo_dens_qbound_build_min(&ql, &d) != 0) { CHECK(0, "pyramid"); cfpo_density_free(&d); return; }
     const int64_t n = 20000;
     cfpo_dens_levels V;
-    CHECK(cfpo_dens_levels_init(&V, &d, n, 6, cfpo_delta_bound((double)n), 1.25) == 0 && V.n >= 3, "random: %d levels",
+    CHECK(cfpo_dens_levels_init(&V, &d, 6, cfpo_delta_bound((double)n), 1.25) == 0 && V.n >= 3, "random: %d levels",
           V.n);
     int64_t checked = 0, bad = 0;
     for (int rep = 0; rep < 3 && V.n > 1; rep++) {

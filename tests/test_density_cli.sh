@@ -86,6 +86,15 @@ rm -f u.npy u.bin h.npy ck.bin clump.txt
 
 # several ranks: tests/test_dens_mpi.sh (label mpi)
 
+# the DENSITY line's levels of cells (dens_levels.h): one on a nearly flat
+# density, five on the ramp 1:256 and the image at 16,384 points
+for c in "cos:a=0.01 1" "ramp:contrast=256 5" "$HERE/../data/astronaut-256.png 5"; do
+  set -- $c
+  l=$("$CFPO" -q -n 16384 -t 1 --max-iter 0 --density "$1" -o lv.npy | sed -n 's/^DENSITY .* levels=\([0-9]*\) .*/\1/p')
+  [ "$l" = "$2" ] && ok || bad "$(basename "$1"): DENSITY levels='$l', not $2"
+done
+rm -f lv.npy
+
 # uniform density: the measures equal today's
 "$CFPO" -q -n 2000 --max-iter 5 -o uni.npy >/dev/null
 s=$("$AN" -q -o an1 uni.npy | sed -n 's/.* delta_min=\([^ ]*\) delta_avg=\([^ ]*\) .*/\1 \2/p')

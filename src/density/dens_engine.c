@@ -65,7 +65,7 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     E->cidx = malloc((size_t)n * sizeof *E->cidx);
     E->cxyq = malloc((size_t)n * 3 * sizeof *E->cxyq);
     /* cells sized to the local spacing: levels of finer grids (dens_levels.h) */
-    int lvok = cfpo_dens_levels_init(&E->lv, d, n, g, E->D, CELL_SPACINGS) == 0;
+    int lvok = cfpo_dens_levels_init(&E->lv, d, g, E->D, CELL_SPACINGS) == 0;
     for (int l = 0; l < E->lv.n && E->lv.n > 1 && lvok; l++) {
         E->ldirty[l] = malloc((size_t)((g << l) * (g << l)));
         lvok = E->ldirty[l] != NULL;

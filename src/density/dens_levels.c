@@ -6,9 +6,8 @@
 
 #include "dens_dist.h"
 
-int cfpo_dens_levels_init(cfpo_dens_levels *V, const cfpo_density *d, int64_t n, int64_t g0, double D, double spacings)
+int cfpo_dens_levels_init(cfpo_dens_levels *V, const cfpo_density *d, int64_t g0, double D, double spacings)
 {
-    (void)n;
     *V = (cfpo_dens_levels){.n = 1, .g0 = g0, .qmin = sqrt(d->rho_min), .sx = NAN, .sy = NAN};
     /* the densest spacing's cells a side */
     const double gd = floor(1.0 / (spacings * D / sqrt(d->rho_max)));

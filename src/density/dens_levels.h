@@ -53,11 +53,11 @@ typedef struct {
     float *work;           /* the finest level's cells: a cell's own least q */
 } cfpo_dens_levels;
 
-/* The levels for n points under d on a grid of g0 cells a side, with
+/* The levels under d on a grid of g0 cells a side, with
  * spacing unit D (Delta(n)): as many as halve the cell while it stays at
  * least 1.25 times the densest spacing, at most CFPO_DENS_LEVELS_MAX. One
  * level holds no arrays. 0, or -1 when out of memory. */
-int cfpo_dens_levels_init(cfpo_dens_levels *V, const cfpo_density *d, int64_t n, int64_t g0, double D, double spacings);
+int cfpo_dens_levels_init(cfpo_dens_levels *V, const cfpo_density *d, int64_t g0, double D, double spacings);
 
 /* The least-q arrays for the offset (sx, sy) (nothing when they are
  * already for it). 0, or -1 when out of memory. */
