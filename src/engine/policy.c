@@ -31,16 +31,6 @@ static const double relax_strong[2] = {3.0, 1.8}, relax_mild[2] = {1.8, 1.4};
  * frequencies m g / 3; the two axes start at independent points. */
 #define WALK_STEP 1
 #define WALK_CYCLE 7
-/* In each of the first FAST_MOVES iterations k the colours also turn by
- * (k mod 3, (k / 3) mod 3) cells on (x, y), the cells themselves staying
- * where the walk put them: the colours' print (frequencies m g / 3, m not
- * a multiple of 3) turns by 120 m degrees more a sweep on x, and the nine
- * turns of nine sweeps would cancel it on every direction, while the
- * cells' print ((0, g), (g, 0)) keeps the walk's phases. Later sweeps keep
- * one colour order while the grid stays: turned there too, a sweep moves
- * fewer points and the run to the target takes 32 iterations instead of
- * 23 at 1,048,576 points (docs/tried.md, "The colours turned"). */
-static int colour_turn(int k, int axis) { return axis == 0 ? k % 3 : (k / 3) % 3; }
 
 /* The hyperuniform variant: the adaptive schedule until HU_FROM; then
  * HU_FIRST transport sweeps; then HU_ROUNDS rounds of one near sweep
@@ -128,10 +118,9 @@ cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
     P.margin = adaptive_margin(G, dmin);
     P.shift_x = cfpo_policy_shift(G, k, 0);
     P.shift_y = cfpo_policy_shift(G, k, 1);
+    P.rot_x = (int)floor(cfpo_policy_walk(G, k, 0)) % G->period;
+    P.rot_y = (int)floor(cfpo_policy_walk(G, k, 1)) % G->period;
     P.balanced = !earlier_schedule(G);
-    const int turn = P.balanced && k <= FAST_MOVES;
-    P.rot_x = ((int)floor(cfpo_policy_walk(G, k, 0)) + (turn ? colour_turn(k, 0) : 0)) % G->period;
-    P.rot_y = ((int)floor(cfpo_policy_walk(G, k, 1)) + (turn ? colour_turn(k, 1) : 0)) % G->period;
     P.cut = 1;
     P.freeze = FREEZE * G->L;
     if (G->variant == CFPO_VARIANT_HYPERUNIFORM && k >= HU_FROM) {
