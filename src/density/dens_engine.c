@@ -67,8 +67,9 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     /* cells sized to the local spacing: levels of finer grids (dens_levels.h) */
     int lvok = cfpo_dens_levels_init(&E->lv, d, g, E->D, CELL_SPACINGS) == 0;
     for (int l = 0; l < E->lv.n && E->lv.n > 1 && lvok; l++) {
-        E->ldirty[l] = malloc((size_t)((g << l) * (g << l)));
-        lvok = E->ldirty[l] != NULL;
+        E->ltouch[l] = calloc((size_t)((g << l) * (g << l)), sizeof *E->ltouch[l]);
+        E->lseen[l] = calloc((size_t)((g << l) * (g << l)), sizeof *E->lseen[l]);
+        lvok = E->ltouch[l] != NULL && E->lseen[l] != NULL;
     }
     const int64_t gf = g << (E->lv.n - 1); /* the finest level's cells a side */
     E->cstart = malloc((size_t)(gf * gf + 1) * sizeof *E->cstart);
@@ -203,7 +204,7 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
     const int fresh = !E->placed || sx != E->sx || sy != E->sy || !E->o.skip;
     if (fresh) memset(E->dirty, 1, (size_t)(E->g * E->g));
     for (int l = 0; fresh && l < E->lv.n && E->lv.n > 1; l++)
-        memset(E->ldirty[l], 1, (size_t)((E->lv.g0 << l) * (E->lv.g0 << l)));
+        memset(E->lseen[l], 0, (size_t)((E->lv.g0 << l) * (E->lv.g0 << l)) * sizeof *E->lseen[l]);
     E->placed = 1;
     E->sx = sx;
     E->sy = sy;
@@ -322,7 +323,10 @@ void cfpo_dens_free(cfpo_dens_engine *E)
         }
     free(E->tb); free(E->dirty); free(E->cell); free(E->cidx); free(E->cxyq); free(E->cstart); free(E->all);
     free(E->lev); free(E->cstart0); free(E->cidx0); free(E->slot); free(E->lcells); free(E->hold);
-    for (int l = 0; l < CFPO_DENS_LEVELS_MAX; l++) free(E->ldirty[l]);
+    for (int l = 0; l < CFPO_DENS_LEVELS_MAX; l++) {
+        free(E->ltouch[l]);
+        free(E->lseen[l]);
+    }
     cfpo_dens_levels_free(&E->lv);
     cfpo_dens_store_free(&E->s);
     cfpo_dens_qbound_free(&E->qb);

@@ -64,8 +64,14 @@ struct cfpo_dens_engine {
     int64_t *slot;        /* several ranks: each store point's place in cidx (cxyq's row) */
     int64_t *lcells;      /* several ranks: this rank's cells of the level being solved, by colour */
     int64_t lcap;
-    unsigned char *ldirty[CFPO_DENS_LEVELS_MAX]; /* per level, per cell: its block changed since it was last
-                                                    solved without a move (the skip, as dirty on the one grid) */
+    /* the skip on the levels (as dirty on the one grid): per level, per
+     * cell, the last phase a move's old or new place lay in it (touch)
+     * and the phase it was last solved in (seen, 0: not since the offset
+     * changed); it is solved again when its 3 x 3 holds a touch >= seen
+     * (cfpo_dens_levels_touched). phase counts the levels' colour phases,
+     * from 1 */
+    uint32_t *ltouch[CFPO_DENS_LEVELS_MAX], *lseen[CFPO_DENS_LEVELS_MAX];
+    uint32_t phase;
     double *hold;         /* several ranks: the halo's places before a refresh */
     int64_t hcap;
 };

@@ -129,17 +129,8 @@ int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q,
     return l;
 }
 
-/* the 3 x 3 cells around (cx, cy) of a g x g level */
-static void mark9(unsigned char *d, int64_t g, int64_t cx, int64_t cy)
-{
-    const int64_t xs[3] = {cx ? cx - 1 : g - 1, cx, cx + 1 < g ? cx + 1 : 0};
-    const int64_t ys[3] = {cy ? cy - 1 : g - 1, cy, cy + 1 < g ? cy + 1 : 0};
-    for (int b = 0; b < 3; b++)
-        for (int a = 0; a < 3; a++) __atomic_store_n(&d[ys[b] * g + xs[a]], 1, __ATOMIC_RELAXED);
-}
-
-void cfpo_dens_levels_mark(const cfpo_dens_levels *V, unsigned char *const *dirty, double x0, double y0, double x1,
-                           double y1)
+void cfpo_dens_levels_mark(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, double x0, double y0,
+                           double x1, double y1)
 {
     const int f = V->n - 1;
     const int64_t gf = V->g0 << f, a = cfpo_dens_cell_of(gf, V->sx, V->sy, x0, y0),
@@ -148,8 +139,8 @@ void cfpo_dens_levels_mark(const cfpo_dens_levels *V, unsigned char *const *dirt
     for (int l = 0; l <= f; l++) { /* a level's cell of a spot: the finest's shifted (the floors nest) */
         const int sh = f - l;
         const int64_t g = V->g0 << l;
-        mark9(dirty[l], g, ax >> sh, ay >> sh);
-        if ((bx >> sh) != (ax >> sh) || (by >> sh) != (ay >> sh)) mark9(dirty[l], g, bx >> sh, by >> sh);
+        __atomic_store_n(&touch[l][(ay >> sh) * g + (ax >> sh)], phase, __ATOMIC_RELAXED);
+        __atomic_store_n(&touch[l][(by >> sh) * g + (bx >> sh)], phase, __ATOMIC_RELAXED);
     }
 }
 

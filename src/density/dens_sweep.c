@@ -218,18 +218,21 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
             }
         int64_t at[10];
         if (!comm_all(ensure_buffers(E, (size_t)mx) == 0 && (!E->T || level_cells(E, l, at) == 0))) { ok = 0; break; }
-        unsigned char *has = E->dirty, *dirty = E->ldirty[l]; /* the cells holding a point of this level; the skip */
+        unsigned char *has = E->dirty; /* the cells holding a point of this level */
+        const uint32_t *touch = E->ltouch[l];
+        uint32_t *seen = E->lseen[l]; /* the skip */
         memset(has, 0, (size_t)(g * g));
         for (int64_t i = 0; i < E->s.own; i++)
             if (E->lev[i] == l) has[E->cell[i]] = 1;
         for (int colour = 0; colour < 9 && ok; colour++) {
             const int64_t bx = colour % 3, by = colour / 3;
             const int64_t m = E->T ? at[colour + 1] - at[colour] : per * per;
+            const uint32_t ph = ++E->phase;
 #pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves, solved) reduction(max : maxd)
             for (int64_t t = 0; t < m; t++) {
                 const int64_t c = E->T ? E->lcells[at[colour] + t] : (by + 3 * (t / per)) * g + bx + 3 * (t % per);
-                if (!has[c] || !dirty[c]) continue;
-                dirty[c] = 0; /* a move marks it again (its block holds the move) */
+                if (!has[c] || !cfpo_dens_levels_touched(touch, g, c % g, c / g, seen[c])) continue;
+                seen[c] = ph; /* a move stamps it again (the move lies in it) */
                 for (int64_t e = E->cstart[c]; e < E->cstart[c + 1]; e++) solved += E->lev[E->cidx[e]] == l;
                 double md = 0;
                 moves += dens_solve_cell(E, &E->tb[omp_get_thread_num()], c % g, c / g, &md);
@@ -250,7 +253,7 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
                 double *r = E->cxyq + 3 * E->slot[j];
                 const double *was = E->hold + 2 * (j - E->s.own);
                 if (was[0] != E->s.xy[2 * j] || was[1] != E->s.xy[2 * j + 1]) { /* moved on its rank: marked as there */
-                    cfpo_dens_levels_mark(&E->lv, E->ldirty, was[0], was[1], E->s.xy[2 * j], E->s.xy[2 * j + 1]);
+                    cfpo_dens_levels_mark(&E->lv, E->ltouch, ph, was[0], was[1], E->s.xy[2 * j], E->s.xy[2 * j + 1]);
                 }
                 r[0] = E->s.xy[2 * j];
                 r[1] = E->s.xy[2 * j + 1];
