@@ -30,12 +30,25 @@ int cfpo_dens_levels_init(cfpo_dens_levels *V, const cfpo_density *d, int64_t g0
     return 0;
 }
 
+/* out[i] = the least of e[i .. i + w - 1], i in [0, n - w]: runs of
+ * doubling length folded in place into t (n floats of room), then two
+ * overlapping runs a window (the same least as a scan of the window). */
+static void window_min(const float *e, int64_t n, int64_t w, float *t, float *out)
+{
+    for (int64_t i = 0; i < n; i++) t[i] = e[i];
+    int64_t q = 1;
+    for (; 2 * q <= w; q *= 2)
+        for (int64_t i = 0; i + 2 * q <= n; i++) t[i] = t[i + q] < t[i] ? t[i + q] : t[i];
+    for (int64_t i = 0; i + w <= n; i++) out[i] = t[i + w - q] < t[i] ? t[i + w - q] : t[i];
+}
+
 /* out: the least of a over the cells within h of each (wrapping, g x g),
- * by a running minimum along the rows, then along the columns; line:
- * 2 g floats of room (a line with its wrapped ends). */
+ * along the rows, then along the columns; line: 5 g floats of room
+ * (a line with its wrapped ends, the folded runs, a line's minima). */
 static void box_min(const float *a, float *out, int64_t g, int64_t h, float *line)
 {
     if (2 * h + 1 > g) h = g / 2; /* the whole line */
+    float *t = line + g + 2 * h, *o = t + g + 2 * h;
     for (int pass = 0; pass < 2; pass++) {
         const float *src = pass ? out : a;
         for (int64_t r = 0; r < g; r++) {
@@ -43,12 +56,10 @@ static void box_min(const float *a, float *out, int64_t g, int64_t h, float *lin
                 const int64_t k = i < 0 ? i + g : i >= g ? i - g : i;
                 line[i + h] = pass ? src[k * g + r] : src[r * g + k];
             }
+            window_min(line, g + 2 * h, 2 * h + 1, t, o);
             for (int64_t i = 0; i < g; i++) {
-                float m = line[i];
-                for (int64_t k = 1; k <= 2 * h; k++)
-                    if (line[i + k] < m) m = line[i + k];
-                if (pass) out[i * g + r] = m;
-                else out[r * g + i] = m;
+                if (pass) out[i * g + r] = o[i];
+                else out[r * g + i] = o[i];
             }
         }
     }
@@ -66,7 +77,7 @@ int cfpo_dens_levels_place(cfpo_dens_levels *V, const cfpo_dens_qbound *qlow, do
     if (V->n == 1 || (sx == V->sx && sy == V->sy)) return 0;
     const int f = V->n - 1;
     const int64_t gf = V->g0 << f;
-    float *line = malloc((size_t)(2 * gf + 2) * sizeof *line), *own = malloc((size_t)(gf * gf) * sizeof *own);
+    float *line = malloc((size_t)(5 * gf + 8) * sizeof *line), *own = malloc((size_t)(gf * gf) * sizeof *own);
     if (!line || !own) {
         free(line);
         free(own);
