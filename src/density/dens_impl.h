@@ -12,6 +12,7 @@
 #include "dens_dist.h"
 #include "dens_engine.h"
 #include "dens_levels.h"
+#include "dens_measure.h"
 #include "dens_qbound.h"
 
 #define KMAX 40        /* neighbours the solve looks at, nearest first */
@@ -36,6 +37,7 @@ struct cfpo_dens_engine {
     const cfpo_density *d;
     cfpo_dens_qbound qb;   /* the bound of q over a box, for the solve's prunings */
     cfpo_dens_qbound qlow; /* q's lower bound over a box, for the measure's search */
+    cfpo_dens_nn_near near; /* the measure's search grid's near bounds, kept between measures */
     int64_t n, g;
     cfpo_options o;
     double D, L, sx, sy;
