@@ -64,7 +64,7 @@ struct cfpo_dens_engine {
     unsigned char *lev;   /* per store slot: an own point's level this iteration */
     int64_t *cstart0, *cidx0; /* several ranks: level 0's cells, for the halo refreshes */
     int64_t *slot;        /* several ranks: each store point's place in cidx (cxyq's row) */
-    int64_t *lcells;      /* several ranks: this rank's cells of the level being solved, by colour */
+    int64_t *lcells;      /* the level being solved: its cells holding a point (one rank) or this rank's cells (several), by colour */
     int64_t lcap;
     /* the skip on the levels (as dirty on the one grid): per level, per
      * cell, the last phase a move's old or new place lay in it (touch)

@@ -195,9 +195,13 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
     double maxd = 0, tm = *tm_;
     const int64_t g0 = E->lv.g0;
     if (!comm_all(cfpo_dens_levels_place(&E->lv, &E->qlow, E->sx, E->sy) == 0)) return -1;
-    for (int64_t i = 0; i < E->s.own; i++)
+    int64_t per_level[CFPO_DENS_LEVELS_MAX] = {0}; /* the points of each level, on every rank */
+    for (int64_t i = 0; i < E->s.own; i++) {
         E->lev[i] = (unsigned char)cfpo_dens_levels_of(&E->lv, E->s.xy[2 * i], E->s.xy[2 * i + 1], E->s.q[i], E->D,
                                                        CELL_SPACINGS);
+        per_level[E->lev[i]]++;
+    }
+    if (E->T) comm_sum_i64(per_level, E->lv.n);
     if (E->T) { /* level 0's cells, for the refreshes */
         dens_build_cells(E);
         memcpy(E->cstart0, E->cstart, (size_t)(g0 * g0 + 1) * sizeof *E->cstart0);
@@ -205,32 +209,55 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
     }
     int ok = 1;
     for (int l = 0; l < E->lv.n && ok; l++) {
+        if (per_level[l] == 0) continue; /* nothing to solve, on any rank */
         E->cur = l;
         E->g = g0 << l;
         E->L = 1.0 / (double)E->g;
-        const int64_t g = E->g, per = g / 3;
+        const int64_t g = E->g;
         dens_build_cells(E);
-        int64_t mx = 0;
-        for (int64_t cy = 0; cy < g; cy++)
-            for (int64_t cx = 0; cx < g; cx++) {
-                const int64_t m = block_count(E, cx, cy);
-                if (m > mx) mx = m;
-            }
-        int64_t at[10];
-        if (!comm_all(ensure_buffers(E, (size_t)mx) == 0 && (!E->T || level_cells(E, l, at) == 0))) { ok = 0; break; }
         unsigned char *has = E->dirty; /* the cells holding a point of this level */
         const uint32_t *touch = E->ltouch[l];
         uint32_t *seen = E->lseen[l]; /* the skip */
         memset(has, 0, (size_t)(g * g));
+        int64_t at[10] = {0}, nh = 0;
         for (int64_t i = 0; i < E->s.own; i++)
-            if (E->lev[i] == l) has[E->cell[i]] = 1;
+            if (E->lev[i] == l && !has[E->cell[i]]) {
+                has[E->cell[i]] = 1;
+                nh++;
+            }
+        /* one rank: the cells holding a point of this level by colour
+         * (cells of one colour are solved in any order: their blocks are
+         * apart); several: this rank's cells of the level by colour */
+        if (!E->T && nh > E->lcap) {
+            int64_t *v = realloc(E->lcells, (size_t)nh * sizeof *v);
+            if (v) { E->lcells = v; E->lcap = nh; }
+        }
+        if (!E->T && nh <= E->lcap) {
+            for (int64_t c = 0; c < g * g; c++)
+                if (has[c]) at[(c % g) % 3 + 3 * ((c / g) % 3) + 1]++;
+            for (int k = 0; k < 9; k++) at[k + 1] += at[k];
+            int64_t fill[9];
+            for (int k = 0; k < 9; k++) fill[k] = at[k];
+            for (int64_t c = 0; c < g * g; c++)
+                if (has[c]) E->lcells[fill[(c % g) % 3 + 3 * ((c / g) % 3)]++] = c;
+        }
+        int64_t mx = 0; /* the largest block a solve gathers */
+        for (int64_t c = 0; c < g * g; c++)
+            if (has[c]) {
+                const int64_t m = block_count(E, c % g, c / g);
+                if (m > mx) mx = m;
+            }
+        if (!comm_all((E->T || nh <= E->lcap) && ensure_buffers(E, (size_t)mx) == 0 &&
+                      (!E->T || level_cells(E, l, at) == 0))) {
+            ok = 0;
+            break;
+        }
         for (int colour = 0; colour < 9 && ok; colour++) {
-            const int64_t bx = colour % 3, by = colour / 3;
-            const int64_t m = E->T ? at[colour + 1] - at[colour] : per * per;
+            const int64_t m = at[colour + 1] - at[colour];
             const uint32_t ph = ++E->phase;
 #pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves, solved) reduction(max : maxd)
             for (int64_t t = 0; t < m; t++) {
-                const int64_t c = E->T ? E->lcells[at[colour] + t] : (by + 3 * (t / per)) * g + bx + 3 * (t % per);
+                const int64_t c = E->lcells[at[colour] + t];
                 if (!has[c] || !cfpo_dens_levels_touched(touch, g, c % g, c / g, seen[c])) continue;
                 seen[c] = ph; /* a move stamps it again (the move lies in it) */
                 for (int64_t e = E->cstart[c]; e < E->cstart[c + 1]; e++) solved += E->lev[E->cidx[e]] == l;
