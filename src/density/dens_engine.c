@@ -75,8 +75,9 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     E->cstart = malloc((size_t)(gf * gf + 1) * sizeof *E->cstart);
     E->dirty = malloc((size_t)(gf * gf));
     E->lev = E->lv.n > 1 ? malloc((size_t)n) : NULL;
+    E->fine = E->lv.n > 1 ? malloc((size_t)n * sizeof *E->fine) : NULL;
     E->tb = calloc((size_t)E->nthreads, sizeof *E->tb);
-    if (!lvok || (E->lv.n > 1 && !E->lev) ||
+    if (!lvok || (E->lv.n > 1 && (!E->lev || !E->fine)) ||
         cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cxyq || !E->cstart || !E->dirty || !E->tb ||
         cfpo_dens_qbound_build(&E->qb, d) != 0 || cfpo_dens_qbound_build_min(&E->qlow, d) != 0 ||
         (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0)
@@ -138,7 +139,9 @@ static int fit_cells(cfpo_dens_engine *E)
         if (c0) E->cidx0 = c0;
         int64_t *sl = realloc(E->slot, (size_t)cap * sizeof *sl);
         if (sl) E->slot = sl;
-        if (!lev || !c0 || !sl) return -1;
+        uint32_t *fi = realloc(E->fine, (size_t)cap * sizeof *fi);
+        if (fi) E->fine = fi;
+        if (!lev || !c0 || !sl || !fi) return -1;
     }
     E->ccap = cap;
     return 0;
@@ -327,7 +330,7 @@ void cfpo_dens_free(cfpo_dens_engine *E)
             cfpo_dens_buckets_free(&E->tb[t].bk);
         }
     free(E->tb); free(E->dirty); free(E->cell); free(E->cidx); free(E->cxyq); free(E->cstart); free(E->all);
-    free(E->lev); free(E->cstart0); free(E->cidx0); free(E->slot); free(E->lcells); free(E->hold);
+    free(E->lev); free(E->fine); free(E->cstart0); free(E->cidx0); free(E->slot); free(E->lcells); free(E->hold);
     for (int l = 0; l < CFPO_DENS_LEVELS_MAX; l++) {
         free(E->ltouch[l]);
         free(E->lseen[l]);

@@ -62,6 +62,7 @@ struct cfpo_dens_engine {
     cfpo_dens_levels lv;
     int cur;              /* the level being solved */
     unsigned char *lev;   /* per store slot: an own point's level this iteration */
+    uint32_t *fine;       /* per store slot: its finest cell (cfpo_dens_levels_fine), kept with its place */
     int64_t *cstart0, *cidx0; /* several ranks: level 0's cells, for the halo refreshes */
     int64_t *slot;        /* several ranks: each store point's place in cidx (cxyq's row) */
     int64_t *lcells;      /* the level being solved: its cells holding a point (one rank) or this rank's cells (several), by colour */
@@ -87,6 +88,8 @@ static inline int64_t cell_of(const cfpo_dens_engine *E, double x, double y)
  * cstart, cidx (store slots, in store order inside each cell), cxyq, and
  * slot when kept (dens_sweep.c). */
 void dens_build_cells(cfpo_dens_engine *E);
+/* The same for level l, each point's cell from its finest (E->fine). */
+void dens_build_level(cfpo_dens_engine *E, int l);
 
 /* One iteration's phases into *moves, *solved, *maxd (*tm: the phase
  * clock, for the timers; dens_sweep.c): on the one grid, or (more than one

@@ -124,16 +124,29 @@ int cfpo_dens_levels_tiers(const cfpo_dens_levels *V, int l, int64_t cx, int64_t
     return CFPO_DENS_TIERS;
 }
 
+uint32_t cfpo_dens_levels_fine(const cfpo_dens_levels *V, double x, double y)
+{
+    const int64_t gf = V->g0 << (V->n - 1), c = cfpo_dens_cell_of(gf, V->sx, V->sy, x, y);
+    return (uint32_t)((c / gf) << 16 | (c % gf));
+}
+
 int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings)
+{
+    if (V->n == 1 || !(q > 0)) return 0;
+    return cfpo_dens_levels_of_fine(V, cfpo_dens_levels_fine(V, x, y), q, D, spacings);
+}
+
+int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q, double D, double spacings)
 {
     if (V->n == 1 || !(q > 0)) return 0;
     int l = V->n - 1;
     const double s = spacings * D / q;
     while (l > 0 && 1.0 / (double)(V->g0 << l) < s) l--;
     double t[CFPO_DENS_TIERS];
+    const int64_t fx = fine & 0xffff, fy = fine >> 16;
     for (; l > 0; l--) {
-        const int64_t g = V->g0 << l, c = cfpo_dens_cell_of(g, V->sx, V->sy, x, y);
-        const int nt = cfpo_dens_levels_tiers(V, l, c % g, c / g, t);
+        const int64_t g = V->g0 << l, sh = V->n - 1 - l;
+        const int nt = cfpo_dens_levels_tiers(V, l, fx >> sh, fy >> sh, t);
         const double L = 1.0 / (double)g;
         if (cfpo_dens_levels_clear(t, nt, V->qmin, L, L, q, (spacings * D) * (spacings * D))) break;
     }
@@ -143,10 +156,13 @@ int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q,
 void cfpo_dens_levels_mark(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, double x0, double y0,
                            double x1, double y1)
 {
+    cfpo_dens_levels_mark_fine(V, touch, phase, cfpo_dens_levels_fine(V, x0, y0), cfpo_dens_levels_fine(V, x1, y1));
+}
+
+void cfpo_dens_levels_mark_fine(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, uint32_t a, uint32_t b)
+{
     const int f = V->n - 1;
-    const int64_t gf = V->g0 << f, a = cfpo_dens_cell_of(gf, V->sx, V->sy, x0, y0),
-                  b = cfpo_dens_cell_of(gf, V->sx, V->sy, x1, y1);
-    const int64_t ax = a % gf, ay = a / gf, bx = b % gf, by = b / gf;
+    const int64_t ax = a & 0xffff, ay = a >> 16, bx = b & 0xffff, by = b >> 16;
     for (int l = 0; l <= f; l++) { /* a level's cell of a spot: the finest's shifted (the floors nest) */
         const int sh = f - l;
         const int64_t g = V->g0 << l;

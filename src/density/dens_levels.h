@@ -87,6 +87,8 @@ static inline int cfpo_dens_levels_clear(const double *t, int nt, double qmin, d
  * spot one cell from the block's edge, worth (spacings D)^2, passes the
  * tiers. 0 for a point on zero density. */
 int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings);
+/* The same from the point's finest cell (cfpo_dens_levels_fine). */
+int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q, double D, double spacings);
 
 /* Stamps, in every level's touch (g0 2^l cells a side each), the cells
  * of (x0, y0) and (x1, y1) under the placed offset (a move's old and new
@@ -98,6 +100,14 @@ int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q,
  * threads at once, all with the same phase). */
 void cfpo_dens_levels_mark(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, double x0, double y0,
                            double x1, double y1);
+/* The same from the two places' finest cells (cfpo_dens_levels_fine). */
+void cfpo_dens_levels_mark_fine(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, uint32_t a, uint32_t b);
+
+/* The finest level's cell of (x, y) under the placed offset, as y << 16 |
+ * x (at most 3 * 8192 cells a side). A coarser level l's cell is its
+ * coordinates shifted right by n - 1 - l: cell_of's floor of x g0 2^f is
+ * that of x g0 2^l times 2^(f - l), exactly (dens_dist.h). */
+uint32_t cfpo_dens_levels_fine(const cfpo_dens_levels *V, double x, double y);
 
 /* Whether a cell of the 3 x 3 around (cx, cy) of a g x g level holds a
  * stamp at least `since` (wrapping). */

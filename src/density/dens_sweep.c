@@ -15,14 +15,28 @@
 /* Cells of this iteration's grid, points in id order inside each (the
  * store's order: own points by id, then each halo cell's from its owner,
  * by id). */
+static void build_from(cfpo_dens_engine *E);
+
 void dens_build_cells(cfpo_dens_engine *E)
+{
+    for (int64_t i = 0; i < E->s.loc; i++) E->cell[i] = cell_of(E, E->s.xy[2 * i], E->s.xy[2 * i + 1]);
+    build_from(E);
+}
+
+void dens_build_level(cfpo_dens_engine *E, int l)
+{
+    const int sh = E->lv.n - 1 - l;
+    const int64_t g = E->lv.g0 << l;
+    for (int64_t i = 0; i < E->s.loc; i++) E->cell[i] = (int64_t)(E->fine[i] >> 16 >> sh) * g + ((E->fine[i] & 0xffff) >> sh);
+    build_from(E);
+}
+
+/* the cells from E->cell */
+static void build_from(cfpo_dens_engine *E)
 {
     const int64_t G = E->g * E->g;
     memset(E->cstart, 0, (size_t)(G + 1) * sizeof *E->cstart);
-    for (int64_t i = 0; i < E->s.loc; i++) {
-        E->cell[i] = cell_of(E, E->s.xy[2 * i], E->s.xy[2 * i + 1]);
-        E->cstart[E->cell[i] + 1]++;
-    }
+    for (int64_t i = 0; i < E->s.loc; i++) E->cstart[E->cell[i] + 1]++;
     for (int64_t c = 0; c < G; c++) E->cstart[c + 1] += E->cstart[c];
     for (int64_t i = 0; i < E->s.loc; i++) E->cidx[E->cstart[E->cell[i]]++] = i;
     for (int64_t c = G; c > 0; c--) E->cstart[c] = E->cstart[c - 1];
@@ -195,10 +209,10 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
     double maxd = 0, tm = *tm_;
     const int64_t g0 = E->lv.g0;
     if (!comm_all(cfpo_dens_levels_place(&E->lv, &E->qlow, E->sx, E->sy) == 0)) return -1;
+    for (int64_t i = 0; i < E->s.loc; i++) E->fine[i] = cfpo_dens_levels_fine(&E->lv, E->s.xy[2 * i], E->s.xy[2 * i + 1]);
     int64_t per_level[CFPO_DENS_LEVELS_MAX] = {0}; /* the points of each level, on every rank */
     for (int64_t i = 0; i < E->s.own; i++) {
-        E->lev[i] = (unsigned char)cfpo_dens_levels_of(&E->lv, E->s.xy[2 * i], E->s.xy[2 * i + 1], E->s.q[i], E->D,
-                                                       CELL_SPACINGS);
+        E->lev[i] = (unsigned char)cfpo_dens_levels_of_fine(&E->lv, E->fine[i], E->s.q[i], E->D, CELL_SPACINGS);
         per_level[E->lev[i]]++;
     }
     if (E->T) comm_sum_i64(per_level, E->lv.n);
@@ -214,7 +228,7 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
         E->g = g0 << l;
         E->L = 1.0 / (double)E->g;
         const int64_t g = E->g;
-        dens_build_cells(E);
+        dens_build_level(E, l);
         unsigned char *has = E->dirty; /* the cells holding a point of this level */
         const uint32_t *touch = E->ltouch[l];
         uint32_t *seen = E->lseen[l]; /* the skip */
@@ -280,7 +294,9 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
                 double *r = E->cxyq + 3 * E->slot[j];
                 const double *was = E->hold + 2 * (j - E->s.own);
                 if (was[0] != E->s.xy[2 * j] || was[1] != E->s.xy[2 * j + 1]) { /* moved on its rank: marked as there */
-                    cfpo_dens_levels_mark(&E->lv, E->ltouch, ph, was[0], was[1], E->s.xy[2 * j], E->s.xy[2 * j + 1]);
+                    const uint32_t f = cfpo_dens_levels_fine(&E->lv, E->s.xy[2 * j], E->s.xy[2 * j + 1]);
+                    cfpo_dens_levels_mark_fine(&E->lv, E->ltouch, ph, E->fine[j], f);
+                    E->fine[j] = f;
                 }
                 r[0] = E->s.xy[2 * j];
                 r[1] = E->s.xy[2 * j + 1];
