@@ -127,15 +127,22 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
     w[2] = CFPO_POLICY_DENSITY_RELAX_MILD;
     return 3;
 }
-/* The density engine's near solve (docs/method.md, "Density"): in a
- * 3 x 3 block whose largest q is at most CFPO_POLICY_DENSITY_NEAR_FLAT
- * times its smallest, each solve searches only the polygons of the
- * point's CFPO_POLICY_DENSITY_NEAR_CELLS nearest neighbours in the
- * measure, as the uniform path's near solve searches the Voronoi cells
- * around the point's old place; a point they give no move is solved
- * again over the ten nearest's, as every point of the other blocks is.
- * So a point stays only when the full solve moves it nowhere, and a
- * block skipped for that reason would be skipped by the full solve too.
+/* The density engine's near solve (docs/method.md, "Density"): each
+ * solve searches only the polygons of the point's
+ * CFPO_POLICY_DENSITY_NEAR_CELLS nearest neighbours in the measure, as the
+ * uniform path's near solve searches the Voronoi cells around the point's
+ * old place. In a 3 x 3 block whose largest q is more than
+ * CFPO_POLICY_DENSITY_NEAR_FLAT times its smallest, a point they give no
+ * move is solved again over the ten nearest's; in a flatter block it
+ * stays (since 2026-11-30, density16: until then a block steeper than
+ * that took the ten at once, and a flatter one fell back to the ten; at
+ * 16,384 points on the ramp 1:256 an iteration costs 0.87x, and converged
+ * runs at 65,536 points end 0.0000-0.0004 lower in delta_avg on six
+ * densities; results 2026-11-30-density16).
+ * Before 2026-11-30 (density16) a point stayed only when the full solve
+ * moved it nowhere, and a block skipped for that reason would be skipped
+ * by the full solve too; the skip still changes no byte (it skips a
+ * block whose solve would move nothing again, whatever that solve is).
  * While the set is loose nearly every point moves anyway, and the two
  * polygons around its place hold a spot far better than its own: at
  * 65,536 points the runs to (0.85, 0.90) take as many iterations with
@@ -168,17 +175,15 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * 1:16, Balzer's field and the shipped image give the same bytes or
  * within 0.00006 (their blocks are steeper); docs/tried.md, results
  * 2026-11-30-density14. Returns the polygons of the near solve in a block
- * with smallest q qlo and largest qhi in iteration k (DENS_CELLS, given,
- * when it is not flat within CFPO_POLICY_DENSITY_NEAR_FLAT), and in *fall
- * whether a point it gives no move is solved over the ten. A pure function
- * of the block and the iteration. */
+ * with smallest q qlo and largest qhi in iteration k, and in *fall
+ * whether a point it gives no move is solved over the ten (a block not
+ * flat within CFPO_POLICY_DENSITY_NEAR_FLAT). A pure function of the
+ * block and the iteration. */
 #define CFPO_POLICY_DENSITY_NEAR_UNIFORM 1.02
-static inline int cfpo_policy_density_near(int k, double qlo, double qhi, int all, int *fall)
+static inline int cfpo_policy_density_near(int k, double qlo, double qhi, int *fall)
 {
-    *fall = 0;
-    if (!(qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT)) return all;
+    *fall = !(qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT);
     if (qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_UNIFORM) return k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1;
-    *fall = 1;
     return CFPO_POLICY_DENSITY_NEAR_CELLS;
 }
 
