@@ -137,8 +137,8 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * stays (since 2026-11-30, density16: until then a block steeper than
  * that took the ten at once, and a flatter one fell back to the ten; at
  * 16,384 points on the ramp 1:256 an iteration costs 0.87x, and converged
- * runs at 65,536 points end 0.0000-0.0004 lower in delta_avg on six
- * densities; results 2026-11-30-density16).
+ * runs at 65,536 points end 0.0001-0.0004 lower in delta_avg on five test
+ * densities, the image within 0.0003; results 2026-11-30-density16).
  * Before 2026-11-30 (density16) a point stayed only when the full solve
  * moved it nowhere, and a block skipped for that reason would be skipped
  * by the full solve too; the skip still changes no byte (it skips a
@@ -150,11 +150,12 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * in iterations 1-12 only; in every iteration the converged runs stop
  * after as many iterations at the same quality (cos a=0.9, the ramp 1:16,
  * Balzer's field, the image) and a flat block's iteration costs about
- * 0.7 of the full solve's. Without the flatness rule the near solve
- * also ran across steep changes, and the block counts followed the
- * density less closely (8 x 8 blocks at 4,096 points: rms 0.057 against
- * 0.044); with it, 0.047. The accept rule is the same in both, so
- * delta_min still never falls. A pure function of the block. */
+ * 0.7 of the full solve's. Without the flatness rule (no fall-back
+ * anywhere, on the one grid) the block counts followed the density less
+ * closely (8 x 8 blocks at 4,096 points: rms 0.057 against 0.044); with
+ * it, 0.047; with density16's rule on the levels, cos a=0.9 at rms 0.041
+ * against 0.036. The accept rule is the same in all, so delta_min still
+ * never falls. A pure function of the block. */
 #define CFPO_POLICY_DENSITY_NEAR_CELLS 2
 #define CFPO_POLICY_DENSITY_NEAR_FLAT 1.2
 /* The uniform path's near solves search two Voronoi cells before this
