@@ -199,12 +199,13 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         if (b->br[j] < qlo) qlo = b->br[j];
         if (b->br[j] > qbl) qbl = b->br[j];
     }
-    /* the near solve's polygons by how flat q is over the block
-     * (policy.h): the two nearest's, the ten's after them where q is
-     * steep and they give no move (fall); the uniform path's near solve
-     * where q is flat within 2% */
+    /* the near solve only where q is nearly flat over the block
+     * (policy.h): across a steep change the nearest two polygons miss the
+     * spots a point should reach; where it is flatter still, the uniform
+     * path's near solve (fall: whether the ten follow a near solve that
+     * gives no move) */
     int fall;
-    const int cells0 = cfpo_policy_density_near(E->iter, qlo, qbl, &fall);
+    const int cells0 = cfpo_policy_density_near(E->iter, qlo, qbl, DENS_CELLS, &fall);
     const double h = bk->h, gain = E->o.tol * E->D;
     /* a block of one bucket clear of the wrap on the AVX-512 route: its
      * neighbours and accept checks eight points at a time (dens_order.h,

@@ -127,22 +127,15 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
     w[2] = CFPO_POLICY_DENSITY_RELAX_MILD;
     return 3;
 }
-/* The density engine's near solve (docs/method.md, "Density"): each
- * solve searches only the polygons of the point's
- * CFPO_POLICY_DENSITY_NEAR_CELLS nearest neighbours in the measure, as the
- * uniform path's near solve searches the Voronoi cells around the point's
- * old place. In a 3 x 3 block whose largest q is more than
- * CFPO_POLICY_DENSITY_NEAR_FLAT times its smallest, a point they give no
- * move is solved again over the ten nearest's; in a flatter block it
- * stays (since 2026-11-30, density16: until then a block steeper than
- * that took the ten at once, and a flatter one fell back to the ten; at
- * 16,384 points on the ramp 1:256 an iteration costs 0.87x, and converged
- * runs at 65,536 points end 0.0001-0.0004 lower in delta_avg on five test
- * densities, the image within 0.0003; results 2026-11-30-density16).
- * Before 2026-11-30 (density16) a point stayed only when the full solve
- * moved it nowhere, and a block skipped for that reason would be skipped
- * by the full solve too; the skip still changes no byte (it skips a
- * block whose solve would move nothing again, whatever that solve is).
+/* The density engine's near solve (docs/method.md, "Density"): in a
+ * 3 x 3 block whose largest q is at most CFPO_POLICY_DENSITY_NEAR_FLAT
+ * times its smallest, each solve searches only the polygons of the
+ * point's CFPO_POLICY_DENSITY_NEAR_CELLS nearest neighbours in the
+ * measure, as the uniform path's near solve searches the Voronoi cells
+ * around the point's old place; a point they give no move is solved
+ * again over the ten nearest's, as every point of the other blocks is.
+ * So a point stays only when the full solve moves it nowhere, and a
+ * block skipped for that reason would be skipped by the full solve too.
  * While the set is loose nearly every point moves anyway, and the two
  * polygons around its place hold a spot far better than its own: at
  * 65,536 points the runs to (0.85, 0.90) take as many iterations with
@@ -150,12 +143,11 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * in iterations 1-12 only; in every iteration the converged runs stop
  * after as many iterations at the same quality (cos a=0.9, the ramp 1:16,
  * Balzer's field, the image) and a flat block's iteration costs about
- * 0.7 of the full solve's. Without the flatness rule (no fall-back
- * anywhere, on the one grid) the block counts followed the density less
- * closely (8 x 8 blocks at 4,096 points: rms 0.057 against 0.044); with
- * it, 0.047; with density16's rule on the levels, cos a=0.9 at rms 0.041
- * against 0.036. The accept rule is the same in all, so delta_min still
- * never falls. A pure function of the block. */
+ * 0.7 of the full solve's. Without the flatness rule the near solve
+ * also ran across steep changes, and the block counts followed the
+ * density less closely (8 x 8 blocks at 4,096 points: rms 0.057 against
+ * 0.044); with it, 0.047. The accept rule is the same in both, so
+ * delta_min still never falls. A pure function of the block. */
 #define CFPO_POLICY_DENSITY_NEAR_CELLS 2
 #define CFPO_POLICY_DENSITY_NEAR_FLAT 1.2
 /* The uniform path's near solves search two Voronoi cells before this
@@ -176,15 +168,17 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * 1:16, Balzer's field and the shipped image give the same bytes or
  * within 0.00006 (their blocks are steeper); docs/tried.md, results
  * 2026-11-30-density14. Returns the polygons of the near solve in a block
- * with smallest q qlo and largest qhi in iteration k, and in *fall
- * whether a point it gives no move is solved over the ten (a block not
- * flat within CFPO_POLICY_DENSITY_NEAR_FLAT). A pure function of the
- * block and the iteration. */
+ * with smallest q qlo and largest qhi in iteration k (DENS_CELLS, given,
+ * when it is not flat within CFPO_POLICY_DENSITY_NEAR_FLAT), and in *fall
+ * whether a point it gives no move is solved over the ten. A pure function
+ * of the block and the iteration. */
 #define CFPO_POLICY_DENSITY_NEAR_UNIFORM 1.02
-static inline int cfpo_policy_density_near(int k, double qlo, double qhi, int *fall)
+static inline int cfpo_policy_density_near(int k, double qlo, double qhi, int all, int *fall)
 {
-    *fall = !(qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT);
+    *fall = 0;
+    if (!(qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT)) return all;
     if (qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_UNIFORM) return k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1;
+    *fall = 1;
     return CFPO_POLICY_DENSITY_NEAR_CELLS;
 }
 
