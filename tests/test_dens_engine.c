@@ -137,6 +137,48 @@ static void never_falls_on_spec(const char *spec, int64_t n, int iters, int leve
     cfpo_density_free(&d);
 }
 
+/* The skip changes no byte on the levels of cells: a cell is solved
+ * again only when a move's old or new place lay in its 3 x 3 block since
+ * its last solve (the phase stamps, dens_levels.h), and the points after
+ * `iters` iterations are those of solving every cell every iteration
+ * (--no-skip), while fewer points were solved. */
+static void skip_same(const char *spec, int64_t n, int iters, int levels)
+{
+    char err[512];
+    cfpo_density d;
+    if (cfpo_density_load(spec, &d, err, sizeof err) != 0) { CHECK(0, "%s: %s", spec, err); return; }
+    double *xy[2] = {NULL, NULL};
+    int64_t solved[2] = {0, 0};
+    for (int k = 0; k < 2; k++) {
+        cfpo_options o = opts(2, iters);
+        o.skip = k == 0;
+        o.tol = 2e-3; /* moves gaining more than 0.002 spacings: many cells settle */
+        cfpo_dens_engine *E = cfpo_dens_create(&d, n, &o, NULL, 0, err, sizeof err);
+        CHECK(E != NULL, "%s: %s", spec, err);
+        if (!E) break;
+        CHECK(cfpo_dens_levels_count(E) >= levels, "%s: %d levels of cells, not %d", spec, cfpo_dens_levels_count(E),
+              levels);
+        cfpo_iter_stats s;
+        for (int it = 0; it < iters; it++) {
+            cfpo_dens_iterate(E, &s);
+            solved[k] += s.solved;
+        }
+        xy[k] = malloc((size_t)n * 2 * sizeof *xy[k]);
+        if (xy[k]) memcpy(xy[k], cfpo_dens_points(E), (size_t)n * 2 * sizeof *xy[k]);
+        cfpo_dens_free(E);
+    }
+    if (xy[0] && xy[1]) {
+        CHECK(memcmp(xy[0], xy[1], (size_t)n * 2 * sizeof *xy[0]) == 0, "%s: the skip changed the points", spec);
+        CHECK(solved[0] < solved[1] * 9 / 10, "%s: the skip solved %lld points of %lld", spec, (long long)solved[0],
+              (long long)solved[1]);
+        printf("%s n=%lld, %d iterations: the same points with and without the skip (%lld and %lld solved)\n", spec,
+               (long long)n, iters, (long long)solved[0], (long long)solved[1]);
+    }
+    free(xy[0]);
+    free(xy[1]);
+    cfpo_density_free(&d);
+}
+
 /* A 64 x 64 array with a zero disc and a 1:40 step. */
 static void zero_disc(cfpo_density *d)
 {
@@ -288,6 +330,7 @@ int main(void)
         cfpo_density_free(&z);
     }
     support_and_threads();
+    skip_same("ramp:contrast=256,res=64", 2500, 40, 3);
     fidelity("cos:a=0.9");
     fidelity("ramp:contrast=16");
     return test_report(passed_, failed_);

@@ -337,7 +337,9 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         const int64_t id = b->bid[p];
         if (levels) { /* every level's blocks around the old and the new place */
-            cfpo_dens_levels_mark(&E->lv, E->ldirty, E->s.xy[2 * id], E->s.xy[2 * id + 1], x, y);
+            const uint32_t f = cfpo_dens_levels_fine(&E->lv, x, y);
+            cfpo_dens_levels_mark_fine(&E->lv, E->ltouch, E->phase, E->fine[id], f);
+            E->fine[id] = f;
         }
         const double dd = sqrt((cxp - ax) * (cxp - ax) + (cyp - ay) * (cyp - ay)) / ri;
         if (dd > *maxd) *maxd = dd;

@@ -67,15 +67,17 @@ cfpo_dens_engine *cfpo_dens_create(const cfpo_density *d, int64_t n, const cfpo_
     /* cells sized to the local spacing: levels of finer grids (dens_levels.h) */
     int lvok = cfpo_dens_levels_init(&E->lv, d, g, E->D, CELL_SPACINGS) == 0;
     for (int l = 0; l < E->lv.n && E->lv.n > 1 && lvok; l++) {
-        E->ldirty[l] = malloc((size_t)((g << l) * (g << l)));
-        lvok = E->ldirty[l] != NULL;
+        E->ltouch[l] = calloc((size_t)((g << l) * (g << l)), sizeof *E->ltouch[l]);
+        E->lseen[l] = calloc((size_t)((g << l) * (g << l)), sizeof *E->lseen[l]);
+        lvok = E->ltouch[l] != NULL && E->lseen[l] != NULL;
     }
     const int64_t gf = g << (E->lv.n - 1); /* the finest level's cells a side */
     E->cstart = malloc((size_t)(gf * gf + 1) * sizeof *E->cstart);
     E->dirty = malloc((size_t)(gf * gf));
     E->lev = E->lv.n > 1 ? malloc((size_t)n) : NULL;
+    E->fine = E->lv.n > 1 ? malloc((size_t)n * sizeof *E->fine) : NULL;
     E->tb = calloc((size_t)E->nthreads, sizeof *E->tb);
-    if (!lvok || (E->lv.n > 1 && !E->lev) ||
+    if (!lvok || (E->lv.n > 1 && (!E->lev || !E->fine)) ||
         cfpo_dens_store_reserve(&E->s, n, 0) != 0 || !E->cell || !E->cidx || !E->cxyq || !E->cstart || !E->dirty || !E->tb ||
         cfpo_dens_qbound_build(&E->qb, d) != 0 || cfpo_dens_qbound_build_min(&E->qlow, d) != 0 ||
         (start ? (memcpy(E->s.xy, start, (size_t)n * 2 * sizeof *E->s.xy), 0)
@@ -137,7 +139,9 @@ static int fit_cells(cfpo_dens_engine *E)
         if (c0) E->cidx0 = c0;
         int64_t *sl = realloc(E->slot, (size_t)cap * sizeof *sl);
         if (sl) E->slot = sl;
-        if (!lev || !c0 || !sl) return -1;
+        uint32_t *fi = realloc(E->fine, (size_t)cap * sizeof *fi);
+        if (fi) E->fine = fi;
+        if (!lev || !c0 || !sl || !fi) return -1;
     }
     E->ccap = cap;
     return 0;
@@ -150,7 +154,9 @@ static int fit_cells(cfpo_dens_engine *E)
  * edge), so its measure is at least e (q_i q_min)^(1/2) / Delta. */
 static int measure_own(cfpo_dens_engine *E, double *m)
 {
-    if (cfpo_dens_nn_first(E->d, &E->qlow, E->s.xy, E->s.q, (size_t)E->s.loc, (size_t)E->s.own, E->D, m, E->nthreads) != 0) return -1;
+    if (cfpo_dens_nn_first_near(E->d, &E->qlow, &E->near, E->s.xy, E->s.q, (size_t)E->s.loc, (size_t)E->s.own, E->D, m,
+                                E->nthreads) != 0)
+        return -1;
     const double lo = sqrt(E->d->rho_min), G = (double)E->g;
     for (int64_t i = 0; i < E->s.own; i++) {
         if (!(E->s.q[i] > 0)) continue;
@@ -168,14 +174,17 @@ static int measure_own(cfpo_dens_engine *E, double *m)
  * in that order, as on one rank: the same bits. */
 static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
 {
-    if (!E->T) return cfpo_dens_nn_q(E->d, &E->qlow, E->s.xy, E->s.q, (size_t)E->n, NULL, dmin, davg, E->nthreads);
+    if (!E->T) return cfpo_dens_nn_q_near(E->d, &E->qlow, &E->near, E->s.xy, E->s.q, (size_t)E->n, NULL, dmin, davg, E->nthreads);
     double *m = malloc((size_t)(E->s.own + 1) * sizeof *m);
     int got = m ? (halo ? measure_own(E, m) : 0) : -1;
     if (!comm_all(got >= 0)) { free(m); return -1; }
     if (!comm_all(got == 1)) { /* a start far from the density: the whole set on every rank */
         free(m);
         if (cfpo_dens_dist_gather_values(E->T, &E->s, E->n, E->s.xy, 2, E->all) != 0) return -1;
-        return comm_all(cfpo_dens_nn_q(E->d, &E->qlow, E->all, NULL, (size_t)E->n, NULL, dmin, davg, E->nthreads) == 0) ? 0 : -1;
+        return comm_all(cfpo_dens_nn_q_near(E->d, &E->qlow, &E->near, E->all, NULL, (size_t)E->n, NULL, dmin, davg,
+                                            E->nthreads) == 0)
+                   ? 0
+                   : -1;
     }
     const int rc = cfpo_dens_dist_gather_values(E->T, &E->s, E->n, m, 1, E->all);
     free(m);
@@ -203,7 +212,7 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
     const int fresh = !E->placed || sx != E->sx || sy != E->sy || !E->o.skip;
     if (fresh) memset(E->dirty, 1, (size_t)(E->g * E->g));
     for (int l = 0; fresh && l < E->lv.n && E->lv.n > 1; l++)
-        memset(E->ldirty[l], 1, (size_t)((E->lv.g0 << l) * (E->lv.g0 << l)));
+        memset(E->lseen[l], 0, (size_t)((E->lv.g0 << l) * (E->lv.g0 << l)) * sizeof *E->lseen[l]);
     E->placed = 1;
     E->sx = sx;
     E->sy = sy;
@@ -321,12 +330,16 @@ void cfpo_dens_free(cfpo_dens_engine *E)
             cfpo_dens_buckets_free(&E->tb[t].bk);
         }
     free(E->tb); free(E->dirty); free(E->cell); free(E->cidx); free(E->cxyq); free(E->cstart); free(E->all);
-    free(E->lev); free(E->cstart0); free(E->cidx0); free(E->slot); free(E->lcells); free(E->hold);
-    for (int l = 0; l < CFPO_DENS_LEVELS_MAX; l++) free(E->ldirty[l]);
+    free(E->lev); free(E->fine); free(E->cstart0); free(E->cidx0); free(E->slot); free(E->lcells); free(E->hold);
+    for (int l = 0; l < CFPO_DENS_LEVELS_MAX; l++) {
+        free(E->ltouch[l]);
+        free(E->lseen[l]);
+    }
     cfpo_dens_levels_free(&E->lv);
     cfpo_dens_store_free(&E->s);
     cfpo_dens_qbound_free(&E->qb);
     cfpo_dens_qbound_free(&E->qlow);
+    cfpo_dens_nn_near_free(&E->near);
     cfpo_dens_dist_free(E->T);
     free(E);
 }

@@ -12,6 +12,7 @@
 #include "dens_dist.h"
 #include "dens_engine.h"
 #include "dens_levels.h"
+#include "dens_measure.h"
 #include "dens_qbound.h"
 
 #define KMAX 40        /* neighbours the solve looks at, nearest first */
@@ -36,6 +37,7 @@ struct cfpo_dens_engine {
     const cfpo_density *d;
     cfpo_dens_qbound qb;   /* the bound of q over a box, for the solve's prunings */
     cfpo_dens_qbound qlow; /* q's lower bound over a box, for the measure's search */
+    cfpo_dens_nn_near near; /* the measure's search grid's near bounds, kept between measures */
     int64_t n, g;
     cfpo_options o;
     double D, L, sx, sy;
@@ -60,12 +62,19 @@ struct cfpo_dens_engine {
     cfpo_dens_levels lv;
     int cur;              /* the level being solved */
     unsigned char *lev;   /* per store slot: an own point's level this iteration */
+    uint32_t *fine;       /* per store slot: its finest cell (cfpo_dens_levels_fine), kept with its place */
     int64_t *cstart0, *cidx0; /* several ranks: level 0's cells, for the halo refreshes */
     int64_t *slot;        /* several ranks: each store point's place in cidx (cxyq's row) */
-    int64_t *lcells;      /* several ranks: this rank's cells of the level being solved, by colour */
+    int64_t *lcells;      /* the level being solved: its cells holding a point (one rank) or this rank's cells (several), by colour */
     int64_t lcap;
-    unsigned char *ldirty[CFPO_DENS_LEVELS_MAX]; /* per level, per cell: its block changed since it was last
-                                                    solved without a move (the skip, as dirty on the one grid) */
+    /* the skip on the levels (as dirty on the one grid): per level, per
+     * cell, the last phase a move's old or new place lay in it (touch)
+     * and the phase it was last solved in (seen, 0: not since the offset
+     * changed); it is solved again when its 3 x 3 holds a touch >= seen
+     * (cfpo_dens_levels_touched). phase counts the levels' colour phases,
+     * from 1 */
+    uint32_t *ltouch[CFPO_DENS_LEVELS_MAX], *lseen[CFPO_DENS_LEVELS_MAX];
+    uint32_t phase;
     double *hold;         /* several ranks: the halo's places before a refresh */
     int64_t hcap;
 };
@@ -79,6 +88,8 @@ static inline int64_t cell_of(const cfpo_dens_engine *E, double x, double y)
  * cstart, cidx (store slots, in store order inside each cell), cxyq, and
  * slot when kept (dens_sweep.c). */
 void dens_build_cells(cfpo_dens_engine *E);
+/* The same for level l, each point's cell from its finest (E->fine). */
+void dens_build_level(cfpo_dens_engine *E, int l);
 
 /* One iteration's phases into *moves, *solved, *maxd (*tm: the phase
  * clock, for the timers; dens_sweep.c): on the one grid, or (more than one

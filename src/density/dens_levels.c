@@ -30,12 +30,25 @@ int cfpo_dens_levels_init(cfpo_dens_levels *V, const cfpo_density *d, int64_t g0
     return 0;
 }
 
+/* out[i] = the least of e[i .. i + w - 1], i in [0, n - w]: runs of
+ * doubling length folded in place into t (n floats of room), then two
+ * overlapping runs a window (the same least as a scan of the window). */
+static void window_min(const float *e, int64_t n, int64_t w, float *t, float *out)
+{
+    for (int64_t i = 0; i < n; i++) t[i] = e[i];
+    int64_t q = 1;
+    for (; 2 * q <= w; q *= 2)
+        for (int64_t i = 0; i + 2 * q <= n; i++) t[i] = t[i + q] < t[i] ? t[i + q] : t[i];
+    for (int64_t i = 0; i + w <= n; i++) out[i] = t[i + w - q] < t[i] ? t[i + w - q] : t[i];
+}
+
 /* out: the least of a over the cells within h of each (wrapping, g x g),
- * by a running minimum along the rows, then along the columns; line:
- * 2 g floats of room (a line with its wrapped ends). */
+ * along the rows, then along the columns; line: 5 g floats of room
+ * (a line with its wrapped ends, the folded runs, a line's minima). */
 static void box_min(const float *a, float *out, int64_t g, int64_t h, float *line)
 {
     if (2 * h + 1 > g) h = g / 2; /* the whole line */
+    float *t = line + g + 2 * h, *o = t + g + 2 * h;
     for (int pass = 0; pass < 2; pass++) {
         const float *src = pass ? out : a;
         for (int64_t r = 0; r < g; r++) {
@@ -43,12 +56,10 @@ static void box_min(const float *a, float *out, int64_t g, int64_t h, float *lin
                 const int64_t k = i < 0 ? i + g : i >= g ? i - g : i;
                 line[i + h] = pass ? src[k * g + r] : src[r * g + k];
             }
+            window_min(line, g + 2 * h, 2 * h + 1, t, o);
             for (int64_t i = 0; i < g; i++) {
-                float m = line[i];
-                for (int64_t k = 1; k <= 2 * h; k++)
-                    if (line[i + k] < m) m = line[i + k];
-                if (pass) out[i * g + r] = m;
-                else out[r * g + i] = m;
+                if (pass) out[i * g + r] = o[i];
+                else out[r * g + i] = o[i];
             }
         }
     }
@@ -66,7 +77,7 @@ int cfpo_dens_levels_place(cfpo_dens_levels *V, const cfpo_dens_qbound *qlow, do
     if (V->n == 1 || (sx == V->sx && sy == V->sy)) return 0;
     const int f = V->n - 1;
     const int64_t gf = V->g0 << f;
-    float *line = malloc((size_t)(2 * gf + 2) * sizeof *line), *own = malloc((size_t)(gf * gf) * sizeof *own);
+    float *line = malloc((size_t)(5 * gf + 8) * sizeof *line), *own = malloc((size_t)(gf * gf) * sizeof *own);
     if (!line || !own) {
         free(line);
         free(own);
@@ -113,43 +124,50 @@ int cfpo_dens_levels_tiers(const cfpo_dens_levels *V, int l, int64_t cx, int64_t
     return CFPO_DENS_TIERS;
 }
 
+uint32_t cfpo_dens_levels_fine(const cfpo_dens_levels *V, double x, double y)
+{
+    const int64_t gf = V->g0 << (V->n - 1), c = cfpo_dens_cell_of(gf, V->sx, V->sy, x, y);
+    return (uint32_t)((c / gf) << 16 | (c % gf));
+}
+
 int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings)
+{
+    if (V->n == 1 || !(q > 0)) return 0;
+    return cfpo_dens_levels_of_fine(V, cfpo_dens_levels_fine(V, x, y), q, D, spacings);
+}
+
+int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q, double D, double spacings)
 {
     if (V->n == 1 || !(q > 0)) return 0;
     int l = V->n - 1;
     const double s = spacings * D / q;
     while (l > 0 && 1.0 / (double)(V->g0 << l) < s) l--;
     double t[CFPO_DENS_TIERS];
+    const int64_t fx = fine & 0xffff, fy = fine >> 16;
     for (; l > 0; l--) {
-        const int64_t g = V->g0 << l, c = cfpo_dens_cell_of(g, V->sx, V->sy, x, y);
-        const int nt = cfpo_dens_levels_tiers(V, l, c % g, c / g, t);
+        const int64_t g = V->g0 << l, sh = V->n - 1 - l;
+        const int nt = cfpo_dens_levels_tiers(V, l, fx >> sh, fy >> sh, t);
         const double L = 1.0 / (double)g;
         if (cfpo_dens_levels_clear(t, nt, V->qmin, L, L, q, (spacings * D) * (spacings * D))) break;
     }
     return l;
 }
 
-/* the 3 x 3 cells around (cx, cy) of a g x g level */
-static void mark9(unsigned char *d, int64_t g, int64_t cx, int64_t cy)
+void cfpo_dens_levels_mark(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, double x0, double y0,
+                           double x1, double y1)
 {
-    const int64_t xs[3] = {cx ? cx - 1 : g - 1, cx, cx + 1 < g ? cx + 1 : 0};
-    const int64_t ys[3] = {cy ? cy - 1 : g - 1, cy, cy + 1 < g ? cy + 1 : 0};
-    for (int b = 0; b < 3; b++)
-        for (int a = 0; a < 3; a++) __atomic_store_n(&d[ys[b] * g + xs[a]], 1, __ATOMIC_RELAXED);
+    cfpo_dens_levels_mark_fine(V, touch, phase, cfpo_dens_levels_fine(V, x0, y0), cfpo_dens_levels_fine(V, x1, y1));
 }
 
-void cfpo_dens_levels_mark(const cfpo_dens_levels *V, unsigned char *const *dirty, double x0, double y0, double x1,
-                           double y1)
+void cfpo_dens_levels_mark_fine(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, uint32_t a, uint32_t b)
 {
     const int f = V->n - 1;
-    const int64_t gf = V->g0 << f, a = cfpo_dens_cell_of(gf, V->sx, V->sy, x0, y0),
-                  b = cfpo_dens_cell_of(gf, V->sx, V->sy, x1, y1);
-    const int64_t ax = a % gf, ay = a / gf, bx = b % gf, by = b / gf;
+    const int64_t ax = a & 0xffff, ay = a >> 16, bx = b & 0xffff, by = b >> 16;
     for (int l = 0; l <= f; l++) { /* a level's cell of a spot: the finest's shifted (the floors nest) */
         const int sh = f - l;
         const int64_t g = V->g0 << l;
-        mark9(dirty[l], g, ax >> sh, ay >> sh);
-        if ((bx >> sh) != (ax >> sh) || (by >> sh) != (ay >> sh)) mark9(dirty[l], g, bx >> sh, by >> sh);
+        __atomic_store_n(&touch[l][(ay >> sh) * g + (ax >> sh)], phase, __ATOMIC_RELAXED);
+        __atomic_store_n(&touch[l][(by >> sh) * g + (bx >> sh)], phase, __ATOMIC_RELAXED);
     }
 }
 

@@ -87,14 +87,43 @@ static inline int cfpo_dens_levels_clear(const double *t, int nt, double qmin, d
  * spot one cell from the block's edge, worth (spacings D)^2, passes the
  * tiers. 0 for a point on zero density. */
 int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings);
+/* The same from the point's finest cell (cfpo_dens_levels_fine). */
+int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q, double D, double spacings);
 
-/* Marks, in every level's dirty (g0 2^l cells a side each), the 3 x 3
- * cells around the cells of (x0, y0) and (x1, y1) under the placed
- * offset (a move's old and new places): their blocks hold those spots.
- * Relaxed atomic stores (cells of other levels than the one being solved
- * can be marked by several threads at once). */
-void cfpo_dens_levels_mark(const cfpo_dens_levels *V, unsigned char *const *dirty, double x0, double y0, double x1,
-                           double y1);
+/* Stamps, in every level's touch (g0 2^l cells a side each), the cells
+ * of (x0, y0) and (x1, y1) under the placed offset (a move's old and new
+ * places) with the phase: a cell's block changed since it was last
+ * solved when a cell of its 3 x 3 holds a stamp at least that solve's
+ * phase (cfpo_dens_levels_touched). One stamp a cell, where marking the
+ * 3 x 3 around each spot took nine. Relaxed atomic stores (cells of
+ * other levels than the one being solved can be stamped by several
+ * threads at once, all with the same phase). */
+void cfpo_dens_levels_mark(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, double x0, double y0,
+                           double x1, double y1);
+/* The same from the two places' finest cells (cfpo_dens_levels_fine). */
+void cfpo_dens_levels_mark_fine(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, uint32_t a, uint32_t b);
+
+/* The finest level's cell of (x, y) under the placed offset, as y << 16 |
+ * x (at most 3 * 8192 cells a side). A coarser level l's cell is its
+ * coordinates shifted right by n - 1 - l: cell_of's floor of x g0 2^f is
+ * that of x g0 2^l times 2^(f - l), exactly (dens_dist.h). */
+uint32_t cfpo_dens_levels_fine(const cfpo_dens_levels *V, double x, double y);
+
+/* Whether a cell of the 3 x 3 around (cx, cy) of a g x g level holds a
+ * stamp at least `since` (wrapping). */
+static inline int cfpo_dens_levels_touched(const uint32_t *touch, int64_t g, int64_t cx, int64_t cy, uint32_t since)
+{
+    const int64_t x0 = cx ? cx - 1 : g - 1, x2 = cx + 1 < g ? cx + 1 : 0;
+    const int64_t r[3] = {(cy ? cy - 1 : g - 1) * g, cy * g, (cy + 1 < g ? cy + 1 : 0) * g};
+    uint32_t m = 0;
+    for (int b = 0; b < 3; b++) {
+        const uint32_t *row = touch + r[b];
+        const uint32_t u = row[x0] > row[cx] ? row[x0] : row[cx];
+        m = u > m ? u : m;
+        m = row[x2] > m ? row[x2] : m;
+    }
+    return m >= since;
+}
 
 void cfpo_dens_levels_free(cfpo_dens_levels *V);
 

@@ -24,8 +24,41 @@
 
 static inline double wrapd(double d) { return d - rint(d); }
 
+void cfpo_dens_nn_near_free(cfpo_dens_nn_near *c)
+{
+    free(c->q);
+    *c = (cfpo_dens_nn_near){0};
+}
+
+/* near's bounds for the grid g over qlow (kept when they are for it);
+ * 0, or -1 when out of memory. */
+static int near_fit(cfpo_dens_nn_near *c, const cfpo_dens_qbound *qlow, int64_t g)
+{
+    if (c->q && c->g == g && c->qlow == qlow) return 0;
+    float *v = realloc(c->q, (size_t)(g * g) * sizeof *v);
+    if (!v) return -1;
+    c->q = v;
+    const double L = 1.0 / (double)g, K = CFPO_DENS_NN_NEAR;
+    for (int64_t cy = 0; cy < g; cy++)
+        for (int64_t cx = 0; cx < g; cx++) { /* a float at most the least q there */
+            const double x0 = ((double)cx - K) * L, y0 = ((double)cy - K) * L;
+            const double m = cfpo_dens_qbound_box(qlow, x0, y0, x0 + (2 * K + 1) * L, y0 + (2 * K + 1) * L);
+            const float f = (float)m;
+            v[cy * g + cx] = (double)f > m ? nextafterf(f, 0) : f;
+        }
+    c->g = g;
+    c->qlow = qlow;
+    return 0;
+}
+
 int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n,
                        size_t k, double D, double *mm, int nthreads)
+{
+    return cfpo_dens_nn_first_near(d, qlow, NULL, xy, q, n, k, D, mm, nthreads);
+}
+
+int cfpo_dens_nn_first_near(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
+                            const double *q, size_t n, size_t k, double D, double *mm, int nthreads)
 {
     const int nt = nthreads > 0 ? nthreads : omp_get_max_threads();
     cfpo_dens_qbound own;
@@ -45,7 +78,9 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
      * scan reads its cells' points one after another */
     double *pt = malloc((n ? n : 1) * 3 * sizeof *pt);
     int rc = -1;
-    if (!start || !fill || !idx || !rho || !cell || !pt) goto done;
+    if (!start || !fill || !idx || !rho || !cell || !pt || (near && near_fit(near, qlow, g) != 0)) goto done;
+    const float *nq = near ? near->q : NULL;
+    const double nreach = (CFPO_DENS_NN_NEAR - 0.5) * L; /* a reach within this stays inside a cell's near cells */
     for (size_t i = 0; i < n; i++) {
         int64_t cx = (int64_t)(xy[2 * i] * (double)g), cy = (int64_t)(xy[2 * i + 1] * (double)g);
         cx = cx < 0 ? 0 : cx >= g ? g - 1 : cx;
@@ -160,7 +195,7 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cons
                 if (k > 0 && reach * reach * ql >= best * (1 + 1e-9)) break;
                 if (best < qlbest && (k > 0 || ri > 1.2 * lo)) { /* after ring 0 only where it can prune */
                     const double R = sqrt(best / lo) * (1 + 1e-9) + L;
-                    ql = cfpo_dens_qbound_box(qlow, x - R, y - R, x + R, y + R);
+                    ql = nq && R <= nreach ? (double)nq[cell[i]] : cfpo_dens_qbound_box(qlow, x - R, y - R, x + R, y + R);
                     if (ql < lo) ql = lo;
                     qlbest = best;
                     if (k > 0 && reach * reach * ql >= best * (1 + 1e-9)) break;
@@ -184,8 +219,14 @@ int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, d
 int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n, double *m,
                    double *delta_min, double *delta_avg, int nthreads)
 {
+    return cfpo_dens_nn_q_near(d, qlow, NULL, xy, q, n, m, delta_min, delta_avg, nthreads);
+}
+
+int cfpo_dens_nn_q_near(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
+                        const double *q, size_t n, double *m, double *delta_min, double *delta_avg, int nthreads)
+{
     double *mm = m ? m : malloc(n * sizeof *mm);
-    if (!mm || cfpo_dens_nn_first(d, qlow, xy, q, n, n, cfpo_delta_bound((double)n), mm, nthreads) != 0) {
+    if (!mm || cfpo_dens_nn_first_near(d, qlow, near, xy, q, n, n, cfpo_delta_bound((double)n), mm, nthreads) != 0) {
         if (!m) free(mm);
         return -1;
     }

@@ -30,6 +30,21 @@ int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, d
 int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n, double *m,
                    double *delta_min, double *delta_avg, int nthreads);
 
+/* A caller's store of the search grid's near bounds, kept between
+ * measures of one density (the grid has no offset and its side depends on
+ * n alone): per cell, the least q (qlow's) over the cells within
+ * CFPO_DENS_NN_NEAR of it, which bounds q over a point's reach when the
+ * reach stays inside them, in place of a query of the pyramid each point
+ * (the same result: the search's minimum is exact whatever bound holds).
+ * Zero-initialised; cfpo_dens_nn_near_free releases it. */
+#define CFPO_DENS_NN_NEAR 4
+typedef struct {
+    long long g; /* the grid it is for (0: none) */
+    const cfpo_dens_qbound *qlow;
+    float *q;
+} cfpo_dens_nn_near;
+void cfpo_dens_nn_near_free(cfpo_dens_nn_near *c);
+
 /* Pieces of it, for a rank that holds part of the set (dens_engine.c):
  * the smallest measure of each of the first k of the n points xy against
  * all n (Delta = D, that of the whole set) into m, q[i] the sqrt of the
@@ -39,6 +54,12 @@ int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const do
  * Then delta_min and delta_avg of the n measures m, summed in their order. */
 int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n,
                        size_t k, double D, double *m, int nthreads);
+/* The same with near (NULL: none), for a caller that measures many times. */
+int cfpo_dens_nn_first_near(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
+                            const double *q, size_t n, size_t k, double D, double *m, int nthreads);
+/* cfpo_dens_nn_q with near (NULL: none). */
+int cfpo_dens_nn_q_near(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
+                        const double *q, size_t n, double *m, double *delta_min, double *delta_avg, int nthreads);
 void cfpo_dens_nn_sum(const double *m, size_t n, double *delta_min, double *delta_avg);
 
 #endif

@@ -15,14 +15,28 @@
 /* Cells of this iteration's grid, points in id order inside each (the
  * store's order: own points by id, then each halo cell's from its owner,
  * by id). */
+static void build_from(cfpo_dens_engine *E);
+
 void dens_build_cells(cfpo_dens_engine *E)
+{
+    for (int64_t i = 0; i < E->s.loc; i++) E->cell[i] = cell_of(E, E->s.xy[2 * i], E->s.xy[2 * i + 1]);
+    build_from(E);
+}
+
+void dens_build_level(cfpo_dens_engine *E, int l)
+{
+    const int sh = E->lv.n - 1 - l;
+    const int64_t g = E->lv.g0 << l;
+    for (int64_t i = 0; i < E->s.loc; i++) E->cell[i] = (int64_t)(E->fine[i] >> 16 >> sh) * g + ((E->fine[i] & 0xffff) >> sh);
+    build_from(E);
+}
+
+/* the cells from E->cell */
+static void build_from(cfpo_dens_engine *E)
 {
     const int64_t G = E->g * E->g;
     memset(E->cstart, 0, (size_t)(G + 1) * sizeof *E->cstart);
-    for (int64_t i = 0; i < E->s.loc; i++) {
-        E->cell[i] = cell_of(E, E->s.xy[2 * i], E->s.xy[2 * i + 1]);
-        E->cstart[E->cell[i] + 1]++;
-    }
+    for (int64_t i = 0; i < E->s.loc; i++) E->cstart[E->cell[i] + 1]++;
     for (int64_t c = 0; c < G; c++) E->cstart[c + 1] += E->cstart[c];
     for (int64_t i = 0; i < E->s.loc; i++) E->cidx[E->cstart[E->cell[i]]++] = i;
     for (int64_t c = G; c > 0; c--) E->cstart[c] = E->cstart[c - 1];
@@ -195,9 +209,13 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
     double maxd = 0, tm = *tm_;
     const int64_t g0 = E->lv.g0;
     if (!comm_all(cfpo_dens_levels_place(&E->lv, &E->qlow, E->sx, E->sy) == 0)) return -1;
-    for (int64_t i = 0; i < E->s.own; i++)
-        E->lev[i] = (unsigned char)cfpo_dens_levels_of(&E->lv, E->s.xy[2 * i], E->s.xy[2 * i + 1], E->s.q[i], E->D,
-                                                       CELL_SPACINGS);
+    for (int64_t i = 0; i < E->s.loc; i++) E->fine[i] = cfpo_dens_levels_fine(&E->lv, E->s.xy[2 * i], E->s.xy[2 * i + 1]);
+    int64_t per_level[CFPO_DENS_LEVELS_MAX] = {0}; /* the points of each level, on every rank */
+    for (int64_t i = 0; i < E->s.own; i++) {
+        E->lev[i] = (unsigned char)cfpo_dens_levels_of_fine(&E->lv, E->fine[i], E->s.q[i], E->D, CELL_SPACINGS);
+        per_level[E->lev[i]]++;
+    }
+    if (E->T) comm_sum_i64(per_level, E->lv.n);
     if (E->T) { /* level 0's cells, for the refreshes */
         dens_build_cells(E);
         memcpy(E->cstart0, E->cstart, (size_t)(g0 * g0 + 1) * sizeof *E->cstart0);
@@ -205,31 +223,57 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
     }
     int ok = 1;
     for (int l = 0; l < E->lv.n && ok; l++) {
+        if (per_level[l] == 0) continue; /* nothing to solve, on any rank */
         E->cur = l;
         E->g = g0 << l;
         E->L = 1.0 / (double)E->g;
-        const int64_t g = E->g, per = g / 3;
-        dens_build_cells(E);
-        int64_t mx = 0;
-        for (int64_t cy = 0; cy < g; cy++)
-            for (int64_t cx = 0; cx < g; cx++) {
-                const int64_t m = block_count(E, cx, cy);
+        const int64_t g = E->g;
+        dens_build_level(E, l);
+        unsigned char *has = E->dirty; /* the cells holding a point of this level */
+        const uint32_t *touch = E->ltouch[l];
+        uint32_t *seen = E->lseen[l]; /* the skip */
+        memset(has, 0, (size_t)(g * g));
+        int64_t at[10] = {0}, nh = 0;
+        for (int64_t i = 0; i < E->s.own; i++)
+            if (E->lev[i] == l && !has[E->cell[i]]) {
+                has[E->cell[i]] = 1;
+                nh++;
+            }
+        /* one rank: the cells holding a point of this level by colour
+         * (cells of one colour are solved in any order: their blocks are
+         * apart); several: this rank's cells of the level by colour */
+        if (!E->T && nh > E->lcap) {
+            int64_t *v = realloc(E->lcells, (size_t)nh * sizeof *v);
+            if (v) { E->lcells = v; E->lcap = nh; }
+        }
+        if (!E->T && nh <= E->lcap) {
+            for (int64_t c = 0; c < g * g; c++)
+                if (has[c]) at[(c % g) % 3 + 3 * ((c / g) % 3) + 1]++;
+            for (int k = 0; k < 9; k++) at[k + 1] += at[k];
+            int64_t fill[9];
+            for (int k = 0; k < 9; k++) fill[k] = at[k];
+            for (int64_t c = 0; c < g * g; c++)
+                if (has[c]) E->lcells[fill[(c % g) % 3 + 3 * ((c / g) % 3)]++] = c;
+        }
+        int64_t mx = 0; /* the largest block a solve gathers */
+        for (int64_t c = 0; c < g * g; c++)
+            if (has[c]) {
+                const int64_t m = block_count(E, c % g, c / g);
                 if (m > mx) mx = m;
             }
-        int64_t at[10];
-        if (!comm_all(ensure_buffers(E, (size_t)mx) == 0 && (!E->T || level_cells(E, l, at) == 0))) { ok = 0; break; }
-        unsigned char *has = E->dirty, *dirty = E->ldirty[l]; /* the cells holding a point of this level; the skip */
-        memset(has, 0, (size_t)(g * g));
-        for (int64_t i = 0; i < E->s.own; i++)
-            if (E->lev[i] == l) has[E->cell[i]] = 1;
+        if (!comm_all((E->T || nh <= E->lcap) && ensure_buffers(E, (size_t)mx) == 0 &&
+                      (!E->T || level_cells(E, l, at) == 0))) {
+            ok = 0;
+            break;
+        }
         for (int colour = 0; colour < 9 && ok; colour++) {
-            const int64_t bx = colour % 3, by = colour / 3;
-            const int64_t m = E->T ? at[colour + 1] - at[colour] : per * per;
+            const int64_t m = at[colour + 1] - at[colour];
+            const uint32_t ph = ++E->phase;
 #pragma omp parallel for num_threads(E->nthreads) schedule(dynamic, 4) reduction(+ : moves, solved) reduction(max : maxd)
             for (int64_t t = 0; t < m; t++) {
-                const int64_t c = E->T ? E->lcells[at[colour] + t] : (by + 3 * (t / per)) * g + bx + 3 * (t % per);
-                if (!has[c] || !dirty[c]) continue;
-                dirty[c] = 0; /* a move marks it again (its block holds the move) */
+                const int64_t c = E->lcells[at[colour] + t];
+                if (!has[c] || !cfpo_dens_levels_touched(touch, g, c % g, c / g, seen[c])) continue;
+                seen[c] = ph; /* a move stamps it again (the move lies in it) */
                 for (int64_t e = E->cstart[c]; e < E->cstart[c + 1]; e++) solved += E->lev[E->cidx[e]] == l;
                 double md = 0;
                 moves += dens_solve_cell(E, &E->tb[omp_get_thread_num()], c % g, c / g, &md);
@@ -250,7 +294,9 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
                 double *r = E->cxyq + 3 * E->slot[j];
                 const double *was = E->hold + 2 * (j - E->s.own);
                 if (was[0] != E->s.xy[2 * j] || was[1] != E->s.xy[2 * j + 1]) { /* moved on its rank: marked as there */
-                    cfpo_dens_levels_mark(&E->lv, E->ldirty, was[0], was[1], E->s.xy[2 * j], E->s.xy[2 * j + 1]);
+                    const uint32_t f = cfpo_dens_levels_fine(&E->lv, E->s.xy[2 * j], E->s.xy[2 * j + 1]);
+                    cfpo_dens_levels_mark_fine(&E->lv, E->ltouch, ph, E->fine[j], f);
+                    E->fine[j] = f;
                 }
                 r[0] = E->s.xy[2 * j];
                 r[1] = E->s.xy[2 * j + 1];
