@@ -154,7 +154,7 @@ static int fit_cells(cfpo_dens_engine *E)
  * edge), so its measure is at least e (q_i q_min)^(1/2) / Delta. */
 static int measure_own(cfpo_dens_engine *E, double *m)
 {
-    if (cfpo_dens_nn_first_near(E->d, &E->qlow, &E->near, E->s.xy, E->s.q, (size_t)E->s.loc, (size_t)E->s.own, E->D, m,
+    if (cfpo_dens_nn_first(E->d, &E->qlow, &E->near, E->s.xy, E->s.q, (size_t)E->s.loc, (size_t)E->s.own, E->D, m,
                                 E->nthreads) != 0)
         return -1;
     const double lo = sqrt(E->d->rho_min), G = (double)E->g;
@@ -174,14 +174,14 @@ static int measure_own(cfpo_dens_engine *E, double *m)
  * in that order, as on one rank: the same bits. */
 static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
 {
-    if (!E->T) return cfpo_dens_nn_q_near(E->d, &E->qlow, &E->near, E->s.xy, E->s.q, (size_t)E->n, NULL, dmin, davg, E->nthreads);
+    if (!E->T) return cfpo_dens_nn_q(E->d, &E->qlow, &E->near, E->s.xy, E->s.q, (size_t)E->n, NULL, dmin, davg, E->nthreads);
     double *m = malloc((size_t)(E->s.own + 1) * sizeof *m);
     int got = m ? (halo ? measure_own(E, m) : 0) : -1;
     if (!comm_all(got >= 0)) { free(m); return -1; }
     if (!comm_all(got == 1)) { /* a start far from the density: the whole set on every rank */
         free(m);
         if (cfpo_dens_dist_gather_values(E->T, &E->s, E->n, E->s.xy, 2, E->all) != 0) return -1;
-        return comm_all(cfpo_dens_nn_q_near(E->d, &E->qlow, &E->near, E->all, NULL, (size_t)E->n, NULL, dmin, davg,
+        return comm_all(cfpo_dens_nn_q(E->d, &E->qlow, &E->near, E->all, NULL, (size_t)E->n, NULL, dmin, davg,
                                             E->nthreads) == 0)
                    ? 0
                    : -1;

@@ -153,12 +153,6 @@ int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q,
     return l;
 }
 
-void cfpo_dens_levels_mark(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, double x0, double y0,
-                           double x1, double y1)
-{
-    cfpo_dens_levels_mark_fine(V, touch, phase, cfpo_dens_levels_fine(V, x0, y0), cfpo_dens_levels_fine(V, x1, y1));
-}
-
 void cfpo_dens_levels_mark_fine(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, uint32_t a, uint32_t b)
 {
     const int f = V->n - 1;

@@ -91,16 +91,13 @@ int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q,
 int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q, double D, double spacings);
 
 /* Stamps, in every level's touch (g0 2^l cells a side each), the cells
- * of (x0, y0) and (x1, y1) under the placed offset (a move's old and new
- * places) with the phase: a cell's block changed since it was last
+ * holding the finest cells a and b (cfpo_dens_levels_fine: a move's old
+ * and new places under the placed offset) with the phase: a cell's block changed since it was last
  * solved when a cell of its 3 x 3 holds a stamp at least that solve's
  * phase (cfpo_dens_levels_touched). One stamp a cell, where marking the
  * 3 x 3 around each spot took nine. Relaxed atomic stores (cells of
  * other levels than the one being solved can be stamped by several
  * threads at once, all with the same phase). */
-void cfpo_dens_levels_mark(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, double x0, double y0,
-                           double x1, double y1);
-/* The same from the two places' finest cells (cfpo_dens_levels_fine). */
 void cfpo_dens_levels_mark_fine(const cfpo_dens_levels *V, uint32_t *const *touch, uint32_t phase, uint32_t a, uint32_t b);
 
 /* The finest level's cell of (x, y) under the placed offset, as y << 16 |

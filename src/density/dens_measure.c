@@ -51,13 +51,7 @@ static int near_fit(cfpo_dens_nn_near *c, const cfpo_dens_qbound *qlow, int64_t 
     return 0;
 }
 
-int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n,
-                       size_t k, double D, double *mm, int nthreads)
-{
-    return cfpo_dens_nn_first_near(d, qlow, NULL, xy, q, n, k, D, mm, nthreads);
-}
-
-int cfpo_dens_nn_first_near(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
+int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
                             const double *q, size_t n, size_t k, double D, double *mm, int nthreads)
 {
     const int nt = nthreads > 0 ? nthreads : omp_get_max_threads();
@@ -213,20 +207,14 @@ done:
 
 int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg)
 {
-    return cfpo_dens_nn_q(d, NULL, xy, NULL, n, m, delta_min, delta_avg, 0);
+    return cfpo_dens_nn_q(d, NULL, NULL, xy, NULL, n, m, delta_min, delta_avg, 0);
 }
 
-int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n, double *m,
-                   double *delta_min, double *delta_avg, int nthreads)
-{
-    return cfpo_dens_nn_q_near(d, qlow, NULL, xy, q, n, m, delta_min, delta_avg, nthreads);
-}
-
-int cfpo_dens_nn_q_near(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
+int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
                         const double *q, size_t n, double *m, double *delta_min, double *delta_avg, int nthreads)
 {
     double *mm = m ? m : malloc(n * sizeof *mm);
-    if (!mm || cfpo_dens_nn_first_near(d, qlow, near, xy, q, n, n, cfpo_delta_bound((double)n), mm, nthreads) != 0) {
+    if (!mm || cfpo_dens_nn_first(d, qlow, near, xy, q, n, n, cfpo_delta_bound((double)n), mm, nthreads) != 0) {
         if (!m) free(mm);
         return -1;
     }

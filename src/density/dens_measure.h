@@ -22,14 +22,6 @@
  * delta_min, delta_avg. n >= 2. 0, or -1 when out of memory. The result
  * does not depend on the number of threads. */
 int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, double *delta_min, double *delta_avg);
-/* The same with qlow, d's pyramid of minima (cfpo_dens_qbound_build_min),
- * built once by a caller that measures many times (NULL: built here), q
- * as for cfpo_dens_nn_first below (NULL: read here), on
- * nthreads threads (0: OpenMP's default; an engine passes its own count,
- * so that -t 1 measures on one thread). */
-int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n, double *m,
-                   double *delta_min, double *delta_avg, int nthreads);
-
 /* A caller's store of the search grid's near bounds, kept between
  * measures of one density (the grid has no offset and its side depends on
  * n alone): per cell, the least q (qlow's) over the cells within
@@ -45,21 +37,24 @@ typedef struct {
 } cfpo_dens_nn_near;
 void cfpo_dens_nn_near_free(cfpo_dens_nn_near *c);
 
+/* The same as cfpo_dens_nn with qlow, d's pyramid of minima
+ * (cfpo_dens_qbound_build_min), built once by a caller that measures many
+ * times (NULL: built here), near (NULL: none), q as for cfpo_dens_nn_first
+ * below (NULL: read here), on nthreads threads (0: OpenMP's default; an
+ * engine passes its own count, so that -t 1 measures on one thread). */
+int cfpo_dens_nn_q(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
+                   const double *q, size_t n, double *m, double *delta_min, double *delta_avg, int nthreads);
+
 /* Pieces of it, for a rank that holds part of the set (dens_engine.c):
  * the smallest measure of each of the first k of the n points xy against
  * all n (Delta = D, that of the whole set) into m, q[i] the sqrt of the
  * density at point i as cfpo_density_at gives it (NULL: read here), qlow the pyramid
- * of minima of d (cfpo_dens_qbound_build_min; NULL: built here), on
- * nthreads threads (0: OpenMP's default); 0, or -1 when out of memory.
- * Then delta_min and delta_avg of the n measures m, summed in their order. */
-int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, const double *xy, const double *q, size_t n,
-                       size_t k, double D, double *m, int nthreads);
-/* The same with near (NULL: none), for a caller that measures many times. */
-int cfpo_dens_nn_first_near(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
-                            const double *q, size_t n, size_t k, double D, double *m, int nthreads);
-/* cfpo_dens_nn_q with near (NULL: none). */
-int cfpo_dens_nn_q_near(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
-                        const double *q, size_t n, double *m, double *delta_min, double *delta_avg, int nthreads);
+ * of minima of d (cfpo_dens_qbound_build_min; NULL: built here), near as
+ * above, on nthreads threads (0: OpenMP's default); 0, or -1 when out of
+ * memory. Then delta_min and delta_avg of the n measures m, summed in
+ * their order. */
+int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo_dens_nn_near *near, const double *xy,
+                       const double *q, size_t n, size_t k, double D, double *m, int nthreads);
 void cfpo_dens_nn_sum(const double *m, size_t n, double *delta_min, double *delta_avg);
 
 #endif
