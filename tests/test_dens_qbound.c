@@ -13,7 +13,10 @@
  *  - the pyramid of minima (over the non-zero pixels) bounds q from
  *    below at every point of the box whose pixel is not zero, and is
  *    local in the same sense (at least the smallest non-zero q over the
- *    widened box, less the float rounding). */
+ *    widened box, less the float rounding);
+ *  - a density whose q is flat within CFPO_QBOUND_FLAT answers every box
+ *    with its global maximum (minimum), still a bound and within that
+ *    ratio of the local one; one just past the ratio is answered locally. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -47,7 +50,7 @@ static double brute(const cfpo_density *d, double x0, double y0, double x1, doub
     return m;
 }
 
-static void boxes(const cfpo_density *d, const char *what, unsigned long long seed, int count, int lowest)
+static void boxes(const cfpo_density *d, const char *what, unsigned long long seed, int count, int lowest, int flat)
 {
     cfpo_dens_qbound b;
     if ((lowest ? cfpo_dens_qbound_build_min(&b, d) : cfpo_dens_qbound_build(&b, d)) != 0) {
@@ -71,13 +74,17 @@ static void boxes(const cfpo_density *d, const char *what, unsigned long long se
         }
         const double grow = 2 * (sx > sy ? sx : sy) + 8 * (px > py ? px : py);
         const double near = brute(d, x0, y0, x1, y1, grow, lowest); /* levels above 0: floats rounded outward */
-        if (lowest ? q < near * (1 - 1e-6) : q > near * (1 + 1e-6)) loose++;
+        const double tol = flat ? CFPO_QBOUND_FLAT : 1 + 1e-6;
+        if (lowest ? q < near / tol : q > near * tol) loose++;
         global += lowest ? q <= sqrt(d->rho_min) : q >= sqrt(d->rho_max);
     }
     const char *side = lowest ? "below" : "above", *ext = lowest ? "minimum" : "maximum";
     CHECK(below == 0, "%s: %d points of a box on the wrong side of its %s bound", what, below, side);
     CHECK(loose == 0, "%s: %d %s bounds past the extreme q near the box", what, loose, side);
-    CHECK(global < count, "%s: every %s bound is the global %s", what, side, ext);
+    if (flat)
+        CHECK(global == count, "%s: flat, but %d of %d %s bounds not the global %s", what, count - global, count, side, ext);
+    else
+        CHECK(global < count, "%s: every %s bound is the global %s", what, side, ext);
     printf("%s: %d boxes, %d of them bounded by the global %s\n", what, count, global, ext);
     cfpo_dens_qbound_free(&b);
 }
@@ -97,8 +104,8 @@ int main(void)
         if (cfpo_density_from_values(v, w, h, what, &d, err, sizeof err) != 0) {
             CHECK(0, "%s: %s", what, err);
         } else {
-            boxes(&d, what, seed + (unsigned long long)z, 400, 0);
-            boxes(&d, what, seed + (unsigned long long)z, 400, 1);
+            boxes(&d, what, seed + (unsigned long long)z, 400, 0, 0);
+            boxes(&d, what, seed + (unsigned long long)z, 400, 1, 0);
             cfpo_density_free(&d);
         }
         free(v);
@@ -106,11 +113,24 @@ int main(void)
     cfpo_density d;
     char err[256];
     if (cfpo_density_load("cos:a=0.9,res=128", &d, err, sizeof err) == 0) {
-        boxes(&d, "cos a=0.9", seed, 400, 0);
-        boxes(&d, "cos a=0.9", seed, 400, 1);
+        boxes(&d, "cos a=0.9", seed, 400, 0, 0);
+        boxes(&d, "cos a=0.9", seed, 400, 1, 0);
         cfpo_density_free(&d);
     } else {
         CHECK(0, "cos: %s", err);
+    }
+    /* q spread sqrt(1.005 / 0.995) = 1.005 (flat) and sqrt(1.03 / 0.97) = 1.030 (not) */
+    const char *spec[2] = {"cos:a=0.005,res=128", "cos:a=0.03,res=128"};
+    for (int f = 0; f < 2; f++) {
+        if (cfpo_density_load(spec[f], &d, err, sizeof err) != 0) {
+            CHECK(0, "%s: %s", spec[f], err);
+            continue;
+        }
+        CHECK((sqrt(d.rho_max) <= sqrt(d.rho_min) * CFPO_QBOUND_FLAT) == (f == 0), "%s: spread %.4f", spec[f],
+              sqrt(d.rho_max / d.rho_min));
+        boxes(&d, spec[f], seed, 400, 0, f == 0);
+        boxes(&d, spec[f], seed, 400, 1, f == 0);
+        cfpo_density_free(&d);
     }
     return test_report(passed_, failed_);
 }

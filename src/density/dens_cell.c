@@ -134,6 +134,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     const int wrap = g < 6; /* the block spans the torus: differences wrap */
     const int levels = E->lv.n > 1;
     int m = 0, c0 = 0, c1 = 0;
+    double qlo = INFINITY, qbl = 0; /* the block's smallest and largest q, taken in its gather */
     /* the pixels every spot evaluated here lies on (each box S is clipped
      * to the cell), asked for before the block's gather and ranking */
     cfpo_density_prefetch_box(E->d, cfpo_wrap01(ox), cfpo_wrap01(oy), L);
@@ -163,6 +164,8 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
                 b->br[m] = r[2];
                 b->bid[m] = E->cidx[s];
                 b->bslot[m] = s;
+                if (r[2] < qlo) qlo = r[2];
+                if (r[2] > qbl) qbl = r[2];
                 m++;
             }
         }
@@ -180,24 +183,21 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
                     b->br[m] = r[2];
                     b->bid[m] = E->cidx[s];
                     b->bslot[m] = s;
+                    if (r[2] < qlo) qlo = r[2];
+                    if (r[2] > qbl) qbl = r[2];
                     m++;
                 }
                 if (dx == 0 && dy == 0) c1 = m;
             }
     }
     const double lo = sqrt(E->d->rho_min), rmax = E->D / lo, hi = L * (1 - 1e-9);
-    /* the block's buckets (one for a small block), and the smallest q in
-     * it, which bounds the measure of the points a ring scan leaves out */
+    /* the block's buckets (one for a small block); its smallest q bounds
+     * the measure of the points a ring scan leaves out */
     cfpo_dens_buckets *bk = &b->bk;
     if (cfpo_dens_buckets_build(bk, b->bx, b->by, m, -L, -L, 3 * L, wrap, m < BUCKET_FROM ? (double)m + 1 : BUCKET_PER) != 0
         || ((size_t)(8 * bk->B + 1) > b->ring_cap && grow_ring(b, (size_t)(8 * bk->B + 1)) != 0)) {
         b->oom = 1;
         return 0;
-    }
-    double qlo = INFINITY, qbl = 0; /* the block's smallest and largest q */
-    for (int j = 0; j < m; j++) {
-        if (b->br[j] < qlo) qlo = b->br[j];
-        if (b->br[j] > qbl) qbl = b->br[j];
     }
     /* the near solve only where q is nearly flat over the block
      * (policy.h): across a steep change the nearest two polygons miss the

@@ -35,6 +35,8 @@ static int build(cfpo_dens_qbound *b, const cfpo_density *d, int lowest)
     b->d = d;
     b->lowest = lowest;
     b->levels = 1;
+    const double qlo = sqrt(d->rho_min), qhi = sqrt(d->rho_max);
+    b->flat = qlo > 0 && qhi <= qlo * CFPO_QBOUND_FLAT ? (lowest ? qlo : qhi) : 0;
     b->w[0] = d->w;
     b->h[0] = d->h;
     b->q[0] = NULL;
@@ -114,6 +116,7 @@ static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya
 
 double cfpo_dens_qbound_box(const cfpo_dens_qbound *b, double x0, double y0, double x1, double y1)
 {
+    if (b->flat > 0) return b->flat;
     int64_t rx[2][2], ry[2][2];
     const int nx = ranges(x0, x1, b->w[0], rx), ny = ranges(y0, y1, b->h[0], ry);
     double m = b->lowest ? INFINITY : 0;

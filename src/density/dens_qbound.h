@@ -15,6 +15,9 @@
  * a zero-density pixel) bounds q from below, for the measure's search
  * (dens_measure.c): how far a point must look before no unvisited point
  * can come nearer in the measure.
+ * Where q is flat within CFPO_QBOUND_FLAT over the whole density, the
+ * query answers the density's own largest (smallest non-zero) q: a bound
+ * as good to within that ratio, with no read of the pyramid.
  * Owns: the pyramids and their box query. */
 #ifndef CFPO_DENS_QBOUND_H
 #define CFPO_DENS_QBOUND_H
@@ -24,11 +27,13 @@
 #include "density.h"
 
 #define CFPO_QBOUND_LEVELS 24
+#define CFPO_QBOUND_FLAT 1.02
 
 typedef struct {
     const cfpo_density *d; /* level 0 */
     int levels;
     int lowest; /* 0: maxima (floats rounded up); 1: minima over the non-zero pixels (rounded down) */
+    double flat; /* > 0: the answer to every query (q flat within CFPO_QBOUND_FLAT) */
     int64_t w[CFPO_QBOUND_LEVELS], h[CFPO_QBOUND_LEVELS];
     float *q[CFPO_QBOUND_LEVELS]; /* level l >= 1: w[l] x h[l] texels, row after row, each at least its max
                                      (at most its min) */
