@@ -31,7 +31,10 @@
  * for y: 3/7 of a cell a move around the colours' period 3 L. The grid is
  * shifted by sigma_j mod L on that axis and the sweep starts with colour
  * (r_y, r_x), r = floor(sigma_j / L) (which is the grid shifted by
- * (sigma_x, sigma_y) itself). Each sweep under one grid prints the grid
+ * (sigma_x, sigma_y) itself). In the adaptive variant the colours are
+ * brick colourings, rows of cells shifted under the even moves and
+ * columns under the odd ones, swept in the brick order (below;
+ * docs/method.md, item 3). Each sweep under one grid prints the grid
  * and its colours on the set (a density wave at the frequencies m g / 3,
  * m = 1..4, of phase 2 pi m sigma_j / (3 L) on its axis), and the print
  * outlives the sweep: with one grid for four sweeps from the start, a
