@@ -46,12 +46,13 @@ static inline uint64_t id_of(const cfpo_engine *E, uint64_t code)
  * that colour in its 3x3 block (in every colouring of policy.h, every 3x3
  * block holds one cell of each colour); with another period, all nine.
  * Returns the count. */
-static int near_offset(int64_t want, int64_t at)
+static inline int near_offset(int64_t want, int64_t at)
 {
     const int d = (int)(((want - at) % 3 + 3) % 3);
     return d == 2 ? -1 : d;
 }
-static int senders(const cfpo_engine *E, int64_t lx, int64_t ly, int a, int b, int off[9][2])
+static inline __attribute__((always_inline)) int senders(const cfpo_engine *E, int64_t lx, int64_t ly, int a, int b,
+                                                       int off[9][2])
 {
     if (E->G.period != 3) {
         int m = 0;
