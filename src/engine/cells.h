@@ -253,6 +253,7 @@ typedef struct {
     uint64_t key;
     int64_t x0, y0, w, h;
     int64_t bx, by, nxc, nyc;
+    int64_t start3[3]; /* brick: a row's (column's) start for shift 0, 1, 2 */
 } eng_colour;
 
 static inline eng_colour eng_colour_of(const cfpo_engine *E, int colour)
@@ -269,6 +270,9 @@ static inline eng_colour eng_colour_of(const cfpo_engine *E, int colour)
     C.nyc = C.by < E->h ? (E->h - C.by + C.p - 1) / C.p : 0;
     if (C.brick == CFPO_BRICK_ROWS) C.nxc = (E->w + C.p - 1) / C.p;
     if (C.brick == CFPO_BRICK_COLUMNS) C.nyc = (E->h + C.p - 1) / C.p;
+    for (int s = 0; s < 3; s++)
+        C.start3[s] = C.brick == CFPO_BRICK_ROWS ? first_of(E->x0, C.p, (colour % C.p + s) % C.p)
+                                                 : first_of(E->y0, C.p, (colour / C.p + s) % C.p);
     return C;
 }
 
@@ -279,14 +283,12 @@ static inline int eng_colour_cell(const eng_colour *C, int64_t t, int64_t *lx, i
     const int64_t i = t % C->nxc, j = t / C->nxc;
     if (C->brick == CFPO_BRICK_ROWS) {
         *ly = C->by + C->p * j;
-        const int s = cfpo_policy_brick_shift(C->key, C->y0 + *ly);
-        *lx = first_of(C->x0, C->p, (C->colour % C->p + s) % C->p) + C->p * i;
+        *lx = C->start3[cfpo_policy_brick_shift(C->key, C->y0 + *ly)] + C->p * i;
         return *lx < C->w;
     }
     if (C->brick == CFPO_BRICK_COLUMNS) {
         *lx = C->bx + C->p * i;
-        const int s = cfpo_policy_brick_shift(C->key, C->x0 + *lx);
-        *ly = first_of(C->y0, C->p, (C->colour / C->p + s) % C->p) + C->p * j;
+        *ly = C->start3[cfpo_policy_brick_shift(C->key, C->x0 + *lx)] + C->p * j;
         return *ly < C->h;
     }
     *ly = C->by + C->p * j;
