@@ -33,7 +33,8 @@ static int passed_, failed_;
 static int same_policy(const cfpo_policy *a, const cfpo_policy *b)
 {
     return a->iteration == b->iteration && a->L == b->L && a->margin == b->margin && a->shift_x == b->shift_x &&
-           a->shift_y == b->shift_y && a->rot_x == b->rot_x && a->rot_y == b->rot_y &&
+           a->shift_y == b->shift_y && a->rot_x == b->rot_x && a->rot_y == b->rot_y && a->brick == b->brick &&
+           a->brick_key == b->brick_key &&
            a->cut == b->cut && a->freeze == b->freeze && a->near == b->near && a->near_cells == b->near_cells &&
            a->relax == b->relax && (a->relax < 1 || a->w[0] == b->w[0]) && (a->relax < 2 || a->w[1] == b->w[1]);
 }

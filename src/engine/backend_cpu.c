@@ -196,7 +196,7 @@ static int64_t cpu_solve(cfpo_engine *E, const eng_colour *C, int64_t *solved)
 #pragma omp parallel for schedule(dynamic, 16) reduction(+ : moves, solv) reduction(max : mm) num_threads(E->nthreads)
     for (int64_t t = 0; t < T; t++) {
         int64_t lx, ly;
-        eng_colour_cell(C, t, &lx, &ly);
+        if (!eng_colour_cell(C, t, &lx, &ly)) continue;
         moves += solve_cell(E, lx, ly, E->scratch[omp_get_thread_num()], &solv, &mm);
     }
     E->max_move = mm;
@@ -210,7 +210,7 @@ static void cpu_regrid(cfpo_engine *E, const eng_colour *C)
 #pragma omp parallel for schedule(static) num_threads(E->nthreads)
     for (int64_t t = 0; t < T; t++) {
         int64_t lx, ly;
-        eng_colour_cell(C, t, &lx, &ly);
+        if (!eng_colour_cell(C, t, &lx, &ly)) continue;
         const int64_t c = ly * E->w + lx, cx = E->x0 + lx, cy = E->y0 + ly;
         unsigned mask = 0;
         for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
@@ -227,7 +227,7 @@ static int cpu_mark(cfpo_engine *E, const eng_colour *C)
     int crossed = 0;
     for (int64_t t = 0; t < C->nxc * C->nyc; t++) {
         int64_t lx, ly;
-        eng_colour_cell(C, t, &lx, &ly);
+        if (!eng_colour_cell(C, t, &lx, &ly)) continue;
         const unsigned mk = E->mask[ly * E->w + lx] & 0x1ffu;
         if (!mk) continue;
         eng_mark_block(E, lx, ly);
@@ -244,8 +244,7 @@ static void cpu_unmark(cfpo_engine *E, const eng_colour *C)
 {
     for (int64_t t = 0; t < C->nxc * C->nyc; t++) {
         int64_t lx, ly;
-        eng_colour_cell(C, t, &lx, &ly);
-        E->mask[ly * E->w + lx] &= NEED_BIT;
+        if (eng_colour_cell(C, t, &lx, &ly)) E->mask[ly * E->w + lx] &= NEED_BIT;
     }
 }
 

@@ -240,12 +240,20 @@ static inline int64_t first_of(int64_t origin, int p, int64_t want)
     return ((want - origin) % p + p) % p;
 }
 
-/* The own cells of one colour: nxc x nyc cells, tile coordinates
- * (bx + p i, by + p j). Colour k is the global cells (x, y) with
- * x = k mod p and y = k div p (mod p). */
+/* The own cells of one colour (the iteration's colouring, E->pol,
+ * policy.h: cfpo_policy_colour_at), in nyc rows of nxc slots: slot
+ * (i, j) is the cell at tile coordinates (bx + p i, by + p j) in the
+ * plain colouring; in the brick rows one, row by + p j from the x start of
+ * its own global row (bx unused), in the brick columns one column
+ * bx + p i from the y start of its own global column (by unused). There
+ * nxc (nyc) is the most a row (column) of the tile holds, and the slots of
+ * a row (column) that holds one cell fewer lie past the tile. */
 typedef struct {
-    int colour, p;
+    int colour, p, brick;
+    uint64_t key;
+    int64_t x0, y0, w, h;
     int64_t bx, by, nxc, nyc;
+    int64_t start3[3]; /* brick: a row's (column's) start for shift 0, 1, 2 */
 } eng_colour;
 
 static inline eng_colour eng_colour_of(const cfpo_engine *E, int colour)
@@ -253,18 +261,39 @@ static inline eng_colour eng_colour_of(const cfpo_engine *E, int colour)
     eng_colour C;
     C.colour = colour;
     C.p = E->G.period;
+    C.brick = C.p == 3 ? E->pol.brick : 0;
+    C.key = E->pol.brick_key;
+    C.x0 = E->x0, C.y0 = E->y0, C.w = E->w, C.h = E->h;
     C.bx = first_of(E->x0, C.p, colour % C.p);
     C.by = first_of(E->y0, C.p, colour / C.p);
     C.nxc = C.bx < E->w ? (E->w - C.bx + C.p - 1) / C.p : 0;
     C.nyc = C.by < E->h ? (E->h - C.by + C.p - 1) / C.p : 0;
+    if (C.brick == CFPO_BRICK_ROWS) C.nxc = (E->w + C.p - 1) / C.p;
+    if (C.brick == CFPO_BRICK_COLUMNS) C.nyc = (E->h + C.p - 1) / C.p;
+    for (int s = 0; s < 3; s++)
+        C.start3[s] = C.brick == CFPO_BRICK_ROWS ? first_of(E->x0, C.p, (colour % C.p + s) % C.p)
+                                                 : first_of(E->y0, C.p, (colour / C.p + s) % C.p);
     return C;
 }
 
-/* The t-th cell of colour C (t < nxc nyc), in row-major order. */
-static inline void eng_colour_cell(const eng_colour *C, int64_t t, int64_t *lx, int64_t *ly)
+/* The cell of slot t of colour C (t < nxc nyc), rows of slots in order:
+ * 1, or 0 for a slot past the tile (no cell). */
+static inline int eng_colour_cell(const eng_colour *C, int64_t t, int64_t *lx, int64_t *ly)
 {
-    *ly = C->by + C->p * (t / C->nxc);
-    *lx = C->bx + C->p * (t % C->nxc);
+    const int64_t i = t % C->nxc, j = t / C->nxc;
+    if (C->brick == CFPO_BRICK_ROWS) {
+        *ly = C->by + C->p * j;
+        *lx = C->start3[cfpo_policy_brick_shift(C->key, C->y0 + *ly)] + C->p * i;
+        return *lx < C->w;
+    }
+    if (C->brick == CFPO_BRICK_COLUMNS) {
+        *lx = C->bx + C->p * i;
+        *ly = C->start3[cfpo_policy_brick_shift(C->key, C->x0 + *lx)] + C->p * j;
+        return *ly < C->h;
+    }
+    *ly = C->by + C->p * j;
+    *lx = C->bx + C->p * i;
+    return 1;
 }
 
 /* Shared between the engine's files. */

@@ -43,9 +43,16 @@ static inline uint64_t id_of(const cfpo_engine *E, uint64_t code)
 
 /* The cells that can have sent points into own cell (lx, ly) in the phase
  * of colour (a, b): the cell itself and, with period 3, the one cell of
- * that colour in its 3x3 block (every 3x3 block holds one cell of each
- * colour); with another period, all nine. Returns the count. */
-static int senders(const cfpo_engine *E, int64_t lx, int64_t ly, int a, int b, int off[9][2])
+ * that colour in its 3x3 block (in every colouring of policy.h, every 3x3
+ * block holds one cell of each colour); with another period, all nine.
+ * Returns the count. */
+static inline int near_offset(int64_t want, int64_t at)
+{
+    const int d = (int)(((want - at) % 3 + 3) % 3);
+    return d == 2 ? -1 : d;
+}
+static inline __attribute__((always_inline)) int senders(const cfpo_engine *E, int64_t lx, int64_t ly, int a, int b,
+                                                       int off[9][2])
 {
     if (E->G.period != 3) {
         int m = 0;
@@ -53,9 +60,18 @@ static int senders(const cfpo_engine *E, int64_t lx, int64_t ly, int a, int b, i
             for (int dx = -1; dx <= 1; dx++) off[m][0] = dx, off[m][1] = dy, m++;
         return m;
     }
-    int sx = (int)(((b - (E->x0 + lx)) % 3 + 3) % 3), sy = (int)(((a - (E->y0 + ly)) % 3 + 3) % 3);
-    if (sx == 2) sx = -1;
-    if (sy == 2) sy = -1;
+    const int64_t g = E->G.g, X = E->x0 + lx, Y = E->y0 + ly;
+    int sx, sy;
+    if (E->pol.brick == CFPO_BRICK_ROWS) {
+        sy = near_offset(a, Y);
+        sx = near_offset(b + cfpo_policy_brick_shift(E->pol.brick_key, (Y + sy + g) % g), X);
+    } else if (E->pol.brick == CFPO_BRICK_COLUMNS) {
+        sx = near_offset(b, X);
+        sy = near_offset(a + cfpo_policy_brick_shift(E->pol.brick_key, (X + sx + g) % g), Y);
+    } else {
+        sx = near_offset(b, X);
+        sy = near_offset(a, Y);
+    }
     off[0][0] = 0, off[0][1] = 0;
     if (sx == 0 && sy == 0) return 1;
     off[1][0] = sx, off[1][1] = sy;
@@ -239,7 +255,7 @@ static void flag_moved(cfpo_engine *E, int colour)
     const eng_colour C = eng_colour_of(E, colour);
     for (int64_t t = 0; t < C.nxc * C.nyc; t++) {
         int64_t lx, ly;
-        eng_colour_cell(&C, t, &lx, &ly);
+        if (!eng_colour_cell(&C, t, &lx, &ly)) continue;
         const int64_t c = ly * E->w + lx;
         const unsigned mk = E->mask[c] & 0x1ffu & ~CENTRE_BIT;
         if (!mk) continue;
@@ -291,39 +307,38 @@ int eng_relocate(cfpo_engine *E, int colour)
 /* Points that crossed into another rank's cell: packed per neighbour. */
 int eng_pack_migrants(cfpo_engine *E, const eng_colour *C)
 {
-    const int64_t bx = C->bx, by = C->by, nxc = C->nxc, nyc = C->nyc;
-    const int p = C->p;
     for (int k = 0; k < E->nnb; k++) E->nb[k].nout = 0;
     if (E->nnb == 0) return 0;
     const int64_t g = E->G.g;
-    for (int64_t j = 0; j < nyc; j++)
-        for (int64_t i = 0; i < nxc; i++) {
-            const int64_t lx = bx + p * i, ly = by + p * j, c = ly * E->w + lx;
-            const unsigned mk = E->mask[c];
-            if (!(mk & ~CENTRE_BIT & 0x1ffu)) continue;
-            for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
-                const int64_t gx = cfpo_grid_cx(&E->G, E->px[k]), gy = cfpo_grid_cy(&E->G, E->py[k]);
-                const int64_t dlx = lx + wrap_offset(gx - (E->x0 + lx), g), dly = ly + wrap_offset(gy - (E->y0 + ly), g);
-                if (locate(E, dlx, dly) >= 0) continue;
-                const int q = neighbour_of_rank(E, cfpo_tiling_owner(&E->T, gx, gy));
-                if (q < 0) return -1;
-                neighbour *nb = &E->nb[q];
-                if (nb->nout == nb->outcap) {
-                    size_t cap = nb->outcap * 2 + 16;
-                    mig_rec *o = realloc(nb->out, cap * sizeof *o);
-                    if (!o) return -1;
-                    nb->out = o;
-                    nb->outcap = cap;
-                }
-                mig_rec *r = &nb->out[nb->nout++];
-                memset(r, 0, sizeof *r);
-                r->x = E->px[k];
-                r->y = E->py[k];
-                r->id = E->pid[k];
-                r->dq[0] = E->dq[2 * k];
-                r->dq[1] = E->dq[2 * k + 1];
+    for (int64_t t = 0; t < C->nxc * C->nyc; t++) {
+        int64_t lx, ly;
+        if (!eng_colour_cell(C, t, &lx, &ly)) continue;
+        const int64_t c = ly * E->w + lx;
+        const unsigned mk = E->mask[c];
+        if (!(mk & ~CENTRE_BIT & 0x1ffu)) continue;
+        for (uint32_t k = E->start[c]; k < E->start[c + 1]; k++) {
+            const int64_t gx = cfpo_grid_cx(&E->G, E->px[k]), gy = cfpo_grid_cy(&E->G, E->py[k]);
+            const int64_t dlx = lx + wrap_offset(gx - (E->x0 + lx), g), dly = ly + wrap_offset(gy - (E->y0 + ly), g);
+            if (locate(E, dlx, dly) >= 0) continue;
+            const int q = neighbour_of_rank(E, cfpo_tiling_owner(&E->T, gx, gy));
+            if (q < 0) return -1;
+            neighbour *nb = &E->nb[q];
+            if (nb->nout == nb->outcap) {
+                size_t cap = nb->outcap * 2 + 16;
+                mig_rec *o = realloc(nb->out, cap * sizeof *o);
+                if (!o) return -1;
+                nb->out = o;
+                nb->outcap = cap;
             }
+            mig_rec *r = &nb->out[nb->nout++];
+            memset(r, 0, sizeof *r);
+            r->x = E->px[k];
+            r->y = E->py[k];
+            r->id = E->pid[k];
+            r->dq[0] = E->dq[2 * k];
+            r->dq[1] = E->dq[2 * k + 1];
         }
+    }
     return 0;
 }
 

@@ -8,11 +8,14 @@
  * The one colour loop of the project: cfpo, the library and cfpo-bench
  * all sweep through cfpo_engine_sweep.
  *
- * Why a phase is race-free (written once, here): cells of one colour are
- * `period` cells apart in both directions, on the whole torus, whatever the
- * tiles. A point of cell C may move only inside S(x), C grown by a margin
- * below L (L - Delta(n) in the paper's variant, at most L - delta(X) in the
- * adaptive one), so it stays in C's 3x3 block, and solving C reads only
+ * Why a phase is race-free (written once, here): two cells of one colour
+ * are at least `period` cells apart in one direction, on the whole torus,
+ * whatever the tiles (in the plain colouring in both; in a brick
+ * colouring, policy.h, two cells of one row are 3 apart in x and cells of
+ * different rows 3 apart in y). A point of cell C may move only inside
+ * S(x), C grown by a margin below L (L - Delta(n) in the paper's variant,
+ * at most L - delta(X) in the adaptive one), so it stays in C's 3x3
+ * block, and solving C reads only
  * C's 3x3 block. With period 3 the blocks of two same-colour cells are
  * disjoint, so no cell is written by one thread (or rank) and read by
  * another (Parallelization Theorem). The simplified variant keeps points in

@@ -98,6 +98,20 @@ double cfpo_policy_shift(const cfpo_grid *G, int k, int axis)
     return G->L * (w - floor(w));
 }
 
+/* The adaptive variant's colouring (policy.h, cfpo_policy_colour_at;
+ * docs/method.md, item 3; issue 44): brick rows under the grid's even
+ * moves, brick columns under the odd ones, the shifts drawn anew at each
+ * move from the seed and the move's number (kept while the grid stays:
+ * new colours under an unmoved grid cost iterations, docs/tried.md). */
+#define BRICK_SALT 0x243f6a8885a308d3ULL
+static void brick_colouring(const cfpo_grid *G, int k, cfpo_policy *P)
+{
+    if (G->variant != CFPO_VARIANT_ADAPTIVE || G->period != 3 || G->g % 3 != 0 || k <= 0) return;
+    const int j = move_index(G, k);
+    P->brick = j % 2 ? CFPO_BRICK_COLUMNS : CFPO_BRICK_ROWS;
+    P->brick_key = cfpo_rand64(G->seed ^ BRICK_SALT, (uint64_t)j, 0);
+}
+
 int cfpo_policy_starts_near(int variant) { return adaptive_like(variant); }
 
 int cfpo_policy_near_ends(int near, int converged) { return near && converged; }
@@ -137,6 +151,7 @@ cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
         }
         return P;
     }
+    brick_colouring(G, k, &P);
     P.near = near != 0;
     P.near_cells = P.near ? (k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1) : 0;
     if (k >= RELAX_FROM) {

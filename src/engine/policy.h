@@ -31,7 +31,10 @@
  * for y: 3/7 of a cell a move around the colours' period 3 L. The grid is
  * shifted by sigma_j mod L on that axis and the sweep starts with colour
  * (r_y, r_x), r = floor(sigma_j / L) (which is the grid shifted by
- * (sigma_x, sigma_y) itself). Each sweep under one grid prints the grid
+ * (sigma_x, sigma_y) itself). In the adaptive variant the colours are
+ * brick colourings, rows of cells shifted under the even moves and
+ * columns under the odd ones, swept in the brick order (below;
+ * docs/method.md, item 3). Each sweep under one grid prints the grid
  * and its colours on the set (a density wave at the frequencies m g / 3,
  * m = 1..4, of phase 2 pi m sigma_j / (3 L) on its axis), and the print
  * outlives the sweep: with one grid for four sweeps from the start, a
@@ -59,6 +62,7 @@
 #include "cfpo_types.h"
 #include "geom.h"
 #include "grid.h"
+#include "rng.h"
 
 /* The default tolerance of a run: of the variant on the uniform torus,
  * or, under a density that is not flat (density), CFPO_DENSITY_TOL (the
@@ -182,6 +186,8 @@ static inline int cfpo_policy_density_near(int k, double qlo, double qhi, int al
     return CFPO_POLICY_DENSITY_NEAR_CELLS;
 }
 
+#define CFPO_BRICK_ROWS 1
+#define CFPO_BRICK_COLUMNS 2
 /* The decisions for one iteration. */
 typedef struct {
     int iteration;  /* k, the iteration they are for (0: before the first) */
@@ -194,6 +200,9 @@ typedef struct {
     int rot_y;      /* period in the order (a, b) = (0, 0), (0, 1), ... (0 but
                        in the adaptive-like variants) */
     int balanced;   /* 1: (a, b) in the balanced order instead (period 3) */
+    int brick;      /* the colouring (cfpo_policy_colour_at): 0 the plain
+                       one, CFPO_BRICK_ROWS or CFPO_BRICK_COLUMNS */
+    uint64_t brick_key; /* with brick: the key of the rows' (columns') shifts */
     int cut;        /* 1: each point's square is cut to keep it t from the
                        points beyond its block (adaptive) */
     double freeze;  /* with cut: a point whose t reaches this stays (1.5 L) */
@@ -235,10 +244,48 @@ double cfpo_policy_walk(const cfpo_grid *G, int k, int axis);
  * x - y), is the same for every order (270); row order puts 243 of it on
  * y, this one at most 75 on any direction. Entry j: a * 3 + b. */
 static const int cfpo_policy_balanced_order[9] = {0, 1, 4, 5, 7, 8, 3, 2, 6};
+/* The brick order (issue 44): under a brick colouring (below) the
+ * shifted axis holds no colours' period, and only the three rows (brick
+ * rows; columns under brick columns) of colours, r = y mod 3, print: a row
+ * of cells whose turns come earlier in the sweep on average moves before
+ * its neighbours and prints the period on y, as the plain colouring's row
+ * order does. Entry j: r * 3 + i, the i-th colour of row r; the rows'
+ * turns are {0, 5, 7}, {1, 3, 8}, {2, 4, 6}, the same mean (4) for every
+ * row. After two sweeps at 1,048,576 points (seed 1) (0, g / 3) stands at
+ * 0.9 times its ring against 13.3 with the rows in turn (turns {0, 3, 6},
+ * {1, 4, 7}, {2, 5, 8}) and 27 with the balanced order (docs/tried.md). */
+static const int cfpo_policy_brick_order[9] = {0, 3, 6, 4, 7, 1, 8, 2, 5};
 static inline int cfpo_policy_colour(const cfpo_policy *P, int period, int j)
 {
+    if (P->brick && period == 3) {
+        const int r = cfpo_policy_brick_order[j] / 3, i = cfpo_policy_brick_order[j] % 3;
+        if (P->brick == CFPO_BRICK_ROWS) return ((r + P->rot_y) % 3) * 3 + (i + P->rot_x) % 3;
+        return ((i + P->rot_y) % 3) * 3 + (r + P->rot_x) % 3;
+    }
     if (P->balanced && period == 3) j = cfpo_policy_balanced_order[j];
     return ((j / period + P->rot_y) % period) * period + (j % period + P->rot_x) % period;
+}
+
+/* The colourings (period 3, g a multiple of 3). Plain: global cell
+ * (x, y) has colour (y mod 3) 3 + (x mod 3). Brick rows: every row of
+ * cells y is shifted by its own s_y in {0, 1, 2}, colour
+ * (y mod 3) 3 + ((x - s_y) mod 3); brick columns the same with the roles
+ * of x and y swapped. Two cells of one colour are then either in one row
+ * (column), x 3 apart, or in rows 3 apart, so their 3x3 blocks are
+ * disjoint for any shifts (the brick tilings by 3x3 squares), and every
+ * 3x3 block of cells holds one cell of each colour. The shift of row
+ * (column) i is a hash of the iteration's key and the global index i, so
+ * the colouring is the same on every rank and thread. */
+static inline int cfpo_policy_brick_shift(uint64_t key, int64_t i)
+{
+    return (int)(cfpo_mix64(key ^ (0x9e3779b97f4a7c15ULL * (uint64_t)(i + 1))) % 3);
+}
+/* The colour of global cell (gx, gy), each in [0, g). */
+static inline int cfpo_policy_colour_at(const cfpo_policy *P, int period, int64_t gx, int64_t gy)
+{
+    if (P->brick == CFPO_BRICK_ROWS) gx += period - cfpo_policy_brick_shift(P->brick_key, gy);
+    else if (P->brick == CFPO_BRICK_COLUMNS) gy += period - cfpo_policy_brick_shift(P->brick_key, gx);
+    return (int)(gy % period) * period + (int)(gx % period);
 }
 
 /* Whether a run of this variant starts in the near phase (adaptive). */
