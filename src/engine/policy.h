@@ -157,6 +157,9 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
 /* The uniform path's near solves search two Voronoi cells before this
  * iteration, one after (policy.c). */
 #define CFPO_POLICY_NEAR_TWO_UNTIL 7
+/* The adaptive variant's brick colourings (cfpo_policy_colour_at) up to
+ * this iteration, the plain colours after it (policy.c). */
+#define CFPO_POLICY_BRICK_UNTIL 40
 /* In a block whose largest q is at most CFPO_POLICY_DENSITY_NEAR_UNIFORM
  * times its smallest, the density's polygons are the uniform path's
  * Voronoi cells but for a 1% shift of their sides, and the near solve
