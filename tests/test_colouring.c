@@ -18,8 +18,11 @@
  * the rows-in-turn order does not; the adaptive variant takes brick rows
  * under the grid's even moves and brick columns under the odd ones, with
  * a key kept while the grid stays and new at each move, up to
- * CFPO_POLICY_BRICK_UNTIL, and the plain colouring after it; the other
- * variants (hyperuniform included) keep the plain colouring. */
+ * CFPO_POLICY_BRICK_UNTIL, and the plain colouring after it; the
+ * hyperuniform variant above 65,536 points takes the same colourings in
+ * its adaptive sweeps and the plain ones in the rest; the other variants
+ * (and the hyperuniform one up to 65,536 points) keep the plain
+ * colouring. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -220,10 +223,30 @@ static void test_schedule(void)
         }
     }
     CHECK(bad == 0, "adaptive: %d iterations with the wrong colouring or key", bad);
+    /* the hyperuniform variant above 65,536 points: the adaptive
+     * variant's colourings in its adaptive sweeps (before its stage), the
+     * plain colours in its transport and near rounds */
+    int hu = 0, hu_brick = 0;
+    for (uint64_t seed = 1; seed <= 2; seed++) {
+        const cfpo_grid G = grid(65536 + 4096 * (int64_t)seed, CFPO_VARIANT_HYPERUNIFORM, seed);
+        const cfpo_grid A = grid(65536 + 4096 * (int64_t)seed, CFPO_VARIANT_ADAPTIVE, seed);
+        const int from = cfpo_policy_stage_from(&G);
+        if (from <= 1) hu++;
+        for (int k = 0; k <= 80; k++) {
+            const cfpo_policy P = cfpo_policy_at(&G, k, 1, 0.5), Q = cfpo_policy_at(&A, k, 1, 0.5);
+            if (k >= 1 && k < from) {
+                hu_brick += P.brick != 0;
+                if (P.brick != Q.brick || P.brick_key != Q.brick_key) hu++;
+            } else if (P.brick) hu++;
+        }
+    }
+    CHECK(hu == 0 && hu_brick > 0, "hyperuniform above 65,536 points: %d iterations with the wrong colouring (%d brick)",
+          hu, hu_brick);
     int other = 0;
     const int variants[3] = {CFPO_VARIANT_HYPERUNIFORM, CFPO_VARIANT_PAPER, CFPO_VARIANT_SIMPLIFIED};
     for (int v = 0; v < 3; v++)
         for (int64_t n = 4096; n <= 4096 + 65536; n += 65536) {
+            if (variants[v] == CFPO_VARIANT_HYPERUNIFORM && n > 65536) continue; /* above */
             const cfpo_grid G = grid(n, variants[v], 3);
             for (int k = 0; k <= 80; k++) other += cfpo_policy_at(&G, k, 0, 0.5).brick != 0;
         }

@@ -53,6 +53,20 @@ for spec in "2 2x1" "3 1x3" "4 2x2 --check"; do
   fi
 done
 
+# Above 65,536 points the hyperuniform variant takes the adaptive schedule
+# and its brick colourings (policy.c) before its transport sweeps: 32
+# iterations (bricks to 28, transport from 29), the same bytes on 2 and 3
+# ranks, with --check on 3.
+"$CFPO" -n 70000 -q -t 2 --variant hyperuniform --max-iter 32 -o refhb.npy >/dev/null || bad "hyperuniform 70000 reference failed"
+for spec in "2 1x2" "3 3x1 --check"; do
+  set -- $spec
+  if run "$1" -n 70000 -t 1 --tiles "$2" ${3:-} --variant hyperuniform --max-iter 32 -o outhb.npy >/dev/null 2>run.err; then
+    same outhb.npy refhb.npy "hyperuniform, 70000 points, on $1 ranks, tiles $2 ${3:-}"
+  else
+    bad "hyperuniform, 70000 points, on $1 ranks failed: $(head -3 run.err)"
+  fi
+done
+
 # --check: invariants after every migration and halo refresh; on a tiny
 # grid (n = 100: 9 x 9 cells, tiles of 3 to 5 cells) and on 4096 points.
 for spec in "4 100 2x2" "3 100 3x1" "3 100 1x3" "6 4096 3x2"; do

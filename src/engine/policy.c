@@ -99,7 +99,11 @@ double cfpo_policy_shift(const cfpo_grid *G, int k, int axis)
 }
 
 /* The adaptive variant's colouring (policy.h, cfpo_policy_colour_at;
- * docs/method.md, item 3; issue 44): brick rows under the grid's even
+ * docs/method.md, item 3; issue 44), and the hyperuniform variant's in
+ * its adaptive sweeps (before HU_FROM) above HU_EARLIER_MAX points, where
+ * it takes the adaptive schedule: without them its 4,194,304-point set
+ * kept the plain colours' print (16.5 times its ring at (g / 3, 0)),
+ * which its transport sweeps do not erase. Brick rows under the grid's even
  * moves, brick columns under the odd ones, the shifts drawn anew at each
  * move from the seed and the move's number (kept while the grid stays:
  * new colours under an unmoved grid cost iterations, docs/tried.md), up
@@ -109,7 +113,7 @@ double cfpo_policy_shift(const cfpo_grid *G, int k, int axis)
 #define BRICK_SALT 0x243f6a8885a308d3ULL
 static void brick_colouring(const cfpo_grid *G, int k, cfpo_policy *P)
 {
-    if (G->variant != CFPO_VARIANT_ADAPTIVE || G->period != 3 || G->g % 3 != 0 || k <= 0 ||
+    if (!adaptive_like(G->variant) || earlier_schedule(G) || G->period != 3 || G->g % 3 != 0 || k <= 0 ||
         k > CFPO_POLICY_BRICK_UNTIL)
         return;
     const int j = move_index(G, k);
