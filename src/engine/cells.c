@@ -58,6 +58,16 @@ int eng_ensure_cap(cfpo_engine *E, size_t need)
 
 /* Out of memory mid-run: back to cfpo_engine_run's setjmp (one rank), or
  * the whole job ends (several ranks: every rank must stop). */
+int eng_brick_table(cfpo_engine *E)
+{
+    if (!E->pol.brick || (E->brick_sh_set && E->brick_sh_key == E->pol.brick_key)) return 0;
+    if (!E->brick_sh && !(E->brick_sh = malloc((size_t)E->G.g))) return -1;
+    for (int64_t i = 0; i < E->G.g; i++) E->brick_sh[i] = (uint8_t)cfpo_policy_brick_shift(E->pol.brick_key, i);
+    E->brick_sh_key = E->pol.brick_key;
+    E->brick_sh_set = 1;
+    return 0;
+}
+
 void eng_fatal(cfpo_engine *E, const char *what)
 {
     if (E->fail) {

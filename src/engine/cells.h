@@ -126,6 +126,11 @@ struct cfpo_engine {
     int cur;          /* the iteration under way (or last done) */
     cfpo_policy pol;  /* iteration cur's decisions (policy.h): what every
                          backend reads of the variant's schedule */
+    uint8_t *brick_sh;     /* under a brick colouring: global row (column) i's
+                              shift, cfpo_policy_brick_shift(pol.brick_key, i),
+                              i < g (eng_brick_table) */
+    uint64_t brick_sh_key; /* the key brick_sh was made for ... */
+    int brick_sh_set;      /* ... once made */
     double dmin_now;  /* delta_min / Delta(n) of the set as it stands (1 until measured) */
     int start_raw;    /* eng_make_initial makes the start without its
                          relaxation (the checkpoint's bound, engine_ckpt.c) */
@@ -250,7 +255,7 @@ static inline int64_t first_of(int64_t origin, int p, int64_t want)
  * a row (column) that holds one cell fewer lie past the tile. */
 typedef struct {
     int colour, p, brick;
-    uint64_t key;
+    const uint8_t *sh; /* brick: E->brick_sh */
     int64_t x0, y0, w, h;
     int64_t bx, by, nxc, nyc;
     int64_t start3[3]; /* brick: a row's (column's) start for shift 0, 1, 2 */
@@ -262,7 +267,7 @@ static inline eng_colour eng_colour_of(const cfpo_engine *E, int colour)
     C.colour = colour;
     C.p = E->G.period;
     C.brick = C.p == 3 ? E->pol.brick : 0;
-    C.key = E->pol.brick_key;
+    C.sh = E->brick_sh;
     C.x0 = E->x0, C.y0 = E->y0, C.w = E->w, C.h = E->h;
     C.bx = first_of(E->x0, C.p, colour % C.p);
     C.by = first_of(E->y0, C.p, colour / C.p);
@@ -283,12 +288,12 @@ static inline int eng_colour_cell(const eng_colour *C, int64_t t, int64_t *lx, i
     const int64_t i = t % C->nxc, j = t / C->nxc;
     if (C->brick == CFPO_BRICK_ROWS) {
         *ly = C->by + C->p * j;
-        *lx = C->start3[cfpo_policy_brick_shift(C->key, C->y0 + *ly)] + C->p * i;
+        *lx = C->start3[C->sh[C->y0 + *ly]] + C->p * i;
         return *lx < C->w;
     }
     if (C->brick == CFPO_BRICK_COLUMNS) {
         *lx = C->bx + C->p * i;
-        *ly = C->start3[cfpo_policy_brick_shift(C->key, C->x0 + *lx)] + C->p * j;
+        *ly = C->start3[C->sh[C->x0 + *lx]] + C->p * j;
         return *ly < C->h;
     }
     *ly = C->by + C->p * j;
@@ -298,6 +303,10 @@ static inline int eng_colour_cell(const eng_colour *C, int64_t t, int64_t *lx, i
 
 /* Shared between the engine's files. */
 int eng_ensure_cap(cfpo_engine *E, size_t need);
+/* Makes E->brick_sh for E->pol's brick colouring (the g shifts once per
+ * key, where the enumerations would hash a row's key at every cell they
+ * visit); nothing without one. 0, or -1 when out of memory. */
+int eng_brick_table(cfpo_engine *E);
 void eng_mark_block(cfpo_engine *E, int64_t lx, int64_t ly);
 void eng_sort3(uint64_t *id, double *x, double *y, int64_t lo, int64_t hi);
 int eng_build_neighbours(cfpo_engine *E);

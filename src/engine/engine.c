@@ -34,6 +34,7 @@ void cfpo_engine_free(cfpo_engine *E)
     free(E->bsum); free(E->bmin); free(E->bdirty);
     free(E->hstart); free(E->hstart2); free(E->hx); free(E->hy); free(E->hx2); free(E->hy2);
     free(E->hcnt);
+    free(E->brick_sh);
     for (int i = 0; i < E->nnb; i++) {
         free(E->nb[i].send_cells);
         free(E->nb[i].recv_ring);
@@ -195,6 +196,11 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
     /* The decisions of the iteration the engine stands at, until
      * cfpo_engine_begin asks for the next one's. */
     E->pol = cfpo_policy_at(&E->G, E->cur, E->near, E->dmin_now);
+    if (!comm_all(eng_brick_table(E) == 0)) {
+        snprintf(err, errlen, "out of memory");
+        cfpo_engine_free(E);
+        return NULL;
+    }
     if (cfg->check) start_checks(E);
     E->t_halo = 0;
     E->b_halo = 0;

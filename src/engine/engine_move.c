@@ -64,10 +64,10 @@ static inline __attribute__((always_inline)) int senders(const cfpo_engine *E, i
     int sx, sy;
     if (E->pol.brick == CFPO_BRICK_ROWS) {
         sy = near_offset(a, Y);
-        sx = near_offset(b + cfpo_policy_brick_shift(E->pol.brick_key, (Y + sy + g) % g), X);
+        sx = near_offset(b + E->brick_sh[(Y + sy + g) % g], X);
     } else if (E->pol.brick == CFPO_BRICK_COLUMNS) {
         sx = near_offset(b, X);
-        sy = near_offset(a + cfpo_policy_brick_shift(E->pol.brick_key, (X + sx + g) % g), Y);
+        sy = near_offset(a + E->brick_sh[(X + sx + g) % g], Y);
     } else {
         sx = near_offset(b, X);
         sy = near_offset(a, Y);

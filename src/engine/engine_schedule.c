@@ -126,6 +126,7 @@ void cfpo_engine_begin(cfpo_engine *E)
 {
     E->cur++;
     E->pol = cfpo_policy_at(&E->G, E->cur, E->near, E->dmin_now);
+    if (eng_brick_table(E) != 0) eng_fatal(E, "colouring the cells");
     E->G.margin = E->pol.margin;
     if (E->pol.shift_x != E->G.shift_x || E->pol.shift_y != E->G.shift_y)
         move_grid(E, E->pol.shift_x, E->pol.shift_y);
