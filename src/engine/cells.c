@@ -1,7 +1,8 @@
 /* cells.c - see cells.h: the engine's storage, grown on demand, its
  * memory model, the change marks that drive skipping and the cached
- * statistics, and eng_fatal, the way out when the storage cannot grow
- * mid-run (every engine file above may call it; it calls only comm). */
+ * statistics, the brick colourings' table of row (column) shifts, and
+ * eng_fatal, the way out when the storage cannot grow mid-run (every
+ * engine file above may call it; it calls only comm). */
 #include "cells.h"
 
 #include <stdio.h>

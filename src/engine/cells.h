@@ -6,7 +6,8 @@
  *
  * The engine is split by concept, each file on top of this one:
  *   cells.c           storage growth, the memory model, change marks,
- *                     eng_fatal (out of memory mid-run)
+ *                     the brick shifts' table, eng_fatal (out of
+ *                     memory mid-run)
  *   engine.c          creation, getters, timing
  *   engine_schedule.c the colour schedule: phase, grid shift, sweep,
  *                     iteration and run loop (the host side of the seam);
