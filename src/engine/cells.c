@@ -57,8 +57,7 @@ int eng_ensure_cap(cfpo_engine *E, size_t need)
     return 0;
 }
 
-/* Out of memory mid-run: back to cfpo_engine_run's setjmp (one rank), or
- * the whole job ends (several ranks: every rank must stop). */
+/* The brick shifts of the iteration's key (cells.h). */
 int eng_brick_table(cfpo_engine *E)
 {
     if (!E->pol.brick || (E->brick_sh_set && E->brick_sh_key == E->pol.brick_key)) return 0;
@@ -69,6 +68,8 @@ int eng_brick_table(cfpo_engine *E)
     return 0;
 }
 
+/* Out of memory mid-run: back to cfpo_engine_run's setjmp (one rank), or
+ * the whole job ends (several ranks: every rank must stop). */
 void eng_fatal(cfpo_engine *E, const char *what)
 {
     if (E->fail) {

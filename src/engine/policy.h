@@ -31,7 +31,8 @@
  * for y: 3/7 of a cell a move around the colours' period 3 L. The grid is
  * shifted by sigma_j mod L on that axis and the sweep starts with colour
  * (r_y, r_x), r = floor(sigma_j / L) (which is the grid shifted by
- * (sigma_x, sigma_y) itself). In the adaptive variant the colours are
+ * (sigma_x, sigma_y) itself). In the adaptive variant (and in the
+ * hyperuniform one's adaptive sweeps above 65,536 points) the colours are
  * brick colourings, rows of cells shifted under the even moves and
  * columns under the odd ones, swept in the brick order (below;
  * docs/method.md, item 3). Each sweep under one grid prints the grid
