@@ -60,11 +60,10 @@ int eng_ensure_cap(cfpo_engine *E, size_t need)
 /* The brick shifts of the iteration's key (cells.h). */
 int eng_brick_table(cfpo_engine *E)
 {
-    if (!E->pol.brick || (E->brick_sh_set && E->brick_sh_key == E->pol.brick_key)) return 0;
+    if (!E->pol.brick || (E->brick_sh && E->brick_sh_key == E->pol.brick_key)) return 0;
     if (!E->brick_sh && !(E->brick_sh = malloc((size_t)E->G.g))) return -1;
     for (int64_t i = 0; i < E->G.g; i++) E->brick_sh[i] = (uint8_t)cfpo_policy_brick_shift(E->pol.brick_key, i);
     E->brick_sh_key = E->pol.brick_key;
-    E->brick_sh_set = 1;
     return 0;
 }
 

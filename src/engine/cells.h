@@ -129,9 +129,8 @@ struct cfpo_engine {
                          backend reads of the variant's schedule */
     uint8_t *brick_sh;     /* under a brick colouring: global row (column) i's
                               shift, cfpo_policy_brick_shift(pol.brick_key, i),
-                              i < g (eng_brick_table) */
-    uint64_t brick_sh_key; /* the key brick_sh was made for ... */
-    int brick_sh_set;      /* ... once made */
+                              i < g (eng_brick_table); NULL until first made */
+    uint64_t brick_sh_key; /* the key brick_sh was made for */
     double dmin_now;  /* delta_min / Delta(n) of the set as it stands (1 until measured) */
     int start_raw;    /* eng_make_initial makes the start without its
                          relaxation (the checkpoint's bound, engine_ckpt.c) */
