@@ -34,6 +34,7 @@
 #include <stdint.h>
 
 #include "engine.h"
+#include "gridmodes.h"
 #include "transport.h"
 #include "omp_compat.h"
 #include "policy.h"
@@ -119,6 +120,7 @@ struct cfpo_engine {
     int iter0;        /* iteration the engine stands at */
     int resumed_converged;
     cfpo_transport lf;  /* the hyperuniform variant's transport (transport.h) */
+    cfpo_gridmodes gm;  /* the grid's print on the set (gridmodes.h) */
     int near;         /* 1 while the adaptive variant's near phase runs:
                          cfpo_near_solve, until a sweep moves nothing */
     double max_move;  /* largest single move this iteration */

@@ -160,6 +160,7 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         return NULL;
     }
     E->t_born = born;
+    cfpo_gridmodes_init(&E->gm, G.g, n);
     if (o->variant == CFPO_VARIANT_HYPERUNIFORM) {
         if (n / 25 * 20 > (int64_t)INT32_MAX) { /* the summed grid of about 16 n / 25 values: an int count (comm_sum_i64) */
             snprintf(err, errlen, "--variant hyperuniform: n = %lld is too large for its transport grid",

@@ -118,10 +118,35 @@ static void move_grid(cfpo_engine *E, double shift_x, double shift_y)
     }
 }
 
+/* The grid's print removed (policy.h, cfpo_policy_unprint): the set's
+ * modes at the grid's lattice vectors, every rank's fixed-point sums added
+ * exactly (the same field for any rank count), then one sweep of transport
+ * moves along the field that cancels them; the iteration's own decisions
+ * back, and every cell solved again in its sweep. The pass's moves count
+ * in the iteration's net displacements, not in its moves. */
+static void unprint(cfpo_engine *E)
+{
+    const cfpo_policy P = E->pol;
+    cfpo_gridmodes_sum(&E->gm, E->px, E->py, E->nloc, E->nthreads);
+    comm_sum_i64(E->gm.acc, 2 * E->gm.count);
+    cfpo_gridmodes_finish(&E->gm, E->n);
+    E->pol = cfpo_policy_unprint(&P, &E->G, E->dmin_now);
+    E->G.margin = E->pol.margin;
+    for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    for (int colour = 0; colour < E->G.period * E->G.period; colour++) {
+        int64_t sv = 0;
+        cfpo_engine_phase(E, cfpo_policy_colour(&E->pol, E->G.period, colour), &sv);
+    }
+    E->pol = P;
+    E->G.margin = P.margin;
+    for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+}
+
 /* The coming iteration's decisions, asked of the policy once (policy.h:
  * from the iteration number, the phase and delta(X) as last measured),
  * kept in E->pol for the backend; the margin they give; the grid moved to
- * their shift; then the backend's start of an iteration. */
+ * their shift; then the backend's start of an iteration, and where the
+ * policy asks, the grid's print removed before the iteration's sweep. */
 void cfpo_engine_begin(cfpo_engine *E)
 {
     E->cur++;
@@ -140,6 +165,7 @@ void cfpo_engine_begin(cfpo_engine *E)
         cfpo_transport_finish(&E->lf, E->n);
     }
     E->be->begin(E);
+    if (E->pol.unprint && E->gm.count) unprint(E);
 }
 
 void cfpo_engine_sweep(cfpo_engine *E, int64_t *moved, int64_t *solved)

@@ -150,7 +150,7 @@ cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
         const int j = k - HU_FROM;
         P.all = 1;
         if (j < HU_FIRST || (j - HU_FIRST) % HU_ROUND != 0) {
-            P.transport = 1;
+            P.transport = CFPO_TRANSPORT_BAND;
             P.margin = G->L; /* the cut alone: L - min(r0, cap) */
             P.cap = HU_CAP * G->delta;
             P.vmax = HU_VMAX * G->delta;
@@ -161,6 +161,7 @@ cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
         return P;
     }
     brick_colouring(G, k, &P);
+    P.unprint = k >= CFPO_POLICY_UNPRINT_FROM && k <= CFPO_POLICY_UNPRINT_UNTIL && G->n > CFPO_POLICY_UNPRINT_MIN;
     P.near = near != 0;
     P.near_cells = P.near ? (k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1) : 0;
     if (k >= RELAX_FROM) {
@@ -170,4 +171,17 @@ cfpo_policy cfpo_policy_at(const cfpo_grid *G, int k, int near, double dmin)
         P.w[1] = w[1];
     }
     return P;
+}
+
+cfpo_policy cfpo_policy_unprint(const cfpo_policy *P, const cfpo_grid *G, double dmin)
+{
+    cfpo_policy U = *P;
+    U.unprint = 0;
+    U.near = U.near_cells = U.relax = 0;
+    U.all = 1;
+    U.transport = CFPO_TRANSPORT_PRINT;
+    U.margin = G->L; /* the cut alone, as the band's transport: L - min(r0, cap) */
+    U.cap = dmin * G->delta;
+    U.vmax = CFPO_POLICY_UNPRINT_VMAX * G->delta;
+    return U;
 }

@@ -215,10 +215,42 @@ typedef struct {
     int relax;      /* the over-relaxation weights to try, in order: 0 or 2 */
     double w[2];
     int all;        /* 1: every cell is solved (the hyperuniform stage) */
-    int transport;  /* 1: a transport sweep (transport.h) instead of solves */
+    int transport;  /* a transport sweep instead of solves, along the band's
+                       field (CFPO_TRANSPORT_BAND, transport.h) or the
+                       grid's print's (CFPO_TRANSPORT_PRINT, gridmodes.h) */
     double cap;     /* with transport: a point keeps min(r0, cap) from all */
     double vmax;    /* with transport: the longest displacement followed */
+    int unprint;    /* 1: before its own sweep, the iteration takes one
+                       sweep of cfpo_policy_unprint's (the grid's print
+                       removed) */
 } cfpo_policy;
+
+#define CFPO_TRANSPORT_BAND 1
+#define CFPO_TRANSPORT_PRINT 2
+
+/* The grid's print (gridmodes.h) is removed before the sweeps of
+ * iterations CFPO_POLICY_UNPRINT_FROM to CFPO_POLICY_UNPRINT_UNTIL of the
+ * adaptive-like variants (the hyperuniform one's adaptive sweeps
+ * included): after each of the eight fast grid moves' sweeps, which write
+ * nearly all of it (docs/tried.md, issue 44). Removed once only, after
+ * the eighth, the next sweep writes it again at the same phase (the set's
+ * neighbourhoods, settled by then, carry it); removed after each, the
+ * neighbourhoods settle without it. In runs of more than
+ * CFPO_POLICY_UNPRINT_MIN points: at fewer, the print's P, which grows
+ * like n, stays within the spectrum's noise, and their sets stay the
+ * bytes they were. */
+#define CFPO_POLICY_UNPRINT_FROM 2
+#define CFPO_POLICY_UNPRINT_UNTIL 9
+#define CFPO_POLICY_UNPRINT_MIN 65536
+/* The removal's sweep, from iteration P's decisions and delta(X) /
+ * Delta(n) = dmin as last measured: transport moves along the print's
+ * field, each point keeping min(r0, delta(X)) from all (delta(X) never
+ * falls), none longer than CFPO_POLICY_UNPRINT_VMAX Delta(n) (the field
+ * moves points by about 0.001 Delta(n) at 4M; the bound keeps a start
+ * with a strong lattice of its own, --init, from large linearised moves);
+ * P's grid, colouring and square. */
+#define CFPO_POLICY_UNPRINT_VMAX 0.01
+cfpo_policy cfpo_policy_unprint(const cfpo_policy *P, const cfpo_grid *G, double dmin);
 
 /* The last iteration of a run of grid G (the hyperuniform variant's), or
  * 0 where the convergence rule alone ends a run. */
