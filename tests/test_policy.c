@@ -36,7 +36,8 @@ static int same_policy(const cfpo_policy *a, const cfpo_policy *b)
            a->shift_y == b->shift_y && a->rot_x == b->rot_x && a->rot_y == b->rot_y && a->brick == b->brick &&
            a->brick_key == b->brick_key &&
            a->cut == b->cut && a->freeze == b->freeze && a->near == b->near && a->near_cells == b->near_cells &&
-           a->relax == b->relax && (a->relax < 1 || a->w[0] == b->w[0]) && (a->relax < 2 || a->w[1] == b->w[1]);
+           a->relax == b->relax && (a->relax < 1 || a->w[0] == b->w[0]) && (a->relax < 2 || a->w[1] == b->w[1]) &&
+           a->unprint == b->unprint && a->transport == b->transport;
 }
 
 static cfpo_grid grid(int64_t n, int variant, uint64_t seed)
@@ -358,8 +359,49 @@ static void test_pure(void)
     CHECK(bad == 0, "policy not a pure function: %d of %d answers changed", bad, 2 * K);
 }
 
+/* The grid's print is removed before iterations 2-9 (policy.h) of the
+ * adaptive-like variants above 65,536 points, and never otherwise; the
+ * removal's sweep is a transport one along the print's field that keeps
+ * delta(X), with the iteration's grid and colouring. */
+static void test_unprint(void)
+{
+    const int variants[2] = {CFPO_VARIANT_ADAPTIVE, CFPO_VARIANT_HYPERUNIFORM};
+    int wrong = 0;
+    for (int v = 0; v < 2; v++)
+        for (int big = 0; big < 2; big++) {
+            const cfpo_grid G = grid(big ? 65537 : 65536, variants[v], 3);
+            for (int k = 1; k <= 60; k++) {
+                const cfpo_policy P = cfpo_policy_at(&G, k, k < 12, 0.9);
+                const int want = big && k >= 2 && k <= 9;
+                if (P.unprint != want) {
+                    wrong++;
+                    fprintf(stderr, "variant %d, n %lld, iteration %d: unprint %d\n", variants[v],
+                            (long long)G.n, k, P.unprint);
+                }
+            }
+        }
+    for (int variant = CFPO_VARIANT_PAPER; variant <= CFPO_VARIANT_SIMPLIFIED; variant++) {
+        const cfpo_grid G = grid(1 << 20, variant, 3);
+        for (int k = 1; k <= 12; k++) wrong += cfpo_policy_at(&G, k, 0, 0.9).unprint != 0;
+    }
+    CHECK(wrong == 0, "the print's removal: %d iterations wrong", wrong);
+    const cfpo_grid G = grid(1 << 20, CFPO_VARIANT_ADAPTIVE, 3);
+    const cfpo_policy P = cfpo_policy_at(&G, 5, 1, 0.87);
+    const cfpo_policy U = cfpo_policy_unprint(&P, &G, 0.87);
+    CHECK(U.transport == CFPO_TRANSPORT_PRINT && U.unprint == 0 && U.near == 0 && U.relax == 0 && U.all == 1,
+          "the removal's sweep: transport %d unprint %d near %d relax %d all %d", U.transport, U.unprint, U.near,
+          U.relax, U.all);
+    CHECK(U.cap == 0.87 * G.delta && U.vmax == CFPO_POLICY_UNPRINT_VMAX * G.delta && U.margin == G.L,
+          "the removal's sweep: cap %.17g (delta(X) %.17g), vmax %.17g, margin %.17g (L %.17g)", U.cap, 0.87 * G.delta,
+          U.vmax, U.margin, G.L);
+    CHECK(U.shift_x == P.shift_x && U.shift_y == P.shift_y && U.brick == P.brick && U.brick_key == P.brick_key &&
+              U.rot_x == P.rot_x && U.rot_y == P.rot_y && U.balanced == P.balanced,
+          "the removal's sweep takes another grid or colouring than its iteration's");
+}
+
 int main(void)
 {
+    test_unprint();
     test_shift_hyperuniform();
     test_schedule_table();
     test_shift();

@@ -128,7 +128,7 @@ static int transport_move(const cfpo_engine *E, const double *lxs, const double 
     else cfpo_transport_field(&E->lf, cfpo_wrap01(x + ox), cfpo_wrap01(y + oy), &ux, &uy);
     const double u = sqrt(ux * ux + uy * uy);
     if (u > P->vmax) ux *= P->vmax / u, uy *= P->vmax / u;
-    return cfpo_transport_move(x, y, ux, uy, lxs, lys, m, gi, floor2, &Sx, nx, ny);
+    return cfpo_transport_move(x, y, ux, uy, lxs, lys, m, gi, r02, floor2, &Sx, nx, ny);
 }
 
 /* Solves every point of own cell (lx, ly) in id order. Returns moves. */

@@ -28,6 +28,7 @@ void cfpo_engine_free(cfpo_engine *E)
 {
     if (!E) return;
     cfpo_transport_free(&E->lf);
+    cfpo_gridmodes_free(&E->gm);
     free(E->px); free(E->py); free(E->pid); free(E->dq);
     free(E->tx); free(E->ty); free(E->tid);
     free(E->start); free(E->start2); free(E->mask);
@@ -160,7 +161,11 @@ cfpo_engine *cfpo_engine_create_ex(int64_t n, const cfpo_options *o, const cfpo_
         return NULL;
     }
     E->t_born = born;
-    cfpo_gridmodes_init(&E->gm, G.g, n);
+    if (!comm_all(cfpo_gridmodes_init(&E->gm, G.g, n) == 0)) {
+        snprintf(err, errlen, "out of memory");
+        cfpo_engine_free(E);
+        return NULL;
+    }
     if (o->variant == CFPO_VARIANT_HYPERUNIFORM) {
         if (n / 25 * 20 > (int64_t)INT32_MAX) { /* the summed grid of about 16 n / 25 values: an int count (comm_sum_i64) */
             snprintf(err, errlen, "--variant hyperuniform: n = %lld is too large for its transport grid",

@@ -116,11 +116,27 @@ static int admissible(double x, double y, const double *bx, const double *by, in
     return x >= S->x0 && x <= S->x1 && y >= S->y0 && y <= S->y1 && cfpo_min_dist2(x, y, bx, by, m, self) >= floor2;
 }
 
+/* A displacement that ends this much farther than the floor from the
+ * nearest point, less its length, is clear of every circle. */
+#define CLEAR (1 + 1e-9)
+
 int cfpo_transport_move(double x, double y, double vx, double vy, const double *bx, const double *by, int m,
-                      int self, double floor2, const cfpo_square *S, double *nx, double *ny)
+                      int self, double r02, double floor2, const cfpo_square *S, double *nx, double *ny)
 {
     *nx = x;
     *ny = y;
+    /* the whole displacement inside S and clear of every circle: the spot
+     * the search below finds (s = SHORT, nothing stops it), without it */
+    const double a = vx * vx + vy * vy;
+    if (a > 0) {
+        const double sx = vx > 0 ? (S->x1 - x) / vx : vx < 0 ? (S->x0 - x) / vx : 1;
+        const double sy = vy > 0 ? (S->y1 - y) / vy : vy < 0 ? (S->y0 - y) / vy : 1;
+        if (sx >= 1 && sy >= 1 && sqrt(r02) - sqrt(a) > sqrt(floor2) * CLEAR) {
+            *nx = x + SHORT * vx;
+            *ny = y + SHORT * vy;
+            return 1;
+        }
+    }
     int blk;
     const double s = reach(x, y, vx, vy, bx, by, m, self, floor2, S, &blk) * SHORT;
     const double px = x + s * vx, py = y + s * vy;

@@ -65,8 +65,10 @@ void cfpo_transport_field(const cfpo_transport *F, double x, double y, double *u
  * with what is left of the displacement, along the tangent of what stopped
  * it, as far again. The spot (*nx, *ny) is in S and at least sqrt(floor2)
  * from every other block point, checked exactly; (x, y) itself if no
- * such spot was found (x must then satisfy both). Returns 1 if it moved. */
+ * such spot was found (x must then satisfy both). r02: the point's squared
+ * distance to the nearest other block point (a displacement that stays
+ * clear of every circle skips the search). Returns 1 if it moved. */
 int cfpo_transport_move(double x, double y, double vx, double vy, const double *bx, const double *by, int m,
-                      int self, double floor2, const cfpo_square *S, double *nx, double *ny);
+                      int self, double r02, double floor2, const cfpo_square *S, double *nx, double *ny);
 
 #endif
