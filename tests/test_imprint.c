@@ -99,20 +99,31 @@ static double ring_mean(const double *xy, int64_t n, int r)
     return m ? s / m : NAN;
 }
 
-/* The largest of the ten ratios after one iteration, seed `seed`; -1 on
- * failure. */
-static double first_sweep(double *xy, int64_t n, int g, int seed, const char **at)
+/* The set of `iters` iterations, seed `seed`, into xy: 0, or -1 (said). */
+static int sample(double *xy, int64_t n, int seed, int iters)
 {
     cfpo_options o;
     cfpo_options_init(&o);
     o.seed = (uint64_t)seed;
-    o.max_iter = 1;
+    o.max_iter = iters;
     char err[256];
     cfpo_result r;
     if (cfpo_sample(n, &o, xy, &r, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return -1;
     }
+    if (r.iterations != iters) {
+        fprintf(stderr, "seed %d: %d iterations, not %d\n", seed, r.iterations, iters);
+        return -1;
+    }
+    return 0;
+}
+
+/* The largest of the ten ratios after one iteration, seed `seed`; -1 on
+ * failure. */
+static double first_sweep(double *xy, int64_t n, int g, int seed, const char **at)
+{
+    if (sample(xy, n, seed, 1) != 0) return -1;
     const int g3 = (int)lround(g / 3.0), g23 = (int)lround(2.0 * g / 3.0), g4 = (int)lround(4.0 * g / 3.0);
     const int gd = (int)lround(g * sqrt(2.0));
     static const char *name[10] = {"(0,g)", "(g,0)", "(0,4g/3)", "(4g/3,0)", "(g,g)", "(-g,g)",
@@ -120,7 +131,7 @@ static double first_sweep(double *xy, int64_t n, int g, int seed, const char **a
     const int vec[10][2] = {{0, g}, {g, 0}, {0, g4}, {g4, 0}, {g, g}, {-g, g}, {0, g3}, {g3, 0}, {0, g23}, {g23, 0}};
     const int rad[10] = {g, g, g4, g4, gd, gd, g3, g3, g23, g23};
     double worst = 0;
-    printf("seed %d, after %d iteration:", seed, r.iterations);
+    printf("seed %d, after 1 iteration:", seed);
     for (int v = 0; v < 10; v++) {
         const double q = power(xy, n, vec[v][0], vec[v][1]) / ring_mean(xy, n, rad[v]);
         printf(" %s %.1f", name[v], q);
@@ -134,16 +145,7 @@ static double first_sweep(double *xy, int64_t n, int g, int seed, const char **a
  * iterations (fourth part); -1 on failure. */
 static double planted(double *xy, int64_t n, int g)
 {
-    cfpo_options o;
-    cfpo_options_init(&o);
-    o.seed = 1;
-    o.max_iter = 1;
-    char err[256];
-    cfpo_result r;
-    if (cfpo_sample(n, &o, xy, &r, err, sizeof err) != 0) {
-        fprintf(stderr, "%s\n", err);
-        return -1;
-    }
+    if (sample(xy, n, 1, 1) != 0) return -1;
     for (int64_t i = 0; i < n; i++)
         for (int a = 0; a < 2; a++) {
             const double v = xy[2 * i + a] + 0.05 * sin(2 * M_PI * g * xy[2 * i + a] + a) / (2 * M_PI * g);
@@ -151,10 +153,13 @@ static double planted(double *xy, int64_t n, int g)
         }
     const double m = ring_mean(xy, n, g);
     printf("planted: P(0,g) / ring mean %.1f, P(g,0) %.1f\n", power(xy, n, 0, g) / m, power(xy, n, g, 0) / m);
+    cfpo_options o;
+    cfpo_options_init(&o);
+    o.seed = 1;
+    o.threads = 2;
+    char err[256];
     cfpo_engine_config cfg = {0};
     cfg.start_xy = xy;
-    o.max_iter = 0;
-    o.threads = 2;
     cfpo_engine *E = cfpo_engine_create_ex(n, &o, &cfg, err, sizeof err);
     if (!E) {
         fprintf(stderr, "%s\n", err);
@@ -184,20 +189,13 @@ int main(void)
     double q[3][6], qc[3][2];
     const int g3 = (int)lround(g / 3.0);
     for (int seed = 1; seed <= 3; seed++) {
-        cfpo_options o;
-        cfpo_options_init(&o);
-        o.seed = (uint64_t)seed;
-        o.max_iter = IMPRINT_ITERS;
-        char err[256];
-        cfpo_result r;
-        if (cfpo_sample(n, &o, xy, &r, err, sizeof err) != 0) {
-            fprintf(stderr, "%s\n", err);
+        if (sample(xy, n, seed, IMPRINT_ITERS) != 0) {
             free(xy);
             return 1;
         }
         const double mg = ring_mean(xy, n, g), m4 = ring_mean(xy, n, g4), md = ring_mean(xy, n, gd);
         const double ring[6] = {mg, mg, m4, m4, md, md};
-        printf("seed %d, g %d, after %d iterations: P / ring mean", seed, g, r.iterations);
+        printf("seed %d, g %d, after %d iterations: P / ring mean", seed, g, IMPRINT_ITERS);
         for (int v = 0; v < 6; v++) {
             q[seed - 1][v] = power(xy, n, vec[v][0], vec[v][1]) / ring[v];
             printf(" %s %.1f", name[v], q[seed - 1][v]);
@@ -206,7 +204,6 @@ int main(void)
         qc[seed - 1][0] = power(xy, n, 0, g3) / m3;
         qc[seed - 1][1] = power(xy, n, g3, 0) / m3;
         printf(" (0,g/3) %.1f (g/3,0) %.1f\n", qc[seed - 1][0], qc[seed - 1][1]);
-        CHECK(r.iterations == IMPRINT_ITERS, "seed %d: %d iterations, not %d", seed, r.iterations, IMPRINT_ITERS);
     }
     for (int v = 0; v < 6; v++) {
         const double a = q[0][v], b = q[1][v], c = q[2][v];
