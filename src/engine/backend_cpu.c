@@ -112,8 +112,9 @@ static unsigned store_move(cfpo_engine *E, uint32_t k, int64_t cx, int64_t cy, d
 }
 
 /* The transport sweep's move of point gi of the block (transport.h): along
- * the band's field or the grid's print's (gridmodes.h), shortened to P->vmax, keeping min(r0, P->cap) from every
- * point (the square keeps it from those beyond the block). */
+ * the band's field or the grid's print's (gridmodes.h), shortened to
+ * P->vmax, keeping min(r0, P->cap) from every point (the square keeps it
+ * from those beyond the block). */
 static int transport_move(const cfpo_engine *E, const double *lxs, const double *lys, int m, int gi, double ox,
                           double oy, double *nx, double *ny)
 {
@@ -124,8 +125,9 @@ static int transport_move(const cfpo_engine *E, const double *lxs, const double 
     cfpo_square Sx;
     if (!cfpo_policy_square(P, sqrt(floor2), &Sx)) return 0;
     double ux, uy;
-    if (P->transport == CFPO_TRANSPORT_PRINT) cfpo_gridmodes_field(&E->gm, cfpo_wrap01(x + ox), cfpo_wrap01(y + oy), &ux, &uy);
-    else cfpo_transport_field(&E->lf, cfpo_wrap01(x + ox), cfpo_wrap01(y + oy), &ux, &uy);
+    const double gx = cfpo_wrap01(x + ox), gy = cfpo_wrap01(y + oy);
+    if (P->transport == CFPO_TRANSPORT_PRINT) cfpo_gridmodes_field(&E->gm, gx, gy, &ux, &uy);
+    else cfpo_transport_field(&E->lf, gx, gy, &ux, &uy);
     const double u = sqrt(ux * ux + uy * uy);
     if (u > P->vmax) ux *= P->vmax / u, uy *= P->vmax / u;
     return cfpo_transport_move(x, y, ux, uy, lxs, lys, m, gi, r02, floor2, &Sx, nx, ny);

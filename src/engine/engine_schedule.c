@@ -56,6 +56,12 @@ static void sync_device(cfpo_engine *E)
     if (E->be->sync_device) E->be->sync_device(E);
 }
 
+/* Every cell is to be solved in the next sweep (skipping aside). */
+static void need_all(cfpo_engine *E)
+{
+    for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+}
+
 /* After the cells of colour C changed (points moved, or the grid moved
  * under them): mark the blocks that changed, send points that left the
  * tile, move points that changed cell, clear the masks, refresh the halo.
@@ -110,7 +116,7 @@ static void move_grid(cfpo_engine *E, double shift_x, double shift_y)
         settle(E, &C, 1);
     }
     E->shifting = 0;
-    for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    need_all(E);
     memset(E->bdirty, 1, (size_t)(E->nbx * E->nby));
     if (E->cfg.check) {
         eng_check_migration(E);
@@ -132,14 +138,14 @@ static void unprint(cfpo_engine *E)
     cfpo_gridmodes_finish(&E->gm, E->n);
     E->pol = cfpo_policy_unprint(&P, &E->G, E->dmin_now);
     E->G.margin = E->pol.margin;
-    for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    need_all(E);
     for (int colour = 0; colour < E->G.period * E->G.period; colour++) {
         int64_t sv = 0;
         cfpo_engine_phase(E, cfpo_policy_colour(&E->pol, E->G.period, colour), &sv);
     }
     E->pol = P;
     E->G.margin = P.margin;
-    for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+    need_all(E);
 }
 
 /* The coming iteration's decisions, asked of the policy once (policy.h:
@@ -156,7 +162,7 @@ void cfpo_engine_begin(cfpo_engine *E)
     if (E->pol.shift_x != E->G.shift_x || E->pol.shift_y != E->G.shift_y)
         move_grid(E, E->pol.shift_x, E->pol.shift_y);
     if (E->pol.all)
-        for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+        need_all(E);
     if (E->pol.transport) {
         /* the band's modes of the whole set: every rank's fixed-point grid,
          * summed exactly, so the same field for any rank count */
@@ -202,7 +208,7 @@ void cfpo_engine_iterate(cfpo_engine *E, cfpo_iter_stats *s)
     if (cfpo_policy_near_ends(E->near, s->converged)) {
         E->near = 0;
         s->converged = 0;
-        for (int64_t c = 0; c < E->cells; c++) E->mask[c] |= NEED_BIT;
+        need_all(E);
     }
     /* The hyperuniform variant's stage (policy.c) schedules its own near
      * sweeps, so the near phase is over (a checkpoint says near = 0; the

@@ -83,6 +83,14 @@ void cfpo_transport_field(const cfpo_transport *F, double x, double y, double *u
     cfpo_nufft_type2_at(&F->U, x, y, ux, uy);
 }
 
+/* The fractions of (vx, vy) that take (x, y) to S's side in x and in y
+ * (1 where it does not move on that axis). */
+static void to_sides(double x, double y, double vx, double vy, const cfpo_square *S, double *sx, double *sy)
+{
+    *sx = vx > 0 ? (S->x1 - x) / vx : vx < 0 ? (S->x0 - x) / vx : 1;
+    *sy = vy > 0 ? (S->y1 - y) / vy : vy < 0 ? (S->y0 - y) / vy : 1;
+}
+
 /* How far (a fraction s of (vx, vy), in [0, 1]) the point can go before it
  * comes nearer than sqrt(floor2) to a block point or leaves S; *blk: the
  * block point that stops it, -2 / -3 the square's side in x / y, -1 none. */
@@ -103,8 +111,8 @@ static double reach(double x, double y, double vx, double vy, const double *bx, 
         if (s1 < 0) s1 = 0;
         if (s1 < s) s = s1, *blk = i;
     }
-    const double sx = vx > 0 ? (S->x1 - x) / vx : vx < 0 ? (S->x0 - x) / vx : 1;
-    const double sy = vy > 0 ? (S->y1 - y) / vy : vy < 0 ? (S->y0 - y) / vy : 1;
+    double sx, sy;
+    to_sides(x, y, vx, vy, S, &sx, &sy);
     if (sx < s) s = fmax(sx, 0), *blk = -2;
     if (sy < s) s = fmax(sy, 0), *blk = -3;
     return s;
@@ -129,8 +137,8 @@ int cfpo_transport_move(double x, double y, double vx, double vy, const double *
      * the search below finds (s = SHORT, nothing stops it), without it */
     const double a = vx * vx + vy * vy;
     if (a > 0) {
-        const double sx = vx > 0 ? (S->x1 - x) / vx : vx < 0 ? (S->x0 - x) / vx : 1;
-        const double sy = vy > 0 ? (S->y1 - y) / vy : vy < 0 ? (S->y0 - y) / vy : 1;
+        double sx, sy;
+        to_sides(x, y, vx, vy, S, &sx, &sy);
         if (sx >= 1 && sy >= 1 && sqrt(r02) - sqrt(a) > sqrt(floor2) * CLEAR) {
             *nx = x + SHORT * vx;
             *ny = y + SHORT * vy;
