@@ -192,21 +192,32 @@ static void bits(void)
     free(y);
 }
 
+/* The weight of mode k (transport.h): 1 on the band 0 < |k| <= kb = 0.2
+ * sqrt(n), cos^2 of (pi / 2) (|k| / kb - 1) / CFPO_TRANSPORT_TAPER past it
+ * up to (1 + CFPO_TRANSPORT_TAPER) kb, 0 beyond. */
+static double weight_direct(int kx, int ky, int n)
+{
+    if (cfpo_in_lowk_band(kx, ky, n)) return 1;
+    const double t = (hypot(kx, ky) / (0.2 * sqrt(n)) - 1) / CFPO_TRANSPORT_TAPER;
+    return t > 0 && t < 1 ? cos(0.5 * M_PI * t) * cos(0.5 * M_PI * t) : 0;
+}
+
 /* u at (px, py) from the definition, directly. */
 static void field_direct(const double *x, const double *y, int n, double px, double py, double *ux, double *uy)
 {
-    const int K = (int)floor(sqrt(n / 25.0));
+    const int K = (int)ceil(0.2 * sqrt(n) * (1 + CFPO_TRANSPORT_TAPER));
     double sx = 0, sy = 0;
     for (int ky = -K; ky <= K; ky++)
         for (int kx = -K; kx <= K; kx++) {
-            if (!cfpo_in_lowk_band(kx, ky, n)) continue;
+            const double w = weight_direct(kx, ky, n);
+            if (w == 0) continue;
             double rr, ri, c1, s1, c2, s2;
             direct1(x, y, n, kx, ky, -1, &rr, &ri);
             cis(kx, px, 1, &c1, &s1);
             cis(ky, py, 1, &c2, &s2);
             const double er = c1 * c2 - s1 * s2, ei = c1 * s2 + s1 * c2, q = 2 * M_PI * n * (kx * kx + ky * ky);
             /* Re(-i rho e) = Im(rho e) */
-            const double t = (rr * ei + ri * er) / q;
+            const double t = w * (rr * ei + ri * er) / q;
             sx += kx * t;
             sy += ky * t;
         }

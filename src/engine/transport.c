@@ -9,10 +9,26 @@
  * square, so that rounding leaves it outside; the exact check decides. */
 #define SHORT (1 - 1e-9)
 
+/* The largest |kx|, |ky| the field takes: the band and its taper. */
+static int field_K(int64_t n) { return (int)floor(sqrt((double)n / 25.0) * (1 + CFPO_TRANSPORT_TAPER)); }
+
+/* The weight of mode k in the field: 1 on the band (25 |k|^2 <= n), falling
+ * as cos^2 to 0 at (1 + CFPO_TRANSPORT_TAPER) times its radius, 0 beyond. */
+static double band_weight(int kx, int ky, int64_t n)
+{
+    const int64_t q = (int64_t)kx * kx + (int64_t)ky * ky;
+    if (q == 0) return 0;
+    if (25 * q <= n) return 1;
+    const double r = (sqrt(25.0 * (double)q / (double)n) - 1) / CFPO_TRANSPORT_TAPER;
+    if (r >= 1) return 0;
+    const double c = cos(0.5 * M_PI * r);
+    return c * c;
+}
+
 int cfpo_transport_init(cfpo_transport *F, int64_t n, int threads)
 {
     char err[128];
-    F->K = (int)floor(sqrt((double)n / 25.0));
+    F->K = field_K(n);
     F->C = NULL;
     if (F->K < 1) F->K = 1; /* below 25 points the band is empty: C stays 0 */
     if (cfpo_nufft_init(&F->U, F->K, CFPO_TRANSPORT_WIDTH, CFPO_NUFFT_TYPE1 | CFPO_NUFFT_TYPE2, threads, err,
@@ -36,7 +52,7 @@ void cfpo_transport_free(cfpo_transport *F)
 
 double cfpo_transport_bytes(int64_t n, int64_t np)
 {
-    int K = (int)floor(sqrt((double)n / 25.0));
+    int K = field_K(n);
     if (K < 1) K = 1;
     int M = 2 * (2 * K + 1);
     if (M < 2 * CFPO_TRANSPORT_WIDTH) M = 2 * CFPO_TRANSPORT_WIDTH;
@@ -63,13 +79,14 @@ void cfpo_transport_finish(cfpo_transport *F, int64_t n)
     for (int ky = -K; ky <= K; ky++)
         for (int kx = -K; kx <= K; kx++) {
             double *C = F->C + 2 * ((size_t)(ky + K) * (size_t)W + (size_t)(kx + K));
-            if (!cfpo_in_lowk_band(kx, ky, n)) {
+            const double w = band_weight(kx, ky, n);
+            if (w == 0) {
                 C[0] = C[1] = 0;
                 continue;
             }
             double re, im;
             cfpo_nufft_coef(&F->U, kx, ky, &re, &im);
-            const double s = 2 * M_PI * (double)n * (double)(kx * kx + ky * ky);
+            const double s = 2 * M_PI * (double)n * (double)(kx * kx + ky * ky) / w;
             re /= s;
             im /= s;
             C[0] = re * ky + im * kx;

@@ -6,7 +6,10 @@
  * cfpo-analyze's p0), and the linearised transport that removes them: the
  * displacement u = grad phi with lap phi = the relative density restricted
  * to those modes, u(x) = sum_k -i k rho_hat(k) / (2 pi n |k|^2)
- * exp(2 pi i k.x). A point follows u as far as it can while its distance to
+ * exp(2 pi i k.x). Past the band's radius kb the modes are taken with a
+ * weight falling as cos^2 to 0 at (1 + CFPO_TRANSPORT_TAPER) kb, so that
+ * P rises over a few rings there instead of stepping up about 100 times
+ * inside one. A point follows u as far as it can while its distance to
  * every point of its 3x3 block stays at least a floor, then slides along
  * what stopped it.
  *
@@ -30,6 +33,9 @@
 
 /* The kernel width: the NUFFT's error about 10^-(w-1) of the largest term. */
 #define CFPO_TRANSPORT_WIDTH 6
+/* The field's taper past the band, relative to its radius: 3 rings of the
+ * spectrum at 262,144 points. */
+#define CFPO_TRANSPORT_TAPER 0.03
 
 typedef struct {
     int K;        /* the largest |kx|, |ky| of the band */
