@@ -107,8 +107,9 @@ typedef double (*dens_geo_fn)(double px, double py, const double *yx, const doub
  * the running best: each vertex clamped to S, f there exactly (the min
  * over all neighbours of |c - y_j|^2 q_j by geo_of, times q(c) from its
  * pixel), abandoned as soon as even qhi cannot lift it above *best (y_i's
- * own term first: rounding is monotone, so the min is the same bits in
- * any order). Returns whether a vertex replaced *best. */
+ * own term first), then as soon as q there cannot (rounding is monotone,
+ * so the min is the same bits in any order and a value abandoned early
+ * would not have passed). Returns whether a vertex replaced *best. */
 static inline int dens_eval(const double *x, const double *y, int s, int nv, int i, const double *yx,
                             const double *yy, const double *yr, int k, cfpo_square S, const cfpo_density *d,
                             double qhi, double ox, double oy, double *best, double *cx, double *cy, dens_geo_fn geo_of)
@@ -124,10 +125,13 @@ static inline int dens_eval(const double *x, const double *y, int s, int nv, int
         const double ex = px - ax, ey = py - ay;
         double geo = (ex * ex + ey * ey) * yr[i];
         if (!(geo * qhi > *best)) continue;
-        geo = geo_of(px, py, yx, yy, yr, k, i, geo, qhi, *best);
-        if (!(geo * qhi > *best)) continue;
+        /* q at the vertex itself (at most qhi) bounds the scan over the
+         * other neighbours: it stops where the value cannot pass, which
+         * the bound qhi only says later; a scan it does not stop gives
+         * the whole min, as with qhi */
         const double rc = cfpo_dens_local_q(d, ox, oy, px, py);
-        if (!(rc > 0)) continue;
+        if (!(rc > 0) || !(geo * rc > *best)) continue;
+        geo = geo_of(px, py, yx, yy, yr, k, i, geo, rc, *best);
         const double val = geo * rc;
         if (val > *best) {
             *best = val;

@@ -84,7 +84,9 @@ static int ranges(double lo, double hi, int64_t n, int64_t r[2][2])
         r[0][1] = n - 1;
         return 1;
     }
-    int64_t a = (int64_t)fmod(fa, (double)n), z;
+    /* fa is a whole number well inside int64_t's range: the remainder in
+     * integers is fmod's, exactly */
+    int64_t a = (int64_t)fa % n, z;
     if (a < 0) a += n;
     z = a + (int64_t)(fz - fa);
     if (z < n) {
@@ -103,7 +105,12 @@ static int ranges(double lo, double hi, int64_t n, int64_t r[2][2])
  * level where each axis's range spans at most two texels. */
 static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya, int64_t yz)
 {
-    int l = 0;
+    /* (z >> l) - (a >> l) <= 1 needs z - a < 2^(l + 1), so no level
+     * below floor(log2(z - a)) does: the search starts there (the same
+     * level) */
+    const int64_t span = xz - xa > yz - ya ? xz - xa : yz - ya;
+    int l = span > 0 ? 63 - __builtin_clzll((unsigned long long)span) : 0;
+    if (l > b->levels - 1) l = b->levels - 1;
     while (l + 1 < b->levels && ((xz >> l) - (xa >> l) > 1 || (yz >> l) - (ya >> l) > 1)) l++;
     double m = b->lowest ? INFINITY : 0;
     for (int64_t j = ya >> l; j <= yz >> l; j++)
