@@ -38,9 +38,9 @@
 #define CFPO_TRANSPORT_TAPER 0.03
 
 typedef struct {
-    int K;        /* the largest |kx|, |ky| of the band */
+    int K;        /* the largest |kx|, |ky| of the band and its taper */
     cfpo_nufft U; /* both directions */
-    double *C;    /* (2K + 1)^2 complex: the band's ux + i uy coefficients */
+    double *C;    /* (2K + 1)^2 complex: the ux + i uy coefficients */
 } cfpo_transport;
 
 /* The transport of a set of n points (n >= 25: the band is not empty),
