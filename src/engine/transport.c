@@ -16,9 +16,9 @@ static int field_K(int64_t n) { return (int)floor(sqrt((double)n / 25.0) * (1 + 
  * as cos^2 to 0 at (1 + CFPO_TRANSPORT_TAPER) times its radius, 0 beyond. */
 static double band_weight(int kx, int ky, int64_t n)
 {
+    if (cfpo_in_lowk_band(kx, ky, n)) return 1;
     const int64_t q = (int64_t)kx * kx + (int64_t)ky * ky;
     if (q == 0) return 0;
-    if (25 * q <= n) return 1;
     const double r = (sqrt(25.0 * (double)q / (double)n) - 1) / CFPO_TRANSPORT_TAPER;
     if (r >= 1) return 0;
     const double c = cos(0.5 * M_PI * r);
