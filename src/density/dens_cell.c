@@ -215,6 +215,14 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     const int nt = levels && !wrap ? cfpo_dens_levels_tiers(&E->lv, E->cur, cx, cy, tq) : 0;
     const scan_limits lim = {wrap, qlo, h, lo, L, m, vec, nt, tq};
     int64_t moves = 0;
+    /* the largest q over the cell: every box S below is clipped to the
+     * cell, so this bounds q at every spot a solve evaluates, as the
+     * bound over S itself did (it only prunes: the same vertex, the same
+     * bits; dens_qbound.h). Where the levels size the cells (1.25-2.5
+     * local spacings) S, two spacings wide, covers most of its cell, so
+     * the bound is about as tight, for one query a cell instead of one a
+     * point (docs/method.md, "The solve's work") */
+    const double qcell = cfpo_dens_qbound_box(&E->qb, ox, oy, ox + hi, oy + hi);
     for (int p = c0; p < c1; p++) {
         if (levels && E->lev[b->bid[p]] != E->cur) continue; /* another level's point: a neighbour only */
         const double ax = b->bx[p], ay = b->by[p], ra = b->br[p];
@@ -283,9 +291,8 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
          * move (and `fall`), the search going on from the polygons it has
          * done (`from`: the same vertex as searching them all again) */
         int cells = cells0, from = 0;
-        const double qhi = cfpo_dens_qbound_box(&E->qb, ox + S.x0, oy + S.y0, ox + S.x1, oy + S.y1);
     solve:
-        if (!cfpo_dens_solve_from(b->nx, b->ny, b->nr, kk, from, cells, S, E->d, qhi, ox, oy, oldf, &cxp, &cyp, &fc,
+        if (!cfpo_dens_solve_from(b->nx, b->ny, b->nr, kk, from, cells, S, E->d, qcell, ox, oy, oldf, &cxp, &cyp, &fc,
                                   b->scratch + KMAX)) {
             if (fall && cells < DENS_CELLS) { from = cells; cells = DENS_CELLS; goto solve; }
             continue;

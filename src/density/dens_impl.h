@@ -63,6 +63,7 @@ struct cfpo_dens_engine {
     int cur;              /* the level being solved */
     unsigned char *lev;   /* per store slot: an own point's level this iteration */
     uint32_t *fine;       /* per store slot: its finest cell (cfpo_dens_levels_fine), kept with its place */
+    int fine_kept;        /* one rank: fine holds every point's cell under the levels' offset (the moves keep it) */
     int64_t *cstart0, *cidx0; /* several ranks: level 0's cells, for the halo refreshes */
     int64_t *slot;        /* several ranks: each store point's place in cidx (cxyq's row) */
     int64_t *lcells;      /* the level being solved: its cells holding a point (one rank) or this rank's cells (several), by colour */

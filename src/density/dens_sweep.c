@@ -208,8 +208,16 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
     int64_t moves = 0, solved = 0;
     double maxd = 0, tm = *tm_;
     const int64_t g0 = E->lv.g0;
+    /* each point's finest cell: on one rank, under an offset the levels
+     * already hold, the moves kept them (dens_cell.c writes a moved
+     * point's cell with its place, by the same function: the same
+     * values); else, or with several ranks (the halo moves elsewhere),
+     * all of them again */
+    const int kept = !E->T && E->fine_kept && E->lv.sx == E->sx && E->lv.sy == E->sy;
     if (!comm_all(cfpo_dens_levels_place(&E->lv, &E->qlow, E->sx, E->sy) == 0)) return -1;
-    for (int64_t i = 0; i < E->s.loc; i++) E->fine[i] = cfpo_dens_levels_fine(&E->lv, E->s.xy[2 * i], E->s.xy[2 * i + 1]);
+    if (!kept)
+        for (int64_t i = 0; i < E->s.loc; i++) E->fine[i] = cfpo_dens_levels_fine(&E->lv, E->s.xy[2 * i], E->s.xy[2 * i + 1]);
+    E->fine_kept = !E->T;
     int64_t per_level[CFPO_DENS_LEVELS_MAX] = {0}; /* the points of each level, on every rank */
     for (int64_t i = 0; i < E->s.own; i++) {
         E->lev[i] = (unsigned char)cfpo_dens_levels_of_fine(&E->lv, E->fine[i], E->s.q[i], E->D, CELL_SPACINGS);
