@@ -43,13 +43,21 @@ typedef struct {
     int64_t *gid;
 } cfpo_dens_store;
 
-/* The cell (iy g + ix) of (x, y) in the grid of g cells shifted by (sx, sy). */
-static inline int64_t cfpo_dens_cell_of(int64_t g, double sx, double sy, double x, double y)
+/* The column ix and row iy of (x, y)'s cell in the grid of g cells
+ * shifted by (sx, sy); cfpo_dens_cell_of: its index iy g + ix. */
+static inline void cfpo_dens_cell_xy(int64_t g, double sx, double sy, double x, double y, int64_t *ix, int64_t *iy)
 {
     const double gx = cfpo_wrap01(x - sx), gy = cfpo_wrap01(y - sy);
-    int64_t ix = (int64_t)(gx * (double)g), iy = (int64_t)(gy * (double)g);
-    if (ix >= g) ix = g - 1;
-    if (iy >= g) iy = g - 1;
+    *ix = (int64_t)(gx * (double)g);
+    *iy = (int64_t)(gy * (double)g);
+    if (*ix >= g) *ix = g - 1;
+    if (*iy >= g) *iy = g - 1;
+}
+
+static inline int64_t cfpo_dens_cell_of(int64_t g, double sx, double sy, double x, double y)
+{
+    int64_t ix, iy;
+    cfpo_dens_cell_xy(g, sx, sy, x, y, &ix, &iy);
     return iy * g + ix;
 }
 

@@ -126,8 +126,9 @@ int cfpo_dens_levels_tiers(const cfpo_dens_levels *V, int l, int64_t cx, int64_t
 
 uint32_t cfpo_dens_levels_fine(const cfpo_dens_levels *V, double x, double y)
 {
-    const int64_t gf = V->g0 << (V->n - 1), c = cfpo_dens_cell_of(gf, V->sx, V->sy, x, y);
-    return (uint32_t)((c / gf) << 16 | (c % gf));
+    int64_t ix, iy; /* the cell's column and row, without dividing its index */
+    cfpo_dens_cell_xy(V->g0 << (V->n - 1), V->sx, V->sy, x, y, &ix, &iy);
+    return (uint32_t)(iy << 16 | ix);
 }
 
 int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings)

@@ -138,9 +138,11 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * point's CFPO_POLICY_DENSITY_NEAR_CELLS nearest neighbours in the
  * measure, as the uniform path's near solve searches the Voronoi cells
  * around the point's old place; a point they give no move is solved
- * again over the ten nearest's, as every point of the other blocks is.
- * So a point stays only when the full solve moves it nowhere, and a
- * block skipped for that reason would be skipped by the full solve too.
+ * again over the five nearest's (DENS_FALL_CELLS, dens_clip.h; the ten
+ * until 2026-12-01), the other blocks' points over the ten. So a point
+ * stays only when those polygons move it nowhere (past the fifth the ten
+ * hold the best spot in about one move of 10,000), and a block skipped
+ * for that reason would be skipped by that solve too.
  * While the set is loose nearly every point moves anyway, and the two
  * polygons around its place hold a spot far better than its own: at
  * 65,536 points the runs to (0.85, 0.90) take as many iterations with
@@ -178,7 +180,7 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * 2026-11-30-density14. Returns the polygons of the near solve in a block
  * with smallest q qlo and largest qhi in iteration k (DENS_CELLS, given,
  * when it is not flat within CFPO_POLICY_DENSITY_NEAR_FLAT), and in *fall
- * whether a point it gives no move is solved over the ten. A pure function
+ * whether a point it gives no move is solved over the five. A pure function
  * of the block and the iteration. */
 #define CFPO_POLICY_DENSITY_NEAR_UNIFORM 1.02
 static inline int cfpo_policy_density_near(int k, double qlo, double qhi, int all, int *fall)
