@@ -67,8 +67,10 @@ expect_err 2 "text output needs one rank" 2 -n 16384 --density cos:a=0.9 --max-i
 # A batch scheduler's SIGUSR1 to mpirun (forwarded to the ranks): every
 # rank stops at the same iteration boundary, the checkpoint is written, the
 # job exits 3 with no output; a resume on 3 ranks gives the uninterrupted
-# bytes (a one-process run to the same iteration).
-"$MPIRUN" --oversubscribe -np 2 "$CFPO" -q -n 65536 -t 1 --density cos:a=0.9 --checkpoint sig.ck \
+# bytes (a one-process run to the same iteration). 262,144 points: the run
+# to its own stop takes about 13 s on two cores, so the signal after 3 s
+# finds it running (65,536 points ended in 3.2 s, before the signal).
+"$MPIRUN" --oversubscribe -np 2 "$CFPO" -q -n 262144 -t 1 --density cos:a=0.9 --checkpoint sig.ck \
   --checkpoint-every 1000 -o sig.npy >sig.out 2>sig.err &
 pid=$!
 sleep 3
@@ -80,7 +82,7 @@ it=$(sed -n 's/.*stopped by a signal at iteration \([0-9]*\);.*/\1/p' sig.err | 
   bad "SIGUSR1 under mpirun: exit $rc, iteration '$it', checkpoint $(ls sig.ck 2>&1): $(grep cfpo: sig.err | head -2)"
 if [ -n "$it" ]; then
   run 3 -t 1 --density cos:a=0.9 --resume sig.ck --max-iter $((it + 2)) -o sigr.npy >/dev/null 2>&1
-  "$CFPO" -q -t 2 -n 65536 --density cos:a=0.9 --max-iter $((it + 2)) -o sigu.npy >/dev/null
+  "$CFPO" -q -t 2 -n 262144 --density cos:a=0.9 --max-iter $((it + 2)) -o sigu.npy >/dev/null
   cmp -s sigr.npy sigu.npy && ok || bad "resume on 3 ranks after SIGUSR1 at $it: not the uninterrupted bytes"
 fi
 rm -f sig.*  sigr.npy sigu.npy
