@@ -141,7 +141,7 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * again over the five nearest's (DENS_FALL_CELLS, dens_clip.h; the ten
  * until 2026-12-01), the other blocks' points over the ten. So a point
  * stays only when those polygons move it nowhere (past the fifth the ten
- * hold the best spot in about one move of 10,000), and a block skipped
+ * held the best spot in under one move of 10,000), and a block skipped
  * for that reason would be skipped by that solve too.
  * While the set is loose nearly every point moves anyway, and the two
  * polygons around its place hold a spot far better than its own: at
