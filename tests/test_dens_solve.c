@@ -30,6 +30,7 @@
 #include "dens_qbound.h"
 #include "dens_solve.h"
 #include "dens_clip.h"
+#include "policy.h"
 #include "solver_simd.h"
 #include "density.h"
 #include "testutil.h"
@@ -264,7 +265,7 @@ static void routes(const char *spec, int count)
             n++;
             public_differs += split_public_differs(yx, yy, yr, k, 2, DENS_CELLS, S, &d, qhi[1], ox, oy, floor_f, scratch);
             /* the engine's fall-back: the two, then up to the fifth */
-            public_differs += split_public_differs(yx, yy, yr, k, 2, DENS_FALL_CELLS, S, &d, qhi[1], ox, oy, floor_f, scratch);
+            public_differs += split_public_differs(yx, yy, yr, k, 2, CFPO_POLICY_DENSITY_FALL_CELLS, S, &d, qhi[1], ox, oy, floor_f, scratch);
             floor_f = ref ? ref_f * (q == 0 ? 0.5 : 1 - 1e-9) : -1;
         }
     }

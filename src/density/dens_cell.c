@@ -202,8 +202,8 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     /* the near solve only where q is nearly flat over the block
      * (policy.h): across a steep change the nearest two polygons miss the
      * spots a point should reach; where it is flatter still, the uniform
-     * path's near solve (fall: whether the five follow a near solve that
-     * gives no move) */
+     * path's near solve (fall: the polygons a near solve that gives no
+     * move goes on to, 0: none) */
     int fall;
     const int cells0 = cfpo_policy_density_near(E->iter, qlo, qbl, DENS_CELLS, &fall);
     const double h = bk->h, gain = E->o.tol * E->D;
@@ -294,7 +294,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
     solve:
         if (!cfpo_dens_solve_from(b->nx, b->ny, b->nr, kk, from, cells, S, E->d, qcell, ox, oy, oldf, &cxp, &cyp, &fc,
                                   b->scratch + KMAX)) {
-            if (fall && cells < DENS_FALL_CELLS) { from = cells; cells = DENS_FALL_CELLS; goto solve; }
+            if (cells < fall) { from = cells; cells = fall; goto solve; }
             continue;
         }
         /* a move must gain more than tol local spacings in the measure
@@ -320,7 +320,7 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         }
         if (cc < 0) {
             if (!(sqrt(fc) > sqrt(oldf) + gain && fc > thr)) {
-                if (fall && cells < DENS_FALL_CELLS) { from = cells; cells = DENS_FALL_CELLS; goto solve; }
+                if (cells < fall) { from = cells; cells = fall; goto solve; }
                 continue;
             }
             rc = cfpo_dens_local_q(E->d, ox, oy, cxp, cyp);

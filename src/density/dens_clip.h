@@ -18,16 +18,6 @@ static inline double cfpo_dens_local_q(const cfpo_density *d, double ox, double 
 }
 
 #define DENS_CELLS 10 /* the polygons of the DENS_CELLS nearest neighbours (given nearest first) */
-/* A near solve that gives no move (policy.h) goes on to the polygons of
- * the DENS_FALL_CELLS nearest, not the DENS_CELLS: where all ten were
- * searched in blocks flat within 20%, the best vertex lay past the fifth
- * polygon in 1 to 55 of 22,205 to 1,025,419 moves (iterations 3-22 on the
- * ramps 1:256 and 1:16, cos a = 0.9, Balzer's field, the shipped image and
- * an unseen density, 16,384 and 65,536 points: under 0.01%); the converged
- * runs give the same quality (results 2026-12-01-dens21). Steep
- * blocks keep the ten: with five, the image at 2,600 points lost 0.0006
- * of delta_avg. */
-#define DENS_FALL_CELLS 5
 #define DENS_BIG 64   /* a polygon of more vertices is not cut further (rounding's pathology) */
 
 /* The cut of the polygon *pp (nv <= DENS_BIG vertices, x y interleaved)

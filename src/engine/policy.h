@@ -138,7 +138,7 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * point's CFPO_POLICY_DENSITY_NEAR_CELLS nearest neighbours in the
  * measure, as the uniform path's near solve searches the Voronoi cells
  * around the point's old place; a point they give no move is solved
- * again over the five nearest's (DENS_FALL_CELLS, dens_clip.h; the ten
+ * again over the CFPO_POLICY_DENSITY_FALL_CELLS nearest's (five; the ten
  * until 2026-12-01), the other blocks' points over the ten. So a point
  * stays only when those polygons move it nowhere (past the fifth the ten
  * held the best spot in under one move of 10,000), and a block skipped
@@ -180,15 +180,23 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * 2026-11-30-density14. Returns the polygons of the near solve in a block
  * with smallest q qlo and largest qhi in iteration k (DENS_CELLS, given,
  * when it is not flat within CFPO_POLICY_DENSITY_NEAR_FLAT), and in *fall
- * whether a point it gives no move is solved over the five. A pure function
- * of the block and the iteration. */
+ * the polygons a point it gives no move is solved over (0: none). A pure
+ * function of the block and the iteration. */
 #define CFPO_POLICY_DENSITY_NEAR_UNIFORM 1.02
+/* The fall-back's polygons: where all ten were searched in blocks flat
+ * within 20%, the best vertex lay past the fifth polygon in 1 to 55 of
+ * 22,205 to 1,025,419 moves (iterations 3-22 on the ramps 1:256 and 1:16,
+ * cos a = 0.9, Balzer's field, the shipped image and an unseen density,
+ * 16,384 and 65,536 points: under 0.01%); the converged runs give the
+ * same quality (results 2026-12-01-dens21). Steep blocks keep the ten:
+ * with five, the image at 2,600 points lost 0.0006 of delta_avg. */
+#define CFPO_POLICY_DENSITY_FALL_CELLS 5
 static inline int cfpo_policy_density_near(int k, double qlo, double qhi, int all, int *fall)
 {
     *fall = 0;
     if (!(qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT)) return all;
     if (qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_UNIFORM) return k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1;
-    *fall = 1;
+    *fall = CFPO_POLICY_DENSITY_FALL_CELLS < all ? CFPO_POLICY_DENSITY_FALL_CELLS : all;
     return CFPO_POLICY_DENSITY_NEAR_CELLS;
 }
 
