@@ -263,9 +263,11 @@ static void routes(const char *spec, int count)
                     }
                 }
             n++;
-            public_differs += split_public_differs(yx, yy, yr, k, 2, DENS_CELLS, S, &d, qhi[1], ox, oy, floor_f, scratch);
-            /* the engine's fall-back: the two, then up to the fifth */
-            public_differs += split_public_differs(yx, yy, yr, k, 2, CFPO_POLICY_DENSITY_FALL_CELLS, S, &d, qhi[1], ox, oy, floor_f, scratch);
+            { /* the engine's fall-back in a steep block: the near solve's polygons, then all */
+                int fall;
+                const int near = cfpo_policy_density_near(20, 1, 2, DENS_CELLS, &fall);
+                public_differs += split_public_differs(yx, yy, yr, k, near, fall, S, &d, qhi[1], ox, oy, floor_f, scratch);
+            }
             floor_f = ref ? ref_f * (q == 0 ? 0.5 : 1 - 1e-9) : -1;
         }
     }
@@ -273,7 +275,7 @@ static void routes(const char *spec, int count)
     CHECK(split_differs_n == 0, "%s: %d of %d searches resumed after a polygon differ from the search in one", spec,
           split_differs_n, split_n);
     CHECK(split_found > split_n / 4, "%s: only %d of %d split searches found a vertex", spec, split_found, split_n);
-    CHECK(public_differs == 0, "%s: %d of %d searches resumed by cfpo_dens_solve_from differ", spec, public_differs, 2 * n);
+    CHECK(public_differs == 0, "%s: %d of %d searches resumed by cfpo_dens_solve_from differ", spec, public_differs, n);
     CHECK(tight > count / 2, "%s: the box's bound of q is below the global one in only %d of %d boxes", spec, tight, count);
     printf("%s: %d solves by the plain route%s%s, same bits with both bounds of q\n", spec, n, simd ? ", the AVX-512 route" : "",
            avx2 ? ", the AVX2 route" : "");

@@ -199,11 +199,10 @@ int64_t dens_solve_cell(cfpo_dens_engine *E, tbuf *b, int64_t cx, int64_t cy, do
         b->oom = 1;
         return 0;
     }
-    /* the near solve only where q is nearly flat over the block
-     * (policy.h): across a steep change the nearest two polygons miss the
-     * spots a point should reach; where it is flatter still, the uniform
-     * path's near solve (fall: the polygons a near solve that gives no
-     * move goes on to, 0: none) */
+    /* the near solve (policy.h): where q is nearly flat over the block,
+     * the uniform path's; across a steeper change the nearest two
+     * polygons first, then all of them when those give no move (fall: the
+     * polygons a near solve that gives no move goes on to, 0: none) */
     int fall;
     const int cells0 = cfpo_policy_density_near(E->iter, qlo, qbl, DENS_CELLS, &fall);
     const double h = bk->h, gain = E->o.tol * E->D;

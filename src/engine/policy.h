@@ -132,72 +132,48 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
     w[2] = CFPO_POLICY_DENSITY_RELAX_MILD;
     return 3;
 }
-/* The density engine's near solve (docs/method.md, "Density"): in a
- * 3 x 3 block whose largest q is at most CFPO_POLICY_DENSITY_NEAR_FLAT
- * times its smallest, each solve searches only the polygons of the
- * point's CFPO_POLICY_DENSITY_NEAR_CELLS nearest neighbours in the
- * measure, as the uniform path's near solve searches the Voronoi cells
- * around the point's old place; a point they give no move is solved
- * again over the CFPO_POLICY_DENSITY_FALL_CELLS nearest's (five; the ten
- * until 2026-12-01), the other blocks' points over the ten. So a point
- * stays only when those polygons move it nowhere (past the fifth the ten
- * held the best spot in under one move of 10,000), and a block skipped
- * for that reason would be skipped by that solve too.
- * While the set is loose nearly every point moves anyway, and the two
- * polygons around its place hold a spot far better than its own: at
- * 65,536 points the runs to (0.85, 0.90) take as many iterations with
- * about a third of the clipping. Until 2026-11-29 (second change) it ran
- * in iterations 1-12 only; in every iteration the converged runs stop
- * after as many iterations at the same quality (cos a=0.9, the ramp 1:16,
- * Balzer's field, the image) and a flat block's iteration costs about
- * 0.7 of the full solve's. Without the flatness rule the near solve
- * also ran across steep changes, and the block counts followed the
- * density less closely (8 x 8 blocks at 4,096 points: rms 0.057 against
- * 0.044); with it, 0.047. The accept rule is the same in both, so
- * delta_min still never falls. A pure function of the block. */
-#define CFPO_POLICY_DENSITY_NEAR_CELLS 2
-#define CFPO_POLICY_DENSITY_NEAR_FLAT 1.2
 /* The uniform path's near solves search two Voronoi cells before this
  * iteration, one after (policy.c). */
 #define CFPO_POLICY_NEAR_TWO_UNTIL 7
 /* The adaptive variant's brick colourings (cfpo_policy_colour_at) up to
  * this iteration, the plain colours after it (policy.c). */
 #define CFPO_POLICY_BRICK_UNTIL 40
-/* In a block whose largest q is at most CFPO_POLICY_DENSITY_NEAR_UNIFORM
- * times its smallest, the density's polygons are the uniform path's
- * Voronoi cells but for a 1% shift of their sides, and the near solve
- * follows the uniform path's: two polygons before iteration
- * CFPO_POLICY_NEAR_TWO_UNTIL, one after, and no fall-back to the ten (a
- * point the near solve gives no move stays, as in the uniform path's near
- * phase). In such blocks the fall-back found no move in 135,172 tries
- * over 30 iterations at 65,536 points (cos a=0.000001: the same bytes
- * without it), and the one polygon halves the late iterations' clipping:
- * 30 iterations cost 0.77x the CPU of the rule above alone. Converged
- * runs stop after as many iterations (64) on cos a=0.01 and a=0.000001,
- * 0.0001-0.0004 lower in delta_min and delta_avg; cos a=0.9, the ramp
- * 1:16, Balzer's field and the shipped image give the same bytes or
- * within 0.00006 (their blocks are steeper); docs/tried.md, results
- * 2026-11-30-density14. Returns the polygons of the near solve in a block
- * with smallest q qlo and largest qhi in iteration k (DENS_CELLS, given,
- * when it is not flat within CFPO_POLICY_DENSITY_NEAR_FLAT), and in *fall
- * the polygons a point it gives no move is solved over (0: none). A pure
- * function of the block and the iteration. */
-#define CFPO_POLICY_DENSITY_NEAR_UNIFORM 1.02
-/* The fall-back's polygons: where all ten were searched in blocks flat
- * within 20%, the best vertex lay past the fifth polygon in 1 to 55 of
- * 22,205 to 1,025,419 moves (iterations 3-22 on the ramps 1:256 and 1:16,
- * cos a = 0.9, Balzer's field, the shipped image and an unseen density,
- * 16,384 and 65,536 points: under 0.01%); the converged runs give the
- * same quality (results 2026-12-01-dens21). Steep blocks keep the ten:
- * with five, the image at 2,600 points lost 0.0006 of delta_avg. */
-#define CFPO_POLICY_DENSITY_FALL_CELLS 5
+/* The density engine's near solve (docs/method.md, "Density", item 5).
+ * In a 3 x 3 block whose largest q is at most CFPO_POLICY_DENSITY_NEAR_FLAT
+ * times its smallest, a solve follows the uniform path's near solve: the
+ * polygons of the point's two nearest neighbours in the measure before
+ * iteration CFPO_POLICY_NEAR_TWO_UNTIL, its nearest's alone after, and a
+ * point they give no move stays (as in the uniform path's near phase).
+ * In a steeper block, the two nearest's polygons first, and the `all`
+ * nearest's (DENS_CELLS, ten, as LocalCFPO) when those give no move:
+ * across a steep change the nearest polygons can miss the spots a point
+ * should reach. The accept rule is the same for every solve, so delta_min
+ * never falls. A pure function of the block and the iteration.
+ *
+ * Since 2026-12-01 (dens22, issue 42). Until then the uniform near solve
+ * ran only in blocks flat within 2%; blocks flat within 2-20% took the two
+ * polygons in every iteration and fell back to five (ten until
+ * 2026-12-01) when those gave no move, and steeper blocks searched all
+ * ten. That cost an iteration at contrast 1:256 2.07x a flat density's at
+ * 16,384 points and 1.77x at 65,536 (native seconds, one thread,
+ * iterations 3-22; the issue asks 1.5x); this rule costs 1.53x and 1.42x,
+ * and over whole runs to their stop 1.46x and 1.39x. Its price, converged
+ * at 65,536 points on six densities: delta_avg 0.0003-0.0011 lower (about
+ * -0.0007), delta_min within -0.014 / +0.016, the count fidelity the same
+ * (results 2026-12-01-dens22, docs/tried.md). */
+#define CFPO_POLICY_DENSITY_NEAR_CELLS 2
+#define CFPO_POLICY_DENSITY_NEAR_FLAT 1.2
+/* Returns the polygons of the near solve in a block with smallest q qlo
+ * and largest qhi in iteration k, and in *fall the polygons a point it
+ * gives no move is solved over (0: none; `all` otherwise). */
 static inline int cfpo_policy_density_near(int k, double qlo, double qhi, int all, int *fall)
 {
-    *fall = 0;
-    if (!(qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT)) return all;
-    if (qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_UNIFORM) return k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1;
-    *fall = CFPO_POLICY_DENSITY_FALL_CELLS < all ? CFPO_POLICY_DENSITY_FALL_CELLS : all;
-    return CFPO_POLICY_DENSITY_NEAR_CELLS;
+    if (qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT) {
+        *fall = 0;
+        return k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1;
+    }
+    *fall = all;
+    return CFPO_POLICY_DENSITY_NEAR_CELLS < all ? CFPO_POLICY_DENSITY_NEAR_CELLS : all;
 }
 
 #define CFPO_BRICK_ROWS 1
