@@ -154,10 +154,11 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * ran only in blocks flat within 2%; blocks flat within 2-20% took the two
  * polygons in every iteration and fell back to five (ten until
  * 2026-12-01) when those gave no move, and steeper blocks searched all
- * ten. That cost an iteration at contrast 1:256 2.07x a flat density's at
- * 16,384 points and 1.77x at 65,536 (native seconds, one thread,
- * iterations 3-22; the issue asks 1.5x); this rule costs 1.53x and 1.42x,
- * and over whole runs to their stop 1.46x and 1.39x. Its price, converged
+ * ten. That cost an iteration at contrast 1:256 2.04x a flat density's at
+ * 16,384 points and 1.78x at 65,536 (native seconds, one thread,
+ * iterations 3-22, medians of three seeds; the issue asks 1.5x); this rule
+ * costs 1.57x and 1.46x, and over whole runs to their stop 1.49x and
+ * 1.47x. Its price, converged
  * at 65,536 points on six densities: delta_avg 0.0003-0.0011 lower (about
  * -0.0007), delta_min within -0.014 / +0.016, the count fidelity the same
  * (results 2026-12-01-dens22, docs/tried.md). */
