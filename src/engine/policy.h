@@ -158,10 +158,10 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * 16,384 points and 1.78x at 65,536 (native seconds, one thread,
  * iterations 3-22, medians of three seeds; the issue asks 1.5x); this rule
  * costs 1.57x and 1.46x, and over whole runs to their stop 1.49x and
- * 1.47x. Its price, converged
- * at 65,536 points on six densities: delta_avg 0.0003-0.0011 lower (about
- * -0.0007), delta_min within -0.014 / +0.016, the count fidelity the same
- * (results 2026-12-01-dens22, docs/tried.md). */
+ * 1.47x. Its price, converged at 65,536 points on six densities:
+ * delta_avg 0.0003-0.0011 lower (about 0.0007), delta_min within -0.014 /
+ * +0.016, the count fidelity the same (results 2026-12-01-dens22,
+ * docs/tried.md). */
 #define CFPO_POLICY_DENSITY_NEAR_CELLS 2
 #define CFPO_POLICY_DENSITY_NEAR_FLAT 1.2
 /* Returns the polygons of the near solve in a block with smallest q qlo
