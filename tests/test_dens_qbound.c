@@ -14,6 +14,9 @@
  *    below at every point of the box whose pixel is not zero, and is
  *    local in the same sense (at least the smallest non-zero q over the
  *    widened box, less the float rounding);
+ *  - read two levels finer (cfpo_dens_qbound_box_finer), it is still a
+ *    bound, never looser than the coarse one, and local within half the
+ *    span and eight pixels each side;
  *  - a density whose q is flat within CFPO_QBOUND_FLAT answers every box
  *    with its global maximum (minimum), still a bound and within that
  *    ratio of the local one; one just past the ratio is answered locally. */
@@ -57,7 +60,7 @@ static void boxes(const cfpo_density *d, const char *what, unsigned long long se
         CHECK(0, "%s: out of memory", what);
         return;
     }
-    int below = 0, loose = 0, global = 0;
+    int below = 0, loose = 0, global = 0, fbelow = 0, floose = 0, fwide = 0;
     const double px = 1.0 / (double)d->w, py = 1.0 / (double)d->h;
     for (int t = 0; t < count; t++) {
         const int kind = t % 4; /* 0 small, 1 tiny, 2 wide, 3 around an edge of the torus */
@@ -66,12 +69,21 @@ static void boxes(const cfpo_density *d, const char *what, unsigned long long se
         double x0 = kind == 3 ? 1 - 0.5 * sx : 3 * urand(&seed) - 1, y0 = kind == 3 ? -0.5 * sy : 3 * urand(&seed) - 1;
         const double x1 = x0 + sx, y1 = y0 + sy;
         const double q = cfpo_dens_qbound_box(&b, x0, y0, x1, y1);
+        const double qf = cfpo_dens_qbound_box_finer(&b, x0, y0, x1, y1, 2);
         for (int s = 0; s < 50; s++) {
             const double cx = x0 + (s == 0 ? 0 : s == 1 ? sx : urand(&seed) * sx);
             const double cy = y0 + (s == 0 ? 0 : s == 1 ? sy : urand(&seed) * sy);
             const double qc = cfpo_dens_local_q(d, 0, 0, cx, cy);
             if (lowest ? qc > 0 && qc < q : qc > q) below++;
+            if (lowest ? qc > 0 && qc < qf : qc > qf) fbelow++;
         }
+        /* two levels finer: a bound as well, never looser, and local
+         * within half the span (texels under a quarter of the coarse
+         * ones) */
+        fwide += lowest ? qf < q : qf > q;
+        const double growf = 0.5 * (sx > sy ? sx : sy) + 8 * (px > py ? px : py);
+        const double nearf = brute(d, x0, y0, x1, y1, growf, lowest);
+        if (!flat && (lowest ? qf < nearf / (1 + 1e-6) : qf > nearf * (1 + 1e-6))) floose++;
         const double grow = 2 * (sx > sy ? sx : sy) + 8 * (px > py ? px : py);
         const double near = brute(d, x0, y0, x1, y1, grow, lowest); /* levels above 0: floats rounded outward */
         const double tol = flat ? CFPO_QBOUND_FLAT : 1 + 1e-6;
@@ -81,6 +93,9 @@ static void boxes(const cfpo_density *d, const char *what, unsigned long long se
     const char *side = lowest ? "below" : "above", *ext = lowest ? "minimum" : "maximum";
     CHECK(below == 0, "%s: %d points of a box on the wrong side of its %s bound", what, below, side);
     CHECK(loose == 0, "%s: %d %s bounds past the extreme q near the box", what, loose, side);
+    CHECK(fbelow == 0, "%s: %d points of a box on the wrong side of its finer %s bound", what, fbelow, side);
+    CHECK(fwide == 0, "%s: %d finer bounds looser than the coarse ones", what, fwide);
+    CHECK(floose == 0, "%s: %d finer %s bounds past the extreme q within half the span", what, floose, side);
     if (flat)
         CHECK(global == count, "%s: flat, but %d of %d %s bounds not the global %s", what, count - global, count, side, ext);
     else

@@ -11,7 +11,8 @@
  *  - the named fields: their contrast (cos a=0.9: 19, ramp: 16, balzer:
  *    256), mean 1;
  *  - the measure: equal to today's delta_min / delta_avg (cfpo_nn_stats)
- *    when rho = 1, and to brute force under a non-uniform density;
+ *    when rho = 1, and to brute force under a non-uniform density (the
+ *    ramp 1:256 too, through the engine's kept near bounds);
  *  - the start: exactly n points, none on a zero pixel, deterministic. */
 #include <math.h>
 #include <png.h>
@@ -181,11 +182,22 @@ static void named(void)
     CHECK(refused("swirl", "not an image"), "unknown name refused");
 }
 
-/* cfpo_dens_nn on xy against the O(n^2) pair measure, each point's. */
-static void brute_measure(const cfpo_density *d, const double *xy, size_t n, double *m, const char *what)
+/* cfpo_dens_nn on xy against the O(n^2) pair measure, each point's;
+ * with `near`, cfpo_dens_nn_q with d's pyramid of minima and that store
+ * of the grid's near bounds, as the engine measures. */
+static void brute_measure(const cfpo_density *d, const double *xy, size_t n, double *m, const char *what,
+                          cfpo_dens_nn_near *near)
 {
     double b0, b1;
-    cfpo_dens_nn(d, xy, n, m, &b0, &b1);
+    if (near) {
+        cfpo_dens_qbound qlow;
+        CHECK(cfpo_dens_qbound_build_min(&qlow, d) == 0, "%s: out of memory", what);
+        cfpo_dens_nn_q(d, &qlow, near, xy, NULL, n, m, &b0, &b1, 0);
+        cfpo_dens_nn_near_free(near);
+        cfpo_dens_qbound_free(&qlow);
+    } else {
+        cfpo_dens_nn(d, xy, n, m, &b0, &b1);
+    }
     double worst = 0, mn = INFINITY, D = cfpo_delta_bound((double)n);
     for (size_t i = 0; i < n; i++) {
         double best = INFINITY;
@@ -220,12 +232,22 @@ static void measure(void)
      * dense region's points stop their search by the smallest q near
      * them, not the density's */
     CHECK(cfpo_density_load("ramp:contrast=16,res=64", &d, err, sizeof err) == 0, "%s", err);
-    brute_measure(&d, xy, n, m, "ramp");
+    brute_measure(&d, xy, n, m, "ramp", NULL);
     cfpo_density bz;
     CHECK(cfpo_density_load("balzer", &bz, err, sizeof err) == 0, "%s", err);
     cfpo_dens_start(&bz, (int64_t)n, 7, xy);
-    brute_measure(&bz, xy, n, m, "balzer, points that follow it");
+    brute_measure(&bz, xy, n, m, "balzer, points that follow it", NULL);
     cfpo_density_free(&bz);
+    /* the ramp 1:256 with points that follow it, through the engine's
+     * kept near bounds: there most points stop their search by the
+     * pyramid's finer bounds and their own place in their cell */
+    cfpo_density r256;
+    CHECK(cfpo_density_load("ramp:contrast=256", &r256, err, sizeof err) == 0, "%s", err);
+    cfpo_dens_start(&r256, (int64_t)n, 9, xy);
+    cfpo_dens_nn_near keep = {0};
+    brute_measure(&r256, xy, n, m, "ramp 1:256, points that follow it, near bounds kept", &keep);
+    brute_measure(&r256, xy, n, m, "ramp 1:256, points that follow it", NULL);
+    cfpo_density_free(&r256);
     /* the start: exactly n, none on zero pixels, deterministic */
     cfpo_density z;
     double v[16 * 16];

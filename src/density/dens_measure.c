@@ -8,8 +8,10 @@
  * around the point (a pyramid of minima, dens_qbound.h); the density's
  * global q_min alone made a point of a dense region beside a sparse one
  * scan rings until (k L)^2 q_min passed its value, 17% of an iteration at
- * a million points on the shipped image. The result is the exact minimum,
- * whatever the rings seen. Once the rings cover the torus every cell has
+ * a million points on the shipped image. A ring's stop also counts the
+ * point's own distance to its cell's side (every point past ring k is at
+ * least (k + that) L away). The result is the exact minimum, whatever the
+ * rings seen. Once the rings cover the torus every cell has
  * been seen once. The bound from the point's own cell's best also skips
  * the cells of ring 1 whose box lies too far to hold a winner. */
 #include "dens_measure.h"
@@ -42,7 +44,8 @@ static int near_fit(cfpo_dens_nn_near *c, const cfpo_dens_qbound *qlow, int64_t 
     for (int64_t cy = 0; cy < g; cy++)
         for (int64_t cx = 0; cx < g; cx++) { /* a float at most the least q there */
             const double x0 = ((double)cx - K) * L, y0 = ((double)cy - K) * L;
-            const double m = cfpo_dens_qbound_box(qlow, x0, y0, x0 + (2 * K + 1) * L, y0 + (2 * K + 1) * L);
+            const double m = cfpo_dens_qbound_box_finer(qlow, x0, y0, x0 + (2 * K + 1) * L, y0 + (2 * K + 1) * L,
+                                                        CFPO_DENS_NN_FINER);
             const float f = (float)m;
             v[cy * g + cx] = (double)f > m ? nextafterf(f, 0) : f;
         }
@@ -103,6 +106,12 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo
          * a winner can have, a cell of ring 1 whose box is too far to hold
          * one is skipped */
         const double fx = x * (double)g - (double)cx, fy = y * (double)g - (double)cy;
+        /* every point past ring k is at least (k + fm) L away: fm the
+         * point's distance to its cell's nearest side, in cells */
+        double fm = fx < 1 - fx ? fx : 1 - fx;
+        fm = fy < fm ? fy : fm;
+        fm = 1 - fy < fm ? 1 - fy : fm;
+        fm = fm > 0 ? fm : 0;
         double best = INFINITY; /* d^2 q_j, the smallest so far */
         double ql = lo, qlbest = INFINITY; /* ql bounds q over the box of the reach of qlbest */
         /* rings 0 and 1 at once where they wrap no index: three runs of
@@ -179,7 +188,7 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo
             }
             best = b0 < b1 ? b0 : b1;
             if (all) break;
-            const double reach = (double)k * L;
+            const double reach = ((double)k + fm) * L * (1 - 1e-9);
             if (reach * reach * lo >= best) break;
             if (best < INFINITY) {
                 /* past R no point can win; q over that box bounds the
@@ -189,7 +198,8 @@ int cfpo_dens_nn_first(const cfpo_density *d, const cfpo_dens_qbound *qlow, cfpo
                 if (k > 0 && reach * reach * ql >= best * (1 + 1e-9)) break;
                 if (best < qlbest && (k > 0 || ri > 1.2 * lo)) { /* after ring 0 only where it can prune */
                     const double R = sqrt(best / lo) * (1 + 1e-9) + L;
-                    ql = nq && R <= nreach ? (double)nq[cell[i]] : cfpo_dens_qbound_box(qlow, x - R, y - R, x + R, y + R);
+                    ql = nq && R <= nreach ? (double)nq[cell[i]]
+                                           : cfpo_dens_qbound_box_finer(qlow, x - R, y - R, x + R, y + R, CFPO_DENS_NN_FINER);
                     if (ql < lo) ql = lo;
                     qlbest = best;
                     if (k > 0 && reach * reach * ql >= best * (1 + 1e-9)) break;

@@ -30,6 +30,14 @@ int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, d
  * (the same result: the search's minimum is exact whatever bound holds).
  * Zero-initialised; cfpo_dens_nn_near_free releases it. */
 #define CFPO_DENS_NN_NEAR 4
+/* The pyramid levels below the query's own that the search reads its
+ * bounds from (cfpo_dens_qbound_box_finer): a box's 2 x 2 coarse texels
+ * reach up to twice its side past it, into sparser ground than the reach
+ * meets. At 4,096 points on the ramp 1:256 that sent a third of the points
+ * on to ring 3; reading two levels finer (up to 5 x 5 texels) halves the
+ * search's instructions there, the same minimum (results
+ * 2026-12-01-dens23). */
+#define CFPO_DENS_NN_FINER 2
 typedef struct {
     long long g; /* the grid it is for (0: none) */
     const cfpo_dens_qbound *qlow;

@@ -102,8 +102,9 @@ static int ranges(double lo, double hi, int64_t n, int64_t r[2][2])
 }
 
 /* The max (min) over pixels [xa, xz] x [ya, yz] of level 0: the lowest
- * level where each axis's range spans at most two texels. */
-static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya, int64_t yz)
+ * level where each axis's range spans at most two texels, `finer` levels
+ * below it (at most 2^finer + 1 texels an axis). */
+static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya, int64_t yz, int finer)
 {
     /* (z >> l) - (a >> l) <= 1 needs z - a < 2^(l + 1), so no level
      * below floor(log2(z - a)) does: the search starts there (the same
@@ -112,6 +113,7 @@ static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya
     int l = span > 0 ? 63 - __builtin_clzll((unsigned long long)span) : 0;
     if (l > b->levels - 1) l = b->levels - 1;
     while (l + 1 < b->levels && ((xz >> l) - (xa >> l) > 1 || (yz >> l) - (ya >> l) > 1)) l++;
+    l = l > finer ? l - finer : 0;
     double m = b->lowest ? INFINITY : 0;
     for (int64_t j = ya >> l; j <= yz >> l; j++)
         for (int64_t i = xa >> l; i <= xz >> l; i++) {
@@ -123,13 +125,18 @@ static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya
 
 double cfpo_dens_qbound_box(const cfpo_dens_qbound *b, double x0, double y0, double x1, double y1)
 {
+    return cfpo_dens_qbound_box_finer(b, x0, y0, x1, y1, 0);
+}
+
+double cfpo_dens_qbound_box_finer(const cfpo_dens_qbound *b, double x0, double y0, double x1, double y1, int finer)
+{
     if (b->flat > 0) return b->flat;
     int64_t rx[2][2], ry[2][2];
     const int nx = ranges(x0, x1, b->w[0], rx), ny = ranges(y0, y1, b->h[0], ry);
     double m = b->lowest ? INFINITY : 0;
     for (int j = 0; j < ny; j++)
         for (int i = 0; i < nx; i++) {
-            const double v = rect(b, rx[i][0], rx[i][1], ry[j][0], ry[j][1]);
+            const double v = rect(b, rx[i][0], rx[i][1], ry[j][0], ry[j][1], finer);
             if (beats(b, v, m)) m = v;
         }
     return m;
