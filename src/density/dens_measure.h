@@ -34,7 +34,7 @@ int cfpo_dens_nn(const cfpo_density *d, const double *xy, size_t n, double *m, d
  * bounds from (cfpo_dens_qbound_box_finer): a box's 2 x 2 coarse texels
  * reach up to twice its side past it, into sparser ground than the reach
  * meets. At 4,096 points on the ramp 1:256 that sent a third of the points
- * on to ring 3; reading two levels finer (up to 5 x 5 texels) halves the
+ * on to ring 3; reading two levels finer (at most 9 x 9 texels) halves the
  * search's instructions there, the same minimum (results
  * 2026-12-01-dens23). */
 #define CFPO_DENS_NN_FINER 2

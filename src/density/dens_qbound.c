@@ -103,7 +103,7 @@ static int ranges(double lo, double hi, int64_t n, int64_t r[2][2])
 
 /* The max (min) over pixels [xa, xz] x [ya, yz] of level 0: the lowest
  * level where each axis's range spans at most two texels, `finer` levels
- * below it (at most 2^finer + 1 texels an axis). */
+ * below it (at most 2^(finer + 1) + 1 texels an axis). */
 static double rect(const cfpo_dens_qbound *b, int64_t xa, int64_t xz, int64_t ya, int64_t yz, int finer)
 {
     /* (z >> l) - (a >> l) <= 1 needs z - a < 2^(l + 1), so no level

@@ -51,8 +51,8 @@ int cfpo_dens_qbound_build_min(cfpo_dens_qbound *b, const cfpo_density *d);
  * y1] fall in (x0 <= x1, y0 <= y1, any reals: the box is taken modulo 1);
  * for a pyramid of minima, at most the smallest non-zero q there. */
 double cfpo_dens_qbound_box(const cfpo_dens_qbound *b, double x0, double y0, double x1, double y1);
-/* The same read from `finer` levels further down the pyramid (up to
- * (2^finer + 1)^2 texels a range instead of 2 x 2): a tighter bound, for
+/* The same read from `finer` levels further down the pyramid (at most
+ * (2^(finer + 1) + 1)^2 texels a range instead of 2 x 2): a tighter bound, for
  * a caller whose work it prunes outweighs the reads. */
 double cfpo_dens_qbound_box_finer(const cfpo_dens_qbound *b, double x0, double y0, double x1, double y1, int finer);
 
