@@ -191,10 +191,17 @@ static void brute_measure(const cfpo_density *d, const double *xy, size_t n, dou
     double b0, b1;
     if (near) {
         cfpo_dens_qbound qlow;
-        CHECK(cfpo_dens_qbound_build_min(&qlow, d) == 0, "%s: out of memory", what);
-        cfpo_dens_nn_q(d, &qlow, near, xy, NULL, n, m, &b0, &b1, 0);
+        if (cfpo_dens_qbound_build_min(&qlow, d) != 0) {
+            CHECK(0, "%s: out of memory", what);
+            return;
+        }
+        const int rc = cfpo_dens_nn_q(d, &qlow, near, xy, NULL, n, m, &b0, &b1, 0);
         cfpo_dens_nn_near_free(near);
         cfpo_dens_qbound_free(&qlow);
+        if (rc != 0) {
+            CHECK(0, "%s: the measure ran out of memory", what);
+            return;
+        }
     } else {
         cfpo_dens_nn(d, xy, n, m, &b0, &b1);
     }
