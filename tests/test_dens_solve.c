@@ -265,7 +265,7 @@ static void routes(const char *spec, int count)
             n++;
             { /* the engine's fall-back in a steep block: the near solve's polygons, then all */
                 int fall;
-                const int near = cfpo_policy_density_near(20, 1, 2, DENS_CELLS, &fall);
+                const int near = cfpo_policy_density_near(21, 1, 2, DENS_CELLS, &fall); /* an iteration that falls back */
                 public_differs += split_public_differs(yx, yy, yr, k, near, fall, S, &d, qhi[1], ox, oy, floor_f, scratch);
             }
             floor_f = ref ? ref_f * (q == 0 ? 0.5 : 1 - 1e-9) : -1;

@@ -399,8 +399,34 @@ static void test_unprint(void)
           "the removal's sweep takes another grid or colouring than its iteration's");
 }
 
+/* The density engine's near solve (policy.h): a block flat within
+ * CFPO_POLICY_DENSITY_NEAR_FLAT never falls back; a steeper one takes the
+ * same near polygons in every iteration and falls back to all of them in
+ * every iteration of the first group of CFPO_POLICY_DENSITY_FALL_EVERY
+ * and in the first iteration of each later group only (5, 9, ...: the
+ * grid's new offsets), so its solve in a group's later iterations is the
+ * first part of its solve in the group's first, which the skip's
+ * exactness rests on. */
+static void test_density_near(void)
+{
+    int bad = 0, falls = 0;
+    for (int k = 1; k <= 64; k++) {
+        int fs = -1, ff = -1;
+        const int cs = cfpo_policy_density_near(k, 0.5, 0.5 * 1.21, 10, &fs);
+        const int cf = cfpo_policy_density_near(k, 0.5, 0.5 * 1.19, 10, &ff);
+        bad += cs != 2 || fs != (k <= 4 || (k - 1) % 4 == 0 ? 10 : 0);
+        bad += ff != 0 || cf != (k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1);
+        falls += fs > 0;
+    }
+    int fs;
+    bad += cfpo_policy_density_near(1, 1, 3, 1, &fs) != 1 || fs != 1; /* never more polygons than asked */
+    CHECK(bad == 0 && falls == 19, "density near solve: %d wrong answers, %d fall-back iterations of 64 (19 expected)",
+          bad, falls);
+}
+
 int main(void)
 {
+    test_density_near();
     test_unprint();
     test_shift_hyperuniform();
     test_schedule_table();

@@ -198,6 +198,9 @@ static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
  * "Density"); between moves the unchanged cells are skipped. */
 static void grid_offset(const cfpo_dens_engine *E, int k, double *sx, double *sy)
 {
+    /* the steep blocks' fall-back runs when the offset is new (policy.h):
+     * the skip's exactness rests on the two rhythms being one */
+    _Static_assert(DENS_SHIFT_EVERY == CFPO_POLICY_DENSITY_FALL_EVERY, "the fall-back's rhythm is the grid's");
     const uint64_t grp = (uint64_t)((k - 1) / DENS_SHIFT_EVERY);
     *sx = cfpo_rand01(E->o.seed, 0xD5E1ull, grp) * E->L;
     *sy = cfpo_rand01(E->o.seed, 0xD5E2ull, grp) * E->L;

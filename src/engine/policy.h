@@ -147,33 +147,47 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * In a steeper block, the two nearest's polygons first, and the `all`
  * nearest's (DENS_CELLS, ten, as LocalCFPO) when those give no move:
  * across a steep change the nearest polygons can miss the spots a point
- * should reach. The accept rule is the same for every solve, so delta_min
+ * should reach. That fall-back runs in every iteration of the first group
+ * of CFPO_POLICY_DENSITY_FALL_EVERY (iterations 1-4, the start's largest
+ * moves: without it the shipped image at 65,536 points took 4-8
+ * iterations to (0.85, 0.90) instead of 3) and after that in the first
+ * iteration of each group (the grid's new offset, when every cell is
+ * solved). The accept rule is the same for every solve, so delta_min
  * never falls. A pure function of the block and the iteration.
  *
- * Since 2026-12-01 (dens22, issue 42). Until then the uniform near solve
- * ran only in blocks flat within 2%; blocks flat within 2-20% took the two
- * polygons in every iteration and fell back to five (ten until
- * 2026-12-01) when those gave no move, and steeper blocks searched all
- * ten. That cost an iteration at contrast 1:256 2.04x a flat density's at
- * 16,384 points and 1.78x at 65,536 (native seconds, one thread,
- * iterations 3-22, medians of three seeds; the issue asks 1.5x); this rule
- * costs 1.57x and 1.46x, and over whole runs to their stop 1.49x and
- * 1.47x. Its price, converged at 65,536 points on six densities:
- * delta_avg 0.0003-0.0011 lower (about 0.0007), delta_min within -0.014 /
- * +0.016, the count fidelity the same (results 2026-12-01-dens22,
+ * The steep block's solve in the other iterations of a group is the first
+ * part of its solve in the group's first: the same two polygons, the same
+ * relaxed spots and accept checks, and only where those give no move does
+ * the first iteration go on to the ten. So a cell that moved nothing in
+ * any iteration of the group moves nothing when solved again in a later
+ * one, and the engine's skip of unchanged cells (and a resume, which
+ * solves every cell in its first iteration) stays exact.
+ *
+ * Since 2026-12-01 (dens22, issue 42) the blocks flat within 20% take the
+ * uniform near solve; until then that ran only in blocks flat within 2%,
+ * blocks flat within 2-20% took the two polygons in every iteration and
+ * fell back to five (ten until 2026-12-01), and steeper blocks searched
+ * all ten (the price: about 0.0007 of converged delta_avg, results
+ * 2026-12-01-dens22). Since 2026-12-02 (dens25) the steep blocks' fall-back runs in
+ * the first iteration of each group only, where it ran in every
+ * iteration: at 4,096 points an iteration on the ramp 1:256 costs 1.45x a
+ * flat density's instructions, was 1.61x (results 2026-12-02-dens25,
  * docs/tried.md). */
 #define CFPO_POLICY_DENSITY_NEAR_CELLS 2
 #define CFPO_POLICY_DENSITY_NEAR_FLAT 1.2
+#define CFPO_POLICY_DENSITY_FALL_EVERY 4
 /* Returns the polygons of the near solve in a block with smallest q qlo
- * and largest qhi in iteration k, and in *fall the polygons a point it
- * gives no move is solved over (0: none; `all` otherwise). */
+ * and largest qhi in iteration k (1, 2, ...), and in *fall the polygons a
+ * point it gives no move is solved over (0: none; `all` in iterations 1
+ * to CFPO_POLICY_DENSITY_FALL_EVERY and in the first iteration of each
+ * later group of that many). */
 static inline int cfpo_policy_density_near(int k, double qlo, double qhi, int all, int *fall)
 {
     if (qhi <= qlo * CFPO_POLICY_DENSITY_NEAR_FLAT) {
         *fall = 0;
         return k < CFPO_POLICY_NEAR_TWO_UNTIL ? 2 : 1;
     }
-    *fall = all;
+    *fall = k <= CFPO_POLICY_DENSITY_FALL_EVERY || (k - 1) % CFPO_POLICY_DENSITY_FALL_EVERY == 0 ? all : 0;
     return CFPO_POLICY_DENSITY_NEAR_CELLS < all ? CFPO_POLICY_DENSITY_NEAR_CELLS : all;
 }
 
