@@ -168,11 +168,12 @@ static inline int cfpo_policy_density_relax(int k, double w[3])
  * blocks flat within 2-20% took the two polygons in every iteration and
  * fell back to five (ten until 2026-12-01), and steeper blocks searched
  * all ten (the price: about 0.0007 of converged delta_avg, results
- * 2026-12-01-dens22). Since 2026-12-02 (dens25) the steep blocks' fall-back runs in
- * the first iteration of each group only, where it ran in every
- * iteration: at 4,096 points an iteration on the ramp 1:256 costs 1.45x a
- * flat density's instructions, was 1.61x (results 2026-12-02-dens25,
- * docs/tried.md). */
+ * 2026-12-01-dens22). Since 2026-12-02 (dens25) the steep blocks'
+ * fall-back runs as above, where it ran in every iteration: at 4,096
+ * points an iteration on the ramp 1:256 costs 1.456x a flat density's
+ * instructions (was 1.610x) and 1.69x its native seconds (was 1.89x),
+ * for about 0.0002 of the shipped image's converged delta_avg (results
+ * 2026-12-02-dens25, docs/tried.md). */
 #define CFPO_POLICY_DENSITY_NEAR_CELLS 2
 #define CFPO_POLICY_DENSITY_NEAR_FLAT 1.2
 #define CFPO_POLICY_DENSITY_FALL_EVERY 4
