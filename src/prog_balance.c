@@ -6,7 +6,7 @@
 #include <stdlib.h>
 
 #include "prog_buckets.h"
-#include "prog_insert.h"
+#include "prog_order.h"
 #include "rng.h"
 
 #define BALANCE_SALT 0x62616c616e6365ULL /* the draws of the rounding and the order */

@@ -17,7 +17,7 @@
  * `cand` uniform draws within its leaf cell (farthest from every point
  * placed so far, across cell borders too). Serial: the same bytes always.
  * Owns: the quadtree counts, the quotas and the slots' order.
- * May include: geom.h, rng.h, prog_buckets.h (layers 0-2), prog_insert.h. */
+ * May include: geom.h, rng.h, prog_buckets.h (layers 0-2), prog_order.h. */
 #ifndef CFPO_PROG_BALANCE_H
 #define CFPO_PROG_BALANCE_H
 
@@ -37,7 +37,7 @@ int cfpo_prog_balance_quota(const double *xy, int64_t m0, int64_t m1, int per_ce
 
 /* The level's points m0 .. m1 - 1 reordered so that every partial level
  * keeps the quadtree cells' proportions: first the greedy order
- * (prog_insert.h cfpo_prog_order), then each leaf cell's points (cells of
+ * (prog_order.h cfpo_prog_order), then each leaf cell's points (cells of
  * about per_cell of the m1 points) spread evenly through the level, the
  * j-th of a cell's c points at time (j + u) / c (u a seeded draw per
  * cell), the cell's own points in their greedy order. 0, or -1 with one

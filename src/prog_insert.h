@@ -3,8 +3,8 @@
  * sampling for distribution ray tracing", SIGGRAPH 1991) next to points
  * already placed, on the unit torus.
  * Owns: the candidates, the bucket grid that finds a candidate's nearest
- * point, the order of insertion (id order, serial: the same bytes always),
- * and the greedy farthest-point order of a level's points once optimised.
+ * point, the order of insertion (id order, serial: the same bytes always).
+ * The order of a level's points once optimised: prog_order.h.
  * May include: geom.h, rng.h (layers 0-1). */
 #ifndef CFPO_PROG_INSERT_H
 #define CFPO_PROG_INSERT_H
@@ -18,12 +18,5 @@
  * line in err (out of memory). */
 int cfpo_prog_insert(double *xy, int64_t m0, int64_t m1, int cand, uint64_t seed, uint64_t stream, char *err,
                      size_t errlen);
-
-/* Points m0 .. m1 - 1 of xy reordered in place, greedily: next the one
- * farthest from the first m0 and those already taken (ties: the lower
- * index). Exact. So every prefix between m0 and m1 is as far apart as a
- * greedy choice among the level's points makes it. 0, or -1 with one line
- * in err (out of memory). */
-int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen);
 
 #endif

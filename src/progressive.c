@@ -13,6 +13,7 @@
 #include "prog_colour.h"
 #include "prog_balance.h"
 #include "prog_insert.h"
+#include "prog_order.h"
 #include "prog_measure.h"
 #include "rng.h"
 #include "run_loop.h"
@@ -21,6 +22,11 @@
 #define PROG_SALT 0x9e3779b97f4a7c15ULL /* level seeds: seed ^ mix(level + salt) */
 #define BALANCE_SALT 0x42414c414e4345ULL /* ... ^ mix(balance tag + this) with the balance on */
 #define BALANCE_TAG_MAX 1000000          /* the largest leaf size a resume's message looks for */
+/* The tag of the paced order (the default with the balance on) has this
+ * bit too; without it, an even tag 2 C is the greedy order that versions
+ * before the paced order used (its checkpoints are refused: their earlier
+ * levels are in that order) */
+#define PACED_TAG (1ULL << 40)
 
 int cfpo_prog_balance_of(const cfpo_prog_options *p)
 {
@@ -39,7 +45,7 @@ static uint64_t level_seed_tag(uint64_t seed, int k, uint64_t tag)
 static uint64_t balance_tag(const cfpo_prog_options *p)
 {
     const int C = cfpo_prog_balance_of(p);
-    return C > 0 ? 2 * (uint64_t)C + (p->balance_order ? 1 : 0) : 0;
+    return C > 0 ? 2 * (uint64_t)C + (p->balance_order ? 1 : PACED_TAG) : 0;
 }
 
 uint64_t cfpo_prog_level_seed(uint64_t seed, int k, const cfpo_prog_options *p)
@@ -169,8 +175,12 @@ static int remeasure(const double *xy, int K, const cfpo_options *o, cfpo_prog_l
 /* The balance setting of a tag, in the command's words. */
 static void tag_words(uint64_t tag, char *s, size_t len)
 {
+    const unsigned long long C = (unsigned long long)((tag & ~PACED_TAG) / 2);
     if (!tag) snprintf(s, len, "--level-balance 0");
-    else snprintf(s, len, "--level-balance %llu%s", (unsigned long long)(tag / 2), tag & 1 ? " --level-balance-order" : "");
+    else if (tag & PACED_TAG) snprintf(s, len, "--level-balance %llu", C);
+    else if (tag & 1) snprintf(s, len, "--level-balance %llu --level-balance-order", C);
+    else snprintf(s, len, "--level-balance %llu by an earlier version, whose greedy order of the levels this one no "
+                  "longer makes", C);
 }
 
 /* A checkpoint of level k >= 1 whose seed is level k's under another
@@ -181,13 +191,25 @@ static int check_balance(const char *path, uint64_t ck_seed, uint64_t seed, int 
 {
     const uint64_t want = balance_tag(p);
     if (k == 0 || ck_seed == level_seed_tag(seed, k, want)) return 0;
-    for (uint64_t tag = 0; tag <= 2 * (uint64_t)BALANCE_TAG_MAX + 1; tag = tag ? tag + 1 : 2) {
-        if (tag == want || ck_seed != level_seed_tag(seed, k, tag)) continue;
-        char had[64], now[64];
-        tag_words(tag, had, sizeof had);
+    for (uint64_t t = 0; t <= 2 * (uint64_t)BALANCE_TAG_MAX + 1; t = t ? t + 1 : 2)
+        for (int paced = 0; paced < 1 + !(t & 1) && t; paced++) {
+            const uint64_t tag = t + (paced ? PACED_TAG : 0);
+            if (tag == want || ck_seed != level_seed_tag(seed, k, tag)) continue;
+            char had[128], now[128];
+            tag_words(tag, had, sizeof had);
+            tag_words(want, now, sizeof now);
+            if (!(tag & 1) && !(tag & PACED_TAG))
+                snprintf(err, errlen, "--resume %s: the checkpoint was written with %s; start the run again", path, had);
+            else
+                snprintf(err, errlen, "--resume %s: the checkpoint was written with %s, this run has %s; resume with "
+                         "the checkpoint's setting", path, had, now);
+            return -1;
+        }
+    if (want && ck_seed == level_seed_tag(seed, k, 0)) {
+        char now[128];
         tag_words(want, now, sizeof now);
-        snprintf(err, errlen, "--resume %s: the checkpoint was written with %s, this run has %s; resume with the "
-                 "checkpoint's setting", path, had, now);
+        snprintf(err, errlen, "--resume %s: the checkpoint was written with --level-balance 0, this run has %s; resume "
+                 "with the checkpoint's setting", path, now);
         return -1;
     }
     return 0;
@@ -236,13 +258,16 @@ static int hold(int64_t n, const double *xy, const cfpo_options *o, cfpo_run_eng
     return 0;
 }
 
-/* Level k's points m0 .. m1 - 1 in their prefix order: greedy, or with
- * balance_order the cells' proportions kept (prog_balance.h). */
+/* Level k's points m0 .. m1 - 1 in their prefix order: with the balance
+ * on, the greedy order paced by the quadtree (prog_order.h), or with
+ * balance_order the cells' proportions kept by time (prog_balance.h);
+ * with it off, greedy. */
 static int order_level(double *xy, int64_t m0, int64_t m1, const cfpo_options *o, const cfpo_prog_options *p, int k,
                        char *err, size_t errlen)
 {
     const int C = cfpo_prog_balance_of(p);
     if (C > 0 && p->balance_order) return cfpo_prog_order_balanced(xy, m0, m1, C, o->seed, (uint64_t)k, err, errlen);
+    if (C > 0) return cfpo_prog_order_paced(xy, m0, m1, CFPO_PROG_ORDER_CELL, CFPO_PROG_ORDER_TOL, err, errlen);
     return cfpo_prog_order(xy, m0, m1, err, errlen);
 }
 

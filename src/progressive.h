@@ -15,7 +15,7 @@
  * With joint.sweeps > 0 (progressive levels only) the bounded joint move
  * of prog_joint.h follows the last level: every point may move while no
  * dyadic prefix's delta_min falls; then each level's points are put in
- * greedy order again and every level measured again. With polish > 0 the
+ * their prefix order again and every level measured again. With polish > 0 the
  * full set is polished last by the same move with the full set's score,
  * the smaller prefixes held at or above a floor (prog_joint.h floor).
  * With classes (K equal groups) the default colours instead: one plain CFPO
@@ -24,7 +24,7 @@
  * (prog_joint.h classes: every class's delta_min in Delta(N/K) and the
  * union's in Delta(n) never fall); the K LEVEL records are then the
  * prefixes of the class order (level 0 holds the CFPO run's iterations).
- * May include: engine.h, run_loop.h, prog_insert.h, prog_balance.h, prog_joint.h, prog_colour.h (layers 0-4). */
+ * May include: engine.h, run_loop.h, prog_insert.h, prog_order.h, prog_balance.h, prog_joint.h, prog_colour.h (layers 0-4). */
 #ifndef CFPO_PROGRESSIVE_H
 #define CFPO_PROGRESSIVE_H
 
@@ -69,9 +69,10 @@ typedef struct {
                          about C of the prefix's points gets its share; > 0: C = this; 0, the
                          default: C = CFPO_PROG_DEFAULT_BALANCE; < 0: off (best-candidate insertion
                          anywhere, prog_insert.h). Never with classes (cfpo_prog_balance_of) */
-    int balance_order; /* with the balance on: each level's points ordered so that every partial level
-                          keeps the cells' proportions (prog_balance.h cfpo_prog_order_balanced);
-                          0: greedy */
+    int balance_order; /* with the balance on: each level's points spread through it by time, each
+                          cell's evenly (prog_balance.h cfpo_prog_order_balanced); 0: the farthest
+                          first, paced by the quadtree (prog_order.h cfpo_prog_order_paced); with
+                          the balance off, the greedy order */
     int level_iter;   /* each level's iteration cap (the last's too; with the caller's max_iter): > 0 this;
                          0 the default: CFPO_PROG_DEFAULT_LEVEL_ITER without a joint phase and without
                          classes (a level's prefix is within about 0.001 of its end by then), none

@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "prog_balance.h"
+#include "prog_order.h"
 #include "prog_insert.h"
 #include "rng.h"
 #include "test_spread.h"

@@ -1,5 +1,6 @@
 /* test_prog_order.c - the start and the order of a progressive level's
- * points (src/prog_insert.c) against brute force on the torus:
+ * points (src/prog_insert.c, src/prog_order.c) against brute force on the
+ * torus:
  *  - cfpo_prog_insert: each new point is the best of its candidates (its
  *    distance to every point before it, by brute force, is at least every
  *    candidate's), the first m0 points untouched, the same bytes twice;
@@ -7,12 +8,19 @@
  *    points, the first m0 untouched, and the order is exactly the brute-force
  *    greedy farthest-point order (next: the farthest from all before it,
  *    ties to the lower index), on uniform sets, a jittered grid with exact
- *    ties, and with m0 = 0. A shuffled order fails the same check. */
+ *    ties, and with m0 = 0. A shuffled order fails the same check;
+ *  - cfpo_prog_order_paced: exactly the brute-force paced order (next: the
+ *    farthest point none of whose quadtree cells has given floor((t + 1)
+ *    c / q) + tol of its c points after t picks), and, checked on the
+ *    output alone, every cell within that allowance after every pick; the
+ *    greedy order breaks the allowance on the same set; a tol below 1 is
+ *    refused. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "prog_insert.h"
+#include "prog_order.h"
 #include "rng.h"
 #include "testutil.h"
 
@@ -83,6 +91,89 @@ static void check_order(const double *in, int64_t m0, int64_t m1, const char *wh
     free(b);
 }
 
+/* The cell at level l (1 .. depth) of a point, over all levels. */
+static int64_t cell_at(const double *p, int depth, int l)
+{
+    const int64_t G = (int64_t)1 << l;
+    int64_t x = (int64_t)(p[0] * (double)((int64_t)1 << depth)), y = (int64_t)(p[1] * (double)((int64_t)1 << depth));
+    const int64_t F = (int64_t)1 << depth;
+    x = x < 0 ? 0 : x >= F ? F - 1 : x;
+    y = y < 0 ? 0 : y >= F ? F - 1 : y;
+    return (G * G - 1) / 3 - 1 + (y >> (depth - l)) * G + (x >> (depth - l));
+}
+
+/* Brute force of the paced order of in[m0..m1) into out (depth, tol). */
+static void paced(const double *in, int64_t m0, int64_t m1, int depth, int tol, double *out)
+{
+    memcpy(out, in, 2 * (size_t)m0 * sizeof *out);
+    const int64_t q = m1 - m0, cells = (((int64_t)1 << (2 * (depth + 1))) - 1) / 3;
+    unsigned char *used = calloc((size_t)q, 1);
+    double *nd = malloc((size_t)q * sizeof *nd);
+    int64_t *count = calloc((size_t)cells + 1, sizeof *count), *took = calloc((size_t)cells + 1, sizeof *took);
+    for (int64_t j = 0; j < q; j++) {
+        nd[j] = near2(in, m0, in + 2 * (m0 + j));
+        for (int l = 1; l <= depth; l++) count[cell_at(in + 2 * (m0 + j), depth, l)]++;
+    }
+    for (int64_t t = 0; t < q; t++) {
+        int64_t best = -1;
+        for (int64_t j = 0; j < q; j++) {
+            if (used[j] || (best >= 0 && !(nd[j] > nd[best]))) continue;
+            int ok = 1;
+            for (int l = 1; l <= depth && ok; l++) {
+                const int64_t c = cell_at(in + 2 * (m0 + j), depth, l);
+                ok = took[c] < (t + 1) * count[c] / q + tol;
+            }
+            if (ok) best = j;
+        }
+        used[best] = 1;
+        for (int l = 1; l <= depth; l++) took[cell_at(in + 2 * (m0 + best), depth, l)]++;
+        out[2 * (m0 + t)] = in[2 * (m0 + best)];
+        out[2 * (m0 + t) + 1] = in[2 * (m0 + best) + 1];
+        for (int64_t j = 0; j < q; j++) {
+            const double d = d2t(in + 2 * (m0 + j), in + 2 * (m0 + best));
+            if (d < nd[j]) nd[j] = d;
+        }
+    }
+    free(used);
+    free(nd);
+    free(count);
+    free(took);
+}
+
+/* Whether every cell of the level's points a[m0..m1) kept within its
+ * allowance after every pick. */
+static int within_allowance(const double *a, int64_t m0, int64_t m1, int depth, int tol)
+{
+    const int64_t q = m1 - m0, cells = (((int64_t)1 << (2 * (depth + 1))) - 1) / 3;
+    int64_t *count = calloc((size_t)cells + 1, sizeof *count), *took = calloc((size_t)cells + 1, sizeof *took);
+    int ok = 1;
+    for (int64_t j = 0; j < q; j++)
+        for (int l = 1; l <= depth; l++) count[cell_at(a + 2 * (m0 + j), depth, l)]++;
+    for (int64_t t = 0; t < q && ok; t++)
+        for (int l = 1; l <= depth && ok; l++) {
+            const int64_t c = cell_at(a + 2 * (m0 + t), depth, l);
+            ok = ++took[c] <= (t + 1) * count[c] / q + tol;
+        }
+    free(count);
+    free(took);
+    return ok;
+}
+
+static void check_paced(const double *in, int64_t m0, int64_t m1, double per_cell, int tol, const char *what)
+{
+    double *a = malloc(2 * (size_t)m1 * sizeof *a), *b = malloc(2 * (size_t)m1 * sizeof *b);
+    char err[128];
+    const int depth = cfpo_prog_order_depth(m1, per_cell);
+    memcpy(a, in, 2 * (size_t)m1 * sizeof *a);
+    CHECK(cfpo_prog_order_paced(a, m0, m1, per_cell, tol, err, sizeof err) == 0, "%s: paced order failed: %s", what, err);
+    paced(in, m0, m1, depth, tol, b);
+    CHECK(memcmp(a, b, 2 * (size_t)m1 * sizeof *a) == 0, "%s: not the brute-force paced order (depth %d)", what, depth);
+    CHECK(within_allowance(a, m0, m1, depth, tol), "%s: a cell past its allowance", what);
+    CHECK(memcmp(a, in, 2 * (size_t)m0 * sizeof *a) == 0, "%s: the first m0 points changed", what);
+    free(a);
+    free(b);
+}
+
 int main(void)
 {
     char err[128];
@@ -133,6 +224,40 @@ int main(void)
         free(a);
         free(b);
         free(in);
+    }
+    /* the paced order against brute force, and its allowance */
+    {
+        const int64_t n = 1200;
+        double *in = malloc(2 * (size_t)n * sizeof *in), *g = malloc(2 * (size_t)n * sizeof *g);
+        uniform(in, n, 13);
+        CHECK(cfpo_prog_order_depth(1200, 2) == 4 && cfpo_prog_order_depth(7, 2) == 0, "paced: the quadtree's depth");
+        check_paced(in, 100, 1200, 2, 1, "paced, m0 = 100, leaves of 2, tol 1");
+        check_paced(in, 300, 1200, 8, 2, "paced, m0 = 300, leaves of 8, tol 2");
+        check_paced(in, 0, 600, 2, 1, "paced, m0 = 0");
+        check_paced(in, 0, 7, 2, 1, "paced, no quadtree (the greedy order)");
+        {
+            double *big = malloc(2 * 6000 * sizeof *big);
+            uniform(big, 6000, 17);
+            check_paced(big, 1500, 6000, 2, 1, "paced, 6,000 points after 1,500");
+            /* a prefix that leaves one quarter empty: that quarter's points
+             * stay far while its allowance holds them back, and the picks
+             * beside it must still lower their distances */
+            int64_t m = 0;
+            for (int64_t i = 0; i < 1500; i++)
+                if (!(big[2 * i] < 0.5 && big[2 * i + 1] < 0.5)) big[2 * m] = big[2 * i], big[2 * m + 1] = big[2 * i + 1], m++;
+            memmove(big + 2 * m, big + 2 * 1500, 2 * 4500 * sizeof *big);
+            check_paced(big, m, m + 4500, 2, 1, "paced, a prefix with an empty quarter");
+            check_paced(big, m, m + 4500, 8, 1, "paced, a prefix with an empty quarter, leaves of 8");
+            free(big);
+        }
+        /* the allowance can fail: the greedy order breaks it here */
+        memcpy(g, in, 2 * (size_t)n * sizeof *g);
+        CHECK(cfpo_prog_order(g, 100, 1200, err, sizeof err) == 0, "greedy: %s", err);
+        CHECK(!within_allowance(g, 100, 1200, 3, 1), "the greedy order kept the paced allowance");
+        CHECK(cfpo_prog_order_paced(g, 100, 1200, 2, 0, err, sizeof err) != 0, "paced: tol 0 accepted");
+        CHECK(cfpo_prog_order_paced(g, 100, 1200, 0, 1, err, sizeof err) != 0, "paced: per_cell 0 accepted");
+        free(in);
+        free(g);
     }
     return test_report(passed_, failed_);
 }

@@ -259,6 +259,13 @@ expect 1 "written with --level-balance 16, this run has --level-balance 0;" -n 4
   --resume ckh16.bin -o x.npy
 expect 1 "written with --level-balance 16, this run has --level-balance 32;" -n 4096 -s 3 --progressive --level-balance 32 \
   --resume ckh16.bin -o x.npy
+# a checkpoint of an earlier version's default, whose levels are in the
+# greedy order (tests/data/prog-greedy-256.bin: `cfpo -n 256 -s 3 -t 1
+# --progressive --checkpoint` before the paced order), refused in one line
+expect 1 "by an earlier version, whose greedy order of the levels this one no longer makes; start the run again" \
+  -n 512 -s 3 --progressive --resume "$HERE/data/prog-greedy-256.bin" -o x.npy
+expect 1 "by an earlier version" -n 512 -s 3 --progressive --level-balance 0 --resume "$HERE/data/prog-greedy-256.bin" \
+  -o x.npy
 expect 1 "this run has --level-balance 16 --level-balance-order;" -n 4096 -s 3 --progressive --level-balance-order \
   --resume ckh16.bin -o x.npy
 expect 1 "written with --level-balance 16, this run has --level-balance 0;" -n 16384 -s 2 --progressive --level-balance 0 \
