@@ -42,6 +42,48 @@ static hitem hpop(hitem *h, int64_t *n)
     return top;
 }
 
+/* Every untaken new point j (xy[m0 + j]) nearer to (px, py) than d[j],
+ * among those within r of it (r infinite: all): d[j] lowered, then
+ * lowered(j, ctx). */
+typedef void (*lowered_fn)(int64_t j, void *ctx);
+static void lower_near(const prog_buckets *Q, const double *xy, int64_t m0, double px, double py, double r, double *d,
+                       const unsigned char *taken, lowered_fn lowered, void *ctx)
+{
+    const int64_t reach = isinf(r) ? Q->gs : (int64_t)ceil(r / Q->cs) + 1;
+    int64_t x0, y0;
+    const int64_t span = prog_buckets_window(Q, prog_buckets_of(Q, px, py), reach, &x0, &y0);
+    for (int64_t oy = 0; oy < span; oy++)
+        for (int64_t ox = 0; ox < span; ox++)
+            for (int64_t k = prog_buckets_first(Q, x0 + ox, y0 + oy); k >= 0; k = Q->next[k]) {
+                const int64_t j = k - m0;
+                if (taken[j]) continue;
+                const double d2 = prog_torus_d2(px, py, xy[2 * k], xy[2 * k + 1]);
+                if (d2 >= d[j]) continue;
+                d[j] = d2;
+                lowered(j, ctx);
+            }
+}
+
+/* The greedy order's heap: a lowered point's new entry, the heap first
+ * compacted to one live entry per untaken point when it is full. */
+typedef struct {
+    hitem *h;
+    int64_t *hn, hcap, q;
+    const double *d;
+    const unsigned char *taken;
+} heap_room;
+
+static void heap_lowered(int64_t j, void *ctx)
+{
+    heap_room *R = ctx;
+    if (*R->hn == R->hcap) {
+        *R->hn = 0;
+        for (int64_t i = 0; i < R->q; i++)
+            if (!R->taken[i]) hpush(R->h, R->hn, (hitem){R->d[i], i});
+    }
+    hpush(R->h, R->hn, (hitem){R->d[j], j});
+}
+
 int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen)
 {
     const int64_t q = m1 - m0;
@@ -74,26 +116,8 @@ int cfpo_prog_order(double *xy, int64_t m0, int64_t m1, char *err, size_t errlen
         out[2 * t + 1] = py;
         /* the untaken points nearer to p than to the set so far: within the
          * largest such distance, sqrt(top.d), of p */
-        const double r = sqrt(top.d);
-        const int64_t reach = isinf(r) ? Q.gs : (int64_t)ceil(r / Q.cs) + 1;
-        int64_t x0, y0;
-        const int64_t span = prog_buckets_window(&Q, prog_buckets_of(&Q, px, py), reach, &x0, &y0);
-        for (int64_t oy = 0; oy < span; oy++)
-            for (int64_t ox = 0; ox < span; ox++) {
-                for (int64_t k = prog_buckets_first(&Q, x0 + ox, y0 + oy); k >= 0; k = Q.next[k]) {
-                    const int64_t j = k - m0;
-                    if (taken[j]) continue;
-                    const double d2 = prog_torus_d2(px, py, xy[2 * k], xy[2 * k + 1]);
-                    if (d2 >= d[j]) continue;
-                    d[j] = d2;
-                    if (hn == hcap) { /* compact: one live entry per untaken point */
-                        hn = 0;
-                        for (int64_t i = 0; i < q; i++)
-                            if (!taken[i]) hpush(h, &hn, (hitem){d[i], i});
-                    }
-                    hpush(h, &hn, (hitem){d2, j});
-                }
-            }
+        heap_room room = {h, &hn, hcap, q, d, taken};
+        lower_near(&Q, xy, m0, px, py, sqrt(top.d), d, taken, heap_lowered, &room);
     }
     for (int64_t t = 0; t < 2 * q; t++) xy[2 * m0 + t] = out[t];
     rc = 0;
@@ -267,6 +291,22 @@ static int tour_init(tour *T, const double *xy, int64_t m0, int64_t q, int depth
     return 0;
 }
 
+/* The tournament's side of a lowered distance: the point's new entry in
+ * its leaf's heap, and the nodes above it again when it was its leaf's best. */
+typedef struct {
+    tour *T;
+    const double *d;
+    const unsigned char *taken;
+} tour_ctx;
+
+static void tour_lowered(int64_t j, void *ctx)
+{
+    tour_ctx *c = ctx;
+    tour *T = c->T;
+    leaf_push(T, j, c->d, c->taken);
+    if (T->bj[node_of(T->depth, T->leaf[j])] == j) climb(T, T->depth, T->leaf[j], c->d, c->taken, 1);
+}
+
 /* The paced order (prog_order.h) of points m0 .. m1 - 1, depth >= 1. */
 static int order_paced(double *xy, int64_t m0, int64_t m1, int depth, int tol, char *err, size_t errlen)
 {
@@ -305,21 +345,8 @@ static int order_paced(double *xy, int64_t m0, int64_t m1, int depth, int tol, c
         /* the untaken points nearer to p than to the set so far: within the
          * largest distance of the points left (held back or not) of p */
         if (T.fd[0] < 0) continue; /* none left */
-        const double r = sqrt(T.fd[0]);
-        const int64_t reach = isinf(r) ? Q.gs : (int64_t)ceil(r / Q.cs) + 1;
-        int64_t x0, y0;
-        const int64_t span = prog_buckets_window(&Q, prog_buckets_of(&Q, px, py), reach, &x0, &y0);
-        for (int64_t oy = 0; oy < span; oy++)
-            for (int64_t ox = 0; ox < span; ox++)
-                for (int64_t k = prog_buckets_first(&Q, x0 + ox, y0 + oy); k >= 0; k = Q.next[k]) {
-                    const int64_t j = k - m0;
-                    if (taken[j]) continue;
-                    const double d2 = prog_torus_d2(px, py, xy[2 * k], xy[2 * k + 1]);
-                    if (d2 >= d[j]) continue;
-                    d[j] = d2;
-                    leaf_push(&T, j, d, taken);
-                    if (T.bj[node_of(depth, T.leaf[j])] == j) climb(&T, depth, T.leaf[j], d, taken, 1);
-                }
+        tour_ctx tc = {&T, d, taken};
+        lower_near(&Q, xy, m0, px, py, sqrt(T.fd[0]), d, taken, tour_lowered, &tc);
     }
     for (int64_t t = 0; t < 2 * q; t++) xy[2 * m0 + t] = out[t];
     rc = 0;
