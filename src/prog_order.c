@@ -139,19 +139,26 @@ done:
  * node keeps the best (d, j) below it, or none when the node (below the
  * root) has given its allowance: the root's best is the next pick. A pick,
  * a distance that falls at a leaf's best, or an allowance that grows
- * changes only the nodes from there to the root. */
+ * changes only the nodes from there to the root. A used-up node waits in
+ * a heap keyed by the step at which its allowance passes what it gave. */
 
 typedef struct {
     int depth;
     int64_t *leaf;        /* each new point's leaf, the Morton code of its (y, x) */
-    int64_t *allow, *took; /* per node */
+    int64_t q, t;         /* the level's new points; the step under way */
+    int tol;
+    int64_t *count, *took; /* per node: its new points; those given so far */
     double *bd;           /* per node: the best distance below it (-1: none) */
     int64_t *bj;          /* ... and its point */
     double *fd;           /* per node: the largest distance below it, allowances or not (-1: none):
                              at the root, how far a pick can lower a distance */
-    hitem *pool;          /* the leaves' heaps: leaf f's at pool + hs[f], hn[f] entries of hc[f] */
-    int64_t *hs, *hn, *hc, *ls, *lp; /* the leaves' points: lp[ls[f] .. ls[f + 1]) */
-    int64_t *at, *ev;     /* the allowances' steps: ev[at[t] .. at[t + 1]) the nodes of step t */
+    hitem *pool;          /* the leaves' heaps: leaf f's at pool + ls[f] + 2 f, hn[f] entries of its
+                             points' count + 2 */
+    int64_t *hn, *ls, *lp; /* the leaves' points: lp[ls[f] .. ls[f + 1]) */
+    hitem *wake;          /* the used-up nodes by the step their allowance passes what they gave
+                             (d = -that step, i = the node): a heap of nw */
+    int64_t nw;
+    unsigned char *asleep; /* per node: in wake */
 } tour;
 
 static int64_t node_of(int l, int64_t k) { return ((((int64_t)1 << (2 * l)) - 1) / 3) + k; }
@@ -166,8 +173,8 @@ static int64_t morton(int64_t y, int64_t x, int depth)
 
 static void tour_free(tour *T)
 {
-    free(T->leaf); free(T->allow); free(T->took); free(T->bd); free(T->bj); free(T->fd); free(T->pool);
-    free(T->hs); free(T->hn); free(T->hc); free(T->ls); free(T->lp); free(T->at); free(T->ev);
+    free(T->leaf); free(T->count); free(T->took); free(T->bd); free(T->bj); free(T->fd); free(T->pool);
+    free(T->hn); free(T->ls); free(T->lp); free(T->wake); free(T->asleep);
 }
 
 static int64_t axis_cell(double v, int64_t G)
@@ -180,7 +187,7 @@ static int64_t axis_cell(double v, int64_t G)
  * (*d, *j); *d = -1 when none. */
 static void leaf_best(tour *T, int64_t f, const double *d, const unsigned char *taken, double *bd, int64_t *bj)
 {
-    hitem *h = T->pool + T->hs[f];
+    hitem *h = T->pool + T->ls[f] + 2 * f;
     while (T->hn[f] > 0 && (taken[h[0].i] || h[0].d != d[h[0].i])) (void)hpop(h, &T->hn[f]);
     *bd = T->hn[f] > 0 ? h[0].d : -1;
     *bj = T->hn[f] > 0 ? h[0].i : -1;
@@ -200,7 +207,14 @@ static void recompute(tour *T, int l, int64_t k, const double *d, const unsigned
             if (T->bd[ch] > bd || (T->bd[ch] == bd && T->bd[ch] >= 0 && T->bj[ch] < bj)) bd = T->bd[ch], bj = T->bj[ch];
             if (T->fd[ch] > fd) fd = T->fd[ch];
         }
-    if (l > 0 && T->took[c] >= T->allow[c]) bd = -1, bj = -1; /* used up: no pick below it */
+    if (l > 0 && T->took[c] >= (T->t + 1) * T->count[c] / T->q + T->tol) { /* used up: no pick below it */
+        bd = -1, bj = -1;
+        if (!T->asleep[c]) { /* it wakes at the first step whose allowance passes what it gave */
+            T->asleep[c] = 1;
+            const int64_t a = T->took[c] - T->tol + 1;
+            hpush(T->wake, &T->nw, (hitem){-(double)((a * T->q + T->count[c] - 1) / T->count[c] - 1), c});
+        }
+    }
     T->bd[c] = bd;
     T->bj[c] = bj;
     T->fd[c] = fd;
@@ -225,8 +239,8 @@ static void climb(tour *T, int l, int64_t k, const double *d, const unsigned cha
 static void leaf_push(tour *T, int64_t j, const double *d, const unsigned char *taken)
 {
     const int64_t f = T->leaf[j];
-    hitem *h = T->pool + T->hs[f];
-    if (T->hn[f] == T->hc[f]) {
+    hitem *h = T->pool + T->ls[f] + 2 * f;
+    if (T->hn[f] == T->ls[f + 1] - T->ls[f] + 2) {
         T->hn[f] = 0;
         for (int64_t s = T->ls[f]; s < T->ls[f + 1]; s++)
             if (!taken[T->lp[s]] && T->lp[s] != j) hpush(h, &T->hn[f], (hitem){d[T->lp[s]], T->lp[s]});
@@ -237,56 +251,36 @@ static void leaf_push(tour *T, int64_t j, const double *d, const unsigned char *
 static int tour_init(tour *T, const double *xy, int64_t m0, int64_t q, int depth, int tol, const double *d)
 {
     const int64_t G = (int64_t)1 << depth, leaves = G * G, nodes = node_of(depth + 1, 0);
-    *T = (tour){.depth = depth};
+    *T = (tour){.depth = depth, .q = q, .tol = tol};
     T->leaf = malloc((size_t)q * sizeof *T->leaf);
-    T->allow = malloc((size_t)nodes * sizeof *T->allow);
+    T->count = calloc((size_t)nodes, sizeof *T->count);
     T->took = calloc((size_t)nodes, sizeof *T->took);
     T->bd = malloc((size_t)nodes * sizeof *T->bd);
     T->bj = malloc((size_t)nodes * sizeof *T->bj);
     T->fd = malloc((size_t)nodes * sizeof *T->fd);
-    T->hs = malloc((size_t)leaves * sizeof *T->hs);
     T->hn = calloc((size_t)leaves, sizeof *T->hn);
-    T->hc = calloc((size_t)leaves, sizeof *T->hc);
     T->ls = calloc((size_t)leaves + 1, sizeof *T->ls);
     T->lp = malloc((size_t)q * sizeof *T->lp);
-    T->at = calloc((size_t)q + 1, sizeof *T->at);
-    T->ev = malloc(((size_t)(q * depth) + 1) * sizeof *T->ev);
-    T->pool = malloc(((size_t)(4 * q + 8 * leaves)) * sizeof *T->pool);
-    if (!T->leaf || !T->allow || !T->took || !T->bd || !T->bj || !T->fd || !T->hs || !T->hn || !T->hc || !T->ls || !T->lp ||
-        !T->at || !T->ev || !T->pool)
+    T->wake = malloc((size_t)nodes * sizeof *T->wake);
+    T->asleep = calloc((size_t)nodes, 1);
+    T->pool = malloc(((size_t)(q + 2 * leaves)) * sizeof *T->pool);
+    if (!T->leaf || !T->count || !T->took || !T->bd || !T->bj || !T->fd || !T->hn || !T->ls || !T->lp ||
+        !T->wake || !T->asleep || !T->pool)
         return -1;
     for (int64_t j = 0; j < q; j++) {
         T->leaf[j] = morton(axis_cell(xy[2 * (m0 + j) + 1], G), axis_cell(xy[2 * (m0 + j)], G), depth);
         T->ls[T->leaf[j] + 1]++;
     }
     for (int64_t f = 0; f < leaves; f++) T->ls[f + 1] += T->ls[f];
-    int64_t *count = T->took; /* the nodes' counts first, in took's room */
+    int64_t *count = T->count;
     for (int64_t j = 0; j < q; j++) {
         T->lp[T->ls[T->leaf[j]] + T->hn[T->leaf[j]]++] = j; /* hn: a fill count for now */
         for (int l = 1; l <= depth; l++) count[node_of(l, T->leaf[j] >> (2 * (depth - l)))]++;
     }
-    for (int64_t f = 0, s = 0; f < leaves; f++) { /* each leaf's heap: room for 4 entries a point, and 8 */
-        T->hs[f] = s;
-        T->hc[f] = 4 * (T->ls[f + 1] - T->ls[f]) + 8;
-        s += T->hc[f];
-        T->hn[f] = 0;
-    }
-    T->allow[0] = INT64_MAX;
-    for (int64_t c = 1; c < nodes; c++) {
-        T->allow[c] = tol;
-        for (int64_t k = 1; k <= count[c]; k++) T->at[(k * q + count[c] - 1) / count[c]]++; /* step ceil(kq/c) - 1 */
-    }
-    for (int64_t t = 0; t < q; t++) T->at[t + 1] += T->at[t];
-    int64_t *pos = malloc((size_t)q * sizeof *pos); /* each step's next slot */
-    if (!pos) return -1;
-    memcpy(pos, T->at, (size_t)q * sizeof *pos);
-    for (int64_t c = 1; c < nodes; c++)
-        for (int64_t k = 1; k <= count[c]; k++) T->ev[pos[(k * q + count[c] - 1) / count[c] - 1]++] = c;
-    free(pos);
-    for (int64_t c = 0; c < nodes; c++) count[c] = 0;
+    for (int64_t f = 0; f < leaves; f++) T->hn[f] = 0;
     for (int64_t j = 0; j < q; j++) {
         const int64_t f = T->leaf[j];
-        hpush(T->pool + T->hs[f], &T->hn[f], (hitem){d[j], j});
+        hpush(T->pool + T->ls[f] + 2 * f, &T->hn[f], (hitem){d[j], j});
     }
     return 0;
 }
@@ -328,9 +322,10 @@ static int order_paced(double *xy, int64_t m0, int64_t m1, int depth, int tol, c
     for (int l = depth; l >= 0; l--)
         for (int64_t k = 0; k < ((int64_t)1 << (2 * l)); k++) recompute(&T, l, k, d, taken);
     for (int64_t t = 0; t < q; t++) {
-        for (int64_t e = T.at[t]; e < T.at[t + 1]; e++) { /* the allowances that grow at this step */
-            const int64_t c = T.ev[e];
-            if (T.took[c] < T.allow[c]++) continue; /* it was not used up: nothing changes */
+        T.t = t; /* a node's allowance at step t: floor((t + 1) c / q) + tol of its c points */
+        while (T.nw > 0 && -T.wake[0].d <= (double)t) { /* the used-up nodes whose allowance has grown */
+            const int64_t c = hpop(T.wake, &T.nw).i;
+            T.asleep[c] = 0;
             int l = 1;
             while (node_of(l + 1, 0) <= c) l++;
             climb(&T, l, c - node_of(l, 0), d, taken, 1);
