@@ -4,9 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
-#include "geom.h"
 #include "prog_buckets.h"
 
 typedef struct {

@@ -15,7 +15,7 @@
  * picks (results 2026-12-02-paced26).
  * Owns: the lazy max-heap of the greedy choice, the quadtree's
  * allowances and the points they hold back. Serial: the same bytes always.
- * May include: geom.h, prog_buckets.h (layers 0-2). */
+ * May include: prog_buckets.h (layer 2). */
 #ifndef CFPO_PROG_ORDER_H
 #define CFPO_PROG_ORDER_H
 
