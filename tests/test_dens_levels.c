@@ -147,7 +147,7 @@ static void tiers_bound(void)
     const double D = cfpo_delta_bound((double)n);
     for (int s = 0; s < 4000 && V.n > 1; s++) {
         const double x = urand(&seed), y = urand(&seed), q = q_at(&d, x, y);
-        const int l = cfpo_dens_levels_of(&V, x, y, q, D, 1.25);
+        const int l = cfpo_dens_levels_of(&V, x, y, q, D, 1.25, 1.1);
         if (!(q > 0)) {
             badl += l != 0;
             continue;
@@ -160,7 +160,7 @@ static void tiers_bound(void)
             const double Lf = 1.0 / (double)g;
             double t[CFPO_DENS_TIERS];
             const int nt = cfpo_dens_levels_tiers(&V, l + 1, c % g, c / g, t);
-            if (Lf >= 1.25 * D / q && cfpo_dens_levels_clear(t, nt, V.qmin, Lf, Lf, q, (1.25 * D) * (1.25 * D))) badl++;
+            if (Lf >= 1.25 * D / q && cfpo_dens_levels_clear(t, nt, V.qmin, Lf, Lf, q, (1.1 * D) * (1.1 * D))) badl++;
         }
     }
     CHECK(badl == 0 && pts > 1000, "%lld of %lld points on a wrong level", (long long)badl, (long long)pts);

@@ -19,6 +19,15 @@
 #define KADD 24        /* ... plus at most this many that broke a candidate (dens_cell.c) */
 #define REACH 2.0      /* ... within REACH local spacings */
 #define CELL_SPACINGS 1.25 /* L >= CELL_SPACINGS r_max */
+/* A point's level is one whose test spot, one cell from its block's edge,
+ * keeps a value of (LEVEL_WORTH Delta)^2 by the outside bound
+ * (dens_levels.h): a little above nearly every point's own value once the
+ * set is spread (in a converged uniform set of 16,384 points the nearest
+ * neighbour lies within 1.073 Delta for 99.9% of the points, the farthest
+ * at 1.175). Until 2026-12-02 the test asked CELL_SPACINGS, which sent
+ * points of the ramp 1:256 at 4,096 points to blocks of 100-650 points
+ * (docs/tried.md, "The levels' test spot"). */
+#define LEVEL_WORTH 1.1
 #define BUCKET_FROM 64     /* blocks of fewer points are scanned whole (one bucket) */
 #define BUCKET_PER 2.0     /* points a bucket on average */
 #define BOUND_SAFE (1 + 1e-9)   /* a ring's distance bound must beat the value by this much */

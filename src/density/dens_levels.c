@@ -131,13 +131,15 @@ uint32_t cfpo_dens_levels_fine(const cfpo_dens_levels *V, double x, double y)
     return (uint32_t)(iy << 16 | ix);
 }
 
-int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings)
+int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings,
+                        double worth)
 {
     if (V->n == 1 || !(q > 0)) return 0;
-    return cfpo_dens_levels_of_fine(V, cfpo_dens_levels_fine(V, x, y), q, D, spacings);
+    return cfpo_dens_levels_of_fine(V, cfpo_dens_levels_fine(V, x, y), q, D, spacings, worth);
 }
 
-int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q, double D, double spacings)
+int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q, double D, double spacings,
+                             double worth)
 {
     if (V->n == 1 || !(q > 0)) return 0;
     int l = V->n - 1;
@@ -149,7 +151,7 @@ int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q,
         const int64_t g = V->g0 << l, sh = V->n - 1 - l;
         const int nt = cfpo_dens_levels_tiers(V, l, fx >> sh, fy >> sh, t);
         const double L = 1.0 / (double)g;
-        if (cfpo_dens_levels_clear(t, nt, V->qmin, L, L, q, (spacings * D) * (spacings * D))) break;
+        if (cfpo_dens_levels_clear(t, nt, V->qmin, L, L, q, (worth * D) * (worth * D))) break;
     }
     return l;
 }

@@ -8,7 +8,8 @@
  * the same offset, so each cell of level l lies in one cell of every
  * coarser level (cell_of's floor of x g0 2^l is that of x g0 times 2^l,
  * exactly). A point is solved in the finest level whose cells are at least
- * 1.25 of its own spacing and where a spot one cell from its block's edge
+ * 1.25 of its own spacing and where a spot one cell from its block's edge,
+ * worth a value a little above a spread set's (the engine's LEVEL_WORTH),
  * would pass the outside bound below; the points of every level are its
  * neighbours.
  *
@@ -84,11 +85,13 @@ static inline int cfpo_dens_levels_clear(const double *t, int nt, double qmin, d
 
 /* The level of a point at (x, y) with q = sqrt(rho) there, spacing unit
  * D: the finest whose cells are at least `spacings` of D / q and where a
- * spot one cell from the block's edge, worth (spacings D)^2, passes the
+ * spot one cell from the block's edge, worth (worth D)^2, passes the
  * tiers. 0 for a point on zero density. */
-int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings);
+int cfpo_dens_levels_of(const cfpo_dens_levels *V, double x, double y, double q, double D, double spacings,
+                        double worth);
 /* The same from the point's finest cell (cfpo_dens_levels_fine). */
-int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q, double D, double spacings);
+int cfpo_dens_levels_of_fine(const cfpo_dens_levels *V, uint32_t fine, double q, double D, double spacings,
+                             double worth);
 
 /* Stamps, in every level's touch (g0 2^l cells a side each), the cells
  * holding the finest cells a and b (cfpo_dens_levels_fine: a move's old

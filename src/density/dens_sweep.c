@@ -220,7 +220,8 @@ int dens_sweep_levels(cfpo_dens_engine *E, int64_t *moves_, int64_t *solved_, do
     E->fine_kept = !E->T;
     int64_t per_level[CFPO_DENS_LEVELS_MAX] = {0}; /* the points of each level, on every rank */
     for (int64_t i = 0; i < E->s.own; i++) {
-        E->lev[i] = (unsigned char)cfpo_dens_levels_of_fine(&E->lv, E->fine[i], E->s.q[i], E->D, CELL_SPACINGS);
+        E->lev[i] = (unsigned char)cfpo_dens_levels_of_fine(&E->lv, E->fine[i], E->s.q[i], E->D, CELL_SPACINGS,
+                                                                LEVEL_WORTH);
         per_level[E->lev[i]]++;
     }
     if (E->T) comm_sum_i64(per_level, E->lv.n);
