@@ -9,14 +9,29 @@
 
 double cfpo_prog_herd_radius(int64_t m1, double freq) { return freq * sqrt((double)m1); }
 
+void cfpo_prog_herd_table(double R, cfpo_prog_herd_tab *T)
+{
+    T->kc = R < CFPO_PROG_HERD_KMAX ? (int)floor(R) : CFPO_PROG_HERD_KMAX;
+    for (int i = 0; i <= T->kc; i++) {
+        T->bmax[i] = -1;
+        for (int j = 0; j <= T->kc; j++) {
+            const double k2 = (double)(i * i + j * j);
+            double w = 0;
+            if (k2 > 0 && k2 <= R * R) {
+                w = (i > 0 ? 2 : 1) * (j > 0 ? 2 : 1) / (k2 * sqrt(k2));
+                T->bmax[i] = j;
+            }
+            T->w[i * (CFPO_PROG_HERD_KMAX + 1) + j] = w;
+        }
+    }
+}
+
 /* K(d) = sum over 0 < a^2 + b^2 <= R^2 of (a^2 + b^2)^-1.5 cos(2 pi (a dx + b dy)), summed
  * over a, b >= 0 as 2 cos(2 pi a dx) cos(2 pi b dy) per pair (a, -b), (a, b) */
-double cfpo_prog_herd_kernel(const double *a, const double *b, double R)
+double cfpo_prog_herd_kernel(const double *a, const double *b, const cfpo_prog_herd_tab *T)
 {
-    enum { KMAX = 64 };
-    const int kc = R < KMAX ? (int)floor(R) : KMAX;
-    const double R2 = R * R;
-    double cx[KMAX + 1], cy[KMAX + 1];
+    const int kc = T->kc;
+    double cx[CFPO_PROG_HERD_KMAX + 1], cy[CFPO_PROG_HERD_KMAX + 1];
     const double ux = cos(2 * M_PI * (a[0] - b[0])), uy = cos(2 * M_PI * (a[1] - b[1]));
     cx[0] = cy[0] = 1;
     if (kc >= 1) cx[1] = ux, cy[1] = uy;
@@ -26,13 +41,9 @@ double cfpo_prog_herd_kernel(const double *a, const double *b, double R)
     }
     double s = 0;
     for (int i = 0; i <= kc; i++) {
+        const double *w = T->w + i * (CFPO_PROG_HERD_KMAX + 1);
         double r = 0;
-        for (int j = 0; j <= kc; j++) {
-            const double k2 = (double)(i * i + j * j);
-            if (k2 == 0 || k2 > R2) continue;
-            const double mult = (i > 0 ? 2 : 1) * (j > 0 ? 2 : 1);
-            r += mult / (k2 * sqrt(k2)) * cy[j];
-        }
+        for (int j = 0; j <= T->bmax[i]; j++) r += w[j] * cy[j];
         s += cx[i] * r;
     }
     return s;
@@ -63,17 +74,18 @@ int cfpo_prog_order_herded(double *xy, int64_t m0, int64_t m1, double per_cell, 
     if (q <= 1) return 0;
     const int depth = cfpo_prog_order_depth(m1, per_cell);
     const int64_t G = (int64_t)1 << depth, nodes = ((((int64_t)1 << (2 * (depth + 1))) - 1) / 3);
-    const double R = cfpo_prog_herd_radius(m1, freq);
+    cfpo_prog_herd_tab *K = malloc(sizeof *K);
     double *d = malloc((size_t)q * sizeof *d), *phi = malloc((size_t)q * sizeof *phi);
     double *out = malloc(2 * (size_t)q * sizeof *out);
     int64_t *cell = malloc((size_t)q * (size_t)(depth + 1) * sizeof *cell);
     int64_t *count = calloc((size_t)nodes, sizeof *count), *took = calloc((size_t)nodes, sizeof *took);
     unsigned char *taken = calloc((size_t)q, 1);
     int rc = -1;
-    if (!d || !phi || !out || !cell || !count || !took || !taken) {
+    if (!K || !d || !phi || !out || !cell || !count || !took || !taken) {
         snprintf(err, errlen, "out of memory");
         goto done;
     }
+    cfpo_prog_herd_table(cfpo_prog_herd_radius(m1, freq), K);
     for (int64_t j = 0; j < q; j++) {
         const double *p = xy + 2 * (m0 + j);
         const int64_t cx = axis_cell(p[0], G), cy = axis_cell(p[1], G);
@@ -88,7 +100,7 @@ int cfpo_prog_order_herded(double *xy, int64_t m0, int64_t m1, double per_cell, 
         for (int64_t i = 0; i < m0; i++) { /* the earlier levels, in their order */
             const double e = torus_d2(p, xy + 2 * i);
             if (e < d[j]) d[j] = e;
-            phi[j] += cfpo_prog_herd_kernel(p, xy + 2 * i, R);
+            phi[j] += cfpo_prog_herd_kernel(p, xy + 2 * i, K);
         }
     }
     for (int64_t t = 0; t < q; t++) {
@@ -123,12 +135,13 @@ int cfpo_prog_order_herded(double *xy, int64_t m0, int64_t m1, double per_cell, 
             const double *pj = xy + 2 * (m0 + j);
             const double e = torus_d2(pj, pp);
             if (e < d[j]) d[j] = e;
-            phi[j] += cfpo_prog_herd_kernel(pj, pp, R);
+            phi[j] += cfpo_prog_herd_kernel(pj, pp, K);
         }
     }
     for (int64_t t = 0; t < 2 * q; t++) xy[2 * m0 + t] = out[t];
     rc = 0;
 done:
+    free(K);
     free(d);
     free(phi);
     free(out);

@@ -33,9 +33,22 @@
 /* The kernel's frequency radius R for a level ending at m1 points. */
 double cfpo_prog_herd_radius(int64_t m1, double freq);
 
-/* K(a - b) for the radius R (above). Symmetric in its arguments only up to
- * rounding: callers that must agree call it with the same order. */
-double cfpo_prog_herd_kernel(const double *a, const double *b, double R);
+#define CFPO_PROG_HERD_KMAX 64 /* the kernel's frequencies: at most this per axis (R <= 64 exact) */
+
+/* The kernel's weights for a radius R: w[i (KMAX + 1) + j] = 2^[i > 0]
+ * 2^[j > 0] (i^2 + j^2)^-1.5 for 0 < i^2 + j^2 <= R^2 (else 0), bmax[i]
+ * the largest j with a weight in row i (-1: none), kc = min(floor(R), KMAX). */
+typedef struct {
+    int kc;
+    int bmax[CFPO_PROG_HERD_KMAX + 1];
+    double w[(CFPO_PROG_HERD_KMAX + 1) * (CFPO_PROG_HERD_KMAX + 1)];
+} cfpo_prog_herd_tab;
+
+void cfpo_prog_herd_table(double R, cfpo_prog_herd_tab *T);
+
+/* K(a - b) for the table's radius (above). Symmetric in its arguments only
+ * up to rounding: callers that must agree call it with the same order. */
+double cfpo_prog_herd_kernel(const double *a, const double *b, const cfpo_prog_herd_tab *T);
 
 /* Points m0 .. m1 - 1 of xy reordered in place: at step t, the free points
  * are the untaken ones none of whose quadtree cells (the paced order's of
