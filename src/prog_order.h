@@ -12,7 +12,9 @@
  * quarters of the torus down to leaves of CFPO_PROG_ORDER_CELL to 4
  * CFPO_PROG_ORDER_CELL of the level's m1 points, have each given at most
  * floor(t c / q) + tol of their c of the level's q new points after t
- * picks (results 2026-12-02-paced26).
+ * picks (results 2026-12-02-paced26). The default orders the levels of at
+ * most CFPO_PROG_HERD_MAX points by prog_herd.h's herded order instead
+ * (the same allowances; results 2026-12-02-prog28).
  * Owns: the lazy max-heap of the greedy choice, the quadtree's
  * allowances and the points they hold back. Serial: the same bytes always.
  * May include: prog_buckets.h (layer 2). */

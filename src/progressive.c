@@ -14,6 +14,7 @@
 #include "prog_balance.h"
 #include "prog_insert.h"
 #include "prog_order.h"
+#include "prog_herd.h"
 #include "prog_measure.h"
 #include "rng.h"
 #include "run_loop.h"
@@ -22,11 +23,14 @@
 #define PROG_SALT 0x9e3779b97f4a7c15ULL /* level seeds: seed ^ mix(level + salt) */
 #define BALANCE_SALT 0x42414c414e4345ULL /* ... ^ mix(balance tag + this) with the balance on */
 #define BALANCE_TAG_MAX 1000000          /* the largest leaf size a resume's message looks for */
-/* The tag of the paced order (the default with the balance on) has this
- * bit too; without it, an even tag 2 C is the greedy order that versions
- * before the paced order used (its checkpoints are refused: their earlier
- * levels are in that order) */
+/* The tag of the default with the balance on (the paced order, the small
+ * levels herded) has HERD_TAG too. Earlier versions' defaults, whose
+ * checkpoints are refused (their earlier levels are in an order this
+ * version no longer makes): 2 C alone, the greedy order, and 2 C +
+ * PACED_TAG, the paced order in every level */
 #define PACED_TAG (1ULL << 40)
+#define HERD_TAG (1ULL << 41)
+#define OLD_TAG(t) (!((t) & 1) && !((t) & HERD_TAG)) /* an earlier version's default */
 
 int cfpo_prog_balance_of(const cfpo_prog_options *p)
 {
@@ -45,7 +49,7 @@ static uint64_t level_seed_tag(uint64_t seed, int k, uint64_t tag)
 static uint64_t balance_tag(const cfpo_prog_options *p)
 {
     const int C = cfpo_prog_balance_of(p);
-    return C > 0 ? 2 * (uint64_t)C + (p->balance_order ? 1 : PACED_TAG) : 0;
+    return C > 0 ? 2 * (uint64_t)C + (p->balance_order ? 1 : HERD_TAG) : 0;
 }
 
 uint64_t cfpo_prog_level_seed(uint64_t seed, int k, const cfpo_prog_options *p)
@@ -175,12 +179,12 @@ static int remeasure(const double *xy, int K, const cfpo_options *o, cfpo_prog_l
 /* The balance setting of a tag, in the command's words. */
 static void tag_words(uint64_t tag, char *s, size_t len)
 {
-    const unsigned long long C = (unsigned long long)((tag & ~PACED_TAG) / 2);
+    const unsigned long long C = (unsigned long long)((tag & ~(PACED_TAG | HERD_TAG)) / 2);
     if (!tag) snprintf(s, len, "--level-balance 0");
-    else if (tag & PACED_TAG) snprintf(s, len, "--level-balance %llu", C);
+    else if (tag & HERD_TAG) snprintf(s, len, "--level-balance %llu", C);
     else if (tag & 1) snprintf(s, len, "--level-balance %llu --level-balance-order", C);
-    else snprintf(s, len, "--level-balance %llu by an earlier version, whose greedy order of the levels this one no "
-                  "longer makes", C);
+    else snprintf(s, len, "--level-balance %llu by an earlier version, whose %s order of the levels this one no "
+                  "longer makes", C, tag & PACED_TAG ? "paced" : "greedy");
 }
 
 /* A checkpoint of level k >= 1 whose seed is level k's under another
@@ -192,13 +196,13 @@ static int check_balance(const char *path, uint64_t ck_seed, uint64_t seed, int 
     const uint64_t want = balance_tag(p);
     if (k == 0 || ck_seed == level_seed_tag(seed, k, want)) return 0;
     for (uint64_t t = 0; t <= 2 * (uint64_t)BALANCE_TAG_MAX + 1; t = t ? t + 1 : 2)
-        for (int paced = 0; paced < 1 + !(t & 1) && t; paced++) {
-            const uint64_t tag = t + (paced ? PACED_TAG : 0);
+        for (int v = 0; v < (t & 1 ? 1 : 3) && t; v++) { /* even t: the greedy, paced and herded defaults */
+            const uint64_t tag = t + (v == 1 ? PACED_TAG : v == 2 ? HERD_TAG : 0);
             if (tag == want || ck_seed != level_seed_tag(seed, k, tag)) continue;
             char had[128], now[128];
             tag_words(tag, had, sizeof had);
             tag_words(want, now, sizeof now);
-            if (!(tag & 1) && !(tag & PACED_TAG))
+            if (OLD_TAG(tag))
                 snprintf(err, errlen, "--resume %s: the checkpoint was written with %s; start the run again", path, had);
             else
                 snprintf(err, errlen, "--resume %s: the checkpoint was written with %s, this run has %s; resume with "
@@ -259,7 +263,8 @@ static int hold(int64_t n, const double *xy, const cfpo_options *o, cfpo_run_eng
 }
 
 /* Level k's points m0 .. m1 - 1 in their prefix order: with the balance
- * on, the greedy order paced by the quadtree (prog_order.h), or with
+ * on, the greedy order paced by the quadtree (prog_order.h), herded in
+ * the levels of at most CFPO_PROG_HERD_MAX points (prog_herd.h), or with
  * balance_order the cells' proportions kept by time (prog_balance.h);
  * with it off, greedy. */
 static int order_level(double *xy, int64_t m0, int64_t m1, const cfpo_options *o, const cfpo_prog_options *p, int k,
@@ -267,6 +272,9 @@ static int order_level(double *xy, int64_t m0, int64_t m1, const cfpo_options *o
 {
     const int C = cfpo_prog_balance_of(p);
     if (C > 0 && p->balance_order) return cfpo_prog_order_balanced(xy, m0, m1, C, o->seed, (uint64_t)k, err, errlen);
+    if (C > 0 && m1 <= CFPO_PROG_HERD_MAX)
+        return cfpo_prog_order_herded(xy, m0, m1, CFPO_PROG_ORDER_CELL, CFPO_PROG_ORDER_TOL, CFPO_PROG_HERD_FLOOR,
+                                      CFPO_PROG_HERD_FREQ, err, errlen);
     if (C > 0) return cfpo_prog_order_paced(xy, m0, m1, CFPO_PROG_ORDER_CELL, CFPO_PROG_ORDER_TOL, err, errlen);
     return cfpo_prog_order(xy, m0, m1, err, errlen);
 }

@@ -24,7 +24,7 @@
  * (prog_joint.h classes: every class's delta_min in Delta(N/K) and the
  * union's in Delta(n) never fall); the K LEVEL records are then the
  * prefixes of the class order (level 0 holds the CFPO run's iterations).
- * May include: engine.h, run_loop.h, prog_insert.h, prog_order.h, prog_balance.h, prog_joint.h, prog_colour.h (layers 0-4). */
+ * May include: engine.h, run_loop.h, prog_insert.h, prog_order.h, prog_herd.h, prog_balance.h, prog_joint.h, prog_colour.h (layers 0-4). */
 #ifndef CFPO_PROGRESSIVE_H
 #define CFPO_PROGRESSIVE_H
 
@@ -71,7 +71,8 @@ typedef struct {
                          anywhere, prog_insert.h). Never with classes (cfpo_prog_balance_of) */
     int balance_order; /* with the balance on: each level's points spread through it by time, each
                           cell's evenly (prog_balance.h cfpo_prog_order_balanced); 0: the farthest
-                          first, paced by the quadtree (prog_order.h cfpo_prog_order_paced); with
+                          first, paced by the quadtree (prog_order.h cfpo_prog_order_paced), herded in
+                          the levels of at most CFPO_PROG_HERD_MAX points (prog_herd.h); with
                           the balance off, the greedy order */
     int level_iter;   /* each level's iteration cap (the last's too; with the caller's max_iter): > 0 this;
                          0 the default: CFPO_PROG_DEFAULT_LEVEL_ITER without a joint phase and without

@@ -14,11 +14,19 @@
  *    c / q) + tol of its c points after t picks), and, checked on the
  *    output alone, every cell within that allowance after every pick; the
  *    greedy order breaks the allowance on the same set; a tol below 1 is
- *    refused. */
+ *    refused;
+ *  - cfpo_prog_herd_kernel: the direct sum of its Fourier series;
+ *  - cfpo_prog_order_herded: exactly the brute-force herded order (each
+ *    step from scratch: the free points by the same allowances, the
+ *    candidates at least min(floor Delta(m), the farthest free one's
+ *    distance) from the points before them, next the least kernel sum over
+ *    every point before it), within the allowance after
+ *    every pick, and different from the paced order on the same set. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "prog_herd.h"
 #include "prog_insert.h"
 #include "prog_order.h"
 #include "rng.h"
@@ -174,6 +182,87 @@ static void check_paced(const double *in, int64_t m0, int64_t m1, double per_cel
     free(b);
 }
 
+
+/* The kernel's Fourier series summed directly over every k in the disk. */
+static double kernel_direct(const double *a, const double *b, double R)
+{
+    double s = 0;
+    const int kc = (int)floor(R);
+    for (int kx = -kc; kx <= kc; kx++)
+        for (int ky = -kc; ky <= kc; ky++) {
+            const double k2 = (double)(kx * kx + ky * ky);
+            if (k2 == 0 || k2 > R * R) continue;
+            s += cos(2 * M_PI * (kx * (a[0] - b[0]) + ky * (a[1] - b[1]))) / (k2 * sqrt(k2));
+        }
+    return s;
+}
+
+/* Brute force of the herded order (prog_herd.h) of in[m0..m1) into out:
+ * every distance and kernel sum from scratch at every step. */
+static void herded(const double *in, int64_t m0, int64_t m1, int depth, int tol, double dfloor, double R, double *out)
+{
+    cfpo_prog_herd_tab *K = malloc(sizeof *K);
+    cfpo_prog_herd_table(R, K);
+    memcpy(out, in, 2 * (size_t)m0 * sizeof *out);
+    const int64_t q = m1 - m0, cells = (((int64_t)1 << (2 * (depth + 1))) - 1) / 3;
+    unsigned char *used = calloc((size_t)q, 1), *free_ = calloc((size_t)q, 1);
+    double *nd = malloc((size_t)q * sizeof *nd), *phi = malloc((size_t)q * sizeof *phi);
+    int64_t *count = calloc((size_t)cells + 1, sizeof *count), *took = calloc((size_t)cells + 1, sizeof *took);
+    for (int64_t j = 0; j < q; j++)
+        for (int l = 1; l <= depth; l++) count[cell_at(in + 2 * (m0 + j), depth, l)]++;
+    for (int64_t t = 0; t < q; t++) {
+        double far = -1;
+        for (int64_t j = 0; j < q; j++) {
+            free_[j] = 0;
+            if (used[j]) continue;
+            const double *p = in + 2 * (m0 + j);
+            nd[j] = near2(out, m0 + t, p);
+            phi[j] = 0;
+            for (int64_t i = 0; i < m0 + t; i++) phi[j] += cfpo_prog_herd_kernel(p, out + 2 * i, K);
+            int ok = 1;
+            for (int l = 1; l <= depth && ok; l++) {
+                const int64_t c = cell_at(p, depth, l);
+                ok = took[c] < (t + 1) * count[c] / q + tol;
+            }
+            free_[j] = (unsigned char)ok;
+            if (ok && nd[j] > far) far = nd[j];
+        }
+        int64_t best = -1;
+        const double delta2 = 2 / (sqrt(3.0) * (double)(m0 + t + 1)), floor2 = dfloor * dfloor * delta2;
+        for (int64_t j = 0; j < q; j++) {
+            if (!free_[j] || !(nd[j] >= (floor2 < far ? floor2 : far))) continue;
+            if (best < 0 || phi[j] < phi[best] || (phi[j] == phi[best] && nd[j] > nd[best])) best = j;
+        }
+        used[best] = 1;
+        for (int l = 1; l <= depth; l++) took[cell_at(in + 2 * (m0 + best), depth, l)]++;
+        out[2 * (m0 + t)] = in[2 * (m0 + best)];
+        out[2 * (m0 + t) + 1] = in[2 * (m0 + best) + 1];
+    }
+    free(K);
+    free(used);
+    free(free_);
+    free(nd);
+    free(phi);
+    free(count);
+    free(took);
+}
+
+static void check_herded(const double *in, int64_t m0, int64_t m1, double dfloor, double freq, const char *what)
+{
+    double *a = malloc(2 * (size_t)m1 * sizeof *a), *b = malloc(2 * (size_t)m1 * sizeof *b);
+    char err[128];
+    const int depth = cfpo_prog_order_depth(m1, CFPO_PROG_ORDER_CELL);
+    memcpy(a, in, 2 * (size_t)m1 * sizeof *a);
+    CHECK(cfpo_prog_order_herded(a, m0, m1, CFPO_PROG_ORDER_CELL, CFPO_PROG_ORDER_TOL, dfloor, freq, err, sizeof err) == 0,
+          "%s: herded order failed: %s", what, err);
+    herded(in, m0, m1, depth, CFPO_PROG_ORDER_TOL, dfloor, cfpo_prog_herd_radius(m1, freq), b);
+    CHECK(memcmp(a, b, 2 * (size_t)m1 * sizeof *a) == 0, "%s: not the brute-force herded order (depth %d)", what, depth);
+    CHECK(within_allowance(a, m0, m1, depth, CFPO_PROG_ORDER_TOL), "%s: a cell past its allowance", what);
+    CHECK(memcmp(a, in, 2 * (size_t)m0 * sizeof *a) == 0, "%s: the first m0 points changed", what);
+    free(a);
+    free(b);
+}
+
 int main(void)
 {
     char err[128];
@@ -258,6 +347,45 @@ int main(void)
         CHECK(cfpo_prog_order_paced(g, 100, 1200, 0, 1, err, sizeof err) != 0, "paced: per_cell 0 accepted");
         free(in);
         free(g);
+    }
+    /* the herded order against brute force */
+    {
+        double *in = malloc(2 * 512 * sizeof *in), *a = malloc(2 * 512 * sizeof *a), *b = malloc(2 * 512 * sizeof *b);
+        uniform(in, 512, 19);
+        double worst = 0;
+        cfpo_prog_herd_tab *K = malloc(sizeof *K);
+        for (int i = 0; i < 40; i++) {
+            const double R = 1 + 0.37 * i;
+            cfpo_prog_herd_table(R, K);
+            const double e =
+                fabs(cfpo_prog_herd_kernel(in + 2 * i, in + 2 * i + 2, K) - kernel_direct(in + 2 * i, in + 2 * i + 2, R));
+            if (e > worst) worst = e;
+        }
+        free(K);
+        CHECK(worst < 1e-9, "herd kernel: %g from its Fourier series", worst);
+        check_herded(in, 128, 256, CFPO_PROG_HERD_FLOOR, CFPO_PROG_HERD_FREQ, "herded, 256 after 128");
+        check_herded(in, 200, 400, CFPO_PROG_HERD_FLOOR, CFPO_PROG_HERD_FREQ, "herded, 400 after 200");
+        check_herded(in, 0, 64, CFPO_PROG_HERD_FLOOR, CFPO_PROG_HERD_FREQ, "herded, m0 = 0");
+        check_herded(in, 100, 300, 0.5, 0.8, "herded, floor 0.5, freq 0.8");
+        check_herded(in, 100, 300, 0, 0.5, "herded, floor 0 (no distance kept)");
+        check_herded(in, 100, 300, 2, 0.5, "herded, floor 2 (the farthest free point only)");
+        /* a grid's centres: exact ties of distance and of the kernel */
+        for (int i = 0; i < 256; i++) in[2 * i] = (i % 16 + 0.5) / 16, in[2 * i + 1] = (i / 16 + 0.5) / 16;
+        check_herded(in, 0, 256, CFPO_PROG_HERD_FLOOR, CFPO_PROG_HERD_FREQ, "herded, a grid (ties)");
+        check_herded(in, 17, 256, CFPO_PROG_HERD_FLOOR, CFPO_PROG_HERD_FREQ, "herded, a grid after 17 of its points");
+        /* the check can fail: the paced order is another order here */
+        uniform(in, 512, 19);
+        memcpy(a, in, 2 * 512 * sizeof *a);
+        memcpy(b, in, 2 * 512 * sizeof *b);
+        CHECK(cfpo_prog_order_paced(a, 128, 256, CFPO_PROG_ORDER_CELL, CFPO_PROG_ORDER_TOL, err, sizeof err) == 0, "%s", err);
+        CHECK(cfpo_prog_order_herded(b, 128, 256, CFPO_PROG_ORDER_CELL, CFPO_PROG_ORDER_TOL, CFPO_PROG_HERD_FLOOR,
+                                     CFPO_PROG_HERD_FREQ, err, sizeof err) == 0, "%s", err);
+        CHECK(memcmp(a, b, 2 * 256 * sizeof *a) != 0, "herded: the same order as the paced one");
+        CHECK(cfpo_prog_order_herded(b, 128, 256, 2, 1, -1, 0.5, err, sizeof err) != 0, "herded: floor -1 accepted");
+        CHECK(cfpo_prog_order_herded(b, 128, 256, 2, 1, 0.68, 0, err, sizeof err) != 0, "herded: freq 0 accepted");
+        free(in);
+        free(a);
+        free(b);
     }
     return test_report(passed_, failed_);
 }

@@ -266,6 +266,13 @@ expect 1 "by an earlier version, whose greedy order of the levels this one no lo
   -n 512 -s 3 --progressive --resume "$HERE/data/prog-greedy-256.bin" -o x.npy
 expect 1 "by an earlier version" -n 512 -s 3 --progressive --level-balance 0 --resume "$HERE/data/prog-greedy-256.bin" \
   -o x.npy
+# a checkpoint of the paced order's default (every level paced, before the
+# small levels were herded: tests/data/prog-paced-256.bin, `cfpo -n 256 -s 3
+# -t 1 --progressive --checkpoint` at 129a90e), refused in one line
+expect 1 "by an earlier version, whose paced order of the levels this one no longer makes; start the run again" \
+  -n 512 -s 3 --progressive --resume "$HERE/data/prog-paced-256.bin" -o x.npy
+expect 1 "by an earlier version, whose paced order" -n 512 -s 3 --progressive --level-balance-order \
+  --resume "$HERE/data/prog-paced-256.bin" -o x.npy
 expect 1 "this run has --level-balance 16 --level-balance-order;" -n 4096 -s 3 --progressive --level-balance-order \
   --resume ckh16.bin -o x.npy
 expect 1 "written with --level-balance 16, this run has --level-balance 0;" -n 16384 -s 2 --progressive --level-balance 0 \

@@ -86,7 +86,9 @@ void an_shiftvar_compute(const double *P, int K, size_t n, an_shiftvar *out)
             for (int64_t m = K + 1;; m++) {
                 const long double e = expl(-(long double)a * (long double)m * (long double)m);
                 rest += 2 * e;
-                if (e < 1e-30L * (rest > 0 ? rest : 1)) break;
+                /* e == 0: past the underflow (a subnormal rest times 1e-30 is 0 too,
+                 * so the relative test alone never ended: m = 344 of a 1,024-point set) */
+                if (e == 0 || e < 1e-30L * (rest > 0 ? rest : 1)) break;
             }
             tail = (double)((long double)c * c * rest * (2 * tk + rest));
         }

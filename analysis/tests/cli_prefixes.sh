@@ -27,6 +27,13 @@ s=$("$A" -q --no-discrepancy --no-delaunay --integration 0 --prefixes --prefix-s
 check '[ "$(grep -v "^#" b/prefixes.txt | awk "{ printf \"%s \", \$1 }")" = "20 50 300 " ]' "given sizes"
 check '[ "$(field "$s" prefix_worst_dyadic_dmin)" = - ]' "no dyadic rows with given sizes"
 
+# m = 344: the Gaussian variance's theta tail reaches the underflow there (its
+# K alone decides it); the tail loop once ran on forever
+"$B/cfpo" -n 400 -t 1 -q -s 5 -o y.txt >/dev/null
+timeout 60 "$A" -q --no-discrepancy --no-delaunay --integration 0 --prefixes --prefix-sizes 344 -o f y.txt >/dev/null
+rc=$?
+check '[ "$rc" -eq 0 ] && [ "$(grep -v "^#" f/prefixes.txt | awk "{ print \$1 }")" = 344 ]' "prefix of 344 points ends (exit $rc)"
+
 s=$("$A" -q --no-discrepancy --no-delaunay --integration 0 -o c x.txt)
 check '[ ! -f c/prefixes.txt ] && [ "$(field "$s" prefix_worst_any_dmin)" = - ]' "nothing without --prefixes"
 
