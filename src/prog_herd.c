@@ -125,6 +125,10 @@ int cfpo_prog_order_herded(double *xy, int64_t m0, int64_t m1, double per_cell, 
             if (!(d[j] >= cut)) continue;
             if (p < 0 || phi[j] < phi[p] || (phi[j] == phi[p] && d[j] > d[p])) p = j;
         }
+        if (p < 0) { /* never: the allowances always leave a free point (prog_order.h) */
+            snprintf(err, errlen, "the herded order found no free point at step %lld of %lld", (long long)t, (long long)q);
+            goto done;
+        }
         taken[p] = 1;
         for (int l = 1; l <= depth; l++) took[cell[p * (depth + 1) + l]]++;
         const double *pp = xy + 2 * (m0 + p);
