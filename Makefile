@@ -57,7 +57,8 @@ test-sanitize: deps
 	cd build-asan && ASAN_OPTIONS="$${ASAN_OPTIONS:-malloc_context_size=2}" ctest --output-on-failure -j $(JOBS) -L unit
 
 # libFuzzer harnesses (fuzz/) in their own clang build folder, each run
-# FUZZ_SECONDS (default 60); fails on any crash, sanitizer report or time-out.
+# FUZZ_SECONDS (default 60), FUZZ_JOBS at a time (default: the cores);
+# fails on any crash, sanitizer report or time-out.
 fuzz: deps-fuzz
 	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCFPO_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 	cmake --build $(FUZZ_BUILD) -j $(JOBS)
@@ -81,7 +82,7 @@ help:
 	@echo "                     elsewhere only reports them: scripts/install-deps.sh, CFPO_NO_APT=1)"
 	@echo "  make test          build, then run every CTest test"
 	@echo "  make test-sanitize unit tests in an ASan+UBSan build (build-asan/)"
-	@echo "  make fuzz          libFuzzer harnesses, FUZZ_SECONDS each (default 60), in $(FUZZ_BUILD)/"
+	@echo "  make fuzz          libFuzzer harnesses, FUZZ_SECONDS each (default 60), FUZZ_JOBS at a time, in $(FUZZ_BUILD)/"
 	@echo "  make python        the Python package (import cfpo) in a virtual environment $(BUILD)/venv"
 	@echo "  make bench         method comparison and figures (PROFILE=smoke|default|paper|seeds|lowk|density|3d|progressive); results/<date>-<host>/"
 	@echo "  make replot        redraw figures and summary.md of RESULTS=results/... (default: newest)"
