@@ -32,6 +32,7 @@ void cfpo_options_init(cfpo_options *o)
     o->stop.target_min = o->stop.target_avg = o->stop.time_limit = 0;
     o->progress = NULL;
     o->user = NULL;
+    o->lazy_measure = 0;
 }
 
 int cfpo_variant_parse(const char *name, int *variant)

@@ -47,6 +47,8 @@ typedef struct {
     double max_move;   /* largest single move in the iteration / cell side */
     int near;          /* 1: solved by the near solve (the adaptive variant's
                           first phase, docs/method.md), 0: by LocalCFPO */
+    int stale;         /* 1: delta_min and delta_avg are the last measured
+                          ones, not this iteration's (cfpo_options.lazy_measure) */
 } cfpo_iter_stats;
 
 /* Called after every iteration (and once with iteration 0); returning
@@ -73,6 +75,15 @@ typedef struct {
     cfpo_stop_rules stop;
     cfpo_progress_fn progress;
     void *user;
+    int lazy_measure;  /* 1: the density engine, whose measure is a pass of
+                          its own, measures delta_min and delta_avg only at
+                          the iterations its stop rules read (docs/method.md,
+                          "Density": every 16th; every one when a target is
+                          set) and where the run stops: the same points and
+                          result, about a tenth less time an iteration; the
+                          progress callback sees the last measured values in
+                          between (stale = 1). 0: every iteration (the
+                          uniform and 3-D engines always do) */
 } cfpo_options;
 
 typedef struct {

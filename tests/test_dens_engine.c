@@ -10,7 +10,9 @@
  *  - counts follow the density: count fidelity on cos a=0.9 and the ramp
  *    1:16 (n = 4096, 40 iterations) within the tolerance stated below;
  *  - the quality rises: locally normalised delta_min >= 0.8 after those
- *    40 iterations. */
+ *    40 iterations;
+ *  - a lazy measure (cfpo_options.lazy_measure) gives the same points and
+ *    result, measuring only where the stop rules read. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -308,9 +310,83 @@ static void library(void)
     cfpo_density_free(&d);
 }
 
+/* What a progress callback saw: each iteration's deltas and stale flag. */
+typedef struct {
+    int n;
+    double dmin[128], davg[128];
+    int stale[128];
+} seen_log;
+
+static int log_iteration(const cfpo_iter_stats *s, void *user)
+{
+    seen_log *g = user;
+    if (s->iteration == g->n && g->n < 128) {
+        g->dmin[g->n] = s->delta_min;
+        g->davg[g->n] = s->delta_avg;
+        g->stale[g->n] = s->stale;
+        g->n++;
+    }
+    return 0;
+}
+
+/* o.lazy_measure (cfpo_types.h): the same points, iterations, stop and
+ * result as measuring every iteration; the set measured at iteration 0,
+ * at each stall window's end and nowhere else (the callback sees the last
+ * measured values, flagged stale); with a target set, every iteration.
+ * To an iteration cap that ends off a window, and to the run's own stop. */
+static void lazy_measure(const char *spec, int64_t n)
+{
+    char err[512];
+    cfpo_density d;
+    if (cfpo_density_load(spec, &d, err, sizeof err) != 0) { CHECK(0, "%s: %s", spec, err); return; }
+    double *a = malloc((size_t)n * 2 * sizeof *a), *b = malloc((size_t)n * 2 * sizeof *b);
+    const int caps[3] = {37, 20, 100000}; /* 20 with a target never met */
+    for (int c = 0; c < 3 && a && b; c++) {
+        seen_log ge = {0}, gl = {0};
+        cfpo_result re, rl;
+        cfpo_run_engine R;
+        int ok = 1;
+        for (int lazy = 0; lazy < 2 && ok; lazy++) {
+            cfpo_options o = opts(2, caps[c]);
+            if (c == 1) o.stop.target_min = 0.999;
+            o.lazy_measure = lazy;
+            o.progress = log_iteration;
+            o.user = lazy ? &gl : &ge;
+            ok = run(&d, n, &o, &R, lazy ? &rl : &re, err, sizeof err) == 0;
+            CHECK(ok, "%s lazy=%d: %s", spec, lazy, err);
+            if (ok) points_of(&R, lazy ? b : a, n);
+            R.ops->free(R.E);
+        }
+        if (!ok) continue;
+        CHECK(memcmp(a, b, (size_t)n * 2 * sizeof *a) == 0, "%s cap %d: lazy measures moved other points", spec,
+              caps[c]);
+        CHECK(rl.iterations == re.iterations && rl.stop == re.stop && rl.converged == re.converged &&
+                  rl.delta_min == re.delta_min && rl.delta_avg == re.delta_avg,
+              "%s cap %d: lazy result %d it %.9f %.9f, eager %d it %.9f %.9f", spec, caps[c], rl.iterations,
+              rl.delta_min, rl.delta_avg, re.iterations, re.delta_min, re.delta_avg);
+        CHECK(gl.n == re.iterations + 1 && ge.n == gl.n, "%s cap %d: callbacks %d and %d for %d iterations", spec,
+              caps[c], gl.n, ge.n, re.iterations);
+        int bad = 0, last = 0, stale = 0;
+        for (int k = 0; k < gl.n && k < ge.n; k++) {
+            const int want = c != 1 && k % 16 != 0; /* stale off the windows, unless a target is set */
+            bad += ge.stale[k] != 0 || gl.stale[k] != want;
+            if (!gl.stale[k]) last = k;
+            stale += gl.stale[k];
+            bad += gl.dmin[k] != ge.dmin[last] || gl.davg[k] != ge.davg[last];
+        }
+        CHECK(bad == 0, "%s cap %d: %d iterations measured where they should not, or other values", spec, caps[c],
+              bad);
+        CHECK(c == 1 || stale > 0, "%s cap %d: nothing left unmeasured", spec, caps[c]);
+    }
+    free(a); free(b);
+    cfpo_density_free(&d);
+}
+
 int main(void)
 {
     library();
+    lazy_measure("cos:a=0.9,res=64", 1200);
+    lazy_measure("ramp:contrast=64,res=64", 1500);
     never_falls("cos:a=0.9,res=64", 300, 6);
     never_falls("ramp:contrast=16,res=64", 300, 6);
     never_falls("balzer:res=64", 500, 4);

@@ -5,7 +5,8 @@
 # and the shipped image (each on levels of finer cells, dens_levels.h);
 # each rank's points within 20% of n / P (the cut balances points);
 # checkpoint on one rank count, resume and --init on others, the same
-# bytes; a rank count too large for the grid refused once, no file left.
+# bytes; a rank count too large for the grid refused once, no file left;
+# a run without a trace (the lazy measure) the same bytes and deltas.
 set -u
 HERE=$(cd "$(dirname "$0")" && pwd)
 IMG="$HERE/../data/astronaut-256.png"
@@ -39,6 +40,21 @@ for cs in "${cases[@]}"; do
     fi
   done
 done
+
+# Without a trace the engine measures only at the stop rule's windows and
+# where the run stops (cfpo_types.h, lazy_measure): on 3 ranks, 18
+# iterations of the ramp 1:256 (measured at 0, 16 and 18), the bytes and
+# the summary's deltas of one process with a trace.
+keep='s/.*\( iterations=[0-9]*\).*\( delta_min=[^ ]* delta_avg=[^ ]*\).*/\1\2/p'
+"$CFPO" -q -n 16384 --density ramp:contrast=256 --max-iter 18 -t 2 -o lz1.npy --trace lz1.tsv >lz1.out ||
+  bad "lazy measure: one-process reference failed"
+if run 3 -n 16384 --density ramp:contrast=256 --max-iter 18 -t 1 -o lz3.npy >lz3.out 2>run.err; then
+  cmp -s lz1.npy lz3.npy && [ -n "$(sed -n "$keep" lz1.out)" ] &&
+    [ "$(sed -n "$keep" lz1.out)" = "$(sed -n "$keep" lz3.out)" ] && ok ||
+    bad "lazy measure on 3 ranks: $(sed -n "$keep" lz3.out) against one process's $(sed -n "$keep" lz1.out)"
+else
+  bad "lazy measure on 3 ranks: run failed: $(head -3 run.err)"
+fi
 
 # Checkpoint on 2 ranks after 2 of cos's 4 iterations; resume on 3, 4
 # and 1: the bytes of the uninterrupted run. The checkpoint's bytes equal

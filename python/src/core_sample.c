@@ -134,6 +134,7 @@ PyObject *core_run(PyObject *self, PyObject *args)
     core_run_ctx c = {.callback = callback, .want_trace = want_trace, .trace = {.cols = CFPO_TRACE_COLUMNS}};
     o.progress = core_on_iteration;
     o.user = &c;
+    o.lazy_measure = !want_trace && callback == Py_None; /* as the command: nothing shows each iteration's deltas */
     cfpo_result res;
     int rc = -1;
     c.t0 = cli_now();

@@ -41,3 +41,20 @@ def test_bad_shape_and_variant():
         cfpo.sample(1000, density=np.ones(5))
     with pytest.raises(ValueError, match="variant"):
         cfpo.sample(1000, density="cos", variant="paper")
+
+
+@pytest.mark.parametrize("spec, max_iter", [("ramp:contrast=64,res=256", 21), ("cos:a=0.9", None)])
+def test_lazy_measure_same_run(spec, max_iter):
+    """sample() asks for no trace, so the density engine measures only at the
+    stop rule's windows and the end; run() (with its trace) measures every
+    iteration: the same points, and to the run's own stop the same
+    iterations (docs/method.md, "Density", item 3)."""
+    r = cfpo.run(1024, density=spec, max_iter=max_iter, seed=5, threads=2)
+    seen = []
+    lazy = cfpo.sample(1024, density=spec, max_iter=max_iter, seed=5, threads=2)
+    assert lazy.tobytes() == r.points.tobytes()
+    cb = cfpo.run(1024, density=spec, max_iter=max_iter, seed=5, threads=2,
+                  progress=lambda s: seen.append(s["iteration"]) and False)
+    assert cb.points.tobytes() == r.points.tobytes()
+    assert (cb.delta_min, cb.delta_avg, cb.iterations) == (r.delta_min, r.delta_avg, r.iterations)
+    assert seen == list(range(r.iterations + 1))

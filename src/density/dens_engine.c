@@ -172,7 +172,7 @@ static int measure_own(cfpo_dens_engine *E, double *m)
  * measure from its rank's points when that is provably exact (else from
  * the whole set, gathered), the measures gathered in id order and summed
  * in that order, as on one rank: the same bits. */
-static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
+static int measure_set(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
 {
     if (!E->T) return cfpo_dens_nn_q(E->d, &E->qlow, &E->near, E->s.xy, E->s.q, (size_t)E->n, NULL, dmin, davg, E->nthreads);
     double *m = malloc((size_t)(E->s.own + 1) * sizeof *m);
@@ -191,6 +191,26 @@ static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
     if (rc != 0) return -1;
     cfpo_dens_nn_sum(E->all, (size_t)E->n, dmin, davg);
     return 0;
+}
+
+/* measure_set, the values kept for the iterations that do not measure. */
+static int measure(cfpo_dens_engine *E, double *dmin, double *davg, int halo)
+{
+    if (measure_set(E, dmin, davg, halo) != 0) return -1;
+    E->last_dmin = *dmin;
+    E->last_davg = *davg;
+    return 0;
+}
+
+/* Whether iteration k measures the set: always, unless o.lazy_measure;
+ * then where the stop rules read it (a target, at any iteration; the
+ * schedule's stall rule, at each window's end). Positions never depend on
+ * the measure, so the choice changes no point (the run loop measures
+ * where a run stops, run_loop.h). */
+static int measures(const cfpo_dens_engine *E, int k)
+{
+    return !E->o.lazy_measure || E->o.stop.target_min > 0 || E->o.stop.target_avg > 0 ||
+           k % CFPO_POLICY_DENSITY_WINDOW == 0;
 }
 
 /* The grid's offset for iteration k: one random offset in [0, L)^2 for
@@ -241,7 +261,13 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
     s->solved = v[1];
     s->max_disp = maxd;
     s->max_move = maxd;
-    if (measure(E, &s->delta_min, &s->delta_avg, 1) != 0) return -1;
+    if (measures(E, E->iter)) {
+        if (measure(E, &s->delta_min, &s->delta_avg, 1) != 0) return -1;
+    } else {
+        s->delta_min = E->last_dmin;
+        s->delta_avg = E->last_davg;
+        s->stale = 1;
+    }
     s->converged = cfpo_net_converged(moves, maxd, E->o.tol) ||
                    cfpo_policy_density_stalled(E->iter, s->delta_avg, &E->davg_ref);
     s->seconds = omp_get_wtime() - t0;
@@ -251,7 +277,9 @@ int cfpo_dens_iterate(cfpo_dens_engine *E, cfpo_iter_stats *s)
 
 int cfpo_dens_measure(cfpo_dens_engine *E, double *dmin, double *davg)
 {
-    return measure(E, dmin, davg, 0);
+    /* after an iteration of this engine the halo is as its own measure
+     * left it: the same reading, without gathering the set */
+    return measure(E, dmin, davg, E->iters_run > 0);
 }
 
 int cfpo_dens_iteration(const cfpo_dens_engine *E) { return E->iter; }

@@ -62,6 +62,7 @@ struct cfpo_dens_engine {
     int iter, placed; /* placed: the grid has an offset (sx, sy) */
     int iters_run;    /* iterations made by this engine (not before a resume) */
     double davg_ref;  /* the schedule's delta_avg one window back (policy.h) */
+    double last_dmin, last_davg; /* as last measured (o.lazy_measure: between measures) */
     double t_compute, t_migrate, t_halo; /* this rank's seconds in each */
     cfpo_dens_move_fn on_move;
     void *move_user;

@@ -53,6 +53,13 @@ int cfpo_run_loop(cfpo_run_engine *R, const char *checkpoint, int every, cfpo_re
             break;
         }
     }
+    if (rc == 0 && s.stale) { /* a lazy measure (cfpo_options.lazy_measure): the set where it stopped */
+        cfpo_iter_stats m;
+        if (R->ops->now(R->E, &m, err, errlen) != 0) return -1;
+        s.delta_min = m.delta_min;
+        s.delta_avg = m.delta_avg;
+        s.stale = 0;
+    }
     *res = (cfpo_result){.iterations = s.iteration, .converged = s.converged, .stop = why,
                          .seconds = omp_get_wtime() - t0, .delta_min = s.delta_min, .delta_avg = s.delta_avg,
                          .cells_per_side = R->ops->cells_per_side(R->E)};

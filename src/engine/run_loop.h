@@ -8,7 +8,9 @@
  * process got SIGTERM or SIGUSR1 (runsignal.h) and a checkpoint is
  * configured, writes one at the next iteration boundary and stops with
  * CFPO_STOP_SIGNAL. Every rank decides the same: the statistics, the
- * elapsed time and the signal are reduced over ranks.
+ * elapsed time and the signal are reduced over ranks. Where the last
+ * iteration did not measure the set (cfpo_options.lazy_measure), the
+ * result's deltas come from the engine's `now`. 
  * May include: engine_iface.h, runsignal.h, stoprule.h (layers 0-3). */
 #ifndef CFPO_RUN_LOOP_H
 #define CFPO_RUN_LOOP_H
