@@ -83,7 +83,8 @@ typedef struct {
                           result, about a tenth less time an iteration; the
                           progress callback sees the last measured values in
                           between (stale = 1). 0: every iteration (the
-                          uniform and 3-D engines always do) */
+                          uniform and 3-D engines always do). The same on
+                          every rank, as every option */
 } cfpo_options;
 
 typedef struct {

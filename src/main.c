@@ -396,8 +396,10 @@ static void run(cmdline *c, run_ctx *ctx, cfpo_run_engine *R, cfpo_result *res)
     c->o.progress = on_iteration;
     c->o.user = ctx;
     /* the trace and the progress line show each iteration's deltas; else
-     * the density engine measures only where a rule reads them */
-    c->o.lazy_measure = !c->trace && !ctx->prog.enabled;
+     * the density engine measures only where a rule reads them (the
+     * measure is collective: one choice on every rank, though only rank
+     * 0 may show a line) */
+    c->o.lazy_measure = comm_all(!c->trace && !ctx->prog.enabled);
     ctx->t0 = cli_now();
     if (c->cfg.checkpoint) runsignal_install(); /* after the files' clean-up handler: SIGTERM saves */
     int rc = cfpo_engines_open(c->n, &c->o, &c->cfg, c->dp, ctx->t0, R, err, sizeof err);

@@ -10,7 +10,7 @@
  * CFPO_STOP_SIGNAL. Every rank decides the same: the statistics, the
  * elapsed time and the signal are reduced over ranks. Where the last
  * iteration did not measure the set (cfpo_options.lazy_measure), the
- * result's deltas come from the engine's `now`. 
+ * result's deltas come from the engine's `now`.
  * May include: engine_iface.h, runsignal.h, stoprule.h (layers 0-3). */
 #ifndef CFPO_RUN_LOOP_H
 #define CFPO_RUN_LOOP_H
