@@ -5,7 +5,8 @@
 # fail counters with ok and bad, run P ARGS...: cfpo on P ranks, 120 s at
 # most, and expect_err CODE PATTERN P ARGS...: an error reported once for
 # the whole job (one "cfpo:" line holding PATTERN), every rank exiting
-# CODE, no file left in the folder.
+# CODE, no file left in the folder; watchdog and unwatch bound a job
+# started in the background.
 B=$(cd "$1" && pwd)
 MPIRUN=$2
 CFPO="$B/cfpo"
@@ -19,6 +20,19 @@ bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
 run() {
   local p=$1; shift
   timeout 120 "$MPIRUN" --oversubscribe -np "$p" "$CFPO" -q "$@"
+}
+# watchdog PID SECONDS PATTERN: after SECONDS, kill -KILL the job PID
+# (mpirun, started with &; its status is then 137) and the processes whose
+# command line holds PATTERN, so that a hang fails a check instead of
+# running into CTest's limit; unwatch ends it once the job is waited for.
+watchdog() {
+  ( sleep "$2"; kill -KILL "$1"; pkill -KILL -f -- "$3" ) >/dev/null 2>&1 &
+  wd=$!
+}
+unwatch() {
+  pkill -P "$wd" 2>/dev/null
+  kill "$wd" 2>/dev/null
+  wait "$wd" 2>/dev/null
 }
 expect_err() {
   local code=$1 pat=$2 p=$3; shift 3

@@ -89,10 +89,13 @@ expect_err 2 "text output needs one rank" 2 -n 16384 --density cos:a=0.9 --max-i
 "$MPIRUN" --oversubscribe -np 2 "$CFPO" -q -n 262144 -t 1 --density cos:a=0.9 --checkpoint sig.ck \
   --checkpoint-every 1000 -o sig.npy >sig.out 2>sig.err &
 pid=$!
+watchdog $pid 120 "--checkpoint sig.ck"
 sleep 3
 kill -USR1 $pid
 wait $pid
 rc=$?
+unwatch
+[ $rc -eq 137 ] && bad "SIGUSR1 under mpirun: still running after 120 s (killed)"
 it=$(sed -n 's/.*stopped by a signal at iteration \([0-9]*\);.*/\1/p' sig.err | head -1)
 [ $rc -eq 3 ] && [ -n "$it" ] && [ -f sig.ck ] && [ ! -e sig.npy ] && ok ||
   bad "SIGUSR1 under mpirun: exit $rc, iteration '$it', checkpoint $(ls sig.ck 2>&1): $(grep cfpo: sig.err | head -2)"

@@ -186,11 +186,14 @@ rm -f ckp.bin outp.npy
 "$MPIRUN" --oversubscribe -np 3 "$CFPO" -q -n 65536 -t 1 --progressive --checkpoint ckp.bin \
   --checkpoint-every 1 -o outp.npy >sig.out 2>sig.err &
 job=$! # mpirun itself (it forwards SIGUSR1 to the ranks; `timeout` would die of it)
+watchdog $job 120 "--checkpoint ckp.bin"
 for w in $(seq 100); do [ -e ckp.bin ] && break; sleep 0.1; done # the ranks are running: signal now
 kill -USR1 $job 2>/dev/null
 wait $job
 rc=$?
-if [ $rc -eq 3 ]; then
+unwatch
+if [ $rc -eq 137 ]; then bad "--progressive signalled on 3 ranks: still running after 120 s (killed)"
+elif [ $rc -eq 3 ]; then
   [ ! -e outp.npy ] && [ "$(grep -c 'stopped by a signal' sig.err)" = 1 ] && ok ||
     bad "--progressive signalled on 3 ranks: output left or not one message: $(grep -c 'stopped by a signal' sig.err)"
 else
@@ -199,6 +202,30 @@ fi
 rm -f outp.npy
 run 2 -n 65536 -t 1 --progressive --resume ckp.bin -o outp.npy >/dev/null 2>run.err &&
   same outp.npy refp.npy "--progressive signalled on 3 ranks, resumed on 2" || bad "--progressive resume on 2 ranks failed: $(head -2 run.err)"
+# SIGUSR1 to one rank alone while the ranks work alone on the first
+# level (64 points; 10,000 iterations there, about half a second): every
+# rank stops at the same iteration (a rank that stopped by itself left the
+# others waiting for it at the next level: a hang), exit 3, one message
+# naming level 0, no output.
+rm -f ckp1.bin outp.npy
+"$MPIRUN" --oversubscribe -np 3 "$CFPO" -q -n 65536 -t 1 --progressive --level-iter 10000 --level-min 0.99 \
+  --tol 1e-300 --checkpoint ckp1.bin --checkpoint-every 1000 -o outp.npy >sig.out 2>sig.err &
+job=$!
+watchdog $job 60 "--checkpoint ckp1.bin"
+for w in $(seq 300); do [ -e ckp1.bin ] && break; sleep 0.02; done # iteration 1,000 of level 0
+victim=$(pgrep -f -- "--checkpoint ckp1.bin" | while read -r p; do
+  [ "$(cat /proc/$p/comm 2>/dev/null)" = cfpo ] && echo "$p"; done | sed -n 2p)
+[ -n "$victim" ] && kill -USR1 "$victim"
+wait $job
+rc=$?
+unwatch
+if [ -z "$victim" ]; then bad "one rank signalled: no rank found to signal"
+elif [ $rc -eq 137 ]; then bad "one rank signalled in the ranks' lone level: the job hung (killed after 60 s)"
+elif [ $rc -ne 3 ]; then bad "one rank signalled in the ranks' lone level: exit $rc, not 3: $(head -3 sig.err)"
+else
+  [ ! -e outp.npy ] && [ "$(grep -c 'stopped by a signal at level 0 ' sig.err)" = 1 ] && [ -s ckp1.bin ] && ok ||
+    bad "one rank signalled: output left, no checkpoint or not one message naming level 0: $(head -3 sig.err)"
+fi
 expect_err 2 "the checkpoint is for" 2 --resume ck.bin --seed 9
 head -c 1000 ck.bin >trunc.bin
 expect_err 1 "truncated" 2 --resume trunc.bin -o y.npy

@@ -73,6 +73,19 @@ void comm_solo_end(void)
     size = world_size;
 }
 
+int comm_solo(void) { return solo; }
+
+void comm_world_max_i64(int64_t *v, int count)
+{
+#ifdef CFPO_HAVE_MPI
+    if (active && (solo ? world_size : size) > 1)
+        MPI_Allreduce(MPI_IN_PLACE, v, count, MPI_INT64_T, MPI_MAX, MPI_COMM_WORLD);
+#else
+    (void)v;
+    (void)count;
+#endif
+}
+
 void comm_abort(int code)
 {
 #ifdef CFPO_HAVE_MPI

@@ -31,6 +31,13 @@ int comm_size(void);
  * the same way; they must not wait on one another inside it). */
 void comm_solo_begin(void);
 void comm_solo_end(void);
+/* Whether the ranks work alone now (between comm_solo_begin and _end). */
+int comm_solo(void);
+/* The maximum over every rank of the job, also while they work alone: the
+ * one reduction allowed there, for what must agree across the job though
+ * each rank works alone (a signal that reached some ranks only). Every
+ * rank must call it the same number of times. */
+void comm_world_max_i64(int64_t *v, int count);
 /* Ends every rank of the job at once (MPI_Abort), or exits on one rank. */
 void comm_abort(int code) __attribute__((noreturn));
 /* Ranks on this machine (sharing its memory). */

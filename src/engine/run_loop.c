@@ -17,12 +17,27 @@ static int decide(const cfpo_run_engine *R, const cfpo_iter_stats *s, double ela
     return why;
 }
 
-/* A signal reached some rank (the same answer on every rank). */
+/* A signal reached some rank of the job (the same answer on every rank,
+ * also while each works alone: mpirun may deliver it to one rank an
+ * iteration before another, and a rank that stopped alone would leave
+ * the others waiting for it at the next exchange). */
 static int signalled(void)
 {
     int64_t v = runsignal_caught() != 0;
-    comm_max_i64(&v, 1);
+    comm_world_max_i64(&v, 1);
     return v != 0;
+}
+
+/* While the ranks work alone, the stop agreed across the job (the
+ * largest reason): each rank runs the same iterations to the same bytes,
+ * but a rule reading the clock could end them at different iterations,
+ * and the signal check above must be met as often on every rank. */
+static int agreed(int why)
+{
+    if (!comm_solo()) return why; /* the rules read reduced statistics and clock already */
+    int64_t v = why;
+    comm_world_max_i64(&v, 1);
+    return (int)v;
 }
 
 int cfpo_run_loop(cfpo_run_engine *R, const char *checkpoint, int every, cfpo_result *res, char *err,
@@ -34,7 +49,7 @@ int cfpo_run_loop(cfpo_run_engine *R, const char *checkpoint, int every, cfpo_re
     s.seconds = omp_get_wtime() - t0;
     double elapsed = omp_get_wtime() - R->t_born;
     comm_max_d(&elapsed, 1);
-    int why = decide(R, &s, elapsed);
+    int why = agreed(decide(R, &s, elapsed));
     int rc = 0;
     while (!why) {
         if (checkpoint && signalled()) { /* a checkpoint of where the run stands, then stop */
@@ -44,7 +59,7 @@ int cfpo_run_loop(cfpo_run_engine *R, const char *checkpoint, int every, cfpo_re
         }
         if (R->ops->step(R->E, &s, err, errlen) != 0) return -1;
         elapsed += s.seconds;
-        why = decide(R, &s, elapsed);
+        why = agreed(decide(R, &s, elapsed));
         /* every `every` iterations, and where the run stops (to go on from
          * with --resume and other limits) */
         if (checkpoint && every > 0 && (s.iteration % every == 0 || why) &&
