@@ -1,5 +1,5 @@
 /* comm.h - layer 2 (includes nothing of the project; its code uses safefile.h): the only door to
- * MPI, the one file that calls it.
+ * MPI; comm.c and comm_file.c (the shared files) are the files that call it.
  *
  * Owns: starting and ending MPI (only when the program was started by a
  * launcher such as mpirun; a plain start is one rank and never touches
@@ -38,6 +38,13 @@ int comm_solo(void);
  * each rank works alone (a signal that reached some ranks only). Every
  * rank must call it the same number of times. */
 void comm_world_max_i64(int64_t *v, int count);
+/* Whether MPI was started (comm_init under a launcher). */
+int comm_mpi_active(void);
+/* Collective: waits for every rank (nothing on one). */
+void comm_barrier(void);
+/* Payloads and file writes go in pieces of at most this many bytes (MPI
+ * counts are ints). */
+#define COMM_PIECE ((size_t)1 << 30)
 /* Ends every rank of the job at once (MPI_Abort), or exits on one rank. */
 void comm_abort(int code) __attribute__((noreturn));
 /* Ranks on this machine (sharing its memory). */
