@@ -16,6 +16,11 @@
  *   cfpo-bench plain    -n N -k K [-o FILE]  K iterations of the paper's CFPO
  *                                         in a plain engine (bench_plain.c):
  *                                         the yardstick for the engine's work
+ *   cfpo-bench contrast -n N [-k ROUNDS] [-t T] [-d SPEC] [-r SPEC]
+ *                                         an iteration under density SPEC
+ *                                         (ramp:contrast=256) against one
+ *                                         under -r (cos:a=0.000001), seeds
+ *                                         1-3, interleaved (bench_contrast.c)
  *
  * Protocol (after the Parallel Research Kernels): one untimed warm-up sweep,
  * then K timed sweeps; the median is reported. Sweep timings exclude the
@@ -26,6 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_contrast.h"
 #include "bench_plain.h"
 #include "bench_solver.h"
 #include "cfpo.h"
@@ -131,7 +137,7 @@ static int converge(int64_t n, int threads, uint64_t seed)
 static int is_mode(const char *a)
 {
     return strcmp(a, "sweep") == 0 || strcmp(a, "converge") == 0 || strcmp(a, "capture") == 0 ||
-           strcmp(a, "replay") == 0 || strcmp(a, "plain") == 0;
+           strcmp(a, "replay") == 0 || strcmp(a, "plain") == 0 || strcmp(a, "contrast") == 0;
 }
 
 /* "2,20,200" into its[] (at most 16). Returns the count, -1 if bad. */
@@ -157,19 +163,20 @@ int main(int argc, char **argv)
             printf("Usage: cfpo-bench sweep|converge -n N [-t THREADS] [-k SWEEPS] [-s SEED]\n"
                    "       cfpo-bench capture -n N -i IT[,IT...] -o FILE [-s SEED]\n"
                    "       cfpo-bench replay -o FILE [-k ROUNDS] [-p plain|avx2|avx512]\n"
-                   "       cfpo-bench plain -n N -k ITERATIONS [-s SEED] [-o FILE]\n");
+                   "       cfpo-bench plain -n N -k ITERATIONS [-s SEED] [-o FILE]\n"
+                   "       cfpo-bench contrast -n N [-k ROUNDS] [-t THREADS] [-d DENSITY] [-r REFERENCE]\n");
             return 0;
         }
-        cli_usage_error(prog, "first argument must be 'sweep', 'converge', 'capture', 'replay' or 'plain'");
+        cli_usage_error(prog, "first argument must be 'sweep', 'converge', 'capture', 'replay', 'plain' or 'contrast'");
     }
     int64_t n = 65536, v;
-    int threads = omp_get_num_procs(), k = 5, its[16], nits = 0;
+    int threads = omp_get_num_procs(), k = 5, its[16], nits = 0, threads_given = 0;
     uint64_t seed = 1;
-    const char *file = NULL, *only = NULL;
+    const char *file = NULL, *only = NULL, *dens = "ramp:contrast=256", *ref = "cos:a=0.000001";
     int ch;
     optind = 2;
     opterr = 0;
-    while ((ch = getopt(argc, argv, ":n:t:k:s:i:o:p:")) != -1) {
+    while ((ch = getopt(argc, argv, ":n:t:k:s:i:o:p:d:r:")) != -1) {
         switch (ch) {
         case 'n':
             if (cli_parse_i64(optarg, 11, INT64_MAX, &v) != 0) cli_usage_error(prog, "-n: bad value '%s'", optarg);
@@ -178,6 +185,7 @@ int main(int argc, char **argv)
         case 't':
             if (cli_parse_i64(optarg, 1, 4096, &v) != 0) cli_usage_error(prog, "-t: bad value '%s'", optarg);
             threads = (int)v;
+            threads_given = 1;
             break;
         case 'k':
             if (cli_parse_i64(optarg, 1, 10000, &v) != 0) cli_usage_error(prog, "-k: bad value '%s'", optarg);
@@ -190,6 +198,8 @@ int main(int argc, char **argv)
             if ((nits = parse_its(optarg, its)) < 0) cli_usage_error(prog, "-i: bad iteration list '%s'", optarg);
             break;
         case 'o': file = optarg; break;
+        case 'd': dens = optarg; break;
+        case 'r': ref = optarg; break;
         case 'p':
             if (strcmp(optarg, "plain") != 0 && strcmp(optarg, "avx2") != 0 && strcmp(optarg, "avx512") != 0)
                 cli_usage_error(prog, "-p: bad solver '%s' (plain, avx2 or avx512)", optarg);
@@ -202,7 +212,9 @@ int main(int argc, char **argv)
         if (!file || !nits) cli_usage_error(prog, "capture needs -i ITERATIONS and -o FILE");
         return bench_capture(prog, n, seed, its, nits, file);
     }
+    if (optind < argc) cli_usage_error(prog, "unexpected argument '%s'", argv[optind]);
     if (strcmp(argv[1], "plain") == 0) return bench_plain(prog, n, seed, k, file);
+    if (strcmp(argv[1], "contrast") == 0) return bench_contrast(prog, n, threads_given ? threads : 1, k, 3, dens, ref);
     if (strcmp(argv[1], "replay") == 0) {
         if (!file) cli_usage_error(prog, "replay needs -o FILE");
         return bench_replay(prog, file, only, k);
