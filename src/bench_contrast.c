@@ -8,6 +8,8 @@
 
 #include "cfpo.h"
 #include "cli.h"
+#include "density.h"
+#include "engines.h"
 
 #define FIRST_IT 3
 #define LAST_IT 22
@@ -40,14 +42,19 @@ static double one_run(const char *prog, int64_t n, int threads, uint64_t seed, c
     cfpo_options_init(&o);
     o.threads = threads;
     o.seed = seed;
-    o.tol = CFPO_DENSITY_TOL; /* the command's default under a density */
+    /* the command's default tolerance for this density (a flat one runs
+     * the uniform engine at the uniform default) */
+    cfpo_density d;
+    char err[512];
+    if (cfpo_density_load(spec, &d, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    o.tol = cfpo_engines_default_tol(o.variant, &d);
+    cfpo_density_free(&d);
     o.max_iter = LAST_IT;
     o.lazy_measure = 1; /* as the command measures when it shows no progress */
     double sum = 0;
     o.progress = on_iter;
     o.user = &sum;
     cfpo_result r;
-    char err[512];
     if (cfpo_sample_density(n, &o, spec, xy, &r, err, sizeof err) != 0) cli_fail(prog, "%s", err);
     if (r.iterations < LAST_IT)
         cli_fail(prog, "the run on '%s' stopped after %d iterations, before iteration %d", spec, r.iterations, LAST_IT);

@@ -7,7 +7,7 @@
 
 /* Times an iteration of CFPO under `density` against one under
  * `reference` (both density SPECs of `cfpo --density`) at n points, as the
- * command runs them by default (the density tolerance, the lazy measure):
+ * command runs them by default (its default tolerance, the lazy measure):
  * `rounds` rounds, each running seeds 1 .. seeds under both, alternating
  * which goes first; each run's time is the sum of the seconds its
  * iterations 3-22 report (the first two carry the start's largest moves).
