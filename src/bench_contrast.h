@@ -12,7 +12,8 @@
  * which goes first; each run's time is the sum of the seconds its
  * iterations 3-22 report (the first two carry the start's largest moves).
  * Prints a line a round on stderr and one RESULT line (medians, the
- * ratio's quartiles over the rounds). Exits on error. */
+ * ratio's quartiles over the rounds, each density's best round and the
+ * ratio of the two). Exits on error. */
 int bench_contrast(const char *prog, int64_t n, int threads, int rounds, int seeds, const char *density,
                    const char *reference);
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # test_bench_contrast.sh BUILD_DIR - `cfpo-bench contrast` (src/bench_contrast.c):
-# one line a round on stderr and one RESULT line whose medians and
-# quartiles are those of the round lines (recomputed here: the median of
-# 3 and 4 rounds, the quartiles by linear interpolation); the densities
+# one line a round on stderr and one RESULT line whose medians,
+# quartiles and minima are those of the round lines (recomputed here: the
+# median of 3 and 4 rounds, the quartiles by linear interpolation), and
+# whose ratio of the best rounds is their quotient; the densities
 # and the reference it names; bad input (an unknown density, n too small
 # for the density, -k 0, a stray argument) gives one line and a non-zero
 # exit. No timing is asserted (benchmarks measure speed, tests do not).
@@ -29,11 +30,13 @@ for k in 3 4; do
     function q(v, p,   i, j, t, at, lo) { for (i = 0; i < n; i++) s[i] = v[i]
       for (i = 1; i < n; i++) for (j = i; j > 0 && s[j - 1] > s[j]; j--) { t = s[j]; s[j] = s[j - 1]; s[j - 1] = t }
       at = p * (n - 1); lo = int(at); return lo + 1 < n ? s[lo] + (at - lo) * (s[lo + 1] - s[lo]) : s[lo] }
-    END { printf "%.4f %.4f %.4f %.4f %.4f", q(a, 0.5), q(b, 0.5), q(r, 0.25), q(r, 0.5), q(r, 0.75) }' r.err)
-  got="$(field ms_per_iteration) $(field reference_ms_per_iteration) $(field ratio_q1) $(field ratio) $(field ratio_q3)"
-  # each round line rounds to 4 places: the medians and quartiles agree within 2e-4
-  awk -v w="$want" -v g="$got" 'BEGIN { split(w, a); split(g, b); for (i = 1; i <= 5; i++) if (a[i] - b[i] > 2e-4 || b[i] - a[i] > 2e-4) exit 1 }' &&
-    ok || bad "-k $k: medians and quartiles $got, from the round lines $want"
+    END { printf "%.4f %.4f %.4f %.4f %.4f %.4f %.4f", q(a, 0.5), q(b, 0.5), q(r, 0.25), q(r, 0.5), q(r, 0.75), q(a, 0), q(b, 0) }' r.err)
+  got="$(field ms_per_iteration) $(field reference_ms_per_iteration) $(field ratio_q1) $(field ratio) $(field ratio_q3) $(field best_ms_per_iteration) $(field best_reference_ms_per_iteration)"
+  # each round line rounds to 4 places: the medians, quartiles and minima agree within 2e-4
+  awk -v w="$want" -v g="$got" 'BEGIN { split(w, a); split(g, b); for (i = 1; i <= 7; i++) if (a[i] - b[i] > 2e-4 || b[i] - a[i] > 2e-4) exit 1 }' &&
+    ok || bad "-k $k: medians, quartiles and minima $got, from the round lines $want"
+  awk -v a="$(field best_ms_per_iteration)" -v b="$(field best_reference_ms_per_iteration)" -v r="$(field ratio_of_best)" \
+    'BEGIN { d = a / b - r; exit !(d < 1e-3 && d > -1e-3) }' && ok || bad "-k $k: ratio_of_best is not best over best: $(cat r.out)"
   awk -v q1="$(field ratio_q1)" -v m="$(field ratio)" -v q3="$(field ratio_q3)" 'BEGIN { exit !(q1 > 0 && q1 <= m && m <= q3) }' &&
     ok || bad "-k $k: quartiles out of order: $(cat r.out)"
 done
