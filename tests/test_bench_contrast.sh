@@ -4,9 +4,9 @@
 # quartiles and minima are those of the round lines (recomputed here: the
 # median of 3 and 4 rounds, the quartiles by linear interpolation), and
 # whose ratio of the best rounds is their quotient; the densities
-# and the reference it names; bad input (an unknown density, n too small
-# for the density, -k 0, a stray argument) gives one line and a non-zero
-# exit. No timing is asserted (benchmarks measure speed, tests do not).
+# and the reference it names, and -t; bad input (an unknown density, n
+# too small for the density, -k 0, a stray argument, in this mode and in
+# another) gives one line and a non-zero exit. No timing is asserted (benchmarks measure speed, tests do not).
 set -u
 B=$(cd "$1" && pwd)
 T=$(mktemp -d /tmp/cfpo-contrast-XXXXXX)
@@ -17,12 +17,14 @@ bad() { fail=$((fail + 1)); echo "FAIL: $*" >&2; }
 ok() { pass=$((pass + 1)); }
 field() { grep -o " $1=[^ ]*" r.out | cut -d= -f2-; }
 for k in 3 4; do
-  if ! "$B/cfpo-bench" contrast -n 2600 -k "$k" -d ramp:contrast=16 -r cos:a=0.5 >r.out 2>r.err; then
+  t=$((k - 2)) # one thread (the default), then -t 2
+  topt=; [ "$t" -gt 1 ] && topt="-t $t"
+  if ! "$B/cfpo-bench" contrast -n 2600 -k "$k" $topt -d ramp:contrast=16 -r cos:a=0.5 >r.out 2>r.err; then
     bad "contrast -k $k: $(head -n 1 r.err)"; continue
   fi
   [ "$(grep -c '^RESULT contrast ' r.out)" = 1 ] && [ "$(wc -l <r.out)" = 1 ] && ok || bad "-k $k: one RESULT line: $(cat r.out)"
   [ "$(grep -c '^cfpo-bench: contrast round [0-9]* of '"$k"': ' r.err)" = "$k" ] && ok || bad "-k $k: $k round lines: $(cat r.err)"
-  [ "$(field n) $(field threads) $(field rounds) $(field seeds) $(field iterations)" = "2600 1 $k 3 3-22" ] && ok ||
+  [ "$(field n) $(field threads) $(field rounds) $(field seeds) $(field iterations)" = "2600 $t $k 3 3-22" ] && ok ||
     bad "-k $k: n, threads, rounds, seeds, iterations: $(cat r.out)"
   [ "$(field density) $(field reference)" = "ramp:contrast=16 cos:a=0.5" ] && ok || bad "-k $k: the specs: $(cat r.out)"
   # the statistics from the round lines: "... X ms against Y ms an iteration, ratio R"
@@ -40,11 +42,12 @@ for k in 3 4; do
   awk -v q1="$(field ratio_q1)" -v m="$(field ratio)" -v q3="$(field ratio_q3)" 'BEGIN { exit !(q1 > 0 && q1 <= m && m <= q3) }' &&
     ok || bad "-k $k: quartiles out of order: $(cat r.out)"
 done
-# bad input: one line, a non-zero exit
-for args in "-n 4096 -k 1 -d nosuch" "-n 1024 -k 1" "-n 4096 -k 0" "-n 4096 -k 1 stray" "-n 4096 -k 1 -r ramp:contrast=0.5"; do
-  if "$B/cfpo-bench" contrast $args >r.out 2>r.err; then bad "contrast $args: accepted"
+# bad input: one line, a non-zero exit (a stray argument in another mode too)
+for args in "contrast -n 4096 -k 1 -d nosuch" "contrast -n 1024 -k 1" "contrast -n 4096 -k 0" "contrast -n 4096 -k 1 stray" \
+            "contrast -n 4096 -k 1 -r ramp:contrast=0.5" "sweep -n 1000 -k 1 stray"; do
+  if "$B/cfpo-bench" $args >r.out 2>r.err; then bad "$args: accepted"
   elif [ "$(wc -l <r.err)" = 1 ] && grep -q '^cfpo-bench: ' r.err && [ ! -s r.out ]; then ok
-  else bad "contrast $args: not one line: $(cat r.err)"; fi
+  else bad "$args: not one line: $(cat r.err)"; fi
 done
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -15,8 +15,6 @@
 
 static int active, rank, size = 1;
 
-#define PIECE COMM_PIECE
-
 void comm_init(int *argc, char ***argv)
 {
 #ifdef CFPO_HAVE_MPI
@@ -69,21 +67,13 @@ void comm_solo_end(void)
 
 int comm_solo(void) { return solo; }
 
-void comm_world_max_i64(int64_t *v, int count)
-{
-#ifdef CFPO_HAVE_MPI
-    if (active && (solo ? world_size : size) > 1)
-        MPI_Allreduce(MPI_IN_PLACE, v, count, MPI_INT64_T, MPI_MAX, MPI_COMM_WORLD);
-#else
-    (void)v;
-    (void)count;
-#endif
-}
+/* The ranks of the whole job, also while each works alone. */
+static int job_size(void) { return solo ? world_size : size; }
 
 void comm_abort(int code)
 {
 #ifdef CFPO_HAVE_MPI
-    if (active && (solo ? world_size : size) > 1) MPI_Abort(MPI_COMM_WORLD, code);
+    if (active && job_size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
     comm_finalize();
 #endif
     exit(code);
@@ -113,17 +103,21 @@ void comm_barrier(void)
 #endif
 }
 
+/* An all-reduce in place over `ranks` ranks (this rank alone: nothing):
+ * size for the reductions below, job_size() for comm_world_max_i64. */
 #ifdef CFPO_HAVE_MPI
-#define REDUCE(v, count, type, op)                                                   \
+#define REDUCE_OVER(ranks, v, count, type, op)                                       \
     do {                                                                             \
-        if (active && size > 1) MPI_Allreduce(MPI_IN_PLACE, v, count, type, op, MPI_COMM_WORLD); \
+        if (active && (ranks) > 1) MPI_Allreduce(MPI_IN_PLACE, v, count, type, op, MPI_COMM_WORLD); \
     } while (0)
 #else
-#define REDUCE(v, count, type, op) ((void)(v), (void)(count))
+#define REDUCE_OVER(ranks, v, count, type, op) ((void)(ranks), (void)(v), (void)(count))
 #endif
+#define REDUCE(v, count, type, op) REDUCE_OVER(size, v, count, type, op)
 
 void comm_sum_i64(int64_t *v, int count) { REDUCE(v, count, MPI_INT64_T, MPI_SUM); }
 void comm_max_i64(int64_t *v, int count) { REDUCE(v, count, MPI_INT64_T, MPI_MAX); }
+void comm_world_max_i64(int64_t *v, int count) { REDUCE_OVER(job_size(), v, count, MPI_INT64_T, MPI_MAX); }
 void comm_min_d(double *v, int count) { REDUCE(v, count, MPI_DOUBLE, MPI_MIN); }
 void comm_max_d(double *v, int count) { REDUCE(v, count, MPI_DOUBLE, MPI_MAX); }
 void comm_sum_d(double *v, int count) { REDUCE(v, count, MPI_DOUBLE, MPI_SUM); }
@@ -150,8 +144,8 @@ void comm_bcast(void *buf, size_t bytes, int root)
 {
 #ifdef CFPO_HAVE_MPI
     if (active && size > 1) {
-        for (size_t off = 0; off < bytes; off += PIECE) {
-            size_t b = bytes - off < PIECE ? bytes - off : PIECE;
+        for (size_t off = 0; off < bytes; off += COMM_PIECE) {
+            size_t b = bytes - off < COMM_PIECE ? bytes - off : COMM_PIECE;
             MPI_Bcast((char *)buf + off, (int)b, MPI_BYTE, root, MPI_COMM_WORLD);
         }
     }
@@ -166,13 +160,13 @@ void comm_bcast(void *buf, size_t bytes, int root)
 /* Posts the pieces of one payload; *nr counts requests. */
 static void post(MPI_Request *r, int *nr, int send, void *buf, size_t bytes, int peer, int tag)
 {
-    for (size_t off = 0; off < bytes; off += PIECE) {
-        size_t b = bytes - off < PIECE ? bytes - off : PIECE;
+    for (size_t off = 0; off < bytes; off += COMM_PIECE) {
+        size_t b = bytes - off < COMM_PIECE ? bytes - off : COMM_PIECE;
         if (send) MPI_Isend((char *)buf + off, (int)b, MPI_BYTE, peer, tag, MPI_COMM_WORLD, &r[(*nr)++]);
         else MPI_Irecv((char *)buf + off, (int)b, MPI_BYTE, peer, tag, MPI_COMM_WORLD, &r[(*nr)++]);
     }
 }
-static size_t pieces(size_t bytes) { return bytes / PIECE + 1; }
+static size_t pieces(size_t bytes) { return bytes / COMM_PIECE + 1; }
 #endif
 
 int comm_allgatherv(const void *buf, size_t bytes, void **all, size_t *total)

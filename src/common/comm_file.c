@@ -19,8 +19,6 @@
 #include <mpi.h>
 #endif
 
-#define PIECE COMM_PIECE
-
 struct comm_file {
     char *path, *tmp;
     int fd; /* one rank */
@@ -109,8 +107,8 @@ int comm_file_write_at(comm_file *f, uint64_t offset, const void *buf, size_t by
 {
 #ifdef CFPO_HAVE_MPI
     if (f->mpi) {
-        for (size_t off = 0; off < bytes; off += PIECE) {
-            size_t b = bytes - off < PIECE ? bytes - off : PIECE;
+        for (size_t off = 0; off < bytes; off += COMM_PIECE) {
+            size_t b = bytes - off < COMM_PIECE ? bytes - off : COMM_PIECE;
             if (MPI_File_write_at(f->fh, (MPI_Offset)(offset + off), (const char *)buf + off, (int)b,
                                   MPI_BYTE, MPI_STATUS_IGNORE) != MPI_SUCCESS) {
                 f->failed = 1;
@@ -129,16 +127,16 @@ int comm_file_write_at(comm_file *f, uint64_t offset, const void *buf, size_t by
 
 #ifdef CFPO_HAVE_MPI
 /* The next piece of a run list for one collective write: at most maxruns
- * runs and PIECE bytes, starting at element *done of run *k. Fills the
+ * runs and COMM_PIECE bytes, starting at element *done of run *k. Fills the
  * block lengths and displacements (when bl is not NULL); returns the count. */
 static int next_piece(const uint64_t *first, const uint64_t *len, int64_t nruns, size_t elem,
                       int64_t maxruns, int64_t *k, uint64_t *done, int *bl, MPI_Aint *dp, size_t *bytes_out)
 {
     size_t bytes = 0;
     int cnt = 0;
-    while (*k < nruns && cnt < maxruns && bytes < PIECE) {
+    while (*k < nruns && cnt < maxruns && bytes < COMM_PIECE) {
         uint64_t take = len[*k] - *done;
-        if (bytes + take * elem > PIECE) take = (PIECE - bytes) / elem;
+        if (bytes + take * elem > COMM_PIECE) take = (COMM_PIECE - bytes) / elem;
         if (take == 0) break;
         if (bl) {
             bl[cnt] = (int)(take * elem);
@@ -159,7 +157,7 @@ int comm_file_write_runs(comm_file *f, uint64_t base, size_t elem, const void *b
 {
 #ifdef CFPO_HAVE_MPI
     if (f->mpi) {
-        /* Pieces of at most 2^26 runs and PIECE bytes, each one collective
+        /* Pieces of at most 2^26 runs and COMM_PIECE bytes, each one collective
          * write through an hindexed file view; every rank takes part in the
          * same number of them. */
         const int64_t maxruns = (int64_t)1 << 26;
