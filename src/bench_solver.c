@@ -19,6 +19,7 @@
 #include "cfpo.h"
 #include "cli.h"
 #include "engine.h"
+#include "readall.h"
 #include "solver_simd.h"
 
 static const char MAGIC[] = "CFPOCALLS1\n";
@@ -80,19 +81,14 @@ typedef struct {
 
 static unsigned char *slurp(const char *prog, const char *path, size_t *len)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) cli_fail(prog, "cannot read '%s'", path);
-    size_t cap = 1 << 20, n = 0;
-    unsigned char *b = malloc(cap);
-    for (;;) {
-        if (!b) cli_fail(prog, "out of memory reading '%s'", path);
-        n += fread(b + n, 1, cap - n, f);
-        if (n < cap) break;
-        cap *= 2;
-        b = realloc(b, cap);
+    unsigned char *b = NULL;
+    switch (readall(path, 0, &b, len)) {
+    case READALL_OK: break;
+    case READALL_OPEN: cli_fail(prog, "cannot read '%s'", path);
+    case READALL_MEMORY:
+    case READALL_LARGE: cli_fail(prog, "out of memory reading '%s'", path);
+    case READALL_READ: cli_fail(prog, "read error in '%s'", path);
     }
-    fclose(f);
-    *len = n;
     return b;
 }
 

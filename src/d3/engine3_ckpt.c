@@ -33,6 +33,7 @@
 #include "bytes_le.h"
 #include "engine3_dist.h"
 #include "state3.h"
+#include "readall.h"
 #include "safefile.h"
 #include "tmpguard.h"
 
@@ -265,35 +266,14 @@ cfpo3_engine *cfpo3_checkpoint_parse(const unsigned char *buf, size_t len, const
 
 cfpo3_engine *cfpo3_checkpoint_read(const char *path, int threads, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot open checkpoint", path);
-        return NULL;
-    }
-    unsigned char *buf = NULL;
-    size_t len = 0, cap = 0;
-    for (;;) {
-        if (len == cap) {
-            cap = cap ? cap * 2 : 1 << 16;
-            unsigned char *nb = realloc(buf, cap);
-            if (!nb) {
-                free(buf);
-                fclose(f);
-                snprintf(err, errlen, "%s: out of memory", path);
-                return NULL;
-            }
-            buf = nb;
-        }
-        const size_t got = fread(buf + len, 1, cap - len, f);
-        len += got;
-        if (got == 0) break;
-    }
-    const int bad = ferror(f);
-    fclose(f);
-    if (bad) {
-        free(buf);
-        snprintf(err, errlen, "%s: read error", path);
-        return NULL;
+    unsigned char *buf;
+    size_t len;
+    switch (readall(path, 0, &buf, &len)) {
+    case READALL_OK: break;
+    case READALL_OPEN: snprintf(err, errlen, "%s: cannot open checkpoint", path); return NULL;
+    case READALL_MEMORY:
+    case READALL_LARGE: snprintf(err, errlen, "%s: out of memory", path); return NULL;
+    case READALL_READ: snprintf(err, errlen, "%s: read error", path); return NULL;
     }
     cfpo3_engine *e = cfpo3_checkpoint_parse(buf, len, path, threads, err, errlen);
     free(buf);

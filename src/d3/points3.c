@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "npy.h"
+#include "readall.h"
 #include "safefile.h"
 #include "tmpguard.h"
 
@@ -342,35 +343,14 @@ int p3_read(const char *path, double **xyz, size_t *n, char *err, size_t errlen)
         snprintf(err, errlen, "%s: cannot read this format (--init reads .npy, text, CSV, raw)", path);
         return -1;
     }
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
-        return -1;
-    }
-    unsigned char *buf = NULL;
-    size_t len = 0, cap = 0;
-    for (;;) {
-        if (len == cap) {
-            cap = cap ? cap * 2 : 1 << 16;
-            unsigned char *nb = realloc(buf, cap);
-            if (!nb) {
-                free(buf);
-                fclose(f);
-                snprintf(err, errlen, "%s: out of memory", path);
-                return -1;
-            }
-            buf = nb;
-        }
-        const size_t got = fread(buf + len, 1, cap - len, f);
-        len += got;
-        if (got == 0) break;
-    }
-    const int bad = ferror(f);
-    fclose(f);
-    if (bad) {
-        free(buf);
-        snprintf(err, errlen, "%s: read error (is it a folder?)", path);
-        return -1;
+    unsigned char *buf;
+    size_t len;
+    switch (readall(path, 0, &buf, &len)) {
+    case READALL_OK: break;
+    case READALL_OPEN: snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno)); return -1;
+    case READALL_MEMORY:
+    case READALL_LARGE: snprintf(err, errlen, "%s: out of memory", path); return -1;
+    case READALL_READ: snprintf(err, errlen, "%s: read error (is it a folder?)", path); return -1;
     }
     const int rc = p3_read_buffer(fmt, path, buf, len, xyz, n, err, errlen);
     free(buf);

@@ -13,6 +13,7 @@
 #include "npy.h"
 #include "pgm.h"
 #include "png_read.h"
+#include "readall.h"
 
 /* The largest file read: an image or array of GREY_MAX_PIXELS float64
  * values and its header. */
@@ -20,33 +21,14 @@
 
 static int read_whole(const char *path, unsigned char **buf, size_t *len, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) { snprintf(err, errlen, "--density %s: cannot open the file", path); return -1; }
-    size_t cap = 1 << 16, n = 0;
-    unsigned char *b = malloc(cap);
-    while (b) {
-        if (n == cap) {
-            if (cap >= FILE_MAX) {
-                snprintf(err, errlen, "--density %s: file too large (over %zu bytes)", path, FILE_MAX);
-                free(b); fclose(f);
-                return -1;
-            }
-            unsigned char *nb = realloc(b, cap * 2);
-            if (!nb) { free(b); b = NULL; break; }
-            b = nb;
-            cap *= 2;
-        }
-        size_t got = fread(b + n, 1, cap - n, f);
-        n += got;
-        if (got == 0) break;
+    switch (readall(path, FILE_MAX, buf, len)) {
+    case READALL_OK: return 0;
+    case READALL_OPEN: snprintf(err, errlen, "--density %s: cannot open the file", path); break;
+    case READALL_LARGE: snprintf(err, errlen, "--density %s: file too large (over %zu bytes)", path, FILE_MAX); break;
+    case READALL_MEMORY: snprintf(err, errlen, "--density %s: out of memory reading the file", path); break;
+    case READALL_READ: snprintf(err, errlen, "--density %s: read error", path); break;
     }
-    int bad = ferror(f);
-    fclose(f);
-    if (!b) { snprintf(err, errlen, "--density %s: out of memory reading the file", path); return -1; }
-    if (bad) { snprintf(err, errlen, "--density %s: read error", path); free(b); return -1; }
-    *buf = b;
-    *len = n;
-    return 0;
+    return -1;
 }
 
 static int from_grey(const grey_image *g, int invert, const char *what, cfpo_density *d, char *err, size_t errlen)
