@@ -1,7 +1,7 @@
 /* imprint.c - the grid imprint of a point set, measured directly (docs/
  * results/2026-11-28-imprint.md): P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / n
  * at k = (0, g), (g, 0), (0, 4g/3), (4g/3, 0) (g: cfpo's grid for n, or
- * --grid G), each divided by the mean of P over its own ring: RING integer
+ * --grid G), each divided by the mean of P over its own ring: RP_RING (96) integer
  * vectors spread evenly in angle with |k| rounding to the same radius (the
  * four axis vectors of the ring left out). A ratio near 1 is a clean set;
  * white noise gives ratios with an exponential spread (P / mean ~ Exp(1)).
@@ -22,7 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define RING 96
+#include "../analysis/ring_power.h"
 
 static double *read_npy(const char *path, size_t *n)
 {
@@ -57,36 +57,6 @@ static double *read_npy(const char *path, size_t *n)
     return p;
 }
 
-static double power(const double *p, size_t n, double kx, double ky)
-{
-    double re = 0, im = 0;
-#pragma omp parallel for reduction(+ : re, im) schedule(static)
-    for (size_t i = 0; i < n; i++) {
-        const double a = -2 * M_PI * (kx * p[2 * i] + ky * p[2 * i + 1]);
-        re += cos(a);
-        im += sin(a);
-    }
-    return (re * re + im * im) / (double)n;
-}
-
-/* Mean of P over integer vectors with round(|k|) = r, RING directions in
- * the half plane (P(-k) = P(k)), the axis vectors left out, repeats once. */
-static double ring_mean(const double *p, size_t n, int r)
-{
-    int kx[RING], ky[RING], m = 0;
-    for (int j = 0; j < RING; j++) {
-        const double a = M_PI * (j + 0.5) / RING;
-        const int x = (int)lround(r * cos(a)), y = (int)lround(r * sin(a));
-        if (x == 0 || y == 0 || lround(sqrt((double)x * x + (double)y * y)) != r) continue;
-        int dup = 0;
-        for (int q = 0; q < m && !dup; q++) dup = kx[q] == x && ky[q] == y;
-        if (!dup) kx[m] = x, ky[m] = y, m++;
-    }
-    double s = 0;
-    for (int q = 0; q < m; q++) s += power(p, n, kx[q], ky[q]);
-    return m ? s / m : NAN;
-}
-
 /* Mode 4: P over its ring's mean at every (mx, my) g / 3, |mx|, |my| <= 4,
  * my > 0 or (my = 0, mx > 0); each ring computed once per radius. */
 static int all_vectors(double *p, size_t n, int g)
@@ -105,8 +75,8 @@ static int all_vectors(double *p, size_t n, int g)
         rm[v] = -1;
         for (int q = 0; q < v; q++)
             if (rad[q] == rad[v]) rm[v] = rm[q];
-        if (rm[v] < 0) rm[v] = ring_mean(p, n, rad[v]);
-        ratio[v] = power(p, n, vx[v], vy[v]) / rm[v];
+        if (rm[v] < 0) rm[v] = rp_ring_mean(p, n, rad[v]);
+        ratio[v] = rp_power(p, n, vx[v], vy[v]) / rm[v];
     }
     int ord[40];
     for (int v = 0; v < nv; v++) ord[v] = v;
@@ -141,21 +111,21 @@ int main(int argc, char **argv)
     const int g4 = (int)lround(4.0 * g / 3.0);
     const int vec[4][2] = {{0, g}, {g, 0}, {0, g4}, {g4, 0}};
     const char *name[4] = {"0,g", "g,0", "0,4g/3", "4g/3,0"};
-    const double mg = ring_mean(p, n, g), m4 = ring_mean(p, n, g4);
+    const double mg = rp_ring_mean(p, n, g), m4 = rp_ring_mean(p, n, g4);
     printf("n=%zu g=%d", n, g);
     for (int v = 0; v < 4; v++) {
-        const double P = power(p, n, vec[v][0], vec[v][1]), m = v < 2 ? mg : m4;
+        const double P = rp_power(p, n, vec[v][0], vec[v][1]), m = v < 2 ? mg : m4;
         printf(" P(%s)=%.3g ring=%.3g ratio=%.1f", name[v], P, m, P / m);
     }
     if (argc > 3) { /* the colours' period, 3 cells: (0, g/3), (0, 2g/3), (g/3, 0), (2g/3, 0) */
         const int g1 = (int)lround(g / 3.0), g2 = (int)lround(2.0 * g / 3.0);
-        const double m1 = ring_mean(p, n, g1), m2 = ring_mean(p, n, g2);
+        const double m1 = rp_ring_mean(p, n, g1), m2 = rp_ring_mean(p, n, g2);
         printf(" P(0,g/3)/ring=%.1f P(0,2g/3)/ring=%.1f P(g/3,0)/ring=%.1f P(2g/3,0)/ring=%.1f",
-               power(p, n, 0, g1) / m1, power(p, n, 0, g2) / m2, power(p, n, g1, 0) / m1, power(p, n, g2, 0) / m2);
+               rp_power(p, n, 0, g1) / m1, rp_power(p, n, 0, g2) / m2, rp_power(p, n, g1, 0) / m1, rp_power(p, n, g2, 0) / m2);
         /* the cells' diagonals: the two axes' walks have the same step,
          * so they do not turn a print at (-g, g) */
-        const double md = ring_mean(p, n, (int)lround(g * sqrt(2.0)));
-        printf(" P(g,g)/ring=%.1f P(-g,g)/ring=%.1f", power(p, n, g, g) / md, power(p, n, -g, g) / md);
+        const double md = rp_ring_mean(p, n, (int)lround(g * sqrt(2.0)));
+        printf(" P(g,g)/ring=%.1f P(-g,g)/ring=%.1f", rp_power(p, n, g, g) / md, rp_power(p, n, -g, g) / md);
     }
     printf("\n");
     free(p);

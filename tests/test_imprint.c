@@ -56,48 +56,17 @@
 #include "cfpo.h"
 #include "engine.h"
 #include "testutil.h"
+#include "../analysis/ring_power.h"
 
 #define IMPRINT_N 262144
 #define IMPRINT_ITERS 2
 #define IMPRINT_BOUND 60.0
-#define RING 96
 #define FIRST_BOUND 200.0
 #define COLOUR_BOUND 15.0
 #define UNPRINT_ITERS 9
 #define UNPRINT_BOUND 5.0
 
 static int passed_, failed_;
-
-static double power(const double *xy, int64_t n, int kx, int ky)
-{
-    double re = 0, im = 0;
-#pragma omp parallel for reduction(+ : re, im) schedule(static)
-    for (int64_t i = 0; i < n; i++) {
-        const double a = -2 * M_PI * ((double)kx * xy[2 * i] + (double)ky * xy[2 * i + 1]);
-        re += cos(a);
-        im += sin(a);
-    }
-    return (re * re + im * im) / (double)n;
-}
-
-/* Mean of P over the integer vectors k with round(|k|) = r, RING
- * directions in the upper half plane (P(-k) = P(k)), no axis vector, each
- * vector once. */
-static double ring_mean(const double *xy, int64_t n, int r)
-{
-    int kx[RING], ky[RING], m = 0;
-    for (int j = 0; j < RING; j++) {
-        const double a = M_PI * (j + 0.5) / RING;
-        const int x = (int)lround(r * cos(a)), y = (int)lround(r * sin(a));
-        if (x == 0 || y == 0 || lround(sqrt((double)x * x + (double)y * y)) != r) continue;
-        int dup = 0;
-        for (int q = 0; q < m && !dup; q++) dup = kx[q] == x && ky[q] == y;
-        if (!dup) kx[m] = x, ky[m] = y, m++;
-    }
-    double s = 0;
-    for (int q = 0; q < m; q++) s += power(xy, n, kx[q], ky[q]);
-    return m ? s / m : NAN;
-}
 
 /* The set of `iters` iterations, seed `seed`, into xy: 0, or -1 (said). */
 static int sample(double *xy, int64_t n, int seed, int iters)
@@ -133,7 +102,7 @@ static double first_sweep(double *xy, int64_t n, int g, int seed, const char **a
     double worst = 0;
     printf("seed %d, after 1 iteration:", seed);
     for (int v = 0; v < 10; v++) {
-        const double q = power(xy, n, vec[v][0], vec[v][1]) / ring_mean(xy, n, rad[v]);
+        const double q = rp_power(xy, n, vec[v][0], vec[v][1]) / rp_ring_mean(xy, n, rad[v]);
         printf(" %s %.1f", name[v], q);
         if (!(q <= worst)) worst = q, *at = name[v]; /* a NaN is the worst */
     }
@@ -151,8 +120,8 @@ static double planted(double *xy, int64_t n, int g)
             const double v = xy[2 * i + a] + 0.05 * sin(2 * M_PI * g * xy[2 * i + a] + a) / (2 * M_PI * g);
             xy[2 * i + a] = v - floor(v);
         }
-    const double m = ring_mean(xy, n, g);
-    printf("planted: P(0,g) / ring mean %.1f, P(g,0) %.1f\n", power(xy, n, 0, g) / m, power(xy, n, g, 0) / m);
+    const double m = rp_ring_mean(xy, n, g);
+    printf("planted: P(0,g) / ring mean %.1f, P(g,0) %.1f\n", rp_power(xy, n, 0, g) / m, rp_power(xy, n, g, 0) / m);
     cfpo_options o;
     cfpo_options_init(&o);
     o.seed = 1;
@@ -171,7 +140,7 @@ static double planted(double *xy, int64_t n, int g)
     }
     cfpo_engine_points(E, xy);
     cfpo_engine_free(E);
-    const double m2 = ring_mean(xy, n, g), a = power(xy, n, 0, g) / m2, b = power(xy, n, g, 0) / m2;
+    const double m2 = rp_ring_mean(xy, n, g), a = rp_power(xy, n, 0, g) / m2, b = rp_power(xy, n, g, 0) / m2;
     printf("after %d iterations: P(0,g) / ring mean %.1f, P(g,0) %.1f\n", UNPRINT_ITERS, a, b);
     return isfinite(a) && isfinite(b) ? fmax(a, b) : -1;
 }
@@ -193,16 +162,16 @@ int main(void)
             free(xy);
             return 1;
         }
-        const double mg = ring_mean(xy, n, g), m4 = ring_mean(xy, n, g4), md = ring_mean(xy, n, gd);
+        const double mg = rp_ring_mean(xy, n, g), m4 = rp_ring_mean(xy, n, g4), md = rp_ring_mean(xy, n, gd);
         const double ring[6] = {mg, mg, m4, m4, md, md};
         printf("seed %d, g %d, after %d iterations: P / ring mean", seed, g, IMPRINT_ITERS);
         for (int v = 0; v < 6; v++) {
-            q[seed - 1][v] = power(xy, n, vec[v][0], vec[v][1]) / ring[v];
+            q[seed - 1][v] = rp_power(xy, n, vec[v][0], vec[v][1]) / ring[v];
             printf(" %s %.1f", name[v], q[seed - 1][v]);
         }
-        const double m3 = ring_mean(xy, n, g3);
-        qc[seed - 1][0] = power(xy, n, 0, g3) / m3;
-        qc[seed - 1][1] = power(xy, n, g3, 0) / m3;
+        const double m3 = rp_ring_mean(xy, n, g3);
+        qc[seed - 1][0] = rp_power(xy, n, 0, g3) / m3;
+        qc[seed - 1][1] = rp_power(xy, n, g3, 0) / m3;
         printf(" (0,g/3) %.1f (g/3,0) %.1f\n", qc[seed - 1][0], qc[seed - 1][1]);
     }
     for (int v = 0; v < 6; v++) {
