@@ -293,7 +293,7 @@ void cli_print_summary_ex(FILE *f, const cli_summary *s, const char *extra)
 
 int cli_atomic_open(cli_atomic *a, const char *path, char *err, size_t errlen)
 {
-    if (safefile_open(a, path, "w", err, errlen) != 0) return -1;
+    if (safefile_open(a, path, "wb", err, errlen) != 0) return -1;
     tmpguard_file(a->tmp);
     return 0;
 }

@@ -100,9 +100,9 @@ void cli_print_summary(FILE *f, const cli_summary *s);
 /* The same line with more fields after stop (extra: " k=v ...", or NULL). */
 void cli_print_summary_ex(FILE *f, const cli_summary *s, const char *extra);
 
-/* Text file written under a temporary name (registered with tmpguard, so
- * a signal or an error exit removes it) and renamed on commit: safefile.h's
- * file. */
+/* A file (text or binary: opened "wb", the same bytes on POSIX) written
+ * under a temporary name (registered with tmpguard, so a signal or an
+ * error exit removes it) and renamed on commit: safefile.h's file. */
 typedef safefile cli_atomic;
 int cli_atomic_open(cli_atomic *a, const char *path, char *err, size_t errlen);
 int cli_atomic_commit(cli_atomic *a, char *err, size_t errlen);

@@ -34,8 +34,7 @@
 #include "engine3_dist.h"
 #include "state3.h"
 #include "readall.h"
-#include "safefile.h"
-#include "tmpguard.h"
+#include "cli.h"
 
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
 #error "the 3-D checkpoint code assumes a little-endian machine"
@@ -46,7 +45,6 @@
 #define ITER_MAX 1000000000ULL
 #define N_MAX (1LL << 40)
 #define TAIL_MAX (1ULL << 40)
-
 
 static uLong crc_more(uLong c, const unsigned char *p, size_t left)
 {
@@ -112,24 +110,15 @@ static int write_file(const cfpo3_engine *e, const double *pos, const unsigned c
                           (e->near ? 8 : 0)));
     le_put64(h + 52, (uint64_t)tail_len);
     le_put32(h + 60, crc_of(h, pos, e->n, tail, tail_len));
-    safefile f;
-    if (safefile_open(&f, path, "wb", err, errlen) != 0) return -1;
-    tmpguard_file(f.tmp);
-    char *tmp = strdup(f.tmp);
-    int ok = fwrite(h, 1, HDR, f.f) == HDR &&
-             fwrite(pos, sizeof(double), 3 * (size_t)e->n, f.f) == 3 * (size_t)e->n &&
-             (tail_len == 0 || fwrite(tail, 1, tail_len, f.f) == tail_len);
-    int rc;
-    if (!ok) {
+    cli_atomic f;
+    if (cli_atomic_open(&f, path, err, errlen) != 0) return -1;
+    if (fwrite(h, 1, HDR, f.f) != HDR || fwrite(pos, sizeof(double), 3 * (size_t)e->n, f.f) != 3 * (size_t)e->n ||
+        (tail_len > 0 && fwrite(tail, 1, tail_len, f.f) != tail_len)) {
         snprintf(err, errlen, "%s: write failed", path);
-        safefile_abort(&f);
-        rc = -1;
-    } else {
-        rc = safefile_commit(&f, err, errlen);
+        cli_atomic_abort(&f);
+        return -1;
     }
-    if (tmp) tmpguard_forget(tmp);
-    free(tmp);
-    return rc;
+    return cli_atomic_commit(&f, err, errlen);
 }
 
 int cfpo3_checkpoint_write(const cfpo3_engine *e, const char *path, char *err, size_t errlen)

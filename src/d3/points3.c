@@ -11,8 +11,8 @@
 
 #include "npy.h"
 #include "readall.h"
+#include "cli.h"
 #include "safefile.h"
-#include "tmpguard.h"
 
 /* .gro coordinates: decimals (GROMACS's fixed layout: %8.3f), and the box
  * below which they fit their columns (4 digits before the point). */
@@ -134,21 +134,14 @@ int p3_write(const char *path, const double *xyz, size_t n, double box, char *er
         return -1;
     }
     if (p3_check_box(path, box, err, errlen) != 0) return -1;
-    safefile f;
-    if (safefile_open(&f, path, "wb", err, errlen) != 0) return -1;
-    tmpguard_file(f.tmp);
-    char *tmp = strdup(f.tmp);
-    int rc;
+    cli_atomic f;
+    if (cli_atomic_open(&f, path, err, errlen) != 0) return -1;
     if (write_body(f.f, fmt, xyz, n, box) != 0) {
         snprintf(err, errlen, "%s: write failed: %s", path, strerror(errno));
-        safefile_abort(&f);
-        rc = -1;
-    } else {
-        rc = safefile_commit(&f, err, errlen);
+        cli_atomic_abort(&f);
+        return -1;
     }
-    if (tmp) tmpguard_forget(tmp);
-    free(tmp);
-    return rc;
+    return cli_atomic_commit(&f, err, errlen);
 }
 
 /* ------------------------------------------------------------------ reading */

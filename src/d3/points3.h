@@ -1,4 +1,4 @@
-/* points3.h - layer 2 of the 3-D engine (uses safefile.h, tmpguard.h,
+/* points3.h - layer 2 of the 3-D engine (uses safefile.h, readall.h,
  * npy.h, cli.h): 3-D point files.
  *
  * Owns: writing n x 3 sets in six formats, chosen by extension, each
