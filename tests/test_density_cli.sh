@@ -35,6 +35,8 @@ npy() { # npy NAME V1 V2 V3 V4: a (2, 2) float64 array, values as printf %s floa
 npy neg 1 2 -1 3; npy nan 1 nan 1 1; npy inf 1 inf 1 1; npy zero 0 0 0 0; npy ok 1 2 3 4
 
 expect 1 "cannot open" -n 1000 --density in/missing.png -o x.npy
+mkdir -p in/folder.png
+expect 1 "folder.png: read error" -n 1000 --density in/folder.png -o x.npy
 expect 1 "unreadable PNG" -n 1000 --density in/t.png -o x.npy
 expect 1 "truncated PGM" -n 1000 --density in/t.pgm -o x.npy
 expect 1 "not a PGM" -n 1000 --density in/c.pgm -o x.npy

@@ -5,8 +5,8 @@
 # replayed as LocalCFPO problems), `cfpo-bench replay` solves each through
 # every route and exits non-zero if any call's value or point differs in
 # one bit.
-# Also: a route asked for with -p runs alone, a bad -p value and a missing
-# capture file are refused with one line.
+# Also: a route asked for with -p runs alone, a bad -p value, a missing
+# capture file and a folder are refused with one line.
 set -u
 B=$(cd "$1" && pwd)
 T=$(mktemp -d /tmp/cfpo-replay-XXXXXX)
@@ -38,5 +38,8 @@ done
   { [ "$(wc -l <e.txt)" -eq 1 ] && grep -q "bad solver 'sse'" e.txt && pass=$((pass + 1)) || bad "-p sse: $(cat e.txt)"; }
 "$B/cfpo-bench" replay -o no-such.bin >o.txt 2>e.txt && bad "missing capture file accepted" ||
   { [ "$(wc -l <e.txt)" -eq 1 ] && pass=$((pass + 1)) || bad "missing file: $(cat e.txt)"; }
+mkdir folder.bin
+"$B/cfpo-bench" replay -o folder.bin >o.txt 2>e.txt && bad "a folder accepted as a capture file" ||
+  { [ "$(wc -l <e.txt)" -eq 1 ] && grep -q "read error in 'folder.bin'" e.txt && pass=$((pass + 1)) || bad "folder: $(cat e.txt)"; }
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

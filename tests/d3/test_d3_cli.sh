@@ -42,6 +42,10 @@ printf '0.1 0.2\n' >bad.txt
 expect 1 "expected three numbers" --init bad.txt -o a.npy
 rm -f bad.txt
 expect 1 "cannot open checkpoint" --resume missing.bin -o a.npy
+mkdir folder.npy
+expect 1 "read error (is it a folder?)" --init folder.npy -o a.npy
+expect 1 "folder.npy: read error" --resume folder.npy -o a.npy
+rmdir folder.npy
 expect 1 "cannot create" -n 100 -o nofolder/a.npy
 { printf 'CFPO3DCK\x09\x00\x00\x00\x40\x00\x00\x00'; head -c 48 /dev/zero; } >bad.bin
 expect 1 "version" --resume bad.bin -o a.npy
