@@ -35,26 +35,36 @@ static int on_iter(const cfpo_iter_stats *s, void *user)
     return 0;
 }
 
+/* The command's default tolerance under density `spec` (a flat one runs
+ * the uniform engine at the uniform default). */
+static double default_tol(const char *prog, const char *spec)
+{
+    cfpo_options o;
+    cfpo_options_init(&o);
+    cfpo_density d;
+    char err[512];
+    if (cfpo_density_load(spec, &d, err, sizeof err) != 0) cli_fail(prog, "%s", err);
+    const double tol = cfpo_engines_default_tol(o.variant, &d);
+    cfpo_density_free(&d);
+    return tol;
+}
+
 /* seconds of iterations FIRST_IT..LAST_IT of one run */
-static double one_run(const char *prog, int64_t n, int threads, uint64_t seed, const char *spec, double *xy)
+static double one_run(const char *prog, int64_t n, int threads, uint64_t seed, const char *spec, double tol,
+                      double *xy)
 {
     cfpo_options o;
     cfpo_options_init(&o);
     o.threads = threads;
     o.seed = seed;
-    /* the command's default tolerance for this density (a flat one runs
-     * the uniform engine at the uniform default) */
-    cfpo_density d;
-    char err[512];
-    if (cfpo_density_load(spec, &d, err, sizeof err) != 0) cli_fail(prog, "%s", err);
-    o.tol = cfpo_engines_default_tol(o.variant, &d);
-    cfpo_density_free(&d);
+    o.tol = tol;
     o.max_iter = LAST_IT;
     o.lazy_measure = 1; /* as the command measures when it shows no progress */
     double sum = 0;
     o.progress = on_iter;
     o.user = &sum;
     cfpo_result r;
+    char err[512];
     if (cfpo_sample_density(n, &o, spec, xy, &r, err, sizeof err) != 0) cli_fail(prog, "%s", err);
     if (r.iterations < LAST_IT)
         cli_fail(prog, "the run on '%s' stopped after %d iterations, before iteration %d", spec, r.iterations, LAST_IT);
@@ -68,6 +78,7 @@ int bench_contrast(const char *prog, int64_t n, int threads, int rounds, int see
     double *b = malloc((size_t)rounds * sizeof *b), *ratio = malloc((size_t)rounds * sizeof *ratio);
     if (!xy || !a || !b || !ratio) cli_fail(prog, "out of memory for %lld points", (long long)n);
     const double its = (double)(seeds * (LAST_IT - FIRST_IT + 1));
+    const double tol_d = default_tol(prog, density), tol_r = default_tol(prog, reference);
     for (int k = 0; k < rounds; k++) {
         a[k] = b[k] = 0;
         for (int s = 1; s <= seeds; s++) {
@@ -76,7 +87,8 @@ int bench_contrast(const char *prog, int64_t n, int threads, int rounds, int see
             const int first = (k + s) % 2;
             for (int w = 0; w < 2; w++) {
                 const int dens = w == first;
-                const double t = one_run(prog, n, threads, (uint64_t)s, dens ? density : reference, xy);
+                const double t = one_run(prog, n, threads, (uint64_t)s, dens ? density : reference,
+                                         dens ? tol_d : tol_r, xy);
                 if (dens) a[k] += t;
                 else b[k] += t;
             }
